@@ -1,0 +1,26 @@
+// How subcommands plug into the `roomcad` command: each cli/<name>_command.cpp defines one
+// add_<name>_command that registers its options on the root app and returns what to run.
+#pragma once
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace roomcad::cli {
+
+/// Exit statuses of every command (../shared/spec/plan-format.md).
+enum ExitStatus : int { kOk = 0, kPlanErrors = 1, kCannotRun = 2 };
+
+/// A registered subcommand and the function that runs it once its options are parsed.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+using Commands = std::vector<Command>;
+
+void add_info_command(CLI::App& root, Commands& commands);
+void add_fmt_command(CLI::App& root, Commands& commands);
+
+}  // namespace roomcad::cli

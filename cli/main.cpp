@@ -1,0 +1,35 @@
+// roomcad: validated, exact 3D models and pictures from room plans.
+#include <cstdio>
+#include <exception>
+
+#include "cli/command.h"
+
+int main(int argc, char** argv) {
+  using namespace roomcad::cli;
+  CLI::App app{
+      "roomcad: validate room plans, build exact 3D models of them, and draw and render them.\n"
+      "Plans are JSON files (see the plan format). Exit status: 0 success, 1 the plan has\n"
+      "errors, 2 the command could not run.",
+      "roomcad"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "roomcad 0.1.0");
+  Commands commands;
+  add_info_command(app, commands);
+  add_fmt_command(app, commands);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kOk : kCannotRun;
+  }
+  for (const Command& c : commands) {
+    if (!c.app->parsed()) continue;
+    try {
+      return c.run();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "roomcad %s: error: %s\n", c.app->get_name().c_str(), e.what());
+      return kCannotRun;
+    }
+  }
+  return kCannotRun;
+}

@@ -1,0 +1,40 @@
+// Reading and writing plans as JSON (../shared/spec/plan-format.md, version 1).
+//
+// Reading never throws and never crashes: every problem becomes a Diagnostic with the file,
+// line, column and JSON pointer (parse_error for malformed JSON and wrong types, invalid_value
+// for unknown enums, unsupported format/version/units and numbers that are not finite), and
+// unknown fields become `unknown_field` warnings (their values are kept in the plan's `extra`).
+// Writing is canonical: fixed key order, every field written, numbers as the shortest decimal
+// that reads back to the same double. Saving a canonical file reproduces it byte for byte.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "io/result.h"
+#include "modeling/plan.h"
+#include "validation/report.h"
+
+namespace roomcad {
+
+struct PlanReadResult {
+  std::optional<Plan> plan;  ///< set unless the report holds an error
+  Report report;             ///< errors and warnings, in file order
+};
+
+/// Parses a plan from JSON text. `file` names the source in diagnostics.
+[[nodiscard]] PlanReadResult read_plan_text(std::string_view text, std::string_view file);
+
+/// Reads a plan file. An unreadable file is a parse_error naming it.
+[[nodiscard]] PlanReadResult read_plan_file(const std::filesystem::path& path);
+
+/// @return the canonical JSON text of a plan (ends with a newline).
+[[nodiscard]] std::string write_plan_text(const Plan& plan);
+
+/// Writes the canonical text atomically (temporary file in the same folder, then rename):
+/// on failure the old file is intact and no temporary file is left.
+Status write_plan_file(const Plan& plan, const std::filesystem::path& path);
+
+}  // namespace roomcad

@@ -1,0 +1,33 @@
+// Validation of a plan: every error code and warning of ../shared/spec/plan-format.md, all
+// problems in one run, verdicts exact for the coordinates as read.
+#pragma once
+
+#include <vector>
+
+#include "modeling/plan.h"
+#include "validation/report.h"
+
+namespace roomcad {
+
+struct ValidateOptions {
+  bool room_warnings = true;  ///< find rooms and warn about rooms with no door or no window
+};
+
+/// Checks a plan. Never throws on any Plan value (NaN, negative sizes, dangling references
+/// are reported, not assumed away). Cost O(n log n + k) for n objects and k nearby pairs.
+[[nodiscard]] Report validate(const Plan& plan, const ValidateOptions& options = {});
+
+/// A closed region of the wall arrangement (a room), as a simple polygon on the wall faces
+/// that bound it, counter-clockwise, in metres.
+struct Room {
+  std::vector<Point2> outline;
+  double area = 0.0;                     ///< square metres
+  std::vector<std::string> walls;        ///< ids of the walls bounding it
+  std::vector<std::string> doors;        ///< ids of doors in those walls
+  std::vector<std::string> windows;      ///< ids of windows in those walls
+};
+
+/// Finds the rooms of a plan that validates without errors. O(n log n) in walls.
+[[nodiscard]] std::vector<Room> find_rooms(const Plan& plan);
+
+}  // namespace roomcad

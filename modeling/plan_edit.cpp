@@ -46,6 +46,13 @@ std::string generate_id(const Plan& plan, std::string_view prefix) {
   }
 }
 
+std::vector<std::string> hosted_openings(const Plan& plan, std::string_view wall_id) {
+  std::vector<std::string> ids;
+  for (const Opening& o : plan.openings)
+    if (o.wall == wall_id) ids.push_back(o.id);
+  return ids;
+}
+
 Opening default_opening(OpeningType type) {
   const OpeningDefaults d = opening_defaults(type);
   Opening opening;
@@ -80,9 +87,7 @@ EditSummary remove_object(Plan& plan, std::string_view id, const RemoveOptions& 
   const detail::ObjectRef ref = detail::require_object(plan, id, "rm");
   EditSummary summary;
   if (ref.kind == detail::ObjectKind::wall) {
-    std::vector<std::string> hosted;
-    for (const Opening& o : plan.openings)
-      if (o.wall == id) hosted.push_back(o.id);
+    std::vector<std::string> hosted = hosted_openings(plan, id);
     if (!hosted.empty() && !options.cascade)
       throw PreconditionError(fmt::format(
           "rm: wall '{}' has openings ({}); remove them first or use --cascade", id,

@@ -43,6 +43,9 @@ struct EditSummary {
 /// @return `<prefix>-N` with the smallest N >= 1 that no object of the plan uses. O(n) per try.
 [[nodiscard]] std::string generate_id(const Plan& plan, std::string_view prefix);
 
+/// @return the ids of the openings hosted by wall `wall_id`, in plan order. O(n).
+[[nodiscard]] std::vector<std::string> hosted_openings(const Plan& plan, std::string_view wall_id);
+
 /// @return an opening of this type with the spec's defaults (width, height, sill).
 [[nodiscard]] Opening default_opening(OpeningType type);
 
@@ -106,10 +109,12 @@ EditSummary scale_all(Plan& plan, double factor, std::optional<Point2> about = s
 /// vectors (`0,0,1`), colours (`#aabbcc`), enum names (`door`, `left`, `orthographic`) and
 /// ids. `id` may also be "site" (when no object has that id) for the site's fields. Renaming
 /// a wall renames its openings' references too.
+/// @param[in] verb  the command named in error messages ("set", or "add" when building a
+///                   new object field by field)
 /// @throws PreconditionError naming the object, key and value, e.g.
 ///         `set: wall 'w1' has no field 'colour' (did you mean 'color'?)`.
 EditSummary set_field(Plan& plan, std::string_view id, std::string_view key,
-                      std::string_view value);
+                      std::string_view value, std::string_view verb = "set");
 
 /// @return the names of the fields set_field accepts for an object kind ("wall", "door",
 ///         "window", "light", "camera", "site"), in file order.

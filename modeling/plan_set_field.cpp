@@ -110,30 +110,39 @@ std::string suggestion(const std::vector<Field>& fields, std::string_view key) {
   return fmt::format(" (fields: {})", fmt::join(names, ", "));
 }
 
-/// Sets `key` of an object whose fields are `fields`; `what` is "wall 'w1'" for messages.
-void set_in(const std::vector<Field>& fields, std::string_view what, std::string_view key,
+/// Who is edited, for messages: the command ("set") and the object ("wall 'w1'").
+struct Subject {
+  std::string_view verb;
+  std::string what;
+};
+
+/// Sets `key` of an object whose fields are `fields`.
+void set_in(const std::vector<Field>& fields, const Subject& subject, std::string_view key,
             std::string_view value) {
   const auto field = std::find_if(fields.begin(), fields.end(),
                                   [&](const Field& f) { return f.name == key; });
   if (field == fields.end())
-    throw PreconditionError(fmt::format("set: {} has no field '{}'{}", what, key, suggestion(fields, key)));
+    throw PreconditionError(fmt::format("{}: {} has no field '{}'{}", subject.verb,
+                                        subject.what, key, suggestion(fields, key)));
   std::visit(
       [&](auto* target) {
         if (!assign(target, value))
-          throw PreconditionError(fmt::format("set: {} field '{}' wants {}, got '{}'", what, key,
+          throw PreconditionError(fmt::format("{}: {} field '{}' wants {}, got '{}'",
+                                              subject.verb, subject.what, key,
                                               expected(target), value));
       },
       field->target);
 }
 
 /// Renames an object (and a wall's openings' references). @return the ids changed.
-std::vector<std::string> rename(Plan& plan, detail::ObjectRef ref, std::string_view new_id) {
+std::vector<std::string> rename(Plan& plan, detail::ObjectRef ref, std::string_view new_id,
+                                std::string_view verb) {
   std::string& id = detail::id_of(plan, ref);
   if (new_id.empty())
-    throw PreconditionError(fmt::format("set: {} '{}' field 'id' wants a non-empty id, got ''",
-                                        detail::kind_name(plan, ref), id));
+    throw PreconditionError(fmt::format("{}: {} '{}' field 'id' wants a non-empty id, got ''",
+                                        verb, detail::kind_name(plan, ref), id));
   if (new_id == id) return {};
-  detail::require_unused_id(plan, new_id, "set");
+  detail::require_unused_id(plan, new_id, verb);
   std::vector<std::string> changed{std::string(new_id)};
   if (ref.kind == detail::ObjectKind::wall) {
     for (Opening& o : plan.openings) {
@@ -148,18 +157,17 @@ std::vector<std::string> rename(Plan& plan, detail::ObjectRef ref, std::string_v
 
 /// Sets a field of one object (or the site). @return whether it changed.
 template <class Object>
-bool set_field_of(Object& object, std::string_view what, std::string_view key,
+bool set_field_of(Object& object, const Subject& subject, std::string_view key,
                   std::string_view value) {
   const Object old = object;
-  set_in(fields_of(object), what, key, value);
+  set_in(fields_of(object), subject, key, value);
   return object != old;
 }
 
 /// Sets a field of the object `ref`. @return whether the object changed.
 bool set_object_field(Plan& plan, detail::ObjectRef ref, std::string_view key,
-                      std::string_view value) {
-  const std::string what =
-      fmt::format("{} '{}'", detail::kind_name(plan, ref), detail::id_of(plan, ref));
+                      std::string_view value, std::string_view verb) {
+  const Subject what{verb, fmt::format("{} '{}'", detail::kind_name(plan, ref), detail::id_of(plan, ref))};
   switch (ref.kind) {
     case detail::ObjectKind::wall: return set_field_of(plan.walls[ref.index], what, key, value);
     case detail::ObjectKind::opening:
@@ -173,17 +181,17 @@ bool set_object_field(Plan& plan, detail::ObjectRef ref, std::string_view key,
 }  // namespace
 
 EditSummary set_field(Plan& plan, std::string_view id, std::string_view key,
-                      std::string_view value) {
+                      std::string_view value, std::string_view verb) {
   EditSummary summary;
   const auto ref = detail::find_object(plan, id);
   if (!ref && id == "site") {
-    if (set_field_of(plan.site, "the site", key, value)) summary.changed.push_back("site");
+    if (set_field_of(plan.site, Subject{verb, "the site"}, key, value)) summary.changed.push_back("site");
     return summary;
   }
-  const detail::ObjectRef object = detail::require_object(plan, id, "set");
+  const detail::ObjectRef object = detail::require_object(plan, id, verb);
   if (key == "id") {
-    summary.changed = rename(plan, object, value);
-  } else if (set_object_field(plan, object, key, value)) {
+    summary.changed = rename(plan, object, value, verb);
+  } else if (set_object_field(plan, object, key, value, verb)) {
     summary.changed.push_back(std::string(id));
   }
   return summary;

@@ -38,14 +38,17 @@ Vec3 map_direction(const Transform2d& t, Vec3 v) {
   return {d.x, d.y, v.z};
 }
 
-/// Maps a wall and the along-wall lengths of its openings.
-void map_wall(Plan& plan, std::size_t index, const PlanMap& map) {
-  Wall& wall = plan.walls[index];
+void map_wall(Wall& wall, const PlanMap& map) {
   wall.from = apply(map.points, wall.from);
   wall.to = apply(map.points, wall.to);
+}
+
+/// Scales the along-wall lengths of the openings hosted by `wall_id`, or of all openings
+/// without one (a whole-plan map: one pass, not one per wall).
+void map_openings(Plan& plan, std::optional<std::string_view> wall_id, const PlanMap& map) {
   if (map.length_factor == 1.0) return;
   for (Opening& o : plan.openings) {
-    if (o.wall != wall.id) continue;
+    if (wall_id && o.wall != *wall_id) continue;
     o.offset = scaled(o.offset, map.length_factor);
     o.width = scaled(o.width, map.length_factor);
   }
@@ -118,7 +121,10 @@ Point2 default_centre(const Plan& plan, ObjectRef ref) {
 EditSummary map_object(Plan& plan, ObjectRef ref, const PlanMap& map, std::string_view verb) {
   const Plan before = plan;
   switch (ref.kind) {
-    case ObjectKind::wall: map_wall(plan, ref.index, map); break;
+    case ObjectKind::wall:
+      map_wall(plan.walls[ref.index], map);
+      map_openings(plan, plan.walls[ref.index].id, map);
+      break;
     case ObjectKind::camera: map_camera(plan.cameras[ref.index], map); break;
     case ObjectKind::light: map_light(plan.lights[ref.index], map); break;
     case ObjectKind::opening:
@@ -132,7 +138,8 @@ EditSummary map_object(Plan& plan, ObjectRef ref, const PlanMap& map, std::strin
 
 EditSummary map_everything(Plan& plan, const PlanMap& map) {
   const Plan before = plan;
-  for (std::size_t i = 0; i < plan.walls.size(); ++i) map_wall(plan, i, map);
+  for (Wall& w : plan.walls) map_wall(w, map);
+  map_openings(plan, std::nullopt, map);
   for (Camera& c : plan.cameras) map_camera(c, map);
   for (Light& l : plan.lights) map_light(l, map);
   map_site(plan.site, map);

@@ -93,23 +93,40 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
   const std::int64_t sy = static_cast<std::int64_t>(y_begin) * kSubpixelScale + kHalfPixel;
   const EdgeWalk e0 = walk_edge(t, 0, sx, sy), e1 = walk_edge(t, 1, sx, sy),
                  e2 = walk_edge(t, 2, sx, sy);
-  const float inv_area = 1.f / static_cast<float>(e0.at_start + e0.bias + e1.at_start + e1.bias +
-                                                  e2.at_start + e2.bias);
-  const int stride = target.x1 - target.x0;
+  // Depth is affine on screen: a plane walked in double (exact enough over a tile's 64 steps
+  // to keep the float result correctly rounded, which the 1 km precision test relies on).
+  const double inv_area = 1.0 / static_cast<double>(e0.at_start + e0.bias + e1.at_start +
+                                                    e1.bias + e2.at_start + e2.bias);
+  const double z_start = (static_cast<double>(e0.at_start + e0.bias) * t.depth[0] +
+                          static_cast<double>(e1.at_start + e1.bias) * t.depth[1] +
+                          static_cast<double>(e2.at_start + e2.bias) * t.depth[2]) * inv_area;
+  const double z_dx = (static_cast<double>(e0.step_x) * t.depth[0] +
+                       static_cast<double>(e1.step_x) * t.depth[1] +
+                       static_cast<double>(e2.step_x) * t.depth[2]) * inv_area;
+  const double z_dy = (static_cast<double>(e0.step_y) * t.depth[0] +
+                       static_cast<double>(e1.step_y) * t.depth[1] +
+                       static_cast<double>(e2.step_y) * t.depth[2]) * inv_area;
+  const int stride = target.stride > 0 ? target.stride : target.x1 - target.x0;
   std::int64_t r0 = e0.at_start, r1 = e1.at_start, r2 = e2.at_start;
-  for (int y = y_begin; y < y_end; ++y, r0 += e0.step_y, r1 += e1.step_y, r2 += e2.step_y) {
+  double row_z = z_start;
+  for (int y = y_begin; y < y_end; ++y) {
     std::int64_t w0 = r0, w1 = r1, w2 = r2;
-    const std::size_t row = static_cast<std::size_t>(y - target.y0) * stride - target.x0;
-    for (int x = x_begin; x < x_end; ++x, w0 += e0.step_x, w1 += e1.step_x, w2 += e2.step_x) {
-      if ((w0 | w1 | w2) < 0) continue;  // outside (or on an edge that is not top-left)
-      const float z = (static_cast<float>(w0 + e0.bias) * t.depth[0] +
-                       static_cast<float>(w1 + e1.bias) * t.depth[1] +
-                       static_cast<float>(w2 + e2.bias) * t.depth[2]) * inv_area;
-      float& stored = target.depth[row + x];
-      if (z <= stored) continue;
-      stored = z;
-      if (target.ids) target.ids[row + x] = target.id_value;
+    double z = row_z;
+    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride - target.x0;
+    for (int x = x_begin; x < x_end; ++x) {
+      if ((w0 | w1 | w2) >= 0 && static_cast<float>(z) > target.depth[row + x]) {  // in, nearer
+        target.depth[row + x] = static_cast<float>(z);
+        if (target.ids) target.ids[row + x] = target.id_value;
+      }
+      w0 += e0.step_x;
+      w1 += e1.step_x;
+      w2 += e2.step_x;
+      z += z_dx;
     }
+    r0 += e0.step_y;
+    r1 += e1.step_y;
+    r2 += e2.step_y;
+    row_z += z_dy;
   }
 }
 

@@ -48,12 +48,13 @@ enum class Culling { back_faces, none };
                                                             Culling culling);
 
 /// The part of a depth (and optional id) buffer one rasterisation call may write: pixels
-/// [x0, x1) x [y0, y1) of an image `stride` pixels wide, stored from (x0, y0).
+/// [x0, x1) x [y0, y1); pixel (x, y) is stored at depth[(y - y0) * stride + (x - x0)].
 struct RasterTarget {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  float* depth = nullptr;         ///< (x1 - x0) * (y1 - y0) values; start at 0 (far)
+  float* depth = nullptr;         ///< start at 0 (far)
   std::uint32_t* ids = nullptr;   ///< same layout, or nullptr for depth-only passes
   std::uint32_t id_value = 0;     ///< written to `ids` where the triangle wins the depth test
+  int stride = 0;                 ///< values per row; 0 means x1 - x0
 };
 
 /// Rasterises one triangle into the target with the top-left rule and a reversed-Z depth test

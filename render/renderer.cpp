@@ -90,7 +90,7 @@ void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vecto
           sum += rgb[static_cast<std::size_t>(oy * k + sy - t.y0) * w + (ox * k + sx - t.x0)];
       const glm::vec3 c = sum / static_cast<float>(k * k);
       std::uint8_t* px = out.color.at(ox, oy);
-      for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(std::lround(c[ch] * 255.f));
+      for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(c[ch] * 255.f + 0.5f);
       const std::size_t s = static_cast<std::size_t>(oy * k + centre - t.y0) * w +
                             (ox * k + centre - t.x0);
       out.depth.at(ox, oy) = view_distance(f.inverse_projection, t.depth[s]);
@@ -104,9 +104,12 @@ void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vecto
 void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
   RasterTarget t = detail::tile_rectangle(f.bins, tile);
   const std::size_t n = static_cast<std::size_t>(t.x1 - t.x0) * (t.y1 - t.y0);
-  std::vector<float> depth(n, 0.f);
-  std::vector<std::uint32_t> ids(n, kNoTriangle);
-  std::vector<glm::vec3> rgb(n, f.background);
+  thread_local std::vector<float> depth;  // reused: tiles are many and small
+  thread_local std::vector<std::uint32_t> ids;
+  thread_local std::vector<glm::vec3> rgb;
+  depth.assign(n, 0.f);
+  ids.assign(n, kNoTriangle);
+  rgb.assign(n, f.background);
   t.depth = depth.data();
   t.ids = ids.data();
   detail::rasterize_tile(f.bins, tile, t);

@@ -9,7 +9,7 @@ namespace roomcad {
 namespace {
 
 constexpr float kSpecular = 0.2f;    // white highlights, a matte finish
-constexpr float kShininess = 24.f;
+constexpr int kShininessLog2 = 5;  // exponent 32, by repeated squaring (std::pow is slow)
 constexpr float kGridDarkening = 0.6f;
 constexpr double kGridHalfWidth = 0.015;  // of a cell
 
@@ -24,7 +24,9 @@ DirectLight direct_light(const ShadingLight& light, const glm::vec3& normal,
   const float n_dot_l = glm::dot(normal, light.to_light);
   if (n_dot_l <= 0.f) return {};
   const glm::vec3 half = glm::normalize(light.to_light + to_eye);
-  return {n_dot_l, kSpecular * std::pow(std::max(glm::dot(normal, half), 0.f), kShininess)};
+  float highlight = std::max(glm::dot(normal, half), 0.f);
+  for (int i = 0; i < kShininessLog2; ++i) highlight *= highlight;
+  return {n_dot_l, kSpecular * highlight};
 }
 
 glm::vec3 to_eye_from(const ShadingUniforms& u, const glm::vec3& p) {

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
@@ -61,15 +60,10 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
                                   .tile_size = 64,
                                   .cull_back_faces = false});
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
-    RasterTarget target = detail::tile_rectangle(bins, tile);
-    const int w = target.x1 - target.x0;
-    std::vector<float> depth(static_cast<std::size_t>(w) * (target.y1 - target.y0), 0.f);
-    target.depth = depth.data();
+    RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
+    target.depth = &map.depth.at(target.x0, target.y0);
+    target.stride = resolution;
     detail::rasterize_tile(bins, tile, target);
-    for (int y = target.y0; y < target.y1; ++y) {
-      std::copy_n(&depth[static_cast<std::size_t>(y - target.y0) * w], w,
-                  &map.depth.at(target.x0, y));
-    }
   });
 }
 

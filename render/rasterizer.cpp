@@ -42,6 +42,36 @@ EdgeWalk walk_edge(const ScreenTriangle& t, int k, std::int64_t sx, std::int64_t
   return w;
 }
 
+/// Depth at the first pixel centre of the box and its change per pixel across and down.
+struct DepthPlane {
+  double start = 0.0, dx = 0.0, dy = 0.0;
+};
+
+/// Depth is affine on screen; the plane is kept in double so that the float result is
+/// correctly rounded (the 1 km precision test relies on it).
+DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e) {
+  double area = 0.0;
+  DepthPlane p;
+  for (int k = 0; k < 3; ++k) {
+    area += static_cast<double>(e[k].at_start + e[k].bias);
+    p.start += static_cast<double>(e[k].at_start + e[k].bias) * t.depth[k];
+    p.dx += static_cast<double>(e[k].step_x) * t.depth[k];
+    p.dy += static_cast<double>(e[k].step_y) * t.depth[k];
+  }
+  return {p.start / area, p.dx / area, p.dy / area};
+}
+
+/// Narrows the pixel offsets [lo, hi) of a row to where `w + i * step >= 0`.
+void narrow_span(std::int64_t w, std::int64_t step, int& lo, int& hi) {
+  if (step == 0) {
+    if (w < 0) hi = lo;  // the whole row is outside this edge
+  } else if (step > 0) {  // i >= ceil(-w / step)
+    if (w < 0) lo = static_cast<int>(std::max<std::int64_t>(lo, (-w + step - 1) / step));
+  } else {  // i <= floor(w / -step)
+    hi = w < 0 ? lo : static_cast<int>(std::min<std::int64_t>(hi, w / -step + 1));
+  }
+}
+
 }  // namespace
 
 std::optional<ScreenTriangle> set_up_triangle(const std::array<ClipVertex, 3>& v, int width,
@@ -91,42 +121,26 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
 
   const std::int64_t sx = static_cast<std::int64_t>(x_begin) * kSubpixelScale + kHalfPixel;
   const std::int64_t sy = static_cast<std::int64_t>(y_begin) * kSubpixelScale + kHalfPixel;
-  const EdgeWalk e0 = walk_edge(t, 0, sx, sy), e1 = walk_edge(t, 1, sx, sy),
-                 e2 = walk_edge(t, 2, sx, sy);
-  // Depth is affine on screen: a plane walked in double (exact enough over a tile's 64 steps
-  // to keep the float result correctly rounded, which the 1 km precision test relies on).
-  const double inv_area = 1.0 / static_cast<double>(e0.at_start + e0.bias + e1.at_start +
-                                                    e1.bias + e2.at_start + e2.bias);
-  const double z_start = (static_cast<double>(e0.at_start + e0.bias) * t.depth[0] +
-                          static_cast<double>(e1.at_start + e1.bias) * t.depth[1] +
-                          static_cast<double>(e2.at_start + e2.bias) * t.depth[2]) * inv_area;
-  const double z_dx = (static_cast<double>(e0.step_x) * t.depth[0] +
-                       static_cast<double>(e1.step_x) * t.depth[1] +
-                       static_cast<double>(e2.step_x) * t.depth[2]) * inv_area;
-  const double z_dy = (static_cast<double>(e0.step_y) * t.depth[0] +
-                       static_cast<double>(e1.step_y) * t.depth[1] +
-                       static_cast<double>(e2.step_y) * t.depth[2]) * inv_area;
+  const std::array<EdgeWalk, 3> e{walk_edge(t, 0, sx, sy), walk_edge(t, 1, sx, sy),
+                                  walk_edge(t, 2, sx, sy)};
+  const DepthPlane plane = depth_plane(t, e);
   const int stride = target.stride > 0 ? target.stride : target.x1 - target.x0;
-  std::int64_t r0 = e0.at_start, r1 = e1.at_start, r2 = e2.at_start;
-  double row_z = z_start;
+  std::array<std::int64_t, 3> w{e[0].at_start, e[1].at_start, e[2].at_start};
   for (int y = y_begin; y < y_end; ++y) {
-    std::int64_t w0 = r0, w1 = r1, w2 = r2;
-    double z = row_z;
-    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride - target.x0;
-    for (int x = x_begin; x < x_end; ++x) {
-      if ((w0 | w1 | w2) >= 0 && static_cast<float>(z) > target.depth[row + x]) {  // in, nearer
-        target.depth[row + x] = static_cast<float>(z);
-        if (target.ids) target.ids[row + x] = target.id_value;
+    // The row's span: the pixels where all three (biased) edge functions are >= 0.
+    int lo = 0, hi = x_end - x_begin;
+    for (int k = 0; k < 3; ++k) narrow_span(w[k], e[k].step_x, lo, hi);
+    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride +
+                               (x_begin - target.x0);
+    const double row_z = plane.start + (y - y_begin) * plane.dy;
+    for (int i = lo; i < hi; ++i) {
+      const float z = static_cast<float>(row_z + i * plane.dx);
+      if (z > target.depth[row + i]) {  // reversed-Z: nearer
+        target.depth[row + i] = z;
+        if (target.ids) target.ids[row + i] = target.id_value;
       }
-      w0 += e0.step_x;
-      w1 += e1.step_x;
-      w2 += e2.step_x;
-      z += z_dx;
     }
-    r0 += e0.step_y;
-    r1 += e1.step_y;
-    r2 += e2.step_y;
-    row_z += z_dy;
+    for (int k = 0; k < 3; ++k) w[k] += e[k].step_y;
   }
 }
 

@@ -101,18 +101,20 @@ float shadow_amount(const ShadowMap& map, const glm::vec3& world, const glm::vec
   const float grad_v = n.y * map.texel_y / (cos_t * map.depth_range);
   const float bias = map.texel_size() * (0.05f + 0.1f * tan_t) / map.depth_range;
   const int iu = static_cast<int>(std::floor(u)), iv = static_cast<int>(std::floor(v));
+  // The receiver's biased depth at the centre of texel (iu, iv); neighbours add the gradient.
+  const float base = p.z + grad_u * (iu + 0.5f - u) + grad_v * (iv + 0.5f - v) + bias;
   const int reach = filter == ShadowFilter::pcf ? 1 : 0;
-  int shadowed = 0, samples = 0;
+  const bool inside = iu - reach >= 0 && iv - reach >= 0 && iu + reach < size && iv + reach < size;
+  int shadowed = 0;
   for (int dv = -reach; dv <= reach; ++dv) {
+    if (!inside && (iv + dv < 0 || iv + dv >= size)) continue;  // outside the map: lit
+    const float* row = &map.depth.values[static_cast<std::size_t>(iv + dv) * size];
     for (int du = -reach; du <= reach; ++du) {
-      const int su = iu + du, sv = iv + dv;
-      ++samples;
-      if (su < 0 || sv < 0 || su >= size || sv >= size) continue;
-      const float expected = p.z + grad_u * (su + 0.5f - u) + grad_v * (sv + 0.5f - v);
-      if (map.depth.at(su, sv) > expected + bias) ++shadowed;
+      if (!inside && (iu + du < 0 || iu + du >= size)) continue;
+      shadowed += row[iu + du] > base + grad_u * du + grad_v * dv;
     }
   }
-  return static_cast<float>(shadowed) / static_cast<float>(samples);
+  return static_cast<float>(shadowed) / static_cast<float>((2 * reach + 1) * (2 * reach + 1));
 }
 
 }  // namespace roomcad

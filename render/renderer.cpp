@@ -176,6 +176,15 @@ std::string check_render_options(const RenderOptions& o) {
     return fmt::format("shadow resolution is {}; it must be 1 to 16384", o.shadow_resolution);
   }
   if (o.threads < 0) return fmt::format("threads is {}; it must be 0 (all) or more", o.threads);
+  const double fov = o.camera ? o.camera->fov_deg : o.view_fov_deg;
+  if (!(fov > 0.0 && fov < 180.0)) {
+    return fmt::format("field of view is {} degrees; it must be between 0 and 180", fov);
+  }
+  if (o.camera && o.camera->projection == Projection::orthographic &&
+      !(o.camera->view_height > 0.0 && std::isfinite(o.camera->view_height))) {
+    return fmt::format("camera '{}' view height is {} m; it must be positive", o.camera->id,
+                       o.camera->view_height);
+  }
   return {};
 }
 
@@ -183,7 +192,10 @@ CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options) {
   const double aspect = static_cast<double>(options.width) / options.height;
   Bounds bounds = scene.bounds;
   if (bounds.is_empty()) bounds.add(glm::dvec3(0.0));  // nothing to frame: look at the origin
-  const Camera camera = options.camera ? *options.camera : default_camera(bounds, aspect);
+  const Camera camera =
+      options.camera ? *options.camera
+                     : frame_view(bounds, options.view, options.view_projection,
+                                  options.view_fov_deg, aspect);
   return make_camera_matrices(camera, bounds, aspect);
 }
 

@@ -48,7 +48,10 @@ struct FrameBuffers {
 struct RenderOptions {
   int width = 1280;   ///< output pixels, 1 .. 16384
   int height = 720;
-  std::optional<Camera> camera{};        ///< nullopt: default_camera() of the scene's bounds
+  std::optional<Camera> camera{};        ///< nullopt: frame the scene from `view`
+  ViewPreset view = ViewPreset::iso;     ///< without a camera: frame_view() of the scene's
+  Projection view_projection = Projection::perspective;  ///< bounds with this projection
+  double view_fov_deg = 50.0;            ///< and field of view (the default camera)
   ShadingMode shading = ShadingMode::phong;
   ShadowFilter shadows = ShadowFilter::pcf;
   int shadow_resolution = 2048;          ///< texels per side of each light's map, >= 1

@@ -48,21 +48,35 @@ ShadingUniforms make_uniforms(const RenderOptions& options, const CameraMatrices
 
 glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }
 
-/// The shaded colour of one sample whose visible screen triangle is `id`.
-glm::vec3 shade_sample(const FrameContext& f, std::uint32_t id, float px, float py) {
-  const ScreenTriangle& st = f.bins.at(id);
-  const std::size_t tri = st.triangle;
+/// What one visible triangle gives each of its samples; loaded once per run of samples that
+/// show the same triangle (neighbouring samples mostly do).
+struct TriangleVarying {
+  std::uint32_t id = kNoTriangle;
+  const ScreenTriangle* screen = nullptr;
+  SurfacePoint point;  ///< corners, normal as stored, plain colour
+  bool is_floor = false;
+};
+
+void load_triangle(const FrameContext& f, std::uint32_t id, TriangleVarying& v) {
   const Scene& scene = *f.scene;
-  SurfacePoint s;
-  s.weights = source_barycentrics(st, px, py);
-  for (int c = 0; c < 3; ++c) s.corners[c] = scene.corners[3 * tri + c];
+  v.id = id;
+  v.screen = &f.bins.at(id);
+  const std::size_t tri = v.screen->triangle;
+  for (int c = 0; c < 3; ++c) v.point.corners[c] = scene.corners[3 * tri + c];
+  v.point.normal = scene.normals[tri];
+  v.point.color = to_unit_rgb(scene.colors[tri]);
+  v.is_floor = scene.kinds[tri] == FaceKind::floor;
+}
+
+/// The shaded colour of the sample at (px, py) showing the triangle `v`.
+glm::vec3 shade_sample(const FrameContext& f, const TriangleVarying& v, float px, float py) {
+  SurfacePoint s = v.point;
+  s.weights = source_barycentrics(*v.screen, px, py);
   s.world = s.weights[0] * s.corners[0] + s.weights[1] * s.corners[1] +
             s.weights[2] * s.corners[2];
-  s.normal = scene.normals[tri];
   const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward : f.uniforms.eye - s.world;
   if (glm::dot(s.normal, to_eye) < 0.f) s.normal = -s.normal;  // the back of a two-sided face
-  s.color = to_unit_rgb(scene.colors[tri]);
-  if (scene.kinds[tri] == FaceKind::floor) s.color = apply_grid(f.uniforms.grid, s.world, s.color);
+  if (v.is_floor) s.color = apply_grid(f.uniforms.grid, s.world, s.color);
   for (int k = 0; k < f.uniforms.light_count && k < static_cast<int>(f.shadow_maps.size()); ++k) {
     s.shadow[k] = shadow_amount(f.shadow_maps[k], s.world, s.normal, f.filter);
   }
@@ -113,12 +127,14 @@ void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
   t.depth = depth.data();
   t.ids = ids.data();
   detail::rasterize_tile(f.bins, tile, t);
-  const int w = t.x1 - t.x0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (ids[i] == kNoTriangle) continue;
-    const float px = static_cast<float>(t.x0 + static_cast<int>(i % w)) + 0.5f;
-    const float py = static_cast<float>(t.y0 + static_cast<int>(i / w)) + 0.5f;
-    rgb[i] = shade_sample(f, ids[i], px, py);
+  TriangleVarying v;
+  std::size_t i = 0;
+  for (int y = t.y0; y < t.y1; ++y) {
+    for (int x = t.x0; x < t.x1; ++x, ++i) {
+      if (ids[i] == kNoTriangle) continue;
+      if (ids[i] != v.id) load_triangle(f, ids[i], v);
+      rgb[i] = shade_sample(f, v, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    }
   }
   resolve_tile(f, t, rgb, out);
 }

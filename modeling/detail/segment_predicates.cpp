@@ -22,22 +22,26 @@ bool segments_meet(Point2 a, Point2 b, Point2 c, Point2 d) {
 }
 
 bool is_near_segment(Point2 p, Point2 a, Point2 b, double tol) {
-  return exact::decide([&](auto tag) {
+  return exact::decide([&](auto tag) -> bool {
     using NT = decltype(tag);
     const exact::Pt<NT> pa = exact::to_pt<NT>(p) - exact::to_pt<NT>(a);
     const exact::Pt<NT> ba = exact::to_pt<NT>(b) - exact::to_pt<NT>(a);
     const NT t2 = NT(tol) * NT(tol);
-    const NT along = exact::dot(pa, ba);
     const NT length2 = exact::dot(ba, ba);
+    // The distance to the line (|cross| / |b - a|, squared and multiplied out) bounds the
+    // distance to the segment from below: far from the line decides without asking where
+    // along it p lies (which is uncertain when p is abreast of an end).
+    const NT c = exact::cross(ba, pa);
+    if (!(c * c <= t2 * length2)) return false;
     // Before the start or past the end the nearest point is an end point; between, the
-    // distance is |cross| / |b - a|, compared squared and multiplied out to stay rational.
+    // line's distance is the segment's.
+    const NT along = exact::dot(pa, ba);
     if (along <= NT(0)) return exact::dot(pa, pa) <= t2;
     if (along >= length2) {
       const exact::Pt<NT> pb = exact::to_pt<NT>(p) - exact::to_pt<NT>(b);
       return exact::dot(pb, pb) <= t2;
     }
-    const NT c = exact::cross(ba, pa);
-    return c * c <= t2 * length2;
+    return true;
   });
 }
 

@@ -160,9 +160,12 @@ std::string clearing_fix(const Wall& host, const Opening& o, const std::array<Po
     const double t = (c.x - host.from.x) * u.x + (c.y - host.from.y) * u.y;
     lo = std::min(lo, t), hi = std::max(hi, t);
   }
+  // Rounded to centimetres away from the blocker, so that the offset given really clears it.
+  const double before = std::floor((lo - o.width) * 100) / 100;
+  const double after = std::ceil(hi * 100) / 100;
   std::vector<std::string> options;
-  if (lo - o.width >= 0) options.push_back(fmt::format("offset {:.2f} (before it)", lo - o.width));
-  if (hi + o.width <= length) options.push_back(fmt::format("offset {:.2f} (after it)", hi));
+  if (before >= 0) options.push_back(fmt::format("offset {:.2f} (before it)", before));
+  if (after + o.width <= length) options.push_back(fmt::format("offset {:.2f} (after it)", after));
   if (options.empty()) return fmt::format("move {} or {} so that they do not meet", other.id, o.id);
   return fmt::format("move {} along {} clear of {}: {}", o.id, host.id, other.id,
                      fmt::join(options, " or "));

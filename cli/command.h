@@ -22,5 +22,9 @@ using Commands = std::vector<Command>;
 
 void add_info_command(CLI::App& root, Commands& commands);
 void add_fmt_command(CLI::App& root, Commands& commands);
+void add_add_command(CLI::App& root, Commands& commands);
+void add_rm_command(CLI::App& root, Commands& commands);
+void add_transform_commands(CLI::App& root, Commands& commands);  ///< move, rotate, scale
+void add_set_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -88,7 +88,7 @@ SampleGrid sample_surface(const SurfaceFunction& f, const SurfaceView& v) {
   return grid;
 }
 
-/// Fits the finite points into the screen (uniform scale, centred): the seed's window.
+/// Fits the finite points into the screen, centred: the seed's window (алгоритм ОКНО).
 /// @return false if there is no finite point.
 bool fit_window(const SampleGrid& grid, const SurfaceScreen& screen, SurfaceDrawing& out) {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
@@ -102,9 +102,11 @@ bool fit_window(const SampleGrid& grid, const SurfaceScreen& screen, SurfaceDraw
   // A flat extent (a single point, or a plane seen edge-on) does not limit the scale.
   const double sx = x1 > x0 ? room_x / (x1 - x0) : INFINITY;
   const double sy = y1 > y0 ? room_y / (y1 - y0) : INFINITY;
-  out.scale = std::isinf(std::min(sx, sy)) ? 1.0 : std::min(sx, sy);
-  out.origin_x = 0.5 * screen.width - out.scale * 0.5 * (x0 + x1);
-  out.origin_y = 0.5 * screen.height + out.scale * 0.5 * (y0 + y1);
+  const double common = std::isinf(std::min(sx, sy)) ? 1.0 : std::min(sx, sy);
+  out.scale_x = screen.keep_aspect || std::isinf(sx) ? common : sx;
+  out.scale_y = screen.keep_aspect || std::isinf(sy) ? common : sy;
+  out.origin_x = 0.5 * screen.width - out.scale_x * 0.5 * (x0 + x1);
+  out.origin_y = 0.5 * screen.height + out.scale_y * 0.5 * (y0 + y1);
   return true;
 }
 
@@ -115,7 +117,7 @@ std::vector<HorizonPolyline> sweep_sections(const SampleGrid& grid, const Surfac
   // Sweep coordinates: screen x, and height above the origin growing upwards.
   const auto at = [&](std::size_t j, std::size_t i) {
     const ScreenPoint& p = grid.points[j * grid.nx + i];
-    return ScreenPoint{d.origin_x + d.scale * p.x, d.scale * p.y};
+    return ScreenPoint{d.origin_x + d.scale_x * p.x, d.scale_y * p.y};
   };
   const auto add_if_finite = [&](ScreenPoint a, ScreenPoint b) {
     if (std::isnan(a.x) || std::isnan(b.x)) return sweep.break_polyline();

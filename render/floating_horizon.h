@@ -28,6 +28,9 @@ struct SurfaceScreen {
   double margin = 10.0;  ///< blank border kept on every side
   int columns = 800;     ///< resolution of the horizon arrays (one per pixel in the classic method)
   bool side_edges = true;  ///< also draw the x = x_min and x = x_max edges between sections
+  /// true: one scale for both axes (terrain); false: stretch each axis to fill the screen, as
+  /// the seed's window does
+  bool keep_aspect = false;
 };
 
 /// Why a piece of a section is visible: it is on the first (front) section, above the upper
@@ -47,12 +50,13 @@ struct HorizonPolyline {
 };
 
 /// The result, with the picture-plane-to-screen map so callers can relate it to the surface:
-/// screen x = origin_x + scale * X, screen y = origin_y - scale * Y, where (X, Y) is the
+/// screen x = origin_x + scale_x * X, screen y = origin_y - scale_y * Y, where (X, Y) is the
 /// rotated point (X = x cos ry + z sin ry, Y = y cos rx + (z cos ry - x sin ry) sin rx).
 struct SurfaceDrawing {
   double width = 0.0;
   double height = 0.0;
-  double scale = 1.0;
+  double scale_x = 1.0;
+  double scale_y = 1.0;
   double origin_x = 0.0;
   double origin_y = 0.0;
   std::vector<HorizonPolyline> polylines;  ///< in drawing order (front to back)
@@ -66,8 +70,9 @@ using SurfaceFunction = std::function<double(double x, double z)>;
 [[nodiscard]] std::string check_surface_request(const SurfaceView& view,
                                                 const SurfaceScreen& screen);
 
-/// Draws y = f(x, z) by the floating-horizon method. The picture is scaled uniformly to fill the
-/// screen inside its margin and centred. Missing samples cut the sections they lie on.
+/// Draws y = f(x, z) by the floating-horizon method. The picture is scaled to fill the screen
+/// inside its margin (see SurfaceScreen::keep_aspect) and centred. Missing samples cut the sections
+/// they lie on.
 /// @param[in] f       called once per sample, from several threads at once (must be pure)
 /// @pre check_surface_request(view, screen).empty()
 /// @return the visible polylines; none if f has no finite sample. Deterministic.

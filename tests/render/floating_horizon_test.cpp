@@ -22,7 +22,7 @@ SurfaceFunction function_of(const std::string& text) {
 ScreenPoint expected_screen(const SurfaceDrawing& d, double x, double y, double z, double rx_deg) {
   const double rx = rx_deg * std::numbers::pi / 180.0;  // no rotation about y in these tests
   const double picture_y = y * std::cos(rx) + z * std::sin(rx);
-  return {d.origin_x + d.scale * x, d.origin_y - d.scale * picture_y};
+  return {d.origin_x + d.scale_x * x, d.origin_y - d.scale_y * picture_y};
 }
 
 SurfaceScreen plain_screen() {
@@ -115,8 +115,8 @@ TEST(FloatingHorizon, PartlyHiddenSectionIsCutAtTheHorizons) {
   const SurfaceView view{.x_min = -2, .x_max = 2, .z_min = 0, .z_max = 2, .dx = 0.5, .dz = 1};
   const SurfaceDrawing d = draw_floating_horizon(function_of(f), view, plain_screen());
   ASSERT_EQ(d.polylines.size(), 4u);
-  const auto world_x = [&](const ScreenPoint& p) { return (p.x - d.origin_x) / d.scale; };
-  const auto world_y = [&](const ScreenPoint& p) { return (d.origin_y - p.y) / d.scale; };
+  const auto world_x = [&](const ScreenPoint& p) { return (p.x - d.origin_x) / d.scale_x; };
+  const auto world_y = [&](const ScreenPoint& p) { return (d.origin_y - p.y) / d.scale_y; };
   const HorizonPolyline& low = d.polylines[2];
   EXPECT_EQ(low.side, HorizonSide::lower);
   ASSERT_EQ(low.points.size(), 3u);  // x = -2, -1.5 and the cut at -1.3
@@ -165,6 +165,22 @@ TEST(FloatingHorizon, IsDeterministic) {
   for (std::size_t k = 0; k < a.polylines.size(); ++k) {
     EXPECT_EQ(a.polylines[k].points, b.polylines[k].points);
   }
+}
+
+TEST(FloatingHorizon, WindowStretchesOrKeepsTheAspect) {
+  // The front section of y = 4x seen straight on is the line from (-1, -4) to (1, 4).
+  const SurfaceView view{.x_min = -1, .x_max = 1, .z_min = 0, .z_max = 0, .dx = 1, .dz = 1};
+  SurfaceScreen screen = plain_screen();
+  const SurfaceDrawing stretched = draw_floating_horizon(function_of("4*x"), view, screen);
+  ASSERT_EQ(stretched.polylines.size(), 1u);
+  const auto& line = stretched.polylines[0].points;
+  EXPECT_EQ(line.front(), (ScreenPoint{10, 590}));  // corner to corner inside the margins
+  EXPECT_EQ(line.back(), (ScreenPoint{790, 10}));
+  screen.keep_aspect = true;
+  const SurfaceDrawing kept = draw_floating_horizon(function_of("4*x"), view, screen);
+  EXPECT_DOUBLE_EQ(kept.scale_x, kept.scale_y);
+  EXPECT_DOUBLE_EQ(kept.scale_y, 580.0 / 8.0);  // the height limits the scale
+  EXPECT_NEAR(kept.polylines[0].points.front().x, 400 - 72.5, 1e-9);
 }
 
 TEST(FloatingHorizon, RejectsBadRequests) {

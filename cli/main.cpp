@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   add_info_command(app, commands);
   add_fmt_command(app, commands);
   add_surface_command(app, commands);
+  add_draw_command(app, commands);
 
   try {
     app.parse(argc, argv);

@@ -1,58 +1,21 @@
 // `roomcad surface` end to end: exit statuses, messages and the files it writes.
-#include <fmt/format.h>
-#include <gtest/gtest.h>
-
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include <gtest/gtest.h>
+
+#include "cli/cli_test_support.h"
+
+namespace roomcad::cli_test {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// @return the path in single quotes, for the shell.
-std::string shell_quoted(const fs::path& path) { return fmt::format("'{}'", path.string()); }
-
-struct CommandRun {
-  int status = -1;
-  std::string output;  ///< stdout and stderr together
-};
-
-/// Runs `roomcad ARGS` through the shell. @return its exit status and output.
-CommandRun run_roomcad(const std::string& args) {
-  const char* env = std::getenv("ROOMCAD_EXE");
-  const std::string exe = env != nullptr ? env : ROOMCAD_EXE;
-  CommandRun run;
-  FILE* pipe = popen(fmt::format("{} {} 2>&1", shell_quoted(exe), args).c_str(), "r");
-  if (pipe == nullptr) return run;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) run.output += buffer;
-  const int raw = pclose(pipe);
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return run;
-}
-
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
 class SurfaceCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("roomcad_surface_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  ScratchDir scratch_{std::string("surface_") +
+                      ::testing::UnitTest::GetInstance()->current_test_info()->name()};
+  const fs::path& dir_ = scratch_.path();
 };
 
 TEST_F(SurfaceCommand, WritesAnSvgOfTheSaddle) {
@@ -132,3 +95,4 @@ TEST_F(SurfaceCommand, UnwritableOutputExitsTwo) {
 }
 
 }  // namespace
+}  // namespace roomcad::cli_test

@@ -47,13 +47,16 @@ Box plan_extent(const Plan& plan, const Joins& joins) {
   return box;
 }
 
-void add_wall_dimensions(const Plan& plan, const PaperMap& map, FloorPlanDrawing& out) {
+/// Dimensions each wall on its side away from the plan's centre, so that the outer walls are
+/// dimensioned outside whichever way they were drawn.
+void add_wall_dimensions(const Plan& plan, Point2 centre, const PaperMap& map,
+                         FloorPlanDrawing& out) {
   for (const Wall& w : plan.walls) {
     const Point2 along = w.to - w.from;
     if (!(detail::length(along) > 0.0)) continue;
-    // On the wall's right side: the outside of walls drawn counter-clockwise.
-    const Point2 right = -1.0 * detail::left_normal(along);
-    detail::add_dimension(w.from, w.to, right, 0.5 * w.thickness * map.mm_per_m + kWallDimensionMm,
+    Point2 side = -1.0 * detail::left_normal(along);
+    if (detail::dot(side, 0.5 * (w.from + w.to) - centre) < 0.0) side = -1.0 * side;
+    detail::add_dimension(w.from, w.to, side, 0.5 * w.thickness * map.mm_per_m + kWallDimensionMm,
                           map, out);
   }
 }
@@ -135,7 +138,7 @@ FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& optio
   out.height = (box.y1 - box.y0) * map.mm_per_m + 2.0 * kMarginMm + kFooterMm;
   add_rooms(plan, map, out);
   detail::draw_plan_walls(plan, joins, options, map, out);
-  add_wall_dimensions(plan, map, out);
+  add_wall_dimensions(plan, {0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)}, map, out);
   if (!plan.walls.empty()) {
     detail::add_dimension({box.x0, box.y0}, {box.x1, box.y0}, {0.0, -1.0}, kOverallDimensionMm, map,
                           out);

@@ -1,0 +1,56 @@
+// Sweet Home 3D walls to plan walls: levels to bases, arcs to chains of straight walls, sloped
+// tops to flat ones, and joined end points made to coincide exactly.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/detail/sh3d_home.h"
+#include "validation/report.h"
+
+namespace roomcad::sh3d {
+
+/// Where the walls of a level start: Sweet Home 3D draws the walls of every level but the lowest
+/// down through the floor slab, from `elevation - floorThickness`, so that storeys stack with
+/// no gap.
+struct LevelBase {
+  double base = 0.0;          ///< z of the walls' bottom, metres
+  double floor_offset = 0.0;  ///< the level's elevation minus `base` (the slab they fill)
+};
+
+/// @return the base of the walls of level `level_id` ("" for a home without levels).
+/// @pre every level id used by the home names one of `home.levels`. O(levels).
+[[nodiscard]] LevelBase level_base(const Home& home, const std::string& level_id);
+
+/// A plan wall with what the importer needs to place openings on it.
+struct PlacedWall {
+  Wall wall;
+  std::string level;          ///< Sweet Home 3D level id
+  double floor_offset = 0.0;  ///< add to a door or window elevation to get its sill
+};
+
+/// @return a warning of `code` about the object `id` (io's own codes start with `import_`).
+[[nodiscard]] Diagnostic import_warning(std::string code, const std::string& id,
+                                        std::string message);
+
+struct WallOptions {
+  double chord_tolerance = 0.01;  ///< largest gap between an arc and its chords, metres
+  double snap_distance = 1e-3;    ///< joined end points closer than this are made equal, metres
+};
+
+/// Converts `walls` (a selection of `home.walls`, in file order) to plan walls, one per straight
+/// wall and one per chord of a curved wall.
+/// @param[out] warnings appended: one warning per curved or sloped wall, naming it.
+/// @return the placed walls, in file order (an arc's chords in order from its start).
+/// O(walls + chords).
+[[nodiscard]] std::vector<PlacedWall> convert_walls(const Home& home,
+                                                    std::vector<WallRecord> walls,
+                                                    const WallOptions& options, Report& warnings);
+
+/// The points where a circular arc from `a` to `b` turning by `extent` radians (positive bulges
+/// to the left of a->b) is cut into chords no farther than `tolerance` from the arc.
+/// @pre a != b, extent != 0, tolerance > 0.
+/// @return the chord end points, first exactly `a` and last exactly `b`. O(chords).
+[[nodiscard]] std::vector<Point2> split_arc(Point2 a, Point2 b, double extent, double tolerance);
+
+}  // namespace roomcad::sh3d

@@ -1,0 +1,239 @@
+// The Sweet Home 3D importer on the real homes of ../shared/realdata/sweethome3d: counts, units,
+// frame and placement are checked against the XML itself, read here with plain text matching
+// (independently of the importer's XML parser).
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/detail/sh3d_walls.h"
+#include "io/sweethome3d_import.h"
+#include "io/sh3d_test_data.h"
+
+namespace roomcad {
+namespace {
+
+using namespace sh3d_test;
+
+std::set<std::string> objects_warned(const Report& report, const std::string& code) {
+  std::set<std::string> ids;
+  for (const Diagnostic& d : report.items)
+    if (d.code == code) ids.insert(d.objects.begin(), d.objects.end());
+  return ids;
+}
+
+const Opening* find_opening(const Plan& plan, const std::string& id) {
+  for (const Opening& o : plan.openings)
+    if (o.id == id) return &o;
+  return nullptr;
+}
+
+double length_of(const Wall& w) { return std::hypot(w.to.x - w.from.x, w.to.y - w.from.y); }
+
+TEST(Sh3dImport, WallCountsMatchTheXmlWithArcsSplitIntoChords) {
+  for (const fs::path& home : all_homes()) {
+    SCOPED_TRACE(home.filename().string());
+    const std::vector<Attributes> xml_walls = elements(read_text(home), "wall");
+    const Sh3dImport imported = import_or_fail(home);
+    EXPECT_EQ(imported.source_walls, xml_walls.size());
+    std::size_t expected = 0;
+    for (const Attributes& w : xml_walls) {
+      const bool curved = w.contains("arcExtent") && std::stod(w.at("arcExtent")) != 0;
+      std::size_t chords = 0;
+      for (const Wall& p : imported.plan.walls)
+        if (p.id == w.at("id") || p.id.starts_with(w.at("id") + "-arc")) ++chords;
+      EXPECT_EQ(chords > 1, curved) << w.at("id");
+      EXPECT_GE(chords, 1u) << w.at("id");
+      expected += chords;
+    }
+    EXPECT_EQ(imported.plan.walls.size(), expected);
+  }
+}
+
+TEST(Sh3dImport, EveryItemIsAnOpeningOrASkipWarningAndPiecesAreAnnounced) {
+  for (const fs::path& home : all_homes()) {
+    SCOPED_TRACE(home.filename().string());
+    const std::vector<Attributes> items = elements(read_text(home), "doorOrWindow");
+    const Sh3dImport imported = import_or_fail(home);
+    const std::set<std::string> skipped = objects_warned(imported.warnings, "import_skipped_opening");
+    const std::set<std::string> split = objects_warned(imported.warnings, "import_split_opening");
+    std::set<std::string> ids;
+    for (const Opening& o : imported.plan.openings) ids.insert(o.id);
+    std::size_t pieces = 0;
+    for (const Attributes& item : items) {
+      const std::string& id = item.at("id");
+      EXPECT_NE(ids.contains(id), skipped.contains(id)) << id;
+      for (int k = 2; ids.contains(id + "-" + std::to_string(k)); ++k, ++pieces)
+        EXPECT_TRUE(split.contains(id)) << id;
+    }
+    EXPECT_EQ(imported.plan.openings.size() + skipped.size(), items.size() + pieces);
+  }
+}
+
+TEST(Sh3dImport, EveryOpeningLiesInsideItsWallAndOnTheItem) {
+  for (const fs::path& home : all_homes()) {
+    SCOPED_TRACE(home.filename().string());
+    std::map<std::string, Attributes> items;
+    for (Attributes& a : elements(read_text(home), "doorOrWindow")) items[a.at("id")] = a;
+    const Sh3dImport imported = import_or_fail(home);
+    for (const Opening& o : imported.plan.openings) {
+      const Wall* w = find_wall(imported.plan, o.wall);
+      ASSERT_NE(w, nullptr) << o.id;
+      EXPECT_GE(o.offset, 0.0) << o.id;
+      EXPECT_LE(o.offset + o.width, length_of(*w)) << o.id;
+      EXPECT_GE(o.sill, 0.0) << o.id;
+      EXPECT_LE(o.sill + o.height, w->height) << o.id;
+      // The item's centre, read from the XML in centimetres with y down, lies in the wall's
+      // footprint (grown by half the item's depth) and within the opening's span.
+      const Attributes& item = items.contains(o.id) ? items.at(o.id) : items.at(o.id.substr(0, o.id.rfind('-')));
+      const double x = std::stod(item.at("x")) / 100, y = -std::stod(item.at("y")) / 100;
+      const double L = length_of(*w);
+      const double ux = (w->to.x - w->from.x) / L, uy = (w->to.y - w->from.y) / L;
+      const double u = (x - w->from.x) * ux + (y - w->from.y) * uy;
+      const double v = std::abs((y - w->from.y) * ux - (x - w->from.x) * uy);
+      EXPECT_LE(v, w->thickness / 2 + std::stod(item.at("depth")) / 200 + 0.01) << o.id;
+      if (o.id == item.at("id")) {  // the host piece holds the centre
+        EXPECT_GE(u, o.offset - 1e-9) << o.id;
+        EXPECT_LE(u, o.offset + o.width + 1e-9) << o.id;
+      }
+    }
+  }
+}
+
+TEST(Sh3dImport, ConvertsCentimetresToMetresAndFlipsY) {
+  const fs::path home = kData / "eteks-example-homes" / "Studio.Home.xml";
+  const Sh3dImport imported = import_or_fail(home);
+  const std::vector<Attributes> xml_walls = elements(read_text(home), "wall");
+  ASSERT_EQ(imported.plan.walls.size(), xml_walls.size());
+  for (std::size_t i = 0; i < xml_walls.size(); ++i) {
+    const Attributes& a = xml_walls[i];
+    const Wall& w = imported.plan.walls[i];
+    EXPECT_EQ(w.id, a.at("id"));
+    EXPECT_DOUBLE_EQ(w.from.x, std::stod(a.at("xStart")) / 100);
+    EXPECT_DOUBLE_EQ(w.from.y, -std::stod(a.at("yStart")) / 100);
+    EXPECT_DOUBLE_EQ(w.to.x, std::stod(a.at("xEnd")) / 100);
+    EXPECT_DOUBLE_EQ(w.to.y, -std::stod(a.at("yEnd")) / 100);
+    EXPECT_DOUBLE_EQ(w.thickness, std::stod(a.at("thickness")) / 100);
+    EXPECT_DOUBLE_EQ(w.height, std::stod(a.at("height")) / 100);
+    EXPECT_EQ(w.base, 0.0);
+  }
+  // The site covers every wall with at least the margin.
+  const Site& s = imported.plan.site;
+  for (const Wall& w : imported.plan.walls)
+    for (const Point2 p : {w.from, w.to}) {
+      EXPECT_GE(p.x - s.origin.x, 1.0);
+      EXPECT_GE(p.y - s.origin.y, 1.0);
+      EXPECT_GE(s.origin.x + s.cells[0] * s.cell_size - p.x, 1.0);
+      EXPECT_GE(s.origin.y + s.cells[1] * s.cell_size - p.y, 1.0);
+    }
+}
+
+TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
+  const fs::path home = kData / "eteks-example-homes" / "2-BedroomHouseWithBasement.Home.xml";
+  const Sh3dImport imported = import_or_fail(home);
+  // A 132 x 134 cm window 87 cm above the floor of the first floor (elevation 112 cm, slab 12).
+  const Opening* window = find_opening(imported.plan, "doorOrWindow-fdd41f02-dfe0-4d47-8e7f-6fad3d883ce4");
+  ASSERT_NE(window, nullptr);
+  EXPECT_EQ(window->type, OpeningType::window);
+  EXPECT_NEAR(window->width, 1.32, 1e-9);
+  EXPECT_NEAR(window->height, 1.34, 1e-9);
+  EXPECT_NEAR(window->sill, 0.87 + 0.12, 1e-9);
+  const Wall* host = find_wall(imported.plan, window->wall);
+  ASSERT_NE(host, nullptr);
+  EXPECT_NEAR(host->base, 1.12 - 0.12 + 1.5, 1e-9);  // the basement (-1.5 m) is raised to 0
+  // A door of the basement, the lowest level: its sill is the wall's base.
+  const Opening* door = find_opening(imported.plan, "doorOrWindow-a4cf284d-8a9a-4412-8654-36f2ddb6959f");
+  ASSERT_NE(door, nullptr);
+  EXPECT_EQ(door->type, OpeningType::door);
+  EXPECT_EQ(door->sill, 0.0);
+  EXPECT_NEAR(door->width, 0.915, 1e-9);
+  EXPECT_EQ(find_wall(imported.plan, door->wall)->base, 0.0);
+  EXPECT_DOUBLE_EQ(imported.z_shift, 1.5);
+}
+
+TEST(Sh3dImport, PrefersTheWallThatHoldsTheWholeOpening) {
+  // In 2-BedroomApartment a thin slanted wall (wall2) lies inside the outer wall27 under a
+  // window; its centre line is nearer the window, but only wall27 holds the whole window.
+  const Sh3dImport imported =
+      import_or_fail(kData / "eteks-example-homes" / "2-BedroomApartment.Home.xml");
+  const Opening* window = find_opening(imported.plan, "doorOrWindow-04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf");
+  ASSERT_NE(window, nullptr);
+  EXPECT_EQ(window->wall, "wall27");
+  EXPECT_NEAR(window->width, 1.56, 1e-6);
+  const Opening* piece = find_opening(imported.plan, "doorOrWindow-04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf-2");
+  ASSERT_NE(piece, nullptr);
+  EXPECT_EQ(piece->wall, "wall2");
+}
+
+TEST(Sh3dImport, CurvedWallBecomesChordsWithinTolerance) {
+  const Point2 a{6.4976215, -9.1945013}, b{0.041, -10.419019};
+  for (const double tolerance : {0.05, 0.01, 0.001}) {
+    const std::vector<Point2> p = sh3d::split_arc(a, b, 0.6981317, tolerance);
+    ASSERT_GE(p.size(), 3u);
+    EXPECT_EQ(p.front(), a);
+    EXPECT_EQ(p.back(), b);
+    // All points on one circle; every chord's sagitta within the tolerance; bulge to the left.
+    const double chord = std::hypot(b.x - a.x, b.y - a.y);
+    const double radius = chord / (2 * std::sin(0.6981317 / 2));
+    for (std::size_t k = 1; k + 1 < p.size(); ++k) {
+      const double side = (b.x - a.x) * (p[k].y - a.y) - (b.y - a.y) * (p[k].x - a.x);
+      EXPECT_GT(side, 0.0);
+      const double step = std::hypot(p[k + 1].x - p[k].x, p[k + 1].y - p[k].y);
+      EXPECT_LE(radius - std::sqrt(radius * radius - step * step / 4), tolerance * (1 + 1e-9));
+    }
+  }
+  // The two windows of 1-BedroomApartment's curved wall land on its chords.
+  const Sh3dImport imported =
+      import_or_fail(kData / "eteks-example-homes" / "1-BedroomApartment.Home.xml");
+  for (const char* id : {"doorOrWindow-f9f28cd6-0838-41ac-8559-7fbb187976ce",
+                         "doorOrWindow-224b7c32-ec5d-48e0-9938-b799e7cd7eeb"}) {
+    const Opening* o = find_opening(imported.plan, id);
+    ASSERT_NE(o, nullptr) << id;
+    EXPECT_TRUE(o->wall.starts_with("wall7-arc")) << o->wall;
+  }
+}
+
+TEST(Sh3dImport, JoinedWallsShareTheirEndPointsExactly) {
+  for (const fs::path& home : all_homes()) {
+    SCOPED_TRACE(home.filename().string());
+    const Sh3dImport imported = import_or_fail(home);
+    std::map<std::string, const Wall*> by_id;
+    for (const Wall& w : imported.plan.walls) by_id[w.id] = &w;
+    for (const Attributes& a : elements(read_text(home), "wall")) {
+      if (!a.contains("wallAtStart") || !by_id.contains(a.at("id")) ||
+          !by_id.contains(a.at("wallAtStart")))
+        continue;
+      const Wall& w = *by_id.at(a.at("id"));
+      const Wall& other = *by_id.at(a.at("wallAtStart"));
+      const double gap = std::min(std::hypot(w.from.x - other.from.x, w.from.y - other.from.y),
+                                  std::hypot(w.from.x - other.to.x, w.from.y - other.to.y));
+      if (gap < 1e-3) {
+        EXPECT_TRUE(w.from == other.from || w.from == other.to) << w.id;
+      }
+    }
+  }
+}
+
+TEST(Sh3dImport, OneLevelByName) {
+  const fs::path home = kData / "eteks-example-homes" / "2-BedroomHouseWithBasement.Home.xml";
+  const std::string xml = read_text(home);
+  std::size_t basement_walls = 0;
+  for (const Attributes& a : elements(xml, "wall")) basement_walls += a.at("level") == "level0";
+  const Sh3dImport imported = import_or_fail(home, {.level = "Basement"});
+  EXPECT_EQ(imported.plan.walls.size(), basement_walls);
+  for (const Wall& w : imported.plan.walls) EXPECT_EQ(w.base, 0.0);
+  const Result<Sh3dImport> unknown = import_sweethome3d_file(home, {.level = "Loft"});
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.error().find("'Loft'"), std::string::npos) << unknown.error();
+  EXPECT_NE(unknown.error().find("'Basement'"), std::string::npos) << unknown.error();
+}
+
+}  // namespace
+}  // namespace roomcad

@@ -1,5 +1,7 @@
 #include "io/detail/sh3d_walls.h"
 
+#include "io/detail/sh3d_junctions.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -13,24 +15,6 @@ namespace {
 constexpr int kMaxChords = 256;  // bounds the output for a tiny tolerance on a huge arc
 
 double distance(Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); }
-
-/// Sweet Home 3D stores which walls are joined; when their end points differ by float rounding
-/// the later wall takes the earlier one's point, so that the plan's exact join test sees them
-/// meet. Walls are visited in file order, so a chain settles on its first wall's points.
-void snap_joined_ends(std::vector<WallRecord>& walls, double snap_distance) {
-  std::map<std::string, std::size_t, std::less<>> index;
-  for (std::size_t i = 0; i < walls.size(); ++i) index.emplace(walls[i].id, i);
-  auto snap = [&](std::size_t i, Point2& p, const std::string& other) {
-    const auto it = index.find(other);
-    if (it == index.end() || it->second >= i) return;
-    for (const Point2 q : {walls[it->second].start, walls[it->second].end})
-      if (p != q && distance(p, q) <= snap_distance) p = q;
-  };
-  for (std::size_t i = 0; i < walls.size(); ++i) {
-    snap(i, walls[i].start, walls[i].wall_at_start);
-    snap(i, walls[i].end, walls[i].wall_at_end);
-  }
-}
 
 /// The wall's height: its own, else the home's default, else its level's, else 2.5 m (Sweet
 /// Home 3D's default). A sloped top becomes flat at its higher end, with a warning.
@@ -109,7 +93,8 @@ std::vector<Point2> split_arc(Point2 a, Point2 b, double extent, double toleranc
 
 std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> walls,
                                       const WallOptions& options, Report& warnings) {
-  snap_joined_ends(walls, options.snap_distance);
+  snap_close_ends(walls, options.snap_distance);
+  join_t_ends(walls, options.snap_distance, warnings);
   std::vector<PlacedWall> placed;
   for (const WallRecord& w : walls) {
     const LevelBase base = level_base(home, w.level);

@@ -35,7 +35,7 @@ struct PlacedWall {
 
 struct WallOptions {
   double chord_tolerance = 0.01;  ///< largest gap between an arc and its chords, metres
-  double snap_distance = 1e-3;    ///< joined end points closer than this are made equal, metres
+  double snap_distance = 1e-3;    ///< end points closer than this are made equal, metres
 };
 
 /// Converts `walls` (a selection of `home.walls`, in file order) to plan walls, one per straight

@@ -133,6 +133,27 @@ void warn_about_item(const ItemRecord& item, const std::string& id,
   }
 }
 
+/// `x` rounded to a multiple of 2^-20 m (~1 micrometre): sums and differences of such values
+/// below 2^32 m are exact in double precision.
+double to_dyadic_grid(double x) { return std::round(std::ldexp(x, 20)) / std::ldexp(1.0, 20); }
+
+/// Openings that Sweet Home 3D places side by side (one's right edge at the next one's left
+/// edge) touch in decimal but can overlap by 1e-15 m once projected on their wall in floating
+/// point. Their edges along the wall are put on a dyadic grid, where `offset + width` is exact,
+/// so that they touch exactly, as drawn. O(openings^2) per wall.
+void make_touching_exact(std::vector<Opening>& openings) {
+  constexpr double kTouch = 1e-9;  // metres: far below drawing precision, far above rounding
+  for (Opening& a : openings)
+    for (Opening& b : openings) {
+      if (&a == &b || a.wall != b.wall || std::abs(a.offset + a.width - b.offset) > kTouch) continue;
+      for (Opening* o : {&a, &b}) {
+        const double lo = to_dyadic_grid(o->offset);
+        o->width = to_dyadic_grid(o->offset + o->width) - lo;
+        o->offset = lo;
+      }
+    }
+}
+
 }  // namespace
 
 std::optional<std::size_t> find_host_wall(const ItemRecord& item,
@@ -173,6 +194,7 @@ std::vector<Opening> place_openings(const Home& home, const std::vector<ItemReco
     warn_about_item(item, id, pieces, warnings);
     std::ranges::move(pieces, std::back_inserter(openings));
   }
+  make_touching_exact(openings);
   return openings;
 }
 

@@ -108,6 +108,28 @@ TEST(Sh3dImport, EveryOpeningLiesInsideItsWallAndOnTheItem) {
   }
 }
 
+TEST(Sh3dImport, OpeningsDrawnSideBySideTouchExactly) {
+  // Two 55 cm windows of 3-BedroomHouseWithMezzanine 55 cm apart: they touch, in decimal.
+  const Sh3dImport imported =
+      import_or_fail(kData / "eteks-example-homes" / "3-BedroomHouseWithMezzanine.Home.xml");
+  const Opening* a = find_opening(imported.plan, "doorOrWindow-50a0446d-d92e-4921-a291-72465c1a66d5");
+  const Opening* b = find_opening(imported.plan, "doorOrWindow-232ada88-729b-4aef-ac5d-34e8649c34da");
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->wall, b->wall);
+  EXPECT_EQ(a->offset + a->width, b->offset);
+  // No home has openings overlapping by a rounding error: overlaps are none or drawn ones.
+  for (const fs::path& home : all_homes()) {
+    const Plan plan = import_or_fail(home).plan;
+    for (const Opening& p : plan.openings)
+      for (const Opening& q : plan.openings) {
+        if (&p == &q || p.wall != q.wall) continue;
+        const double overlap = std::min(p.offset + p.width, q.offset + q.width) -
+                               std::max(p.offset, q.offset);
+        EXPECT_TRUE(overlap <= 0 || overlap > 1e-6) << p.id << " " << q.id << " " << overlap;
+      }
+  }
+}
+
 TEST(Sh3dImport, ConvertsCentimetresToMetresAndFlipsY) {
   const fs::path home = kData / "eteks-example-homes" / "Studio.Home.xml";
   const Sh3dImport imported = import_or_fail(home);

@@ -109,13 +109,6 @@ Result<std::string> select_level(const sh3d::Home& home, const Sh3dImportOptions
       names.empty() ? "none, it has a single unnamed level" : names));
 }
 
-void shift_up(Sh3dImport& out) {
-  double lowest = std::numeric_limits<double>::max();
-  for (const Wall& w : out.plan.walls) lowest = std::min(lowest, w.base);
-  out.z_shift = 0.0 - lowest;  // not -lowest: no -0 in the output
-  for (Wall& w : out.plan.walls) w.base += out.z_shift;
-}
-
 }  // namespace
 
 Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_view file,
@@ -134,11 +127,16 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   Sh3dImport out;
   out.source_walls = home.walls.size();
   out.source_items = home.items.size();
-  const std::vector<sh3d::PlacedWall> walls = sh3d::convert_walls(
-      home, home.walls, {.chord_tolerance = options.chord_tolerance}, out.warnings);
+  // The lowest wall stands at z = 0 (the format has no negative base).
+  const double z_shift_cm = 0.0 - sh3d::lowest_base_cm(home, home.walls);  // no -0
+  out.z_shift = z_shift_cm / 100;
+  sh3d::WallOptions wall_options;
+  wall_options.chord_tolerance = options.chord_tolerance;
+  wall_options.z_shift_cm = z_shift_cm;
+  const std::vector<sh3d::PlacedWall> walls =
+      sh3d::convert_walls(home, home.walls, wall_options, out.warnings);
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
-  out.plan.openings = sh3d::place_openings(home, home.items, walls, out.warnings);
-  shift_up(out);
+  out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
   const Box box = bounds_of(out.plan.walls);
   out.plan.site = make_site(box, options);
   out.plan.lights = {default_light()};

@@ -75,9 +75,9 @@ std::optional<Color> parse_argb(std::string_view text) {
 Level read_level(AttributeReader& r) {
   return Level{.id = r.text("id", true),
                .name = r.text("name", true),
-               .elevation = r.length("elevation"),
-               .floor_thickness = r.length("floorThickness", 0.0),
-               .height = r.length("height", 0.0)};
+               .elevation_cm = r.number("elevation"),
+               .floor_thickness_cm = r.number("floorThickness", 0.0),
+               .height_cm = r.number("height", 0.0)};
 }
 
 WallRecord read_wall(AttributeReader& r) {
@@ -89,8 +89,8 @@ WallRecord read_wall(AttributeReader& r) {
   w.start = r.point("xStart", "yStart");
   w.end = r.point("xEnd", "yEnd");
   w.thickness = r.length("thickness");
-  if (auto h = r.optional_number("height")) w.height = *h * kCm;
-  if (auto h = r.optional_number("heightAtEnd")) w.height_at_end = *h * kCm;
+  w.height_cm = r.optional_number("height");
+  w.height_at_end_cm = r.optional_number("heightAtEnd");
   // Positive extents bulge to the right of start->end on screen (y down), which is the left
   // once y points up: the sign carries over unchanged.
   w.arc_extent = r.optional_number("arcExtent");
@@ -180,7 +180,7 @@ Result<Home> parse_home_xml(std::string_view xml, std::string_view file) {
   Home home;
   std::string error;
   AttributeReader home_reader(root, file, &error);
-  if (auto h = home_reader.optional_number("wallHeight")) home.wall_height = *h * kCm;
+  home.wall_height_cm = home_reader.optional_number("wallHeight");
   for (pugi::xml_node child : root.children()) {
     const std::string_view name = child.name();
     AttributeReader r(child, file, &error);

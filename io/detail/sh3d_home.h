@@ -3,6 +3,7 @@
 // Sweet Home 3D writes centimetres in screen coordinates (x right, y down, angles clockwise in
 // radians). Parsing converts once: lengths to metres, y negated, angles made counter-clockwise,
 // so that everything downstream works in the plan format's frame (x east, y north, z up).
+// Heights of levels and walls stay in centimetres: sh3d::z_of places them on the z axis.
 #pragma once
 
 #include <optional>
@@ -15,13 +16,13 @@
 
 namespace roomcad::sh3d {
 
-/// A storey: walls and items on it stand on `elevation` (metres).
+/// A storey: walls and items on it stand on `elevation_cm`.
 struct Level {
   std::string id;
   std::string name;
-  double elevation = 0.0;
-  double floor_thickness = 0.0;
-  double height = 0.0;
+  double elevation_cm = 0.0;
+  double floor_thickness_cm = 0.0;
+  double height_cm = 0.0;
 };
 
 /// A `<wall>`: a straight box, or a circular arc when `arc_extent` is set.
@@ -33,8 +34,8 @@ struct WallRecord {
   Point2 start;
   Point2 end;
   double thickness = 0.0;
-  std::optional<double> height;         ///< absent: the home's default wall height
-  std::optional<double> height_at_end;  ///< a sloped top when it differs from `height`
+  std::optional<double> height_cm;         ///< absent: the home's default wall height
+  std::optional<double> height_at_end_cm;  ///< a sloped top when it differs from `height_cm`
   std::optional<double> arc_extent;     ///< radians, positive bulges to the left of start->end
   std::optional<Color> color;           ///< from leftSideColor (else rightSideColor)
 };
@@ -71,7 +72,7 @@ struct CameraRecord {
 };
 
 struct Home {
-  std::optional<double> wall_height;  ///< the home's default wall height, metres
+  std::optional<double> wall_height_cm;  ///< the home's default wall height
   std::vector<Level> levels;
   std::vector<WallRecord> walls;
   std::vector<ItemRecord> items;

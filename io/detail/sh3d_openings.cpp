@@ -53,10 +53,11 @@ Interval span_along(const ItemRecord& item, const Fit& fit) {
 }
 
 /// The item's cut-out heights (absolute z); its wall part ends `wall_top` below its top.
-Interval span_up(const Home& home, const ItemRecord& item) {
+/// Its floor is placed like a wall base, so a door on the lowest level starts exactly there.
+Interval span_up(const Home& home, const ItemRecord& item, double z_shift_cm) {
   const LevelBase level = level_base(home, item.level);
-  const double top = level.base + level.floor_offset + item.elevation +
-                     item.height * (1 - item.wall_top);
+  const double floor = z_of(level.base_cm + level.floor_offset_cm + z_shift_cm);
+  const double top = floor + item.elevation + item.height * (1 - item.wall_top);
   return {top - item.wall_height * item.height, top};
 }
 
@@ -89,8 +90,9 @@ std::optional<Opening> cut_piece(const ItemRecord& item, const Fit& fit, Interva
 /// The pieces of one item: on its host first, then on every other wall it passes through.
 std::vector<Opening> cut_item(const Home& home, const ItemRecord& item, const std::string& id,
                               std::size_t host, const std::vector<PlacedWall>& walls,
-                              const HostOptions& options) {
-  const Interval z = span_up(home, item);
+                              double z_shift_cm) {
+  const HostOptions options;
+  const Interval z = span_up(home, item, z_shift_cm);
   std::vector<Opening> pieces;
   auto cut = [&](std::size_t i) {
     const std::optional<Fit> fit = fit_item(item, walls[i].wall, options);
@@ -133,10 +135,6 @@ void warn_about_item(const ItemRecord& item, const std::string& id,
   }
 }
 
-/// `x` rounded to a multiple of 2^-20 m (~1 micrometre): sums and differences of such values
-/// below 2^32 m are exact in double precision.
-double to_dyadic_grid(double x) { return std::round(std::ldexp(x, 20)) / std::ldexp(1.0, 20); }
-
 /// Openings that Sweet Home 3D places side by side (one's right edge at the next one's left
 /// edge) touch in decimal but can overlap by 1e-15 m once projected on their wall in floating
 /// point. Their edges along the wall are put on a dyadic grid, where `offset + width` is exact,
@@ -147,8 +145,8 @@ void make_touching_exact(std::vector<Opening>& openings) {
     for (Opening& b : openings) {
       if (&a == &b || a.wall != b.wall || std::abs(a.offset + a.width - b.offset) > kTouch) continue;
       for (Opening* o : {&a, &b}) {
-        const double lo = to_dyadic_grid(o->offset);
-        o->width = to_dyadic_grid(o->offset + o->width) - lo;
+        const double lo = on_dyadic_grid(o->offset);
+        o->width = on_dyadic_grid(o->offset + o->width) - lo;
         o->offset = lo;
       }
     }
@@ -182,15 +180,15 @@ OpeningType classify_item(const ItemRecord& item) {
 }
 
 std::vector<Opening> place_openings(const Home& home, const std::vector<ItemRecord>& items,
-                                    const std::vector<PlacedWall>& walls, Report& warnings) {
-  const HostOptions options;
+                                    const std::vector<PlacedWall>& walls, double z_shift_cm,
+                                    Report& warnings) {
   std::vector<Opening> openings;
   for (std::size_t k = 0; k < items.size(); ++k) {
     const ItemRecord& item = items[k];
     const std::string id = item.id.empty() ? fmt::format("opening{}", k + 1) : item.id;
-    const std::optional<std::size_t> host = find_host_wall(item, walls, options);
+    const std::optional<std::size_t> host = find_host_wall(item, walls);
     std::vector<Opening> pieces;
-    if (host) pieces = cut_item(home, item, id, *host, walls, options);
+    if (host) pieces = cut_item(home, item, id, *host, walls, z_shift_cm);
     warn_about_item(item, id, pieces, warnings);
     std::ranges::move(pieces, std::back_inserter(openings));
   }

@@ -39,11 +39,11 @@ struct HostOptions {
 /// Warnings (appended to `warnings`, each naming the item): `import_skipped_opening` for an
 /// item with no host (it is left out), `import_split_opening` for an item cut in pieces,
 /// `import_cut_out_shape` for a non-rectangular cut-out (imported as its bounding rectangle,
-/// the whole wall part of the item).
+/// the whole wall part of the item). `z_shift_cm` is the shift given to convert_walls.
 /// @return the openings, in file order of their items. O(items x walls).
 [[nodiscard]] std::vector<Opening> place_openings(const Home& home,
                                                   const std::vector<ItemRecord>& items,
                                                   const std::vector<PlacedWall>& walls,
-                                                  Report& warnings);
+                                                  double z_shift_cm, Report& warnings);
 
 }  // namespace roomcad::sh3d

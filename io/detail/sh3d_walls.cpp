@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 
@@ -16,36 +17,38 @@ constexpr int kMaxChords = 256;  // bounds the output for a tiny tolerance on a 
 
 double distance(Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
-/// The wall's height: its own, else the home's default, else its level's, else 2.5 m (Sweet
-/// Home 3D's default). A sloped top becomes flat at its higher end, with a warning.
-double flat_height(const Home& home, const WallRecord& w, Report& warnings) {
-  double height = 2.5;
-  if (w.height) height = *w.height;
-  else if (home.wall_height) height = *home.wall_height;
+/// The wall's height (centimetres): its own, else the home's default, else its level's, else
+/// 250 (Sweet Home 3D's default). A sloped top becomes flat at its higher end, with a warning.
+double flat_height_cm(const Home& home, const WallRecord& w, Report& warnings) {
+  double height = 250.0;
+  if (w.height_cm) height = *w.height_cm;
+  else if (home.wall_height_cm) height = *home.wall_height_cm;
   else if (const auto l = std::ranges::find(home.levels, w.level, &Level::id);
-           l != home.levels.end() && l->height > 0)
-    height = l->height;
-  if (w.height_at_end && *w.height_at_end != height) {
-    const double top = std::max(height, *w.height_at_end);
+           l != home.levels.end() && l->height_cm > 0)
+    height = l->height_cm;
+  if (w.height_at_end_cm && *w.height_at_end_cm != height) {
+    const double top = std::max(height, *w.height_at_end_cm);
     warnings.add(import_warning(
         "import_sloped_wall", w.id,
-        fmt::format("wall '{}' has a sloped top from {:.3f} m to {:.3f} m; the plan format has "
-                    "one height per wall, so it is imported flat at {:.3f} m",
-                    w.id, height, *w.height_at_end, top)));
+        fmt::format("wall '{}' has a sloped top from {} m to {} m; the plan format has one "
+                    "height per wall, so it is imported flat at {} m",
+                    w.id, height / 100, *w.height_at_end_cm / 100, top / 100)));
     height = top;
   }
   return height;
 }
 
-Wall make_wall(const WallRecord& w, std::string id, Point2 from, Point2 to, double height,
-               const LevelBase& base) {
+/// A plan wall from `from` to `to` with the thickness and colour of `w`, spanning z in
+/// [base_cm, top_cm].
+Wall make_wall(const WallRecord& w, std::string id, Point2 from, Point2 to, double base_cm,
+               double top_cm) {
   Wall wall;
   wall.id = std::move(id);
   wall.from = from;
   wall.to = to;
   wall.thickness = w.thickness;
-  wall.height = height + base.floor_offset;
-  wall.base = base.base;
+  wall.base = z_of(base_cm);
+  wall.height = z_of(top_cm) - wall.base;  // exact: both on the same dyadic grid
   if (w.color) wall.color = *w.color;
   return wall;
 }
@@ -61,12 +64,24 @@ Diagnostic import_warning(std::string code, const std::string& id, std::string m
   return d;
 }
 
+double on_dyadic_grid(double metres) {
+  return std::round(std::ldexp(metres, 20)) / std::ldexp(1.0, 20);
+}
+
+double z_of(double cm) { return on_dyadic_grid(cm / 100); }
+
 LevelBase level_base(const Home& home, const std::string& level_id) {
   const auto level = std::ranges::find(home.levels, level_id, &Level::id);
   if (level == home.levels.end()) return {};
-  const double lowest = std::ranges::min(home.levels, {}, &Level::elevation).elevation;
-  const double offset = level->elevation == lowest ? 0.0 : level->floor_thickness;
-  return {.base = level->elevation - offset, .floor_offset = offset};
+  const double lowest = std::ranges::min(home.levels, {}, &Level::elevation_cm).elevation_cm;
+  const double offset = level->elevation_cm == lowest ? 0.0 : level->floor_thickness_cm;
+  return {.base_cm = level->elevation_cm - offset, .floor_offset_cm = offset};
+}
+
+double lowest_base_cm(const Home& home, const std::vector<WallRecord>& walls) {
+  double lowest = std::numeric_limits<double>::max();
+  for (const WallRecord& w : walls) lowest = std::min(lowest, level_base(home, w.level).base_cm);
+  return walls.empty() ? 0.0 : lowest;
 }
 
 std::vector<Point2> split_arc(Point2 a, Point2 b, double extent, double tolerance) {
@@ -97,19 +112,19 @@ std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> 
   join_t_ends(walls, options.snap_distance, warnings);
   std::vector<PlacedWall> placed;
   for (const WallRecord& w : walls) {
-    const LevelBase base = level_base(home, w.level);
-    const double height = flat_height(home, w, warnings);
+    const LevelBase level = level_base(home, w.level);
+    const double base_cm = level.base_cm + options.z_shift_cm;
+    const double top_cm = base_cm + level.floor_offset_cm + flat_height_cm(home, w, warnings);
     if (!w.arc_extent || *w.arc_extent == 0 || w.start == w.end) {
-      placed.push_back({make_wall(w, w.id, w.start, w.end, height, base), w.level,
-                        base.floor_offset});
+      placed.push_back({make_wall(w, w.id, w.start, w.end, base_cm, top_cm), w.level});
       continue;
     }
     const std::vector<Point2> points =
         split_arc(w.start, w.end, *w.arc_extent, options.chord_tolerance);
     for (std::size_t k = 1; k < points.size(); ++k)
       placed.push_back({make_wall(w, fmt::format("{}-arc{}", w.id, k), points[k - 1], points[k],
-                                  height, base),
-                        w.level, base.floor_offset});
+                                  base_cm, top_cm),
+                        w.level});
     warnings.add(import_warning(
         "import_curved_wall", w.id,
         fmt::format("curved wall '{}' ({:.1f} degrees of arc) is imported as {} straight walls "

@@ -10,23 +10,34 @@
 
 namespace roomcad::sh3d {
 
+/// `metres` rounded to a multiple of 2^-20 m (under a micrometre): sums and differences of
+/// such values below 2^32 m are exact in double precision.
+[[nodiscard]] double on_dyadic_grid(double metres);
+
+/// The z (metres) of a height given in centimetres, on the dyadic grid. Every wall base and top
+/// comes from here, so `base + height` is exact in double
+/// precision and a storey's walls stand exactly on the tops of the walls below.
+[[nodiscard]] double z_of(double cm);
+
 /// Where the walls of a level start: Sweet Home 3D draws the walls of every level but the lowest
 /// down through the floor slab, from `elevation - floorThickness`, so that storeys stack with
 /// no gap.
 struct LevelBase {
-  double base = 0.0;          ///< z of the walls' bottom, metres
-  double floor_offset = 0.0;  ///< the level's elevation minus `base` (the slab they fill)
+  double base_cm = 0.0;          ///< the walls' bottom
+  double floor_offset_cm = 0.0;  ///< the level's elevation minus `base_cm` (the slab they fill)
 };
 
 /// @return the base of the walls of level `level_id` ("" for a home without levels).
 /// @pre every level id used by the home names one of `home.levels`. O(levels).
 [[nodiscard]] LevelBase level_base(const Home& home, const std::string& level_id);
 
-/// A plan wall with what the importer needs to place openings on it.
+/// @return the lowest base among `walls`, centimetres (0 for none). O(walls x levels).
+[[nodiscard]] double lowest_base_cm(const Home& home, const std::vector<WallRecord>& walls);
+
+/// A plan wall and the Sweet Home 3D level it stands on.
 struct PlacedWall {
   Wall wall;
-  std::string level;          ///< Sweet Home 3D level id
-  double floor_offset = 0.0;  ///< add to a door or window elevation to get its sill
+  std::string level;  ///< Sweet Home 3D level id
 };
 
 /// @return a warning of `code` about the object `id` (io's own codes start with `import_`).
@@ -36,6 +47,7 @@ struct PlacedWall {
 struct WallOptions {
   double chord_tolerance = 0.01;  ///< largest gap between an arc and its chords, metres
   double snap_distance = 1e-3;    ///< end points closer than this are made equal, metres
+  double z_shift_cm = 0.0;        ///< added to every elevation (raises a basement to z >= 0)
 };
 
 /// Converts `walls` (a selection of `home.walls`, in file order) to plan walls, one per straight

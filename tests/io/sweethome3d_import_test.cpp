@@ -153,7 +153,7 @@ TEST(Sh3dImport, ConvertsCentimetresToMetresAndFlipsY) {
       EXPECT_LE(off_line, 1e-3) << w.id;  // up to the 1 mm snap of close end points
     }
     EXPECT_DOUBLE_EQ(w.thickness, std::stod(a.at("thickness")) / 100);
-    EXPECT_DOUBLE_EQ(w.height, std::stod(a.at("height")) / 100);
+    EXPECT_NEAR(w.height, std::stod(a.at("height")) / 100, 1e-6);  // z on a 2^-20 m grid
     EXPECT_EQ(w.base, 0.0);
   }
   EXPECT_GE(exact, xml_walls.size());  // at least half of the end points are untouched
@@ -177,7 +177,7 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   EXPECT_EQ(window->type, OpeningType::window);
   EXPECT_NEAR(window->width, 1.32, 1e-9);
   EXPECT_NEAR(window->height, 1.34, 1e-9);
-  EXPECT_NEAR(window->sill, 0.87 + 0.12, 1e-9);
+  EXPECT_NEAR(window->sill, 0.87 + 0.12, 1e-6);
   const Wall* host = find_wall(imported.plan, window->wall);
   ASSERT_NE(host, nullptr);
   EXPECT_NEAR(host->base, 1.12 - 0.12 + 1.5, 1e-9);  // the basement (-1.5 m) is raised to 0
@@ -189,6 +189,24 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   EXPECT_NEAR(door->width, 0.915, 1e-9);
   EXPECT_EQ(find_wall(imported.plan, door->wall)->base, 0.0);
   EXPECT_DOUBLE_EQ(imported.z_shift, 1.5);
+}
+
+TEST(Sh3dImport, StoreysStandExactlyOnTheWallsBelow) {
+  for (const char* name : {"2-BedroomHouseWithBasement", "3-BedroomHouseWithAttic",
+                           "3-BedroomHouseWithMezzanine", "4-BedroomHouse"}) {
+    SCOPED_TRACE(name);
+    const Plan plan =
+        import_or_fail(kData / "eteks-example-homes" / (std::string(name) + ".Home.xml")).plan;
+    std::set<double> tops;
+    for (const Wall& w : plan.walls) tops.insert(w.base + w.height);  // exact on the grid
+    std::size_t upper = 0;
+    for (const Wall& w : plan.walls) {
+      if (w.base == 0.0) continue;
+      ++upper;
+      EXPECT_TRUE(tops.contains(w.base)) << w.id << " base " << w.base;
+    }
+    EXPECT_GT(upper, 0u);
+  }
 }
 
 TEST(Sh3dImport, PrefersTheWallThatHoldsTheWholeOpening) {

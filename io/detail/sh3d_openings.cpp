@@ -12,8 +12,8 @@ namespace roomcad::sh3d {
 namespace {
 
 constexpr std::string_view kRectangle = "M0,0 v1 h1 v-1 z";  // Sweet Home 3D's plain cut-out
-// A piece clipped at a wall's end or top stops this far inside it, so that it stays inside the
-// wall whatever the rounding of the wall's length (~1e-15 m); far below any drawn detail.
+// A piece clipped at a wall's end stops this far inside it, so that it stays inside the wall
+// whatever the rounding of the wall's length; far below any drawn detail.
 constexpr double kInset = 1e-6;
 
 struct Interval {
@@ -67,14 +67,17 @@ bool contains_door(std::string text) {
 }
 
 /// The part of the cut-out box that lies in wall `w`, or nullopt if it is thinner than
-/// `min_piece` either way.
+/// `min_piece` either way. Its edges are put on the dyadic grid, where `offset + width` and
+/// `sill + height` are exact: openings drawn side by side (touching in decimal, overlapping by
+/// 1e-15 m once projected in floating point) touch exactly, and the comparisons with the wall's
+/// length and height that validation makes exactly hold.
 std::optional<Opening> cut_piece(const ItemRecord& item, const Fit& fit, Interval z,
                                  const Wall& w, double min_piece) {
   const Interval u = span_along(item, fit);
-  const double lo = u.lo < 0 ? kInset : u.lo;
-  const double hi = u.hi > fit.length ? fit.length - kInset : u.hi;
-  const double v0 = z.lo < w.base ? 0.0 : z.lo - w.base;
-  const double v1 = z.hi > w.base + w.height ? w.height - kInset : z.hi - w.base;
+  const double lo = on_dyadic_grid(u.lo < 0 ? kInset : u.lo);
+  const double hi = on_dyadic_grid(std::min(u.hi, fit.length - kInset));
+  const double v0 = on_dyadic_grid(std::max(z.lo - w.base, 0.0));
+  const double v1 = std::min(on_dyadic_grid(z.hi - w.base), w.height);  // on the grid too
   if (hi - lo < min_piece || v1 - v0 < min_piece) return std::nullopt;
   Opening o;
   o.type = classify_item(item);
@@ -135,23 +138,6 @@ void warn_about_item(const ItemRecord& item, const std::string& id,
   }
 }
 
-/// Openings that Sweet Home 3D places side by side (one's right edge at the next one's left
-/// edge) touch in decimal but can overlap by 1e-15 m once projected on their wall in floating
-/// point. Their edges along the wall are put on a dyadic grid, where `offset + width` is exact,
-/// so that they touch exactly, as drawn. O(openings^2) per wall.
-void make_touching_exact(std::vector<Opening>& openings) {
-  constexpr double kTouch = 1e-9;  // metres: far below drawing precision, far above rounding
-  for (Opening& a : openings)
-    for (Opening& b : openings) {
-      if (&a == &b || a.wall != b.wall || std::abs(a.offset + a.width - b.offset) > kTouch) continue;
-      for (Opening* o : {&a, &b}) {
-        const double lo = on_dyadic_grid(o->offset);
-        o->width = on_dyadic_grid(o->offset + o->width) - lo;
-        o->offset = lo;
-      }
-    }
-}
-
 }  // namespace
 
 std::optional<std::size_t> find_host_wall(const ItemRecord& item,
@@ -192,7 +178,6 @@ std::vector<Opening> place_openings(const Home& home, const std::vector<ItemReco
     warn_about_item(item, id, pieces, warnings);
     std::ranges::move(pieces, std::back_inserter(openings));
   }
-  make_touching_exact(openings);
   return openings;
 }
 

@@ -22,28 +22,36 @@ double distance(Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 bool is_straight(const WallRecord& w) { return !w.arc_extent || *w.arc_extent == 0; }
 
-/// Where the wall through `far` and `end` (moving `end`) meets `host`'s centre line, when `end`
-/// lies strictly inside `host` and the meeting point is inside it too.
+/// Where the end `end` of a wall from `far` (thickness `own_thickness`) joins `host`, when it
+/// lies inside `host`'s box (its footprint extended by half its thickness past each end, as
+/// Sweet Home 3D fills corners): moved along its own wall onto `host`'s centre line, or, if that
+/// point is within half of either wall's thickness of an end of `host`, that end (an L corner,
+/// or a junction of three walls).
 /// @return the new end point and its distance from `host`'s centre line before the move.
-std::optional<std::pair<Point2, double>> onto_centre_line(Point2 far, Point2 end,
-                                                          const WallRecord& host) {
+std::optional<std::pair<Point2, double>> join_point(Point2 far, Point2 end, double own_thickness,
+                                                    const WallRecord& host) {
   const double length = distance(host.start, host.end);
   const double own = distance(far, end);
+  const double half = host.thickness / 2;
   if (length == 0 || own == 0) return std::nullopt;
   const Point2 along{(host.end.x - host.start.x) / length, (host.end.y - host.start.y) / length};
   const Point2 dir{(end.x - far.x) / own, (end.y - far.y) / own};
   const Point2 rel{end.x - host.start.x, end.y - host.start.y};
   const double off = cross(along, rel);  // signed distance from the centre line
   const double u = along.x * rel.x + along.y * rel.y;
-  if (std::abs(off) <= kOnLine || std::abs(off) >= host.thickness / 2 || u < 0 || u > length)
-    return std::nullopt;
   const double turn = cross(along, dir);
-  if (std::abs(turn) < kMinSin) return std::nullopt;
+  if (std::abs(off) >= half || u < -half || u > length + half || std::abs(turn) < kMinSin)
+    return std::nullopt;
   const double s = -off / turn;  // end + s * dir lies on the centre line
   if (std::abs(s) >= own / 2) return std::nullopt;
   const Point2 moved{end.x + s * dir.x, end.y + s * dir.y};
   const double moved_u = along.x * (moved.x - host.start.x) + along.y * (moved.y - host.start.y);
-  if (moved_u < 0 || moved_u > length) return std::nullopt;
+  // Near an end of `host` the wall would poke past it (into the walls joined there): it joins
+  // that end instead.
+  const Point2 corner = moved_u < length / 2 ? host.start : host.end;
+  if (distance(moved, corner) <= std::min(half, own_thickness / 2))
+    return end == corner ? std::nullopt : std::optional{std::pair{corner, std::abs(off)}};
+  if (moved_u < 0 || moved_u > length || std::abs(off) <= kOnLine) return std::nullopt;
   return std::pair{moved, std::abs(off)};
 }
 
@@ -57,7 +65,7 @@ std::optional<std::pair<Point2, std::size_t>> t_join_of(const std::vector<WallRe
   double best_off = 0.0;
   for (std::size_t j = 0; j < walls.size(); ++j) {
     if (j == i || walls[j].level != walls[i].level || !is_straight(walls[j])) continue;
-    const auto moved = onto_centre_line(far, end, walls[j]);
+    const auto moved = join_point(far, end, walls[i].thickness, walls[j]);
     if (moved && (!best || moved->second < best_off)) {
       best = std::pair{moved->first, j};
       best_off = moved->second;
@@ -106,9 +114,9 @@ void join_t_ends(std::vector<WallRecord>& walls, double snap_distance, Report& w
   if (moved.empty()) return;
   Diagnostic d = import_warning(
       "import_t_junction", ids.front(),
-      fmt::format("{} wall ends drawn inside another wall were moved along their wall onto that "
-                  "wall's centre line, so that the plan joins them as Sweet Home 3D does (the "
-                  "union of the footprints is unchanged): {}",
+      fmt::format("{} wall ends drawn inside another wall were moved onto that wall's centre line "
+                  "(along their own wall) or onto its end (at a corner), so that the plan joins "
+                  "them as Sweet Home 3D does: {}",
                   moved.size(), fmt::join(moved, "; ")));
   d.objects = std::move(ids);
   warnings.add(std::move(d));

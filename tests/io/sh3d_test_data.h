@@ -4,22 +4,21 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "io/sweethome3d_import.h"
+#include "support/run_command.h"
 
 namespace roomcad::sh3d_test {
 
 namespace fs = std::filesystem;
 
-inline const fs::path kData = fs::path(ROOMCAD_SOURCE_DIR) / ".." / "shared" / "realdata" / "sweethome3d";
+inline const fs::path kData = test::source_dir() / ".." / "shared" / "realdata" / "sweethome3d";
 
 inline std::vector<fs::path> all_homes() {
   std::vector<fs::path> homes;
@@ -30,12 +29,7 @@ inline std::vector<fs::path> all_homes() {
   return homes;
 }
 
-inline std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+inline std::string read_text(const fs::path& p) { return test::read_bytes(p); }
 
 using Attributes = std::map<std::string, std::string>;
 

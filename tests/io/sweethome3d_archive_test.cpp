@@ -1,7 +1,6 @@
 // The Sweet Home 3D importer on archives and on bad input: a .sh3d built here with libzip
 // imports like its bare Home.xml; malformed files give errors naming the file and the problem.
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,15 +14,6 @@ namespace {
 
 using namespace sh3d_test;
 
-/// A scratch folder removed at the end of the test.
-struct ScratchDir {
-  fs::path path = fs::temp_directory_path() /
-                  ("roomcad-sh3d-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                   "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  ScratchDir() { fs::create_directories(path); }
-  ~ScratchDir() { fs::remove_all(path); }
-};
-
 /// Writes a ZIP archive at `path` with one entry `name` holding `text`.
 void write_zip(const fs::path& path, const std::string& name, const std::string& text) {
   int error = 0;
@@ -35,10 +25,6 @@ void write_zip(const fs::path& path, const std::string& name, const std::string&
   ASSERT_EQ(zip_close(archive), 0);  // writes the archive; `text` must live until here
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
 std::string import_error(const fs::path& path) {
   const Result<Sh3dImport> r = import_sweethome3d_file(path);
   EXPECT_FALSE(r.ok()) << path;
@@ -46,9 +32,9 @@ std::string import_error(const fs::path& path) {
 }
 
 TEST(Sh3dArchive, ImportsLikeItsHomeXml) {
-  const ScratchDir dir;
+  const test::TempDir dir;
   const fs::path xml = kData / "eteks-example-homes" / "ApartmentWithBowWindow.Home.xml";
-  const fs::path sh3d = dir.path / "Bow.sh3d";
+  const fs::path sh3d = dir / "Bow.sh3d";
   write_zip(sh3d, "Home.xml", read_text(xml));
   const Sh3dImport from_xml = import_or_fail(xml);
   const Sh3dImport from_zip = import_or_fail(sh3d);
@@ -58,23 +44,23 @@ TEST(Sh3dArchive, ImportsLikeItsHomeXml) {
 }
 
 TEST(Sh3dArchive, ErrorsNameTheFileAndTheProblem) {
-  const ScratchDir dir;
-  const fs::path not_zip = dir.path / "text.sh3d";
-  write_text(not_zip, "this is not a zip archive");
+  const test::TempDir dir;
+  const fs::path not_zip = dir / "text.sh3d";
+  ASSERT_TRUE(test::write_bytes(not_zip, "this is not a zip archive"));
   EXPECT_NE(import_error(not_zip).find("text.sh3d: not a readable .sh3d (ZIP) archive"),
             std::string::npos);
 
-  const fs::path no_home = dir.path / "empty.sh3d";
+  const fs::path no_home = dir / "empty.sh3d";
   write_zip(no_home, "Other.xml", "<home/>");
   EXPECT_NE(import_error(no_home).find("empty.sh3d: the archive has no Home.xml entry"),
             std::string::npos);
 
-  const fs::path missing = dir.path / "missing.xml";
+  const fs::path missing = dir / "missing.xml";
   EXPECT_NE(import_error(missing).find("missing.xml: cannot open"), std::string::npos);
 }
 
 TEST(Sh3dArchive, MalformedXmlIsAnErrorNamingElementAttributeAndValue) {
-  const ScratchDir dir;
+  const test::TempDir dir;
   struct Case {
     std::string xml;
     std::string expected;
@@ -96,20 +82,21 @@ TEST(Sh3dArchive, MalformedXmlIsAnErrorNamingElementAttributeAndValue) {
        "bad.xml: no <wall> to import"},
   };
   for (const Case& c : cases) {
-    const fs::path bad = dir.path / "bad.xml";
-    write_text(bad, c.xml);
+    const fs::path bad = dir / "bad.xml";
+    ASSERT_TRUE(test::write_bytes(bad, c.xml));
     EXPECT_NE(import_error(bad).find(c.expected), std::string::npos)
         << c.xml << "\n  gave: " << import_error(bad);
   }
 }
 
 TEST(Sh3dArchive, ItemWithNoWallIsSkippedWithAWarningNamingIt) {
-  const ScratchDir dir;
-  const fs::path home = dir.path / "lonely.xml";
-  write_text(home,
-             "<home wallHeight='250'><doorOrWindow id='far' name='Window' x='1000' y='1000' "
-             "width='100' depth='20' height='100' elevation='90'/>"
-             "<wall id='w1' xStart='0' yStart='0' xEnd='400' yEnd='0' thickness='20'/></home>");
+  const test::TempDir dir;
+  const fs::path home = dir / "lonely.xml";
+  ASSERT_TRUE(test::write_bytes(
+      home,
+      "<home wallHeight='250'><doorOrWindow id='far' name='Window' x='1000' y='1000' "
+      "width='100' depth='20' height='100' elevation='90'/>"
+      "<wall id='w1' xStart='0' yStart='0' xEnd='400' yEnd='0' thickness='20'/></home>"));
   const Sh3dImport imported = import_or_fail(home);
   EXPECT_TRUE(imported.plan.openings.empty());
   ASSERT_EQ(imported.warnings.items.size(), 1u);

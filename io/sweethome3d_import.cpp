@@ -134,7 +134,7 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   wall_options.chord_tolerance = options.chord_tolerance;
   wall_options.z_shift_cm = z_shift_cm;
   const std::vector<sh3d::PlacedWall> walls =
-      sh3d::convert_walls(home, home.walls, wall_options, out.warnings);
+      sh3d::convert_walls(home, home.walls, home.items, wall_options, out.warnings);
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
   out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
   const Box box = bounds_of(out.plan.walls);

@@ -1,5 +1,6 @@
 #include "io/detail/sh3d_walls.h"
 
+#include "io/detail/sh3d_arcs.h"
 #include "io/detail/sh3d_junctions.h"
 
 #include <algorithm>
@@ -13,9 +14,6 @@
 namespace roomcad::sh3d {
 namespace {
 
-constexpr int kMaxChords = 256;  // bounds the output for a tiny tolerance on a huge arc
-
-double distance(Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 /// The wall's height (centimetres): its own, else the home's default, else its level's, else
 /// 250 (Sweet Home 3D's default). A sloped top becomes flat at its higher end, with a warning.
@@ -53,6 +51,13 @@ Wall make_wall(const WallRecord& w, std::string id, Point2 from, Point2 to, doub
   return wall;
 }
 
+/// How far from a chord's end an opening must stop for the mitre with the next chord (turning by
+/// at most the chord angle for `tolerance`) to stay out of its hole, plus a millimetre.
+double mitre_margin(const Arc& arc, const WallRecord& w, double tolerance) {
+  const double turn = 2 * std::acos(std::max(-1.0, 1 - tolerance / arc.radius));
+  return w.thickness / 2 * std::tan(std::min(turn, 1.0) / 2) + 1e-3;
+}
+
 }  // namespace
 
 Diagnostic import_warning(std::string code, const std::string& id, std::string message) {
@@ -84,29 +89,8 @@ double lowest_base_cm(const Home& home, const std::vector<WallRecord>& walls) {
   return walls.empty() ? 0.0 : lowest;
 }
 
-std::vector<Point2> split_arc(Point2 a, Point2 b, double extent, double tolerance) {
-  const double chord = distance(a, b);
-  const double sweep = std::min(std::abs(extent), 2 * std::numbers::pi);
-  const double radius = chord / (2 * std::sin(sweep / 2));
-  const double side = extent > 0 ? 1.0 : -1.0;
-  // Centre: from the chord's midpoint, away from the bulge (toward it for arcs over 180°).
-  const Point2 left{-(b.y - a.y) / chord, (b.x - a.x) / chord};
-  const double to_centre = -side * radius * std::cos(sweep / 2);
-  const Point2 centre{(a.x + b.x) / 2 + left.x * to_centre, (a.y + b.y) / 2 + left.y * to_centre};
-  // A chord spanning angle phi strays radius * (1 - cos(phi / 2)) from the arc.
-  const double max_step = 2 * std::acos(std::max(-1.0, 1 - tolerance / radius));
-  const int chords = std::clamp(static_cast<int>(std::ceil(sweep / max_step)), 1, kMaxChords);
-  const double start = std::atan2(a.y - centre.y, a.x - centre.x);
-  std::vector<Point2> points{a};
-  for (int k = 1; k < chords; ++k) {
-    const double angle = start - side * sweep * k / chords;  // a left bulge turns clockwise
-    points.push_back({centre.x + radius * std::cos(angle), centre.y + radius * std::sin(angle)});
-  }
-  points.push_back(b);
-  return points;
-}
-
 std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> walls,
+                                      const std::vector<ItemRecord>& items,
                                       const WallOptions& options, Report& warnings) {
   snap_close_ends(walls, options.snap_distance);
   join_t_ends(walls, options.snap_distance, warnings);
@@ -119,8 +103,10 @@ std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> 
       placed.push_back({make_wall(w, w.id, w.start, w.end, base_cm, top_cm), w.level});
       continue;
     }
+    const Arc arc = arc_through(w.start, w.end, *w.arc_extent);
     const std::vector<Point2> points =
-        split_arc(w.start, w.end, *w.arc_extent, options.chord_tolerance);
+        split_arc(w.start, w.end, *w.arc_extent, options.chord_tolerance,
+                  openings_on_arc(w, arc, items, mitre_margin(arc, w, options.chord_tolerance)));
     for (std::size_t k = 1; k < points.size(); ++k)
       placed.push_back({make_wall(w, fmt::format("{}-arc{}", w.id, k), points[k - 1], points[k],
                                   base_cm, top_cm),

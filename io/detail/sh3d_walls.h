@@ -51,18 +51,13 @@ struct WallOptions {
 };
 
 /// Converts `walls` (a selection of `home.walls`, in file order) to plan walls, one per straight
-/// wall and one per chord of a curved wall.
+/// wall and one per chord of a curved wall (no chord break falls in one of `items`).
 /// @param[out] warnings appended: one warning per curved or sloped wall, naming it.
 /// @return the placed walls, in file order (an arc's chords in order from its start).
 /// O(walls + chords).
 [[nodiscard]] std::vector<PlacedWall> convert_walls(const Home& home,
                                                     std::vector<WallRecord> walls,
+                                                    const std::vector<ItemRecord>& items,
                                                     const WallOptions& options, Report& warnings);
-
-/// The points where a circular arc from `a` to `b` turning by `extent` radians (positive bulges
-/// to the left of a->b) is cut into chords no farther than `tolerance` from the arc.
-/// @pre a != b, extent != 0, tolerance > 0.
-/// @return the chord end points, first exactly `a` and last exactly `b`. O(chords).
-[[nodiscard]] std::vector<Point2> split_arc(Point2 a, Point2 b, double extent, double tolerance);
 
 }  // namespace roomcad::sh3d

@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/detail/sh3d_walls.h"
+#include "io/detail/sh3d_arcs.h"
 #include "io/sweethome3d_import.h"
 #include "io/sh3d_test_data.h"
 

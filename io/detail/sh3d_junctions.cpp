@@ -55,12 +55,20 @@ std::optional<std::pair<Point2, double>> join_point(Point2 far, Point2 end, doub
   return std::pair{moved, std::abs(off)};
 }
 
+bool is_parallel(const WallRecord& a, const WallRecord& b) {
+  const Point2 u{a.end.x - a.start.x, a.end.y - a.start.y};
+  const Point2 v{b.end.x - b.start.x, b.end.y - b.start.y};
+  return std::abs(cross(u, v)) <= kMinSin * std::hypot(u.x, u.y) * std::hypot(v.x, v.y);
+}
+
 /// The end point `end` of wall `i` moved onto the nearest centre line that takes it, if any.
-/// An end shared with another wall's end is already joined there and stays.
+/// An end shared with the end of a wall that turns away is a corner already and stays; one
+/// shared only with walls in line (a straight wall drawn in pieces) moves with them.
 std::optional<std::pair<Point2, std::size_t>> t_join_of(const std::vector<WallRecord>& walls,
                                                         std::size_t i, Point2 far, Point2 end) {
   for (std::size_t j = 0; j < walls.size(); ++j)
-    if (j != i && (walls[j].start == end || walls[j].end == end)) return std::nullopt;
+    if (j != i && (walls[j].start == end || walls[j].end == end) && !is_parallel(walls[i], walls[j]))
+      return std::nullopt;
   std::optional<std::pair<Point2, std::size_t>> best;
   double best_off = 0.0;
   for (std::size_t j = 0; j < walls.size(); ++j) {
@@ -72,6 +80,17 @@ std::optional<std::pair<Point2, std::size_t>> t_join_of(const std::vector<WallRe
     }
   }
   return best;
+}
+
+/// @return false if moving the end point `from` of every wall ending there to `to` would take
+/// away half or more of one of those walls (a short piece of a wall drawn in pieces).
+bool keeps_lengths(const std::vector<WallRecord>& walls, Point2 from, Point2 to) {
+  for (const WallRecord& w : walls) {
+    if (w.start != from && w.end != from) continue;
+    const Point2 other = w.start == from ? w.end : w.start;
+    if (distance(to, other) <= distance(from, other) / 2) return false;
+  }
+  return true;
 }
 
 /// The first end point of walls [0, before) other than wall `self` on the level of `self` that
@@ -107,7 +126,13 @@ void join_t_ends(std::vector<WallRecord>& walls, double snap_distance, Report& w
       moved.push_back(fmt::format("'{}' {} by {:.4f} m onto '{}'", w.id, at_start ? "start" : "end",
                                   distance(end, join->first), walls[join->second].id));
       // A point moved next to another wall's end (a T at a corner) becomes that end.
-      end = nearby_end(walls, walls.size(), i, join->first, snap_distance).value_or(join->first);
+      const Point2 old_end = end;
+      const Point2 new_end =
+          nearby_end(walls, walls.size(), i, join->first, snap_distance).value_or(join->first);
+      if (!keeps_lengths(walls, old_end, new_end)) continue;
+      for (WallRecord& other : walls)
+        for (Point2* p : {&other.start, &other.end})
+          if (*p == old_end) *p = new_end;  // this end and the pieces in line sharing it
       if (ids.empty() || ids.back() != w.id) ids.push_back(w.id);
     }
   }

@@ -48,13 +48,15 @@ OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points) {
   return n;
 }
 
-SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::string>& objects) {
+SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::string>& objects,
+                        bool share) {
   SolidMesh mesh;
   add_face_properties(mesh);
   const FacePropertyHandles props = face_property_handles(mesh);
   std::unordered_map<PointKey, SolidMesh::VertexHandle, PointKeyHash> vertices;
   std::vector<SolidMesh::VertexHandle> face;
   for (const FaceSoup& soup : soups) {
+    if (!share) vertices.clear();
     for (const SoupFace& f : soup) {
       face.clear();
       for (const OpenMesh::Vec3d& p : f.points) {

@@ -28,10 +28,12 @@ std::vector<std::string> object_ids(const Plan& plan) {
   return ids;
 }
 
-FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, const WorkItem& item) {
+FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, const detail::Work& work,
+                    const WorkItem& item) {
   const int first_opening = detail::opening_object(plan, 0);
-  if (!item.general) {
-    const WallFrame& f = frames[item.walls.front()];
+  if (item.kind == WorkItem::Kind::hub) return detail::build_hub(work.hubs[item.hub], work.fast_frames);
+  if (item.kind == WorkItem::Kind::fast_wall) {
+    const WallFrame& f = work.fast_frames[item.walls.front()];
     return detail::build_fast_wall(f, static_cast<int>(f.wall), first_opening);
   }
   std::vector<const WallFrame*> walls;
@@ -43,16 +45,18 @@ FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, cons
 // Builds every item in parallel; results land in item order, so the mesh does not depend on
 // the thread count.
 std::vector<FaceSoup> build_items(const Plan& plan, const std::vector<WallFrame>& frames,
-                                  const std::vector<WorkItem>& items) {
-  std::vector<FaceSoup> soups(items.size());
-  tbb::parallel_for(std::size_t{0}, items.size(),
-                    [&](std::size_t i) { soups[i] = build_item(plan, frames, items[i]); });
+                                  const detail::Work& work) {
+  std::vector<FaceSoup> soups(work.items.size());
+  tbb::parallel_for(std::size_t{0}, work.items.size(), [&](std::size_t i) {
+    soups[i] = build_item(plan, frames, work, work.items[i]);
+  });
   return soups;
 }
 
 void count_paths(const std::vector<WorkItem>& items, BuildStats& stats) {
   for (const WorkItem& item : items)
-    (item.general ? stats.cgal_path_walls : stats.fast_path_walls) += item.walls.size();
+    (item.kind == WorkItem::Kind::cluster ? stats.cgal_path_walls : stats.fast_path_walls) +=
+        item.walls.size();
 }
 
 }  // namespace
@@ -68,9 +72,9 @@ Model build_model(const Plan& plan, const BuildOptions& options, BuildStats* sta
   const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins);
   BuildStats local;
   if (options.parts.walls) {
-    const std::vector<WorkItem> items = detail::plan_work(frames, joins, options.boolean);
-    count_paths(items, local);
-    model.walls = detail::assemble_mesh(build_items(plan, frames, items), model.objects);
+    const detail::Work work = detail::plan_work(frames, joins, options.boolean);
+    count_paths(work.items, local);
+    model.walls = detail::assemble_mesh(build_items(plan, frames, work), model.objects);
   } else {
     add_face_properties(model.walls);
   }

@@ -82,11 +82,17 @@ FaceLabel classify_face(std::span<const OpenMesh::Vec3d> points,
       if (is_in_hole(*f, h, points, eps) && label_hole_face(*f, h, points, n, eps, kind))
         return {kind, first_opening_object + static_cast<int>(h.opening), f->color};
     }
+  // Prefer walls whose sides are parallel to a vertical face: a face merged across joined
+  // walls (a whole outer side of a grid) is a side, even where it crosses another wall's end.
   const WallFrame* best = walls.empty() ? nullptr : walls.front();
   std::size_t best_count = 0;
-  for (const WallFrame* f : walls) {
-    const std::size_t c = count_inside(*f, points, eps);
-    if (c > best_count) best = f, best_count = c;
+  for (const bool parallel_only : {true, false}) {
+    for (const WallFrame* f : walls) {
+      if (parallel_only && wall_face_kind(*f, n) == FaceKind::wall_end) continue;
+      const std::size_t c = count_inside(*f, points, eps);
+      if (c > best_count) best = f, best_count = c;
+    }
+    if (best_count > 0) break;
   }
   if (best == nullptr) return {wall_face_kind(WallFrame{}, n), -1, Color{}};
   return {wall_face_kind(*best, n), static_cast<int>(best->wall), best->color};

@@ -105,7 +105,7 @@ int facing(int before, int after) {
 // Faces across the thickness at u = u[i] (ends and jambs), merged along z.
 void add_u_faces(const Context& cx, std::size_t i, std::vector<GridFace>& out) {
   const std::size_t nr = cx.grid.nz() - 1;
-  const bool capless = (i == 0 && cx.frame.mitred[0]) || (i + 1 == cx.grid.nu() && cx.frame.mitred[1]);
+  const bool capless = (i == 0 && cx.frame.capless[0]) || (i + 1 == cx.grid.nu() && cx.frame.capless[1]);
   auto state = [&](std::size_t r) {
     const int a = cx.grid.cell(std::ptrdiff_t(i) - 1, std::ptrdiff_t(r));
     const int b = cx.grid.cell(std::ptrdiff_t(i), std::ptrdiff_t(r));
@@ -194,11 +194,11 @@ double u_of(const WallFrame& f, const Point2& p) {
 
 bool has_holes_clear_of_mitres(const WallFrame& f) {
   if (f.holes.empty()) return true;
-  const double lo = f.mitred[0] ? std::max(u_of(f, f.footprint[0]), u_of(f, f.footprint[3])) : 0.0;
-  const double hi = f.mitred[1] ? std::min(u_of(f, f.footprint[1]), u_of(f, f.footprint[2])) : f.length;
+  const double lo = f.capless[0] ? std::max(u_of(f, f.footprint[0]), u_of(f, f.footprint[3])) : 0.0;
+  const double hi = f.capless[1] ? std::min(u_of(f, f.footprint[1]), u_of(f, f.footprint[2])) : f.length;
   for (const Hole& h : f.holes) {
-    if (f.mitred[0] && !(h.u0 > lo)) return false;
-    if (f.mitred[1] && !(h.u1 < hi)) return false;
+    if (f.capless[0] && !(h.u0 > lo)) return false;
+    if (f.capless[1] && !(h.u1 < hi)) return false;
   }
   return true;
 }

@@ -27,6 +27,7 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   WallFrame f;
   f.wall = index;
   f.from = w.from;
+  f.to = w.to;
   f.dir = {dx / length, dy / length};
   f.normal = {-f.dir.y, f.dir.x};
   f.length = length;
@@ -34,7 +35,7 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   f.base = w.base;
   f.top = w.base + w.height;
   f.footprint = wall_footprint(plan, joins, index);
-  f.mitred = {joins.mitre[index][0].has_value(), joins.mitre[index][1].has_value()};
+  f.capless = {joins.mitre[index][0].has_value(), joins.mitre[index][1].has_value()};
   f.color = w.color;
   return f;
 }

@@ -21,6 +21,7 @@ struct Hole {
 struct WallFrame {
   std::size_t wall = 0;  ///< index into Plan::walls
   Point2 from;
+  Point2 to;
   Point2 dir;     ///< unit vector from -> to (rounded)
   Point2 normal;  ///< dir turned left by 90 degrees (exactly, from the rounded dir)
   double length = 0.0;
@@ -28,7 +29,7 @@ struct WallFrame {
   double base = 0.0;
   double top = 0.0;
   std::array<Point2, 4> footprint;  ///< wall_footprint: from-right, to-right, to-left, from-left
-  std::array<bool, 2> mitred{false, false};  ///< per WallEnd
+  std::array<bool, 2> capless{false, false};  ///< per WallEnd: no end cap (mitred, or on a hub)
   Color color;
   std::vector<Hole> holes;  ///< sorted by u0
 };

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "../../bench/grid_plan.h"
 #include "model_support.h"
 
 namespace roomcad {
@@ -147,6 +148,29 @@ TEST(Modeling, RotatedRoomOnTheFastPath) {
   EXPECT_EQ(stats.fast_path_walls, 4u);
   // The ring (closed above the door), one window tunnel; w2 reaches the top.
   expect_paths_agree(moved, 2);
+}
+
+TEST(Modeling, WallsEndingAtATeeMeetOnAHub) {
+  Plan plan = empty_plan();
+  add_wall(plan, "west", {0, 0}, {3, 0});
+  add_wall(plan, "east", {3, 0}, {6, 0});
+  add_wall(plan, "stem", {3, 0}, {3, 4});
+  add_opening(plan, "win", kWindow, "stem", 1.5, 1.0, 1.0, 1.0);
+  BuildStats stats;
+  (void)build_model(plan, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 3u);
+  expect_paths_agree(plan, 1, 0.2 * 2.5 * (6 + 3.9) - 0.2 * 1.0);
+}
+
+TEST(Modeling, GridOfRoomsIsBuiltOnTheFastPath) {
+  bench::GridSpec spec;
+  spec.n = 3;
+  const Plan plan = bench::make_grid_plan(spec);
+  BuildStats stats;
+  (void)build_model(plan, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, plan.walls.size());
+  // 9 rooms (each ring closed above its doors) and 12 x 3 windows.
+  expect_paths_agree(plan, 9 + 36);
 }
 
 TEST(Modeling, SameMeshAtAnyThreadCount) {

@@ -89,6 +89,7 @@ void expect_paths_agree(const Plan& plan, long genus, double expected_volume) {
   EXPECT_NEAR(fast.volume, cgal.volume, 1e-9 * cgal.volume);
   const auto a = area_by_kind(build_model(plan, options_for(BooleanPath::automatic)).walls);
   const auto b = area_by_kind(build_model(plan, options_for(BooleanPath::cgal)).walls);
+  for (const auto& [kind, area] : b) EXPECT_TRUE(a.count(kind)) << "only cgal has " << to_string(kind);
   ASSERT_EQ(a.size(), b.size());
   for (const auto& [kind, area] : a) {
     ASSERT_TRUE(b.count(kind)) << to_string(kind);

@@ -1,6 +1,7 @@
 // roomcad move | rotate | scale PLAN (ID | --all) ...: the plan transforms of modeling/plan_edit.h,
 // through homogeneous matrices (modeling/transform2d.h): quarter turns exact, moves and scales
-// undone bit for bit for decimal coordinates of up to 15 significant digits.
+// undone bit for bit for decimal coordinates of up to 15 significant digits. A move or quarter
+// turn that its opposite would not undo exactly (longer numbers) says so on stderr.
 #include <fmt/format.h>
 
 #include <memory>
@@ -10,6 +11,7 @@
 #include "cli/command.h"
 #include "cli/edit_session.h"
 #include "modeling/plan_edit.h"
+#include "modeling/transform2d.h"
 #include "modeling/value_text.h"
 
 namespace roomcad::cli {
@@ -24,8 +26,8 @@ struct TransformArgs {
   EditFlags flags;
 };
 
-using ObjectEdit = std::function<EditSummary(Plan&, const std::string& id)>;
-using PlanEdit = std::function<EditSummary(Plan&)>;
+/// A transform of the plan (sign +1), or its opposite (sign -1: a move by -d, a turn by -a).
+using SignedEdit = std::function<EditSummary(Plan&, double sign)>;
 
 /// Registers PLAN, ID, --all and the edit flags on a new transform subcommand.
 CLI::App* add_transform(CLI::App& root, const std::string& name, const std::string& about,
@@ -41,13 +43,33 @@ CLI::App* add_transform(CLI::App& root, const std::string& name, const std::stri
   return app;
 }
 
-int run_transform(const std::string& name, const TransformArgs& args, const ObjectEdit& one,
-                  const PlanEdit& whole) {
+/// Warns when the opposite edit would not give `before` back bit for bit: the promise of
+/// modeling/transform2d.h holds for numbers of up to 15 significant digits, and a plan may hold
+/// longer ones (computed corners), which the result cannot keep exactly.
+void warn_unless_undoable(const std::string& name, const Plan& before, const Plan& after,
+                          const SignedEdit& edit) {
+  Plan back = after;
+  edit(back, -1.0);
+  const EditSummary off = changed_objects(before, back);
+  if (off.changed.empty()) return;
+  fmt::print(stderr,
+             "roomcad {}: warning: the opposite {} would not restore {} bit for bit (numbers of "
+             "more than 15 significant digits come back within an ulp or so)\n",
+             name, name, fmt::join(off.changed, ", "));
+}
+
+/// Runs a transform of one object or (--all) of the plan; with `undoable`, checks that the
+/// opposite transform would restore the plan exactly and warns if not.
+int run_transform(const std::string& name, const TransformArgs& args, const SignedEdit& edit,
+                  bool undoable) {
   if (args.all == !args.id.empty())
     throw std::invalid_argument(args.all ? "give an object ID or --all, not both"
                                          : "give the ID of the object to transform, or --all");
   return run_edit(name, args.path, args.flags, [&](Plan& plan) {
-    return args.all ? whole(plan) : one(plan, args.id);
+    const Plan before = plan;
+    EditSummary summary = edit(plan, 1.0);
+    if (undoable) warn_unless_undoable(name, before, plan, edit);
+    return summary;
   });
 }
 
@@ -73,11 +95,12 @@ void add_move(CLI::App& root, Commands& commands) {
       throw std::invalid_argument(fmt::format(
           "--by wants dx,dy in metres{}, got '{}'",
           args->all ? "" : " (or one number du to move a door or window along its wall)", args->amount));
-    return run_transform("move", *args,
-        [&](Plan& plan, const std::string& id) {
-          return by ? move_object(plan, id, *by) : slide_opening(plan, id, *du);
-        },
-        [&](Plan& plan) { return move_all(plan, *by); });
+    const auto move = [&](Plan& plan, double sign) {
+      if (!by) return slide_opening(plan, args->id, sign * *du);
+      const Point2 shift{sign * by->x, sign * by->y};
+      return args->all ? move_all(plan, shift) : move_object(plan, args->id, shift);
+    };
+    return run_transform("move", *args, move, true);
   }});
 }
 
@@ -90,6 +113,7 @@ struct AboutCommand {
   std::string amount_help;
   EditSummary (*one)(Plan&, std::string_view, double, std::optional<Point2>);
   EditSummary (*whole)(Plan&, double, std::optional<Point2>);
+  bool (*undo_is_exact)(double amount);  ///< when the opposite amount restores the plan exactly
 };
 
 void add_about_command(CLI::App& root, Commands& commands, const AboutCommand& spec) {
@@ -101,9 +125,11 @@ void add_about_command(CLI::App& root, Commands& commands, const AboutCommand& s
   commands.push_back({app, [args, spec] {
     const double amount = require_number(spec.amount_option, args->amount);
     const auto about = optional_about(*args);
-    return run_transform(spec.name, *args,
-        [&](Plan& plan, const std::string& id) { return spec.one(plan, id, amount, about); },
-        [&](Plan& plan) { return spec.whole(plan, amount, about); });
+    const auto edit = [&](Plan& plan, double sign) {
+      return args->all ? spec.whole(plan, sign * amount, about)
+                       : spec.one(plan, args->id, sign * amount, about);
+    };
+    return run_transform(spec.name, *args, edit, spec.undo_is_exact(amount));
   }});
 }
 
@@ -123,7 +149,8 @@ void add_transform_commands(CLI::App& root, Commands& commands) {
       .amount_option = "--deg",
       .amount_help = "angle in degrees, counter-clockwise",
       .one = rotate_object,
-      .whole = rotate_all});
+      .whole = rotate_all,
+      .undo_is_exact = is_quarter_turn});
   add_about_command(root, commands, {
       .name = "scale",
       .description = "Scale an object, or the whole plan, in plan",
@@ -136,7 +163,8 @@ void add_transform_commands(CLI::App& root, Commands& commands) {
       .amount_option = "--factor",
       .amount_help = "scale factor, > 0",
       .one = scale_object,
-      .whole = scale_all});
+      .whole = scale_all,
+      .undo_is_exact = [](double) { return false; }});  // 1/factor is rarely a short decimal
 }
 
 }  // namespace roomcad::cli

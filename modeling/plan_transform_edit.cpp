@@ -87,21 +87,6 @@ void map_site(Site& site, const PlanMap& map) {
   site.cell_size = scaled(site.cell_size, map.length_factor);
 }
 
-/// @return the ids of objects that differ between two plans with the same objects.
-EditSummary changed_objects(const Plan& before, const Plan& after) {
-  EditSummary summary;
-  if (before.site != after.site) summary.changed.push_back("site");
-  const auto compare = [&](const auto& old_objects, const auto& new_objects) {
-    for (std::size_t i = 0; i < old_objects.size(); ++i)
-      if (old_objects[i] != new_objects[i]) summary.changed.push_back(new_objects[i].id);
-  };
-  compare(before.walls, after.walls);
-  compare(before.openings, after.openings);
-  compare(before.lights, after.lights);
-  compare(before.cameras, after.cameras);
-  return summary;
-}
-
 Point2 midpoint(Point2 a, Point2 b) {
   return {exact_dot(std::array{a.x, b.x}, std::array{0.5, 0.5}),
           exact_dot(std::array{a.y, b.y}, std::array{0.5, 0.5})};
@@ -187,6 +172,20 @@ PlanMap scale_map(double factor, Point2 about) {
 }
 
 }  // namespace
+
+EditSummary changed_objects(const Plan& before, const Plan& after) {
+  EditSummary summary;
+  if (before.site != after.site) summary.changed.push_back("site");
+  const auto compare = [&](const auto& old_objects, const auto& new_objects) {
+    for (std::size_t i = 0; i < old_objects.size(); ++i)
+      if (old_objects[i] != new_objects[i]) summary.changed.push_back(new_objects[i].id);
+  };
+  compare(before.walls, after.walls);
+  compare(before.openings, after.openings);
+  compare(before.lights, after.lights);
+  compare(before.cameras, after.cameras);
+  return summary;
+}
 
 EditSummary move_object(Plan& plan, std::string_view id, Point2 by) {
   const ObjectRef ref = detail::require_object(plan, id, "move");

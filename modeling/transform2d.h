@@ -16,6 +16,9 @@
 //    digits the round trip may be off by one unit in the last place; nothing else is promised.
 //  - Rotations by a multiple of 90 degrees use the exact cos/sin 0 and +-1, so they only move
 //    and negate decimals: exact under the 15-digit condition above.
+//  - Composed matrices round each entry; apply_exactly() evaluates a chain such as
+//    T(-c) * R * T(c) without rounding between factors, so the centre of a turn stays put bit for
+//    bit at any angle. Plan edits (modeling/plan_edit.h) use chains.
 //  - A zero result is +0 (decimal zero has no sign). NaN and infinities propagate as in double
 //    arithmetic (the plan validator reports them).
 #pragma once

@@ -91,6 +91,20 @@ EditSummary add_object(Plan& plan, const AddArgs& args,
   return add_opening(plan, build(&Plan::openings, base, args.id, given));
 }
 
+/// @return what a field's value looks like, for --help.
+std::string_view value_hint(std::string_view key) {
+  if (key == "from" || key == "to") return "x,y in metres";
+  if (key == "direction" || key == "eye" || key == "target" || key == "up") return "x,y,z";
+  if (key == "color") return "#rrggbb";
+  if (key == "wall") return "id of the host wall";
+  if (key == "hinge") return "left or right";
+  if (key == "swing") return "in or out";
+  if (key == "projection") return "perspective or orthographic";
+  if (key == "fov_deg") return "degrees";
+  if (key == "intensity" || key == "ambient") return "a number";
+  return "metres";
+}
+
 /// "--height: wall, door, window" style help, built from the format's field lists.
 std::string field_help(std::string_view key) {
   std::vector<std::string_view> kinds;
@@ -98,8 +112,7 @@ std::string field_help(std::string_view key) {
     const auto fields = settable_fields(kind);
     if (std::find(fields.begin(), fields.end(), key) != fields.end()) kinds.push_back(kind);
   }
-  return fmt::format("'{}' of a {} (plan format units: metres, degrees, #rrggbb)", key,
-                     fmt::join(kinds, "/"));
+  return fmt::format("{} of a {}: {}", key, fmt::join(kinds, "/"), value_hint(key));
 }
 
 }  // namespace
@@ -115,7 +128,8 @@ void add_add_command(CLI::App& root, Commands& commands) {
       "  roomcad add plan.json light --direction -0.4,0.5,-1 --ambient 0.3\n"
       "  roomcad add plan.json camera --eye 16,-9,10 --target 6,4,1\n"
       "Ids are generated (wall-1, door-2, ...) unless --id is given. The edited plan is\n"
-      "validated: an edit that introduces errors is refused (exit 1, file untouched).");
+      "validated: an edit that introduces errors is refused (exit 1, file untouched)\n"
+      "unless --force.");
   app->add_option("PLAN", args->path, "plan file to edit")->required();
   app->add_option("KIND", args->kind, "wall, door, window, light or camera")
       ->required()

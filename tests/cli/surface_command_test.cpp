@@ -62,6 +62,15 @@ TEST(SurfaceCommand, ExpressionStartingWithMinusGoesAfterDoubleDash) {
   EXPECT_EQ(run.status, 0) << run.err;
 }
 
+TEST(SurfaceCommand, UndefinedEverywhereWarnsAndDrawsAnEmptyPicture) {
+  const TempDir dir;
+  const CommandResult run =
+      surface({"sqrt(-1-x*x)", "--x", "-1:1", "--z", "-1:1", "-o", (dir / "none.svg").string()});
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("has no finite value"), std::string::npos) << run.err;
+  EXPECT_EQ(read_bytes(dir / "none.svg").find("<polyline"), std::string::npos);
+}
+
 TEST(SurfaceCommand, BadExpressionNamesTheColumn) {
   const TempDir dir;
   const CommandResult run =

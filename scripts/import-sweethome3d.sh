@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 data=../shared/realdata/sweethome3d
 out=examples/sweethome3d
-roomcad=${ROOMCAD:-./build/roomcad}
+roomcad=${ROOMCAD:-./build/cli/roomcad}
 for home in "$data"/eteks-example-homes/*.Home.xml "$data"/edge-cases/*.Home.xml; do
   name=$(basename "$home" .Home.xml)
   "$roomcad" import "$home" -o "$out/$name.json" 2> "$out/$name.import.txt"

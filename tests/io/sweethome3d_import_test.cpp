@@ -44,8 +44,13 @@ TEST(Sh3dImport, WallCountsMatchTheXmlWithArcsSplitIntoChords) {
     const std::vector<Attributes> xml_walls = elements(read_text(home), "wall");
     const Sh3dImport imported = import_or_fail(home);
     EXPECT_EQ(imported.source_walls, xml_walls.size());
+    const std::set<std::string> left_out = objects_warned(imported.warnings, "import_zero_length_wall");
     std::size_t expected = 0;
     for (const Attributes& w : xml_walls) {
+      if (left_out.contains(w.at("id"))) {
+        EXPECT_EQ(w.at("xStart") + " " + w.at("yStart"), w.at("xEnd") + " " + w.at("yEnd"));
+        continue;
+      }
       const bool curved = w.contains("arcExtent") && std::stod(w.at("arcExtent")) != 0;
       std::size_t chords = 0;
       for (const Wall& p : imported.plan.walls)
@@ -307,6 +312,15 @@ TEST(Sh3dImport, NoLooseWallEndInsideACrossingWallOffItsCentreLine) {
   // Left: ends at the corner of two walls or shared with another wall's end, which no single
   // move along the wall joins. Validation reports them as overlaps.
   EXPECT_LE(loose.size(), 5u) << ::testing::PrintToString(loose);
+}
+
+TEST(Sh3dImport, ZeroLengthWallIsLeftOutWithAWarning) {
+  // ApartmentWithBowWindow's wall36 has xStart == xEnd and yStart == yEnd.
+  const Sh3dImport imported =
+      import_or_fail(kData / "eteks-example-homes" / "ApartmentWithBowWindow.Home.xml");
+  EXPECT_EQ(objects_warned(imported.warnings, "import_zero_length_wall"),
+            std::set<std::string>{"wall36"});
+  EXPECT_EQ(find_wall(imported.plan, "wall36"), nullptr);
 }
 
 TEST(Sh3dImport, OneLevelByName) {

@@ -194,6 +194,14 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   EXPECT_NEAR(door->width, 0.915, 2e-6);
   EXPECT_EQ(find_wall(imported.plan, door->wall)->base, 0.0);
   EXPECT_DOUBLE_EQ(imported.z_shift, 1.5);
+  // Both doors hinge on the left of their model (sash xAxis 0.05) and face against their wall's
+  // direction (angle pi); the second is mirrored. Seen from the wall, the first hinges at its
+  // `to` end, the second at its `from` end.
+  const Opening* turned = find_opening(imported.plan, "doorOrWindow-cb59f9df-1827-4d5b-bf6b-68a3270f72ed");
+  const Opening* mirrored = find_opening(imported.plan, "doorOrWindow-791c3bc2-fb47-47ab-81c4-713ff1895434");
+  ASSERT_TRUE(turned && mirrored);
+  EXPECT_EQ(turned->hinge, Hinge::right);
+  EXPECT_EQ(mirrored->hinge, Hinge::left);
 }
 
 TEST(Sh3dImport, StoreysStandExactlyOnTheWallsBelow) {

@@ -202,6 +202,16 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   ASSERT_TRUE(turned && mirrored);
   EXPECT_EQ(turned->hinge, Hinge::right);
   EXPECT_EQ(mirrored->hinge, Hinge::left);
+  // They open toward their front, the wall's left side here, and so does every door with a
+  // sash that faces along its wall the other way round (angle 0 on a wall drawn leftwards).
+  EXPECT_EQ(turned->swing, Swing::in);
+  EXPECT_EQ(mirrored->swing, Swing::in);
+  const Opening* along = find_opening(imported.plan, "doorOrWindow-dd84126e-0437-4e76-ba8b-f685211624ef");
+  ASSERT_NE(along, nullptr);
+  const Wall* along_host = find_wall(imported.plan, along->wall);
+  EXPECT_EQ(along->wall, "wall35");  // drawn from x = 7.00 m to 6.00 m
+  EXPECT_LT(along_host->to.x, along_host->from.x);
+  EXPECT_EQ(along->swing, Swing::in);
 }
 
 TEST(Sh3dImport, StoreysStandExactlyOnTheWallsBelow) {

@@ -14,9 +14,7 @@ namespace {
 /// The plan the geometry checks see: walls that failed a value check are made to join
 /// nothing (NaN ends), so a bad thickness cannot bend a good wall's mitre.
 Plan geometry_plan(const Plan& plan, const detail::Usable& usable) {
-  Plan copy;
-  copy.site = plan.site;
-  copy.walls = plan.walls;
+  Plan copy = plan;
   for (std::size_t w = 0; w < copy.walls.size(); ++w)
     if (!usable.walls[w]) copy.walls[w].from = copy.walls[w].to = {NAN, NAN};
   return copy;
@@ -30,17 +28,17 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   detail::check_ids(plan, usable, report);
   const bool all_walls_usable =
       std::all_of(usable.walls.begin(), usable.walls.end(), [](bool ok) { return ok; });
+  const Joins joins = find_joins(plan);
   if (all_walls_usable) {
-    detail::check_geometry(plan, find_joins(plan), usable, report);
+    detail::check_geometry(plan, joins, usable, report);
   } else {
-    Plan geometry = geometry_plan(plan, usable);
-    geometry.openings = plan.openings;
+    const Plan geometry = geometry_plan(plan, usable);
     detail::check_geometry(geometry, find_joins(geometry), usable, report);
   }
   const bool has_errors = !report.ok();
   detail::check_warnings(plan, options, report);
   // Rooms are only meaningful on a plan whose walls are sound: with errors, say nothing more.
-  if (options.room_warnings && !has_errors) detail::check_rooms(plan, report);
+  if (options.room_warnings && !has_errors) detail::check_rooms(plan, joins, report);
   std::stable_partition(report.items.begin(), report.items.end(),
                         [](const Diagnostic& d) { return d.severity == Severity::error; });
   return report;

@@ -36,6 +36,9 @@ void check_geometry(const Plan& plan, const Joins& joins, const Usable& usable, 
 void check_warnings(const Plan& plan, const ValidateOptions& options, Report& report);
 
 /// room_without_door and room_without_window warnings. O(n log n).
-void check_rooms(const Plan& plan, Report& report);
+void check_rooms(const Plan& plan, const Joins& joins, Report& report);
+
+/// find_rooms with the plan's joins already found (rooms.cpp).
+[[nodiscard]] std::vector<Room> find_rooms(const Plan& plan, const Joins& joins);
 
 }  // namespace roomcad::detail

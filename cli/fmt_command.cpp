@@ -1,0 +1,88 @@
+// `roomcad fmt PLAN [-o OUT] [--check]`: rewrites a plan in the canonical form.
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+#include <memory>
+#include <string>
+
+#include "cli/command.h"
+#include "cli/plan_loading.h"
+#include "io/plan_json.h"
+
+namespace roomcad::cli {
+namespace {
+
+struct FmtOptions {
+  std::vector<std::string> plans;
+  std::string out;
+  bool check = false;
+};
+
+int format_one(const FmtOptions& options, const std::string& plan) {
+  LoadedPlan loaded = load_plan("fmt", plan);
+  if (!loaded.plan) return loaded.exit_status;
+  const std::string canonical = write_plan_text(*loaded.plan);
+
+  if (options.check) {
+    if (canonical == loaded.text) return kOk;
+    std::fprintf(stderr, "%s: not in canonical form; run `roomcad fmt %s` to rewrite it\n",
+                 plan.c_str(), plan.c_str());
+    return kPlanErrors;
+  }
+  if (options.out == "-") {
+    std::fwrite(canonical.data(), 1, canonical.size(), stdout);
+    return std::fflush(stdout) == 0 ? kOk : kCannotRun;
+  }
+  const std::string& target = options.out.empty() ? plan : options.out;
+  if (options.out.empty() && canonical == loaded.text) return kOk;  // already canonical
+  if (const Status written = write_plan_file(*loaded.plan, target); !written) {
+    std::fprintf(stderr, "roomcad fmt: error: %s\n", written.error.c_str());
+    return kCannotRun;
+  }
+  return kOk;
+}
+
+int run_fmt(const FmtOptions& options) {
+  if (!options.out.empty() && options.plans.size() != 1) {
+    std::fprintf(stderr, "roomcad fmt: error: -o/--output takes exactly one PLAN\n");
+    return kCannotRun;
+  }
+  int status = kOk;
+  for (const std::string& plan : options.plans) status = std::max(status, format_one(options, plan));
+  return status;
+}
+
+}  // namespace
+
+void add_fmt_command(CLI::App& root, Commands& commands) {
+  auto options = std::make_shared<FmtOptions>();
+  CLI::App* app = root.add_subcommand(
+      "fmt",
+      "Rewrite a plan in canonical form: keys in the format's order, every field written with\n"
+      "its value (defaults filled in), lengths in metres (a file in \"cm\" or \"mm\" is\n"
+      "converted), numbers as the shortest decimal that reads back to the same value, one wall,\n"
+      "opening, light or camera per line. Unknown fields are kept (and warned about). The file\n"
+      "is replaced atomically: if anything fails, the old file is left as it was. A file already\n"
+      "in canonical form is left untouched.");
+  app->add_option("PLAN", options->plans, "the plan files (JSON) to format, one or more")
+      ->required()
+      ->type_name("FILE");
+  CLI::Option* out = app->add_option(
+      "-o,--output", options->out,
+      "write the canonical plan to FILE instead of rewriting PLAN in place (`-` for stdout)");
+  out->type_name("FILE");
+  app->add_flag("--check", options->check,
+                "write nothing; exit 1 if PLAN is not already in canonical form")
+      ->excludes(out);
+  app->footer(
+      "Exit status (the worst over all PLANs): 0 done (with --check: every PLAN is canonical);\n"
+      "1 a PLAN has errors (printed to stderr) or, with --check, is not canonical; 2 could not\n"
+      "run (bad arguments, a PLAN unreadable, the output not writable).\n"
+      "Examples:\n"
+      "  roomcad fmt examples/house.json\n"
+      "  roomcad fmt draft.json -o clean.json\n"
+      "  roomcad fmt --check examples/*.json");
+  commands.push_back({app, [options] { return run_fmt(*options); }});
+}
+
+}  // namespace roomcad::cli

@@ -1,0 +1,183 @@
+// `roomcad info PLAN [--format text|json]`: what a plan holds and how big it is.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "cli/command.h"
+#include "cli/plan_loading.h"
+
+namespace roomcad::cli {
+namespace {
+
+struct InfoOptions {
+  std::string plan;
+  std::string format = "text";
+};
+
+struct Box3 {
+  Vec3 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+           std::numeric_limits<double>::infinity()};
+  Vec3 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+           -std::numeric_limits<double>::infinity()};
+  void add(double x, double y, double z) {
+    min = {std::min(min.x, x), std::min(min.y, y), std::min(min.z, z)};
+    max = {std::max(max.x, x), std::max(max.y, y), std::max(max.z, z)};
+  }
+};
+
+struct PlanInfo {
+  std::size_t doors = 0;
+  std::size_t windows = 0;
+  double total_wall_length = 0.0;
+  double max_wall_height = 0.0;
+  std::optional<Box3> bounds;  ///< of the walls' footprint rectangles, base to top
+};
+
+/// Counts and measures; the bounds are those of each wall's footprint rectangle (before
+/// mitring: a mitred corner can reach further only at angles sharper than 90 degrees).
+PlanInfo measure(const Plan& plan) {
+  PlanInfo info;
+  for (const Opening& o : plan.openings) (o.type == OpeningType::door ? info.doors : info.windows)++;
+  for (const Wall& w : plan.walls) {
+    const double dx = w.to.x - w.from.x;
+    const double dy = w.to.y - w.from.y;
+    const double length = std::hypot(dx, dy);
+    info.total_wall_length += length;
+    info.max_wall_height = std::max(info.max_wall_height, w.height);
+    if (!info.bounds) info.bounds.emplace();
+    // Half-thickness offset along the left normal; a zero-length wall is just its point.
+    const double nx = length > 0 ? -dy / length * w.thickness / 2 : 0.0;
+    const double ny = length > 0 ? dx / length * w.thickness / 2 : 0.0;
+    for (const Point2& p : {w.from, w.to}) {
+      for (double side : {-1.0, 1.0}) {
+        info.bounds->add(p.x + side * nx, p.y + side * ny, w.base);
+        info.bounds->add(p.x + side * nx, p.y + side * ny, w.base + w.height);
+      }
+    }
+  }
+  return info;
+}
+
+/// A number for JSON: the shortest decimal that reads back the same, `null` if not finite.
+std::string json_number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "null"; }
+
+/// A length for people: millimetre precision, no trailing zeros.
+std::string metres(double x) {
+  if (!std::isfinite(x)) return fmt::format("{}", x);
+  std::string s = fmt::format("{:.3f}", x);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\', out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
+    } else {
+      out += c;
+    }
+  }
+  return out + '"';
+}
+
+void print_json(const std::string& file, const Plan& plan, const PlanInfo& info) {
+  const Site& s = plan.site;
+  const auto xyz = [](const Vec3& v) {
+    return fmt::format("[{}, {}, {}]", json_number(v.x), json_number(v.y), json_number(v.z));
+  };
+  std::string out = "{\n";
+  out += fmt::format("  \"file\": {},\n", json_string(file));
+  out += fmt::format(
+      "  \"site\": {{\"origin\": [{}, {}], \"cells\": [{}, {}], \"cell_size\": {}, "
+      "\"size\": [{}, {}], \"max_height\": {}}},\n",
+      json_number(s.origin.x), json_number(s.origin.y), s.cells[0], s.cells[1],
+      json_number(s.cell_size), json_number(static_cast<double>(s.cells[0]) * s.cell_size),
+      json_number(static_cast<double>(s.cells[1]) * s.cell_size), json_number(s.max_height));
+  out += fmt::format("  \"walls\": {},\n  \"openings\": {},\n  \"doors\": {},\n", plan.walls.size(),
+                     plan.openings.size(), info.doors);
+  out += fmt::format("  \"windows\": {},\n  \"lights\": {},\n  \"cameras\": {},\n", info.windows,
+                     plan.lights.size(), plan.cameras.size());
+  out += fmt::format("  \"total_wall_length\": {},\n  \"max_wall_height\": {},\n",
+                     json_number(info.total_wall_length), json_number(info.max_wall_height));
+  out += "  \"bounds\": ";
+  out += info.bounds ? fmt::format("{{\"min\": {}, \"max\": {}}}", xyz(info.bounds->min),
+                                   xyz(info.bounds->max))
+                     : "null";
+  out += "\n}\n";
+  std::fputs(out.c_str(), stdout);
+}
+
+void print_text(const std::string& file, const Plan& plan, const PlanInfo& info) {
+  const Site& s = plan.site;
+  std::string out = file + '\n';
+  out += fmt::format("  site      {} x {} cells of {} m = {} m x {} m from ({}, {}), max height {} m\n",
+                     s.cells[0], s.cells[1], metres(s.cell_size),
+                     metres(static_cast<double>(s.cells[0]) * s.cell_size),
+                     metres(static_cast<double>(s.cells[1]) * s.cell_size), metres(s.origin.x),
+                     metres(s.origin.y), metres(s.max_height));
+  out += fmt::format("  walls     {}, {} m long in all, up to {} m high\n", plan.walls.size(),
+                     metres(info.total_wall_length), metres(info.max_wall_height));
+  out += fmt::format("  openings  {}: {} door{}, {} window{}\n", plan.openings.size(), info.doors,
+                     info.doors == 1 ? "" : "s", info.windows, info.windows == 1 ? "" : "s");
+  out += fmt::format("  lights    {}{}\n", plan.lights.size(),
+                     plan.lights.empty() ? " (the default sun is used)" : "");
+  out += fmt::format("  cameras   {}{}\n", plan.cameras.size(),
+                     plan.cameras.empty() ? " (a camera framing the plan is used)" : "");
+  if (info.bounds) {
+    const Box3& b = *info.bounds;
+    out += fmt::format("  bounds    x {} .. {} m, y {} .. {} m, z {} .. {} m\n", metres(b.min.x),
+                       metres(b.max.x), metres(b.min.y), metres(b.max.y), metres(b.min.z),
+                       metres(b.max.z));
+  } else {
+    out += "  bounds    none (no walls)\n";
+  }
+  std::fputs(out.c_str(), stdout);
+}
+
+int run_info(const InfoOptions& options) {
+  const LoadedPlan loaded = load_plan("info", options.plan);
+  if (!loaded.plan) return loaded.exit_status;
+  const PlanInfo info = measure(*loaded.plan);
+  if (options.format == "json") {
+    print_json(options.plan, *loaded.plan, info);
+  } else {
+    print_text(options.plan, *loaded.plan, info);
+  }
+  return std::fflush(stdout) == 0 ? kOk : kCannotRun;
+}
+
+}  // namespace
+
+void add_info_command(CLI::App& root, Commands& commands) {
+  auto options = std::make_shared<InfoOptions>();
+  CLI::App* app = root.add_subcommand(
+      "info",
+      "Describe a plan: the site (cells, size in metres, max height), how many walls, openings\n"
+      "(doors and windows), lights and cameras it has, the total length of its walls (along\n"
+      "their centre lines), the tallest wall, and the bounds of the walls (their footprint\n"
+      "rectangles, from base to top). Problems found while reading are printed to stderr;\n"
+      "warnings (such as unknown fields) do not stop it. It does not validate the geometry.");
+  app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
+  app->add_option("--format", options->format, "output format: text (default) or json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
+  app->footer(
+      "Exit status: 0 described; 1 PLAN has errors (printed to stderr); 2 could not run (bad\n"
+      "arguments, PLAN unreadable).\n"
+      "Examples:\n"
+      "  roomcad info examples/house.json\n"
+      "  roomcad info --format json examples/flat.json");
+  commands.push_back({app, [options] { return run_info(*options); }});
+}
+
+}  // namespace roomcad::cli

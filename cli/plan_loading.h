@@ -1,0 +1,31 @@
+// Reading the plan a command works on, with its problems printed the same way by every command.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "modeling/plan.h"
+#include "validation/report.h"
+
+namespace roomcad::cli {
+
+/// A plan read for a command, or why there is none.
+struct LoadedPlan {
+  std::optional<Plan> plan;  ///< set when the file was read and has no errors
+  std::string text;          ///< the file's bytes, when it could be read
+  Report report;             ///< what reading found (errors and warnings)
+  int exit_status = 0;       ///< when `plan` is empty: kCannotRun (unreadable) or kPlanErrors
+};
+
+/// Reads the plan file `path` for subcommand `command`. Prints every problem, warnings too, to
+/// stderr as text (coloured when stderr is a terminal), then one summary line if there were
+/// errors. A file that cannot be read (missing, a directory, no permission) gives kCannotRun;
+/// a file that is read but is not a valid plan gives kPlanErrors.
+[[nodiscard]] LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path);
+
+/// @return true when `stream` (stdout or stderr) is a terminal and NO_COLOR is not set.
+[[nodiscard]] bool use_colour(std::FILE* stream);
+
+}  // namespace roomcad::cli

@@ -1,0 +1,45 @@
+// Running the roomcad binary from tests and capturing what it prints.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace roomcad::test {
+
+struct CommandResult {
+  int status = -1;  ///< exit status, or -1 if the command did not exit normally
+  std::string out;  ///< what it printed on stdout
+  std::string err;  ///< what it printed on stderr
+};
+
+/// @return the roomcad binary under test: $ROOMCAD_EXE, else the ROOMCAD_EXE define.
+[[nodiscard]] std::string roomcad_exe();
+
+/// Runs `roomcad args...` (each argument shell-quoted), with stdin from /dev/null.
+[[nodiscard]] CommandResult run_roomcad(const std::vector<std::string>& args);
+
+/// A fresh empty directory under the system temporary directory, removed with its contents
+/// when the object is destroyed.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+  [[nodiscard]] std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// Writes `bytes` to `path` (plain write, for setting up tests). @return false on failure.
+bool write_bytes(const std::filesystem::path& path, const std::string& bytes);
+/// @return the bytes of `path`, or "" if it cannot be read.
+[[nodiscard]] std::string read_bytes(const std::filesystem::path& path);
+
+/// @return the project's source directory (the ROOMCAD_SOURCE_DIR define or the environment).
+[[nodiscard]] std::filesystem::path source_dir();
+
+}  // namespace roomcad::test

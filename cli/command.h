@@ -22,5 +22,6 @@ using Commands = std::vector<Command>;
 
 void add_info_command(CLI::App& root, Commands& commands);
 void add_fmt_command(CLI::App& root, Commands& commands);
+void add_validate_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   Commands commands;
   add_info_command(app, commands);
   add_fmt_command(app, commands);
+  add_validate_command(app, commands);
 
   try {
     app.parse(argc, argv);

@@ -1,5 +1,6 @@
-// Validation time for grids of rooms from about 10 to 100,000 walls (one opening per wall),
-// printed as a markdown table. Run: build/bench/validate_bench [--quick]
+// Validation time for grids of rooms from about 10 to 100,000 walls (a door in every inner
+// wall, three windows in every outer one: about as many openings as walls), printed as a
+// markdown table. Run: build/bench/validate_bench [--quick]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -45,18 +46,20 @@ Timing time_validate(const roomcad::Plan& plan, const roomcad::ValidateOptions& 
 
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  const std::size_t sides[] = {2, 7, 22, 70, 223};
+  const int sides[] = {2, 7, 22, 70, 223};
   std::printf("| grid | walls | openings | validate ms (cpu) | without rooms ms (cpu) | errors |\n");
   std::printf("| --- | ---: | ---: | ---: | ---: | ---: |\n");
-  for (const std::size_t n : sides) {
+  for (const int n : sides) {
     if (quick && n > 22) break;
-    const roomcad::Plan plan = roomcad::bench::make_grid_plan({.columns = n, .rows = n});
+    roomcad::bench::GridSpec spec;
+    spec.n = n;
+    const roomcad::Plan plan = roomcad::bench::make_grid_plan(spec);
     const int runs = plan.walls.size() > 20000 ? 3 : 10;
     roomcad::ValidateOptions no_rooms;
     no_rooms.room_warnings = false;
     const Timing all = time_validate(plan, {}, runs);
     const Timing without = time_validate(plan, no_rooms, runs);
-    std::printf("| %zu x %zu | %zu | %zu | %.1f (%.1f) | %.1f (%.1f) | %zu |\n", n, n,
+    std::printf("| %d x %d | %zu | %zu | %.1f (%.1f) | %.1f (%.1f) | %zu |\n", n, n,
                 plan.walls.size(), plan.openings.size(), all.wall_ms, all.cpu_ms, without.wall_ms,
                 without.cpu_ms, all.errors + without.errors);
   }

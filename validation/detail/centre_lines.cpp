@@ -9,9 +9,16 @@
 namespace roomcad::detail {
 namespace {
 
+/// The range validation accepts for lengths and coordinates (see value_checks.cpp).
+bool is_computable(double v) {
+  const double m = std::fabs(v);
+  return m == 0 || (m >= 1e-15 && m <= 1e15);
+}
+
 bool is_drawable(const Wall& w) {
-  return std::isfinite(w.from.x) && std::isfinite(w.from.y) && std::isfinite(w.to.x) &&
-         std::isfinite(w.to.y) && w.from != w.to && std::isfinite(w.thickness) && w.thickness > 0;
+  for (const double v : {w.from.x, w.from.y, w.to.x, w.to.y, w.thickness})
+    if (!is_computable(v)) return false;  // NaN and infinities fail too
+  return w.from != w.to && w.thickness > 0;
 }
 
 bool shares_an_end(const Wall& a, const Wall& b) {
@@ -71,6 +78,7 @@ CentreLines snapped_centre_lines(const Plan& plan, const Joins& joins) {
       const Wall& v = plan.walls[*partner];
       ends[e] = joins.mitre[*partner][0] == w ? v.from : v.to;
     }
+    if (ends[0] == ends[1]) continue;  // a wall shorter than the tolerance, snapped to a point
     out.segments.emplace_back(ends[0], ends[1]);
     out.walls.push_back(w);
   }

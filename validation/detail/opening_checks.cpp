@@ -177,7 +177,7 @@ void report_blocked(const Plan& plan, const Joins& joins, const Opening& o, std:
   const Wall& h = plan.walls[host];
   const Wall& x = plan.walls[other];
   const std::array<Point2, 4> hole = hole_points(h, o);
-  const std::array<Point2, 4> blocker = wall_footprint(plan, joins, other);
+  const std::array<Point2, 4> blocker = approximate_footprint(plan, joins, other);
   report.add(make_diagnostic(
       Severity::error, "opening_blocked", {o.id, h.id, x.id},
       fmt::format("{} in {} is blocked: {} fills its hole {} deep.", name_of(o), name_of(h),

@@ -38,6 +38,17 @@ class FieldChecker {
     return (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) ||
            fail(field, fmt::format("[{}, {}, {}]", v.x, v.y, v.z), "three finite numbers");
   }
+  /// Lengths and coordinates must also lie in the range exact geometry is computed in:
+  /// 0, or a magnitude from 1e-15 m (below a femtometre) to 1e15 m (beyond the solar system).
+  /// Outside it the exact number types lose their footing (and no plan needs it).
+  bool computable(std::string_view field, double v) {
+    const double m = std::fabs(v);
+    return m == 0 || (m >= 1e-15 && m <= 1e15) ||
+           fail(field, fmt::format("{}", v), "0 or between 1e-15 and 1e15 m in size");
+  }
+  bool computable(std::string_view field, Point2 p) {
+    return (computable(field, p.x) && computable(field, p.y));
+  }
   bool non_zero(std::string_view field, Vec3 v) {
     return v.x != 0 || v.y != 0 || v.z != 0 || fail(field, "[0, 0, 0]", "a non-zero direction");
   }
@@ -74,28 +85,30 @@ void check_id(FieldChecker& c, const std::string& id) {
 
 bool check_site(const Site& s, Report& report) {
   FieldChecker c(report, "site", "", 0, "");
-  c.finite("origin", s.origin);
+  if (c.finite("origin", s.origin)) c.computable("origin", s.origin);
   for (int i = 0; i < 2; ++i)
     if (s.cells[i] <= 0)
       c.fail(fmt::format("cells[{}]", i), fmt::format("{}", s.cells[i]),
              "a positive whole number of tiles");
-  c.positive("cell_size", s.cell_size, 1.0);
-  c.positive("max_height", s.max_height, 6.0);
+  if (c.positive("cell_size", s.cell_size, 1.0)) c.computable("cell_size", s.cell_size);
+  if (c.positive("max_height", s.max_height, 6.0)) c.computable("max_height", s.max_height);
   const bool bounds_ok = c.ok();
-  c.positive("tolerance", s.tolerance, 1e-6);  // joins fall back to 0: the bounds still hold
+  // Joins fall back to a tolerance of 0 when it is bad: the bounds still hold.
+  if (c.positive("tolerance", s.tolerance, 1e-6)) c.computable("tolerance", s.tolerance);
   return bounds_ok;
 }
 
 bool check_wall(const Wall& w, std::size_t i, Report& report) {
   FieldChecker c(report, "wall", "walls", i, w.id);
   check_id(c, w.id);
-  const bool ends = c.finite("from", w.from) & c.finite("to", w.to);
+  const bool ends = (c.finite("from", w.from) && c.computable("from", w.from)) &
+                    (c.finite("to", w.to) && c.computable("to", w.to));
   if (ends && w.from == w.to)
     c.fail("its length", "0 (from equals to)", "positive",
            fmt::format("move `to` of wall '{}' away from `from`, or delete the wall", w.id));
-  c.positive("thickness", w.thickness, 0.25);
-  c.positive("height", w.height, 2.8);
-  c.non_negative("base", w.base);
+  if (c.positive("thickness", w.thickness, 0.25)) c.computable("thickness", w.thickness);
+  if (c.positive("height", w.height, 2.8)) c.computable("height", w.height);
+  if (c.non_negative("base", w.base)) c.computable("base", w.base);
   return c.ok();
 }
 
@@ -103,10 +116,10 @@ bool check_opening(const Opening& o, std::size_t i, Report& report) {
   const OpeningDefaults d = opening_defaults(o.type);
   FieldChecker c(report, to_string(o.type), "openings", i, o.id);
   check_id(c, o.id);
-  c.finite("offset", o.offset);
-  c.positive("width", o.width, d.width);
-  c.positive("height", o.height, d.height);
-  c.non_negative("sill", o.sill);
+  if (c.finite("offset", o.offset)) c.computable("offset", o.offset);
+  if (c.positive("width", o.width, d.width)) c.computable("width", o.width);
+  if (c.positive("height", o.height, d.height)) c.computable("height", o.height);
+  if (c.non_negative("sill", o.sill)) c.computable("sill", o.sill);
   return c.ok();
 }
 

@@ -81,7 +81,7 @@ void check_overlaps(const Plan& plan, const Joins& joins, const Footprints& fp, 
       continue;
     }
     if (!solids_overlap(plan, fp, a, b)) continue;
-    report_overlap(wa, wb, wall_footprint(plan, joins, a), wall_footprint(plan, joins, b),
+    report_overlap(wa, wb, approximate_footprint(plan, joins, a), approximate_footprint(plan, joins, b),
                    common_box(*box_of_wall[a], *box_of_wall[b]), report);
   }
 }
@@ -172,7 +172,7 @@ void check_bounds(const Plan& plan, const Joins& joins, const Footprints& fp, st
   const bool inside = is_inside_site(plan.site, fp, w);
   const bool low = is_under_max_height(plan.site, plan.walls[w]);
   if (inside && low) return;
-  const std::array<Point2, 4> f = wall_footprint(plan, joins, w);
+  const std::array<Point2, 4> f = approximate_footprint(plan, joins, w);
   if (!inside) report_outside_site(plan, f, plan.walls[w], report);
   if (!low) report_too_high(plan.site, plan.walls[w], f, report);
 }

@@ -50,6 +50,16 @@ inline constexpr const char* kColorProperty = "rc:color";    ///< Color
 /// Adds the persistent face properties to a mesh (idempotent).
 void add_face_properties(SolidMesh& mesh);
 
+/// Handles of the persistent face properties.
+struct FacePropertyHandles {
+  OpenMesh::FPropHandleT<int> object;
+  OpenMesh::FPropHandleT<FaceKind> kind;
+  OpenMesh::FPropHandleT<Color> color;
+};
+/// @return the handles of a mesh's persistent face properties.
+/// @throws std::logic_error if add_face_properties(mesh) was never called.
+[[nodiscard]] FacePropertyHandles face_property_handles(const SolidMesh& mesh);
+
 /// The result of building a plan: one mesh per part, sharing one object table.
 struct Model {
   SolidMesh walls;     ///< the wall solid: closed, 2-manifold, outward oriented

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Times Debian's openscad on the benchmark's grids of rooms (the same scenes as build_bench):
+# writes each grid as .scad (build_bench --scad) and times `openscad -o out.off`, capped.
+#   bench/openscad_reference.sh [BUILD_DIR] [SIZES...]      e.g. build 2 5 10
+set -euo pipefail
+build=${1:-build}
+shift || true
+sizes=("${@:-2 5 10}")
+cap=${OPENSCAD_TIMEOUT:-300}
+command -v openscad >/dev/null || { echo "openscad not installed (apt-get install openscad)" >&2; exit 2; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+echo "| grid | openscad s | triangles |"
+echo "|---|---|---|"
+for n in ${sizes[@]}; do
+  "$build/bench/build_bench" --scad "$n" "$tmp/grid.scad"
+  start=$(date +%s.%N)
+  if timeout "$cap" openscad -o "$tmp/out.off" "$tmp/grid.scad" >/dev/null 2>&1; then
+    end=$(date +%s.%N)
+    faces=$(sed -n 2p "$tmp/out.off" | awk '{print $2}')
+    printf "| %sx%s | %.1f | %s |\n" "$n" "$n" "$(echo "$end - $start" | bc)" "$faces"
+  else
+    printf "| %sx%s | > %s (timed out) | - |\n" "$n" "$n" "$cap"
+  fi
+done

@@ -1,0 +1,214 @@
+// `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|cgal] [--check] [--force]
+// [--threads N] [--stats] [--format text|json]`: the plan's 3D model, exported and checked.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli/command.h"
+#include "cli/plan_loading.h"
+#include "io/mesh_export.h"
+#include "modeling/build_model.h"
+#include "modeling/mesh_check.h"
+#include "validation/report_format.h"
+#include "validation/validate.h"
+
+namespace roomcad::cli {
+namespace {
+
+struct BuildCommandOptions {
+  std::string plan;
+  std::string out;
+  std::string parts = "walls,floor,fixtures";
+  std::string boolean = "auto";
+  std::string format = "text";
+  int threads = 0;
+  bool check = false;
+  bool force = false;
+  bool stats = false;
+};
+
+/// Parses `walls,floor,fixtures` (any subset, any order). @return false on an unknown name.
+bool parse_parts(const std::string& list, Parts& parts, std::string& bad) {
+  parts = {false, false, false};
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    if (name == "walls") parts.walls = true;
+    else if (name == "floor") parts.floor = true;
+    else if (name == "fixtures") parts.fixtures = true;
+    else return bad = name, false;
+  }
+  return parts.walls || parts.floor || parts.fixtures || (bad = list, false);
+}
+
+/// The validation gate: errors stop the build unless --force.
+bool passes_validation(const BuildCommandOptions& options, const Plan& plan) {
+  const Report report = validate(plan);
+  if (report.items.empty()) return true;
+  std::fputs(format_report_text(report, use_colour(stderr)).c_str(), stderr);
+  if (report.ok()) return true;
+  std::fprintf(stderr, "roomcad build: %s: %s%s\n", options.plan.c_str(),
+               format_report_summary(report).c_str(),
+               options.force ? "; building anyway (--force)" : "; not built (use --force to try)");
+  return options.force;
+}
+
+struct CheckVerdict {
+  SolidCheck solid;
+  double analytic = 0.0;
+  double relative = 0.0;  ///< |volume - analytic| / analytic
+  bool ok = false;
+};
+
+CheckVerdict check_walls(const Model& model, const Plan& plan) {
+  CheckVerdict v;
+  v.solid = check_solid(model.walls);
+  v.analytic = analytic_wall_volume(plan);
+  const double diff = std::abs(v.solid.volume - v.analytic);
+  v.relative = v.analytic != 0.0 ? diff / std::abs(v.analytic) : diff;
+  v.ok = v.solid.is_valid() && v.relative <= 1e-9;
+  return v;
+}
+
+std::string yes_no(bool b) { return b ? "yes" : "NO"; }
+
+std::string check_text(const CheckVerdict& v) {
+  const SolidCheck& c = v.solid;
+  std::string out = fmt::format("wall solid: {} vertices, {} faces ({} triangles), {} component{}\n",
+                                c.vertices, c.faces, c.triangles, c.components,
+                                c.components == 1 ? "" : "s");
+  out += fmt::format("  closed              {} ({} border edges)\n", yes_no(c.is_closed()), c.border_edges);
+  out += fmt::format("  2-manifold          {} ({} non-manifold vertices, {} rejected triangles)\n",
+                     yes_no(c.is_manifold()), c.non_manifold_vertices, c.rejected_triangles);
+  out += fmt::format("  self-intersections  {}\n", c.self_intersections);
+  out += fmt::format("  degenerate faces    {}\n", c.degenerate_triangles);
+  out += fmt::format("  outward oriented    {} ({} inward components)\n",
+                     yes_no(c.inward_components == 0), c.inward_components);
+  out += fmt::format("  genus               {}\n", c.genus);
+  out += fmt::format("  volume              {} m^3\n", c.volume);
+  out += fmt::format("  analytic volume     {} m^3 (relative difference {:.3g}, limit 1e-09)\n",
+                     v.analytic, v.relative);
+  out += fmt::format("check: {}\n", v.ok ? "ok" : "FAILED");
+  return out;
+}
+
+std::string check_json(const CheckVerdict& v) {
+  const SolidCheck& c = v.solid;
+  return fmt::format(
+      "{{\"ok\": {}, \"vertices\": {}, \"faces\": {}, \"triangles\": {}, \"components\": {}, "
+      "\"closed\": {}, \"border_edges\": {}, \"manifold\": {}, \"non_manifold_vertices\": {}, "
+      "\"rejected_triangles\": {}, \"self_intersections\": {}, \"degenerate_faces\": {}, "
+      "\"outward\": {}, \"genus\": {}, \"volume\": {}, \"analytic_volume\": {}, "
+      "\"relative_difference\": {}}}\n",
+      v.ok, c.vertices, c.faces, c.triangles, c.components, c.is_closed(), c.border_edges,
+      c.is_manifold(), c.non_manifold_vertices, c.rejected_triangles, c.self_intersections,
+      c.degenerate_triangles, c.inward_components == 0, c.genus, c.volume, v.analytic, v.relative);
+}
+
+void print_stats(const Model& model, const BuildStats& stats) {
+  std::fprintf(stderr,
+               "build: %zu walls on the fast path, %zu on the CGAL path, %.3f ms\n"
+               "  walls %zu faces, floor %zu faces, fixtures %zu faces\n",
+               stats.fast_path_walls, stats.cgal_path_walls, stats.build_ms, model.walls.n_faces(),
+               model.floor.n_faces(), model.fixtures.n_faces());
+}
+
+int export_model(const BuildCommandOptions& options, const Model& model) {
+  MeshParts parts{{&model.walls, &model.floor, &model.fixtures}, &model.objects};
+  if (const Status s = write_mesh_file(options.out, parts); !s) {
+    std::fprintf(stderr, "roomcad build: error: %s\n", s.error.c_str());
+    return kCannotRun;
+  }
+  return kOk;
+}
+
+int run_build(const BuildCommandOptions& options) {
+  BuildOptions build;
+  std::string bad;
+  if (!parse_parts(options.parts, build.parts, bad)) {
+    std::fprintf(stderr, "roomcad build: error: --parts: '%s' is not walls, floor or fixtures\n", bad.c_str());
+    return kCannotRun;
+  }
+  if (!options.out.empty())
+    if (const auto format = mesh_format_of(options.out); !format) {
+      std::fprintf(stderr, "roomcad build: error: -o: %s\n", format.error().c_str());
+      return kCannotRun;
+    }
+  const LoadedPlan loaded = load_plan("build", options.plan);
+  if (!loaded.plan) return loaded.exit_status;
+  if (!passes_validation(options, *loaded.plan)) return kPlanErrors;
+  build.boolean = options.boolean == "cgal" ? BooleanPath::cgal : BooleanPath::automatic;
+  build.threads = options.threads;
+  const bool export_walls = build.parts.walls;
+  if (options.check) build.parts.walls = true;  // checked even when not written
+  Model model;
+  BuildStats stats;
+  try {
+    model = build_model(*loaded.plan, build, &stats);
+  } catch (const PreconditionError& e) {
+    std::fprintf(stderr, "roomcad build: %s: error: %s\n", options.plan.c_str(), e.what());
+    return kPlanErrors;
+  }
+  if (options.stats) print_stats(model, stats);
+  if (!options.out.empty()) {
+    if (!export_walls) model.walls = SolidMesh{}, add_face_properties(model.walls);
+    if (const int status = export_model(options, model); status != kOk) return status;
+  }
+  if (!options.check) return kOk;
+  const CheckVerdict verdict = check_walls(model, *loaded.plan);
+  std::fputs((options.format == "json" ? check_json(verdict) : check_text(verdict)).c_str(), stdout);
+  return verdict.ok ? kOk : kPlanErrors;
+}
+
+}  // namespace
+
+void add_build_command(CLI::App& root, Commands& commands) {
+  auto options = std::make_shared<BuildCommandOptions>();
+  CLI::App* app = root.add_subcommand(
+      "build",
+      "Build the plan's 3D model: the wall solid (walls joined, every opening cut through),\n"
+      "the tiled floor and the fixtures (door leaves, window panes), and write it to OUT in the\n"
+      "format of its extension: .obj (+ .mtl beside it, one group per object, one material per\n"
+      "colour), .off (face colours), .ply (ASCII, double coordinates, face colours) or .stl\n"
+      "(binary, float32 by the format). Coordinates are written so they read back to the same\n"
+      "doubles (except STL). The plan is validated first: errors stop the build unless --force.");
+  app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
+  app->add_option("-o,--output", options->out, "the mesh file to write (.obj .off .ply .stl)")
+      ->type_name("OUT");
+  app->add_option("--parts", options->parts, "what to build and write: any of walls,floor,fixtures")
+      ->capture_default_str();
+  app->add_option("--boolean", options->boolean,
+                  "auto: the exact fast path where no general boolean is needed, else CGAL;\n"
+                  "cgal: CGAL's exact Nef polyhedra for every wall (to compare)")
+      ->check(CLI::IsMember({"auto", "cgal"}))
+      ->capture_default_str();
+  app->add_flag("--check", options->check,
+                "check the wall solid as written (closed, 2-manifold, no self-intersection or\n"
+                "degenerate face, outward, genus) and its volume against the plan's analytic volume\n"
+                "(relative difference at most 1e-9); exit 1 if any check fails");
+  app->add_option("--format", options->format, "format of the --check report: text or json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
+  app->add_flag("--force", options->force, "build even if the plan has validation errors");
+  app->add_option("--threads", options->threads, "worker threads, 0 for all cores (same output)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app->add_flag("--stats", options->stats, "print paths taken, time and face counts to stderr");
+  app->footer(
+      "Exit status: 0 built (and checked); 1 PLAN has errors, cannot be built, or --check failed;\n"
+      "2 could not run (bad arguments, unreadable PLAN, OUT not writable).\n"
+      "Examples:\n"
+      "  roomcad build examples/house.json -o house.obj\n"
+      "  roomcad build examples/house.json --parts walls --check -o walls.ply");
+  app->callback([app] {
+    if (app->count("-o") == 0 && app->count("--check") == 0)
+      throw CLI::ValidationError("build", "give -o OUT, --check, or both");
+  });
+  commands.push_back({app, [options] { return run_build(*options); }});
+}
+
+}  // namespace roomcad::cli

@@ -1,0 +1,91 @@
+#include "modeling/build_model.h"
+
+#include <chrono>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "modeling/detail/cgal_booleans.h"
+#include "modeling/detail/clusters.h"
+#include "modeling/detail/face_soup.h"
+#include "modeling/detail/fast_wall.h"
+#include "modeling/detail/floor_fixtures.h"
+#include "modeling/detail/wall_frame.h"
+#include "modeling/joins.h"
+
+namespace roomcad {
+namespace {
+
+using detail::FaceSoup;
+using detail::WallFrame;
+using detail::WorkItem;
+
+std::vector<std::string> object_ids(const Plan& plan) {
+  std::vector<std::string> ids;
+  ids.reserve(plan.walls.size() + plan.openings.size());
+  for (const Wall& w : plan.walls) ids.push_back(w.id);
+  for (const Opening& o : plan.openings) ids.push_back(o.id);
+  return ids;
+}
+
+FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, const detail::Work& work,
+                    const WorkItem& item) {
+  const int first_opening = detail::opening_object(plan, 0);
+  if (item.kind == WorkItem::Kind::hub) return detail::build_hub(work.hubs[item.hub], work.fast_frames);
+  if (item.kind == WorkItem::Kind::fast_wall) {
+    const WallFrame& f = work.fast_frames[item.walls.front()];
+    return detail::build_fast_wall(f, static_cast<int>(f.wall), first_opening);
+  }
+  std::vector<const WallFrame*> walls;
+  walls.reserve(item.walls.size());
+  for (std::size_t i : item.walls) walls.push_back(&frames[i]);
+  return detail::build_cluster_cgal(walls, first_opening);
+}
+
+// Builds every item in parallel; results land in item order, so the mesh does not depend on
+// the thread count.
+std::vector<FaceSoup> build_items(const Plan& plan, const std::vector<WallFrame>& frames,
+                                  const detail::Work& work) {
+  std::vector<FaceSoup> soups(work.items.size());
+  tbb::parallel_for(std::size_t{0}, work.items.size(), [&](std::size_t i) {
+    soups[i] = build_item(plan, frames, work, work.items[i]);
+  });
+  return soups;
+}
+
+void count_paths(const std::vector<WorkItem>& items, BuildStats& stats) {
+  for (const WorkItem& item : items)
+    (item.kind == WorkItem::Kind::cluster ? stats.cgal_path_walls : stats.fast_path_walls) +=
+        item.walls.size();
+}
+
+}  // namespace
+
+Model build_model(const Plan& plan, const BuildOptions& options, BuildStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+  Model model;
+  model.objects = object_ids(plan);
+  const Joins joins = find_joins(plan);
+  const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins);
+  BuildStats local;
+  if (options.parts.walls) {
+    const detail::Work work = detail::plan_work(frames, joins, options.boolean);
+    count_paths(work.items, local);
+    model.walls = detail::assemble_mesh(build_items(plan, frames, work), model.objects);
+  } else {
+    add_face_properties(model.walls);
+  }
+  const FaceSoup floor = options.parts.floor ? detail::build_floor(plan.site) : FaceSoup{};
+  model.floor = detail::assemble_mesh({&floor, 1}, model.objects);
+  const std::vector<FaceSoup> fixtures =
+      options.parts.fixtures ? detail::build_fixtures(plan, frames) : std::vector<FaceSoup>{};
+  model.fixtures = detail::assemble_mesh(fixtures, model.objects, false);
+  local.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (stats != nullptr) *stats = local;
+  return model;
+}
+
+}  // namespace roomcad

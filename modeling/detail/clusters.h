@@ -1,0 +1,39 @@
+// Which walls take the fast path and which go to CGAL together (clusters).
+//
+// A wall needs the general path if it takes part in a unite join that no hub explains
+// (detail/hubs.h), is mitred to a wall of another base or height, has a hole not clear of a
+// capless end, or meets a wall it is not joined to (their boxes touch). A cluster is a
+// connected group of walls (joined or touching) holding such a wall; every other wall is built
+// alone on the fast path, and every hub among fast walls adds its top and bottom. So fast
+// pieces and clusters never touch, and the wall solid is their disjoint union.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "modeling/build_model.h"
+#include "modeling/detail/hubs.h"
+#include "modeling/detail/wall_frame.h"
+
+namespace roomcad::detail {
+
+/// A unit of work: one fast wall, one CGAL cluster, or one hub.
+struct WorkItem {
+  enum class Kind { fast_wall, cluster, hub } kind = Kind::fast_wall;
+  std::vector<std::size_t> walls;  ///< ascending indices into the frames (one for a fast wall)
+  std::size_t hub = 0;             ///< index into Work::hubs, for a hub
+};
+
+struct Work {
+  std::vector<WorkItem> items;         ///< ordered by first wall; hubs after the walls
+  std::vector<WallFrame> fast_frames;  ///< the frames with every used hub attached
+  std::vector<Hub> hubs;
+};
+
+/// Splits the walls into work items.
+/// @param[in] path  BooleanPath::cgal puts every wall in a cluster.
+/// @return the work; every wall is in exactly one item. O(n log^2 n + k) for k touching pairs.
+[[nodiscard]] Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins,
+                             BooleanPath path);
+
+}  // namespace roomcad::detail

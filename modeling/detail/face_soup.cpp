@@ -1,0 +1,83 @@
+#include "modeling/detail/face_soup.h"
+
+#include <bit>
+#include <cstdint>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+#include "modeling/build_model.h"
+
+namespace roomcad::detail {
+namespace {
+
+struct PointKey {
+  std::uint64_t x, y, z;
+  friend bool operator==(const PointKey&, const PointKey&) = default;
+};
+
+struct PointKeyHash {
+  std::size_t operator()(const PointKey& k) const {
+    std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
+    h ^= k.y + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+    h ^= k.z + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
+    return static_cast<std::size_t>(h);
+  }
+};
+
+// Adding 0.0 turns -0.0 into +0.0, so that the two zeros share a vertex.
+PointKey key_of(const OpenMesh::Vec3d& p) {
+  return {std::bit_cast<std::uint64_t>(p[0] + 0.0), std::bit_cast<std::uint64_t>(p[1] + 0.0),
+          std::bit_cast<std::uint64_t>(p[2] + 0.0)};
+}
+
+std::string object_name(const std::vector<std::string>& objects, int object) {
+  if (object < 0 || static_cast<std::size_t>(object) >= objects.size()) return "(none)";
+  return objects[static_cast<std::size_t>(object)];
+}
+
+}  // namespace
+
+OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points) {
+  OpenMesh::Vec3d n(0.0, 0.0, 0.0);
+  if (points.empty()) return n;
+  // Relative to the first point: exact differences for nearby doubles, far from the origin too.
+  const OpenMesh::Vec3d o = points[0];
+  for (std::size_t i = 1; i + 1 < points.size(); ++i)
+    n += OpenMesh::cross(points[i] - o, points[i + 1] - o);
+  return n;
+}
+
+SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::string>& objects,
+                        bool share) {
+  SolidMesh mesh;
+  add_face_properties(mesh);
+  const FacePropertyHandles props = face_property_handles(mesh);
+  std::unordered_map<PointKey, SolidMesh::VertexHandle, PointKeyHash> vertices;
+  std::vector<SolidMesh::VertexHandle> face;
+  for (const FaceSoup& soup : soups) {
+    if (!share) vertices.clear();
+    for (const SoupFace& f : soup) {
+      face.clear();
+      for (const OpenMesh::Vec3d& p : f.points) {
+        auto [it, added] = vertices.try_emplace(key_of(p));
+        if (added) it->second = mesh.add_vertex(p);
+        face.push_back(it->second);
+      }
+      const SolidMesh::FaceHandle fh = mesh.add_face(face);
+      if (!fh.is_valid())
+        throw PreconditionError(fmt::format(
+            "build_model: a {} face of '{}' with {} corners near ({}, {}, {}) would make the "
+            "mesh non-manifold (an edge shared by more than two faces)",
+            to_string(f.kind), object_name(objects, f.object), f.points.size(), f.points[0][0],
+            f.points[0][1], f.points[0][2]));
+      mesh.property(props.object, fh) = f.object;
+      mesh.property(props.kind, fh) = f.kind;
+      mesh.property(props.color, fh) = f.color;
+      mesh.set_normal(fh, polygon_normal(f.points).normalized());
+    }
+  }
+  return mesh;
+}
+
+}  // namespace roomcad::detail

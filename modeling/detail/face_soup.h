@@ -1,0 +1,38 @@
+// Faces as loose polygons ("a soup") before they become one OpenMesh mesh: what each builder
+// (fast path, CGAL path, floor, fixtures) returns, so that builders run in parallel and the
+// mesh is assembled once, in plan order, whatever the thread count.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "modeling/solid_mesh.h"
+
+namespace roomcad::detail {
+
+/// One planar polygon, counter-clockwise seen from outside, with its face properties.
+struct SoupFace {
+  std::vector<OpenMesh::Vec3d> points;  ///< metres
+  FaceKind kind = FaceKind::wall_face;
+  int object = -1;  ///< index into Model::objects, -1 for none
+  Color color;
+};
+using FaceSoup = std::vector<SoupFace>;
+
+/// Builds one mesh from soups, in order. Points with bit-identical coordinates become one
+/// vertex, which is how neighbouring faces (and a mitre's two walls) are stitched.
+/// @param[in] soups    faces; every vertex on a face's edge must be a vertex of that face.
+/// @param[in] objects  object ids, for error messages.
+/// @param[in] share    whether soups share vertices with each other (false: each soup is a
+///                     separate piece, e.g. fixtures that may touch).
+/// @return the mesh with rc: face properties and face normals. O(n) expected in points.
+/// @throws PreconditionError naming the object if a face cannot join the mesh (it would make
+///         an edge shared by more than two faces, or repeat a vertex).
+[[nodiscard]] SolidMesh assemble_mesh(std::span<const FaceSoup> soups,
+                                      const std::vector<std::string>& objects, bool share = true);
+
+/// @return the Newell normal of a polygon (length = twice its area). O(n).
+[[nodiscard]] OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points);
+
+}  // namespace roomcad::detail

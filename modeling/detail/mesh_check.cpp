@@ -1,0 +1,112 @@
+#include <optional>
+#include <vector>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "modeling/mesh_check.h"
+#include "modeling/triangulate_face.h"
+
+namespace roomcad {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using TriMesh = CGAL::Surface_mesh<K::Point_3>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// The mesh's polygons as triangles over the same vertices (the doubles as they are).
+TriMesh triangulate_copy(const SolidMesh& mesh, SolidCheck& check) {
+  TriMesh tri;
+  for (const auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    tri.add_vertex(K::Point_3(p[0], p[1], p[2]));
+  }
+  std::vector<OpenMesh::Vec3d> points;
+  std::vector<TriMesh::Vertex_index> ids;
+  for (const auto f : mesh.faces()) {
+    points.clear();
+    ids.clear();
+    for (const auto v : mesh.fv_range(f)) {
+      points.push_back(mesh.point(v));
+      ids.emplace_back(static_cast<TriMesh::size_type>(v.idx()));
+    }
+    const OpenMesh::Vec3d n = mesh.has_face_normals() ? mesh.normal(f) : OpenMesh::Vec3d(0, 0, 1);
+    const auto triangles = triangulate_face(points, n);
+    if (points.size() < 3 || triangles.size() + 2 < points.size()) ++check.degenerate_triangles;  // zero area
+    for (const auto& t : triangles) {
+      ++check.triangles;
+      if (tri.add_face(ids[t[0]], ids[t[1]], ids[t[2]]) == TriMesh::null_face()) ++check.rejected_triangles;
+    }
+  }
+  return tri;
+}
+
+// Signed volume of each component, summed relative to one of its points (differences of
+// nearby doubles are exact, so precision does not depend on the distance from the origin).
+std::vector<double> component_volumes(const TriMesh& tri, const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,
+                                      std::size_t count) {
+  std::vector<double> volume(count, 0.0);
+  std::vector<std::optional<K::Point_3>> origin(count);
+  for (const auto f : tri.faces()) {
+    const std::size_t c = comp[f];
+    auto h = tri.halfedge(f);
+    const K::Point_3 a = tri.point(tri.source(h)), b = tri.point(tri.target(h)),
+                     d = tri.point(tri.target(tri.next(h)));
+    if (!origin[c]) origin[c] = a;
+    const K::Vector_3 ra = a - *origin[c], rb = b - *origin[c], rd = d - *origin[c];
+    volume[c] += CGAL::scalar_product(ra, CGAL::cross_product(rb, rd)) / 6.0;
+  }
+  return volume;
+}
+
+long component_genus(const TriMesh& tri, const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,
+                     std::size_t count) {
+  std::vector<long> v(count, 0), e(count, 0), f(count, 0);
+  for (const auto face : tri.faces()) ++f[comp[face]];
+  for (const auto edge : tri.edges()) {
+    auto h = tri.halfedge(edge);
+    if (tri.is_border(h)) h = tri.opposite(h);
+    if (!tri.is_border(h)) ++e[comp[tri.face(h)]];
+  }
+  for (const auto vertex : tri.vertices()) {
+    const auto h = tri.halfedge(vertex);
+    if (h == TriMesh::null_halfedge()) continue;
+    const auto face = tri.is_border(h) ? tri.face(tri.opposite(h)) : tri.face(h);
+    if (face != TriMesh::null_face()) ++v[comp[face]];
+  }
+  long genus = 0;
+  for (std::size_t c = 0; c < count; ++c) genus += (2 - (v[c] - e[c] + f[c])) / 2;
+  return genus;
+}
+
+}  // namespace
+
+SolidCheck check_solid(const SolidMesh& mesh) {
+  SolidCheck check;
+  check.vertices = mesh.n_vertices();
+  check.faces = mesh.n_faces();
+  TriMesh tri = triangulate_copy(mesh, check);
+  for (const auto h : tri.halfedges()) check.border_edges += tri.is_border(h);
+  for (const auto v : tri.vertices())
+    if (!tri.is_isolated(v) && PMP::is_non_manifold_vertex(v, tri)) ++check.non_manifold_vertices;
+  for (const auto f : tri.faces()) check.degenerate_triangles += PMP::is_degenerate_triangle_face(f, tri);
+  if (PMP::does_self_intersect(tri)) {
+    std::vector<std::pair<TriMesh::Face_index, TriMesh::Face_index>> pairs;
+    PMP::self_intersections(tri, std::back_inserter(pairs));
+    check.self_intersections = std::max<std::size_t>(pairs.size(), 1);
+  }
+  auto comp = tri.add_property_map<TriMesh::Face_index, std::size_t>("f:component", 0).first;
+  check.components = PMP::connected_components(tri, comp);
+  for (double v : component_volumes(tri, comp, check.components)) {
+    check.volume += v;
+    check.inward_components += v <= 0.0;
+  }
+  check.genus = component_genus(tri, comp, check.components);
+  return check;
+}
+
+}  // namespace roomcad

@@ -1,0 +1,88 @@
+#include "modeling/detail/wall_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+#include "modeling/build_model.h"
+
+namespace roomcad::detail {
+namespace {
+
+bool is_positive(double x) { return std::isfinite(x) && x > 0.0; }
+
+WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
+  const Wall& w = plan.walls[index];
+  const double dx = w.to.x - w.from.x, dy = w.to.y - w.from.y;
+  const double length = std::hypot(dx, dy);
+  if (!is_positive(length) || !is_positive(w.thickness) || !is_positive(w.height) ||
+      !std::isfinite(w.base))
+    throw PreconditionError(fmt::format(
+        "build_model: wall '{}' cannot be built: length {}, thickness {}, height {}, base {} "
+        "(length, thickness and height must be positive and finite)",
+        w.id, length, w.thickness, w.height, w.base));
+  WallFrame f;
+  f.wall = index;
+  f.from = w.from;
+  f.to = w.to;
+  f.dir = {dx / length, dy / length};
+  f.normal = {-f.dir.y, f.dir.x};
+  f.length = length;
+  f.half = w.thickness / 2.0;
+  f.base = w.base;
+  f.top = w.base + w.height;
+  f.footprint = wall_footprint(plan, joins, index);
+  f.capless = {joins.mitre[index][0].has_value(), joins.mitre[index][1].has_value()};
+  f.color = w.color;
+  return f;
+}
+
+Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
+  const Opening& o = plan.openings[index];
+  const Wall& w = plan.walls[f.wall];
+  const bool inside = is_positive(o.width) && is_positive(o.height) && std::isfinite(o.offset) &&
+                      std::isfinite(o.sill) && o.offset >= 0.0 &&
+                      o.offset + o.width <= f.length && o.sill >= 0.0 &&
+                      o.sill + o.height <= w.height;
+  if (!inside)
+    throw PreconditionError(fmt::format(
+        "build_model: opening '{}' cannot be cut: u [{}, {}] x v [{}, {}] is not a non-empty "
+        "rectangle inside wall '{}' ([0, {}] x [0, {}])",
+        o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length, w.height));
+  // base + (sill + height) equals the wall's top exactly when the opening reaches it.
+  return {index, o.offset, o.offset + o.width, w.base + o.sill, w.base + (o.sill + o.height)};
+}
+
+}  // namespace
+
+std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& joins) {
+  std::vector<WallFrame> frames;
+  frames.reserve(plan.walls.size());
+  std::unordered_map<std::string_view, std::size_t> by_id;
+  for (std::size_t i = 0; i < plan.walls.size(); ++i) {
+    frames.push_back(make_frame(plan, joins, i));
+    by_id.emplace(plan.walls[i].id, i);
+  }
+  for (std::size_t i = 0; i < plan.openings.size(); ++i) {
+    const auto it = by_id.find(plan.openings[i].wall);
+    if (it == by_id.end())
+      throw PreconditionError(fmt::format("build_model: opening '{}' cannot be cut: its wall '{}' "
+                                          "does not exist",
+                                          plan.openings[i].id, plan.openings[i].wall));
+    frames[it->second].holes.push_back(make_hole(plan, i, frames[it->second]));
+  }
+  for (WallFrame& f : frames)
+    std::sort(f.holes.begin(), f.holes.end(),
+              [](const Hole& a, const Hole& b) { return a.u0 < b.u0 || (a.u0 == b.u0 && a.z0 < b.z0); });
+  return frames;
+}
+
+Point2 side_point(const WallFrame& f, double u, int side) {
+  const double w = side * f.half;
+  return {f.from.x + f.dir.x * u + f.normal.x * w, f.from.y + f.dir.y * u + f.normal.y * w};
+}
+
+}  // namespace roomcad::detail

@@ -1,0 +1,50 @@
+// Checks of a wall solid as written (its doubles), and its volume computed from the plan
+// alone, for `roomcad build --check` and the tests.
+#pragma once
+
+#include <cstddef>
+
+#include "modeling/plan.h"
+#include "modeling/solid_mesh.h"
+
+namespace roomcad {
+
+/// What check_solid found. A solid passes when is_valid() holds.
+struct SolidCheck {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;       ///< polygons
+  std::size_t triangles = 0;   ///< after triangulating each polygon (triangulate_face)
+  std::size_t border_edges = 0;          ///< 0 when closed
+  std::size_t non_manifold_vertices = 0;
+  std::size_t rejected_triangles = 0;    ///< triangles that would make an edge non-manifold
+  std::size_t degenerate_triangles = 0;  ///< collinear corners (exact predicate)
+  std::size_t self_intersections = 0;    ///< pairs of intersecting triangles (exact predicates)
+  std::size_t inward_components = 0;     ///< components with negative volume
+  std::size_t components = 0;
+  long genus = 0;       ///< sum over components of (2 - Euler characteristic) / 2
+  double volume = 0.0;  ///< cubic metres
+
+  [[nodiscard]] bool is_closed() const { return border_edges == 0; }
+  [[nodiscard]] bool is_manifold() const { return non_manifold_vertices == 0 && rejected_triangles == 0; }
+  [[nodiscard]] bool is_valid() const {
+    return is_closed() && is_manifold() && degenerate_triangles == 0 && self_intersections == 0 &&
+           inward_components == 0;
+  }
+};
+
+/// Checks a solid exactly as its doubles are: each face is triangulated (triangulate_face),
+/// and CGAL's exact predicates decide degeneracy and self-intersection.
+/// @param[in] mesh  planar polygon faces (a SolidMesh with face normals)
+/// @return the findings; the volume is summed relative to a point of the mesh, so a solid far
+///         from the origin keeps its precision. O(n log n) in triangles.
+[[nodiscard]] SolidCheck check_solid(const SolidMesh& mesh);
+
+/// The volume of the plan's wall solid from the plan alone: the z range is cut into slabs at
+/// every base, top, sill and opening top; each slab's area is the exact area (CGAL 2D boolean
+/// operations on Epeck) of the union of its walls' footprints minus the union of its holes.
+/// @pre the plan builds (build_model does not throw).
+/// @return cubic metres, the exact sum rounded once. O(s n log n) for s slabs and n walls.
+/// @throws PreconditionError as build_model does for walls and openings that cannot be built.
+[[nodiscard]] double analytic_wall_volume(const Plan& plan);
+
+}  // namespace roomcad

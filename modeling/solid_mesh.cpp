@@ -1,0 +1,43 @@
+#include "modeling/solid_mesh.h"
+
+#include <stdexcept>
+
+namespace roomcad {
+
+std::string_view to_string(FaceKind k) {
+  switch (k) {
+    case FaceKind::wall_face: return "wall_face";
+    case FaceKind::wall_top: return "wall_top";
+    case FaceKind::wall_bottom: return "wall_bottom";
+    case FaceKind::wall_end: return "wall_end";
+    case FaceKind::jamb: return "jamb";
+    case FaceKind::sill: return "sill";
+    case FaceKind::lintel: return "lintel";
+    case FaceKind::floor: return "floor";
+    case FaceKind::door: return "door";
+    case FaceKind::window: return "window";
+  }
+  return "unknown";
+}
+
+void add_face_properties(SolidMesh& mesh) {
+  // get_property_handle finds a property added earlier, which makes this idempotent.
+  OpenMesh::FPropHandleT<int> object;
+  if (!mesh.get_property_handle(object, kObjectProperty)) mesh.add_property(object, kObjectProperty);
+  OpenMesh::FPropHandleT<FaceKind> kind;
+  if (!mesh.get_property_handle(kind, kKindProperty)) mesh.add_property(kind, kKindProperty);
+  OpenMesh::FPropHandleT<Color> color;
+  if (!mesh.get_property_handle(color, kColorProperty)) mesh.add_property(color, kColorProperty);
+  mesh.request_face_normals();
+}
+
+FacePropertyHandles face_property_handles(const SolidMesh& mesh) {
+  FacePropertyHandles h;
+  if (!mesh.get_property_handle(h.object, kObjectProperty) ||
+      !mesh.get_property_handle(h.kind, kKindProperty) ||
+      !mesh.get_property_handle(h.color, kColorProperty))
+    throw std::logic_error("face_property_handles: mesh has no rc: face properties");
+  return h;
+}
+
+}  // namespace roomcad

@@ -1,0 +1,137 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "io/plan_json.h"
+#include "modeling/build_model.h"
+#include "support/run_command.h"
+
+namespace roomcad {
+namespace {
+
+using test::run_roomcad;
+using test::TempDir;
+
+// Two rooms side by side (a T where the middle wall meets the outer ones), a door and windows.
+Plan two_rooms() {
+  Plan plan;
+  auto wall = [&](const char* id, Point2 a, Point2 b) {
+    Wall& w = plan.walls.emplace_back();
+    w.id = id, w.from = a, w.to = b;
+  };
+  wall("south", {1, 1}, {11, 1});
+  wall("east", {11, 1}, {11, 7});
+  wall("north", {11, 7}, {1, 7});
+  wall("west", {1, 7}, {1, 1});
+  wall("mid", {6, 1}, {6, 7});
+  auto opening = [&](const char* id, OpeningType t, const char* w, double off, double sill) {
+    Opening& o = plan.openings.emplace_back();
+    o.id = id, o.type = t, o.wall = w, o.offset = off, o.sill = sill;
+    o.width = t == OpeningType::door ? 0.9 : 1.4;
+    o.height = t == OpeningType::door ? 2.1 : 1.3;
+  };
+  opening("entry", OpeningType::door, "south", 1.5, 0.0);
+  opening("win1", OpeningType::window, "south", 7.0, 0.9);
+  opening("win2", OpeningType::window, "north", 3.0, 0.9);
+  opening("win3", OpeningType::window, "west", 2.0, 0.9);
+  opening("inner", OpeningType::door, "mid", 2.0, 0.0);
+  return plan;
+}
+
+std::string write_plan(const TempDir& dir, const Plan& plan) {
+  const auto path = dir / "plan.json";
+  EXPECT_TRUE(test::write_bytes(path, write_plan_text(plan)));
+  return path.string();
+}
+
+// The vertices of an OFF file as written.
+std::vector<OpenMesh::Vec3d> read_off_vertices(const std::string& text) {
+  std::istringstream in(text);
+  std::string magic;
+  std::size_t nv = 0, nf = 0, ne = 0;
+  in >> magic >> nv >> nf >> ne;
+  std::vector<OpenMesh::Vec3d> v(nv);
+  for (auto& p : v) in >> p[0] >> p[1] >> p[2];
+  return v;
+}
+
+TEST(BuildCommand, WritesEveryFormatAndChecks) {
+  TempDir dir;
+  const std::string plan = write_plan(dir, two_rooms());
+  for (const char* ext : {"obj", "off", "ply", "stl"}) {
+    const auto out = dir / (std::string("model.") + ext);
+    const auto r = run_roomcad({"build", plan, "-o", out.string(), "--check"});
+    EXPECT_EQ(r.status, 0) << ext << "\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("check: ok"), std::string::npos) << r.out;
+    EXPECT_FALSE(test::read_bytes(out).empty()) << ext;
+  }
+  const std::string mtl = test::read_bytes(dir / "model.mtl");
+  EXPECT_NE(mtl.find("newmtl c_e8e2d0"), std::string::npos) << mtl;
+  const std::string obj = test::read_bytes(dir / "model.obj");
+  EXPECT_NE(obj.find("mtllib model.mtl"), std::string::npos);
+  EXPECT_NE(obj.find("\ng entry\n"), std::string::npos);
+  EXPECT_NE(obj.find("\ng south\n"), std::string::npos);
+}
+
+TEST(BuildCommand, CoordinatesReadBackToTheSameDoubles) {
+  TempDir dir;
+  Plan plan = two_rooms();
+  for (Wall& w : plan.walls) w.from.x += 0.1, w.to.x += 0.1;  // decimals that are not exact
+  const auto out = dir / "walls.off";
+  const auto r = run_roomcad({"build", write_plan(dir, plan), "--parts", "walls", "-o", out.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto written = read_off_vertices(test::read_bytes(out));
+  const Model model = build_model(read_plan_text(write_plan_text(plan), "x").plan.value());
+  ASSERT_EQ(written.size(), model.walls.n_vertices());
+  for (const auto v : model.walls.vertices()) EXPECT_EQ(written[std::size_t(v.idx())], model.walls.point(v));
+}
+
+TEST(BuildCommand, SameBytesAtAnyThreadCount) {
+  TempDir dir;
+  const std::string plan = write_plan(dir, two_rooms());
+  ASSERT_EQ(run_roomcad({"build", plan, "--threads", "1", "-o", (dir / "a.ply").string()}).status, 0);
+  ASSERT_EQ(run_roomcad({"build", plan, "--threads", "2", "-o", (dir / "b.ply").string()}).status, 0);
+  EXPECT_EQ(test::read_bytes(dir / "a.ply"), test::read_bytes(dir / "b.ply"));
+}
+
+TEST(BuildCommand, WallsOnlyLeavesOutFloorAndFixtures) {
+  TempDir dir;
+  const std::string plan = write_plan(dir, two_rooms());
+  ASSERT_EQ(run_roomcad({"build", plan, "--parts", "walls", "-o", (dir / "w.obj").string()}).status, 0);
+  const std::string mtl = test::read_bytes(dir / "w.mtl");
+  EXPECT_EQ(mtl.find("c_c8c8c8"), std::string::npos) << "floor colour in " << mtl;
+  EXPECT_EQ(mtl.find("c_8b5a2b"), std::string::npos) << "door colour in " << mtl;
+}
+
+TEST(BuildCommand, BadArgumentsExitTwoAndWriteNothing) {
+  TempDir dir;
+  const std::string plan = write_plan(dir, two_rooms());
+  auto r = run_roomcad({"build", plan, "-o", (dir / "model.txt").string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("model.txt"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "model.txt"));
+  r = run_roomcad({"build", plan, "--parts", "roof", "-o", (dir / "m.obj").string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("roof"), std::string::npos) << r.err;
+  r = run_roomcad({"build", (dir / "missing.json").string(), "-o", (dir / "m.obj").string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "m.obj"));
+}
+
+TEST(BuildCommand, PlanErrorsStopTheBuildEvenWithForceIfAnOpeningCannotBeCut) {
+  TempDir dir;
+  Plan plan = two_rooms();
+  plan.openings[1].offset = 9.5;  // win1 now runs past the end of its wall
+  const std::string path = write_plan(dir, plan);
+  auto r = run_roomcad({"build", path, "-o", (dir / "m.obj").string()});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("opening_outside_wall"), std::string::npos) << r.err;
+  r = run_roomcad({"build", path, "--force", "-o", (dir / "m.obj").string()});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("'win1' cannot be cut"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "m.obj"));
+}
+
+}  // namespace
+}  // namespace roomcad

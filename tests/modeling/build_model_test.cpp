@@ -1,0 +1,220 @@
+#include "modeling/build_model.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "../../bench/grid_plan.h"
+#include "model_support.h"
+
+namespace roomcad {
+namespace {
+
+using test::add_opening;
+using test::add_room;
+using test::add_wall;
+using test::empty_plan;
+using test::expect_paths_agree;
+using test::expect_valid_walls;
+
+constexpr auto kDoor = OpeningType::door;
+constexpr auto kWindow = OpeningType::window;
+
+// Wall 4 x 0.2 x 2.5 = 2 m^3.
+Plan single_wall() {
+  Plan plan = empty_plan();
+  add_wall(plan, "w", {0, 0}, {4, 0});
+  return plan;
+}
+
+TEST(Modeling, PlainWallIsABox) {
+  const Plan plan = single_wall();
+  expect_paths_agree(plan, 0, 2.0);
+  EXPECT_EQ(build_model(plan).walls.n_faces(), 6u);
+}
+
+TEST(Modeling, WindowInsideWallMakesATunnel) {
+  Plan plan = single_wall();
+  add_opening(plan, "win", kWindow, "w", 1.0, 1.5, 0.9, 1.0);
+  expect_paths_agree(plan, 1, 2.0 - 1.5 * 0.2 * 1.0);
+}
+
+TEST(Modeling, PlainWallWithOneWindowHasAHandfulOfFaces) {
+  Plan plan = single_wall();
+  add_opening(plan, "win", kWindow, "w", 1.0, 1.5, 0.9, 1.0);
+  const Model model = build_model(plan);
+  // 4 polygons per side, top, bottom, 2 ends, 2 jambs, sill, lintel.
+  EXPECT_EQ(model.walls.n_faces(), 16u);
+  EXPECT_LE(build_model(plan, test::options_for(BooleanPath::cgal)).walls.n_faces(), 24u);
+}
+
+TEST(Modeling, DoorFlushWithAnEndOpensTheWall) {
+  Plan plan = single_wall();
+  add_opening(plan, "door", kDoor, "w", 0.0, 0.9, 0.0, 2.1);
+  expect_paths_agree(plan, 0, 2.0 - 0.9 * 0.2 * 2.1);
+}
+
+TEST(Modeling, WindowFlushWithTheFarEnd) {
+  Plan plan = single_wall();
+  add_opening(plan, "win", kWindow, "w", 3.0, 1.0, 1.0, 1.0);
+  expect_paths_agree(plan, 0, 2.0 - 1.0 * 0.2 * 1.0);
+}
+
+TEST(Modeling, OpeningReachingTheTop) {
+  Plan plan = single_wall();
+  add_opening(plan, "gap", kWindow, "w", 1.0, 1.0, 1.5, 1.0);
+  expect_paths_agree(plan, 0, 2.0 - 1.0 * 0.2 * 1.0);
+}
+
+TEST(Modeling, FullHeightDoorSplitsTheWall) {
+  Plan plan = single_wall();
+  add_opening(plan, "door", kDoor, "w", 1.0, 1.0, 0.0, 2.5);
+  const SolidCheck c = expect_valid_walls(plan, BooleanPath::automatic, 0, 2.0 - 0.5);
+  EXPECT_EQ(c.components, 2u);
+  expect_paths_agree(plan, 0, 2.0 - 0.5);
+}
+
+TEST(Modeling, TouchingOpeningsShareAJamb) {
+  Plan plan = single_wall();
+  add_opening(plan, "a", kWindow, "w", 0.5, 1.0, 0.9, 1.0);
+  add_opening(plan, "b", kWindow, "w", 1.5, 1.0, 0.5, 1.6);
+  add_opening(plan, "d", kDoor, "w", 3.0, 0.8, 0.0, 2.0);
+  expect_paths_agree(plan, 1, 2.0 - 0.2 * (1.0 + 1.6 + 1.6));
+}
+
+TEST(Modeling, ClosedRoomIsATorus) {
+  Plan plan = empty_plan();
+  add_room(plan, "r", 0, 0, 4, 3);
+  // Centre-line perimeter 14 m x 0.2 x 2.5; mitres neither add nor lose volume.
+  expect_paths_agree(plan, 1, 14 * 0.2 * 2.5);
+  BuildStats stats;
+  (void)build_model(plan, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 4u);
+}
+
+TEST(Modeling, RoomWithOpeningsInEveryWall) {
+  Plan plan = empty_plan();
+  add_room(plan, "r", 0, 0, 5, 4);
+  add_opening(plan, "door", kDoor, "r0", 1.0, 0.9, 0.0, 2.1);
+  add_opening(plan, "w1", kWindow, "r1", 1.0, 1.2, 0.9, 1.2);
+  add_opening(plan, "w2", kWindow, "r2", 1.5, 1.4, 0.9, 1.3);
+  add_opening(plan, "w3", kWindow, "r3", 1.0, 1.0, 1.0, 1.0);
+  const double holes = 0.9 * 2.1 + 1.2 * 1.2 + 1.4 * 1.3 + 1.0 * 1.0;
+  // The room's ring (the lintel above the door closes it) and three window tunnels.
+  expect_paths_agree(plan, 4, 0.2 * (18 * 2.5 - holes));
+}
+
+TEST(Modeling, TJoin) {
+  Plan plan = empty_plan();
+  add_wall(plan, "through", {0, 0}, {6, 0});
+  add_wall(plan, "stem", {3, 0}, {3, 4});
+  add_opening(plan, "win", kWindow, "stem", 1.5, 1.0, 1.0, 1.0);
+  add_opening(plan, "door", kDoor, "through", 0.5, 0.9, 0.0, 2.0);
+  const double volume = 0.2 * 2.5 * (6 + 3.9) - 0.2 * (1.0 + 0.9 * 2.0);
+  expect_paths_agree(plan, 1, volume);
+}
+
+TEST(Modeling, XJoin) {
+  Plan plan = empty_plan();
+  add_wall(plan, "a", {0, 0}, {6, 0});
+  add_wall(plan, "b", {3, -3}, {3, 3});
+  add_opening(plan, "win", kWindow, "a", 0.5, 1.0, 1.0, 1.0);
+  const double volume = 0.2 * 2.5 * (6 + 5.8) - 0.2 * 1.0;
+  expect_paths_agree(plan, 1, volume);
+}
+
+TEST(Modeling, RotatedAndFarFromTheOrigin) {
+  Plan plan = empty_plan();
+  add_room(plan, "r", 0, 0, 5, 4);
+  add_wall(plan, "split", {2.5, 0}, {2.5, 4});
+  add_opening(plan, "door", kDoor, "split", 1.0, 0.9, 0.0, 2.1);
+  add_opening(plan, "w1", kWindow, "r1", 1.0, 1.2, 0.9, 1.2);
+  add_opening(plan, "w3", kWindow, "r3", 1.0, 1.0, 1.0, 1.0);
+  const Plan moved = test::transformed(plan, 37.3, 1e6, -1e6 + 0.3);
+  // Two rooms (one with a window), the door opens the split wall: 2 rooms + 2 windows.
+  expect_paths_agree(moved, 4);
+  const Plan rotated = test::transformed(plan, -61.7, 0.0, 0.0);
+  expect_paths_agree(rotated, 4);
+}
+
+TEST(Modeling, RotatedRoomOnTheFastPath) {
+  Plan plan = empty_plan();
+  add_room(plan, "r", 0, 0, 5, 4);
+  add_opening(plan, "door", kDoor, "r0", 1.0, 0.9, 0.0, 2.1);
+  add_opening(plan, "w1", kWindow, "r1", 1.0, 1.2, 0.9, 1.2);
+  add_opening(plan, "w2", kWindow, "r2", 0.5, 1.0, 1.5, 1.0);
+  const Plan moved = test::transformed(plan, 13.7, -1e6 + 0.1, 1e6);
+  BuildStats stats;
+  (void)build_model(moved, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 4u);
+  // The ring (closed above the door), one window tunnel; w2 reaches the top.
+  expect_paths_agree(moved, 2);
+}
+
+TEST(Modeling, WallsEndingAtATeeMeetOnAHub) {
+  Plan plan = empty_plan();
+  add_wall(plan, "west", {0, 0}, {3, 0});
+  add_wall(plan, "east", {3, 0}, {6, 0});
+  add_wall(plan, "stem", {3, 0}, {3, 4});
+  add_opening(plan, "win", kWindow, "stem", 1.5, 1.0, 1.0, 1.0);
+  BuildStats stats;
+  (void)build_model(plan, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 3u);
+  expect_paths_agree(plan, 1, 0.2 * 2.5 * (6 + 3.9) - 0.2 * 1.0);
+}
+
+TEST(Modeling, GridOfRoomsIsBuiltOnTheFastPath) {
+  bench::GridSpec spec;
+  spec.n = 3;
+  const Plan plan = bench::make_grid_plan(spec);
+  BuildStats stats;
+  (void)build_model(plan, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, plan.walls.size());
+  // 9 rooms (each ring closed above its doors) and 12 x 3 windows.
+  expect_paths_agree(plan, 9 + 36);
+}
+
+TEST(Modeling, SameMeshAtAnyThreadCount) {
+  Plan plan = empty_plan();
+  for (int k = 0; k < 4; ++k) add_room(plan, fmt::format("r{}", k), 6.0 * k, 0, 5, 4);
+  add_wall(plan, "t", {2.5, 0}, {2.5, 4});
+  const Model one = build_model(plan, test::options_for(BooleanPath::automatic, 1));
+  const Model two = build_model(plan, test::options_for(BooleanPath::automatic, 2));
+  ASSERT_EQ(one.walls.n_vertices(), two.walls.n_vertices());
+  ASSERT_EQ(one.walls.n_faces(), two.walls.n_faces());
+  for (const auto v : one.walls.vertices()) EXPECT_EQ(one.walls.point(v), two.walls.point(v));
+}
+
+TEST(Modeling, OpeningOutsideItsWallIsAnErrorNamingIt) {
+  Plan plan = single_wall();
+  add_opening(plan, "too-wide", kWindow, "w", 3.5, 1.0, 1.0, 1.0);
+  try {
+    (void)build_model(plan);
+    FAIL() << "expected PreconditionError";
+  } catch (const PreconditionError& e) {
+    EXPECT_NE(std::string(e.what()).find("too-wide"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Modeling, FloorAndFixtures) {
+  Plan plan = single_wall();
+  plan.site.cells = {3, 2};
+  add_opening(plan, "win", kWindow, "w", 1.0, 1.5, 0.9, 1.0);
+  add_opening(plan, "door", kDoor, "w", 3.0, 0.8, 0.0, 2.0);
+  const Model model = build_model(plan);
+  EXPECT_EQ(model.floor.n_faces(), 6u);
+  EXPECT_EQ(model.floor.n_vertices(), 12u);
+  EXPECT_EQ(model.fixtures.n_faces(), 12u);
+  const SolidCheck c = check_solid(model.fixtures);
+  EXPECT_TRUE(c.is_valid());
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_NEAR(c.volume, 1.5 * 1.0 * 0.02 + 0.8 * 2.0 * 0.04, 1e-12);
+  BuildOptions options;
+  options.parts.floor = options.parts.fixtures = false;
+  const Model walls_only = build_model(plan, options);
+  EXPECT_EQ(walls_only.floor.n_faces(), 0u);
+  EXPECT_EQ(walls_only.fixtures.n_faces(), 0u);
+  EXPECT_EQ(walls_only.walls.n_faces(), model.walls.n_faces());
+}
+
+}  // namespace
+}  // namespace roomcad

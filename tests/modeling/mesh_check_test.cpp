@@ -1,0 +1,68 @@
+#include "modeling/mesh_check.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+
+namespace roomcad {
+namespace {
+
+using V = OpenMesh::Vec3d;
+
+// A box [0, 2] x [0, 1] x [0, 1] at (dx, 0, 0); `skip` drops one face, `flip` reverses all.
+void add_box(SolidMesh& mesh, double dx, int skip = -1, bool flip = false) {
+  std::array<SolidMesh::VertexHandle, 8> v;
+  for (int k = 0; k < 8; ++k) v[k] = mesh.add_vertex(V(dx + 2.0 * ((k & 1) != 0), (k & 2) ? 1 : 0, (k & 4) ? 1 : 0));
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int f = 0; f < 6; ++f) {
+    if (f == skip) continue;
+    std::vector<SolidMesh::VertexHandle> face;
+    for (int k = 0; k < 4; ++k) face.push_back(v[faces[f][flip ? 3 - k : k]]);
+    mesh.add_face(face);
+  }
+}
+
+SolidMesh with_normals(SolidMesh mesh) {
+  mesh.request_face_normals();
+  mesh.update_face_normals();
+  return mesh;
+}
+
+TEST(MeshCheck, BoxIsValid) {
+  SolidMesh mesh;
+  add_box(mesh, 0.0);
+  const SolidCheck c = check_solid(with_normals(mesh));
+  EXPECT_TRUE(c.is_valid());
+  EXPECT_EQ(c.triangles, 12u);
+  EXPECT_EQ(c.genus, 0);
+  EXPECT_DOUBLE_EQ(c.volume, 2.0);
+}
+
+TEST(MeshCheck, OpenBoxIsNotClosed) {
+  SolidMesh mesh;
+  add_box(mesh, 0.0, 3);
+  const SolidCheck c = check_solid(with_normals(mesh));
+  EXPECT_FALSE(c.is_closed());
+  EXPECT_FALSE(c.is_valid());
+}
+
+TEST(MeshCheck, InsideOutBoxIsFlagged) {
+  SolidMesh mesh;
+  add_box(mesh, 0.0, -1, true);
+  const SolidCheck c = check_solid(with_normals(mesh));
+  EXPECT_EQ(c.inward_components, 1u);
+  EXPECT_DOUBLE_EQ(c.volume, -2.0);
+}
+
+TEST(MeshCheck, OverlappingBoxesSelfIntersect) {
+  SolidMesh mesh;
+  add_box(mesh, 0.0);
+  add_box(mesh, 1.0);
+  const SolidCheck c = check_solid(with_normals(mesh));
+  EXPECT_GT(c.self_intersections, 0u);
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_FALSE(c.is_valid());
+}
+
+}  // namespace
+}  // namespace roomcad

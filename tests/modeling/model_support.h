@@ -1,0 +1,40 @@
+// Helpers for the modeling tests: small plans, and the checks every built solid must pass.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "modeling/build_model.h"
+#include "modeling/mesh_check.h"
+#include "modeling/plan.h"
+
+namespace roomcad::test {
+
+/// A plan on a large site with no walls.
+Plan empty_plan();
+/// Appends a wall (thickness 0.2, height 2.5, base 0).
+Wall& add_wall(Plan& plan, const std::string& id, Point2 from, Point2 to);
+/// Appends an opening to `wall` spanning [offset, offset + width] x [sill, sill + height].
+Opening& add_opening(Plan& plan, const std::string& id, OpeningType type, const std::string& wall,
+                     double offset, double width, double sill, double height);
+/// A closed rectangular room of four mitred walls, counter-clockwise from (x, y).
+void add_room(Plan& plan, const std::string& prefix, double x, double y, double w, double h);
+/// Rotates every wall of the plan by `degrees` about the origin, then moves it by (dx, dy).
+Plan transformed(const Plan& plan, double degrees, double dx, double dy);
+
+/// Build options for one path and thread count.
+BuildOptions options_for(BooleanPath path, int threads = 0);
+
+/// Area of the faces of each kind.
+std::map<FaceKind, double> area_by_kind(const SolidMesh& mesh);
+
+/// Builds the walls on one path and checks them: closed, 2-manifold, no self-intersection,
+/// no degenerate face, outward; volume equal to the analytic volume within 1e-9 relative
+/// and to `expected_volume` (if positive) too; genus as given. @return the check.
+SolidCheck expect_valid_walls(const Plan& plan, BooleanPath path, long genus,
+                              double expected_volume = 0.0);
+
+/// Builds both paths, checks both, and expects the same volume and area of each face kind.
+void expect_paths_agree(const Plan& plan, long genus, double expected_volume = 0.0);
+
+}  // namespace roomcad::test

@@ -3,19 +3,17 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "cli/command.h"
+#include "cli/build_gate.h"
 #include "cli/plan_loading.h"
 #include "io/mesh_export.h"
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
-#include "validation/report_format.h"
-#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -31,31 +29,6 @@ struct BuildCommandOptions {
   bool force = false;
   bool stats = false;
 };
-
-/// Parses `walls,floor,fixtures` (any subset, any order). @return false on an unknown name.
-bool parse_parts(const std::string& list, Parts& parts, std::string& bad) {
-  parts = {false, false, false};
-  std::stringstream in(list);
-  for (std::string name; std::getline(in, name, ',');) {
-    if (name == "walls") parts.walls = true;
-    else if (name == "floor") parts.floor = true;
-    else if (name == "fixtures") parts.fixtures = true;
-    else return bad = name, false;
-  }
-  return parts.walls || parts.floor || parts.fixtures || (bad = list, false);
-}
-
-/// The validation gate: errors stop the build unless --force.
-bool passes_validation(const BuildCommandOptions& options, const Plan& plan) {
-  const Report report = validate(plan);
-  if (report.items.empty()) return true;
-  std::fputs(format_report_text(report, use_colour(stderr)).c_str(), stderr);
-  if (report.ok()) return true;
-  std::fprintf(stderr, "roomcad build: %s: %s%s\n", options.plan.c_str(),
-               format_report_summary(report).c_str(),
-               options.force ? "; building anyway (--force)" : "; not built (use --force to try)");
-  return options.force;
-}
 
 struct CheckVerdict {
   SolidCheck solid;
@@ -140,7 +113,7 @@ int run_build(const BuildCommandOptions& options) {
     }
   const LoadedPlan loaded = load_plan("build", options.plan);
   if (!loaded.plan) return loaded.exit_status;
-  if (!passes_validation(options, *loaded.plan)) return kPlanErrors;
+  if (!passes_validation("build", options.plan, *loaded.plan, options.force)) return kPlanErrors;
   build.boolean = options.boolean == "cgal" ? BooleanPath::cgal : BooleanPath::automatic;
   build.threads = options.threads;
   const bool export_walls = build.parts.walls;

@@ -26,5 +26,6 @@ void add_surface_command(CLI::App& root, Commands& commands);
 void add_draw_command(CLI::App& root, Commands& commands);
 void add_import_command(CLI::App& root, Commands& commands);
 void add_build_command(CLI::App& root, Commands& commands);
+void add_render_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   add_draw_command(app, commands);
   add_import_command(app, commands);
   add_build_command(app, commands);
+  add_render_command(app, commands);
 
   try {
     app.parse(argc, argv);

@@ -23,7 +23,7 @@ namespace {
 /// The command line as given; turned into RenderOptions by make_options.
 struct RenderArgs {
   std::string plan, output, depth, ids;
-  int width = 1280, height = 720, shadow_res = 2048, ssaa = 1, threads = 0;
+  int width = 1280, height = 720, shadow_res = 1024, ssaa = 1, threads = 0;
   std::string camera, eye, target, up = "0,0,1", projection = "perspective", view;
   double fov = 50.0, view_height = 10.0;
   std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";

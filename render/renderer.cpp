@@ -21,6 +21,18 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+/// Reversed-Z depth -> metres along the view direction, from the inverse projection:
+/// distance = -(a * depth + b) / (c * depth + d); 0 stays 0 (nothing there).
+struct DepthToDistance {
+  double a = 0.0, b = 0.0, c = 0.0, d = 1.0;
+  explicit DepthToDistance(const glm::dmat4& inverse_projection = glm::dmat4(1.0))
+      : a(inverse_projection[2][2]), b(inverse_projection[3][2]), c(inverse_projection[2][3]),
+        d(inverse_projection[3][3]) {}
+  [[nodiscard]] float operator()(float depth) const {
+    return depth <= 0.f ? 0.f : static_cast<float>(-(a * depth + b) / (c * depth + d));
+  }
+};
+
 /// Everything the tile tasks read (the frame's `uniform_` state).
 struct FrameContext {
   const Scene* scene = nullptr;
@@ -29,7 +41,7 @@ struct FrameContext {
   ShadowFilter filter = ShadowFilter::off;
   ShadingUniforms uniforms;
   glm::vec3 background{1.f};
-  glm::dmat4 inverse_projection{1.0};
+  DepthToDistance depth_to_distance;
   int ssaa = 1;
 };
 
@@ -83,19 +95,14 @@ glm::vec3 shade_sample(const FrameContext& f, const TriangleVarying& v, float px
   return shade_point(f.uniforms, s);
 }
 
-/// Metres along the view direction of a reversed-Z depth value (0: nothing there).
-float view_distance(const glm::dmat4& inverse_projection, float depth) {
-  if (depth <= 0.f) return 0.f;
-  const glm::dvec4 v = inverse_projection * glm::dvec4(0.0, 0.0, depth, 1.0);
-  return static_cast<float>(-v.z / v.w);
-}
-
 /// Writes the output pixels of one tile: colour averaged over its k x k samples; depth and
 /// object id of the sample nearest the pixel's centre (up and left of it for even k).
 void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vector<glm::vec3>& rgb,
                   FrameBuffers& out) {
   const int k = f.ssaa, w = t.x1 - t.x0;
   const int centre = (k - 1) / 2;
+  std::uint32_t last_id = kNoTriangle;
+  std::int32_t last_object = -1;
   for (int oy = t.y0 / k; oy < t.y1 / k; ++oy) {
     for (int ox = t.x0 / k; ox < t.x1 / k; ++ox) {
       glm::vec3 sum(0.f);
@@ -107,10 +114,12 @@ void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vecto
       for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(c[ch] * 255.f + 0.5f);
       const std::size_t s = static_cast<std::size_t>(oy * k + centre - t.y0) * w +
                             (ox * k + centre - t.x0);
-      out.depth.at(ox, oy) = view_distance(f.inverse_projection, t.depth[s]);
-      const std::uint32_t id = t.ids[s];
-      out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox] =
-          id == kNoTriangle ? -1 : f.scene->objects[f.bins.at(id).triangle];
+      out.depth.at(ox, oy) = f.depth_to_distance(t.depth[s]);
+      if (t.ids[s] != last_id) {  // neighbours mostly show the same triangle
+        last_id = t.ids[s];
+        last_object = last_id == kNoTriangle ? -1 : f.scene->objects[f.bins.at(last_id).triangle];
+      }
+      out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox] = last_object;
     }
   }
 }
@@ -165,7 +174,7 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   const auto raster_start = Clock::now();
   const CameraMatrices cam = frame_camera(scene, options);
   f.uniforms = make_uniforms(options, cam, lights);
-  f.inverse_projection = glm::inverse(cam.projection);
+  f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
   f.bins = detail::run_geometry_pass(
       scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
                                   .width = options.width * options.ssaa,

@@ -58,7 +58,7 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
                                   .width = resolution,
                                   .height = resolution,
                                   .tile_size = 64,
-                                  .cull_back_faces = false});
+                                  .cull_back_faces = true});
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
     target.depth = &map.depth.at(target.x0, target.y0);

@@ -27,7 +27,9 @@ struct ShadowMap {
   [[nodiscard]] float texel_size() const { return texel_x > texel_y ? texel_x : texel_y; }
 };
 
-/// Renders the shadow map of one light. All triangles cast shadows (no culling).
+/// Renders the shadow map of one light. Only faces turned towards the light are drawn (the
+/// backs of closed solids lie behind their fronts; two-sided fixtures are always drawn), so
+/// the map holds the first surface the light meets.
 /// @param[in] light       direction must be non-zero (else straight down is used)
 /// @param[in] resolution  texels per side, >= 1
 /// @return the map; for an empty scene, a map where nothing is shadowed. O(triangles + texels),

@@ -65,7 +65,8 @@ glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }
 struct TriangleVarying {
   std::uint32_t id = kNoTriangle;
   const ScreenTriangle* screen = nullptr;
-  SurfacePoint point;  ///< corners, normal as stored, plain colour
+  SurfacePoint point;  ///< corners, normal facing the viewer, plain colour
+  std::array<ShadowReceiver, kMaxLights> receivers{};
   bool is_floor = false;
 };
 
@@ -75,9 +76,17 @@ void load_triangle(const FrameContext& f, std::uint32_t id, TriangleVarying& v) 
   v.screen = &f.bins.at(id);
   const std::size_t tri = v.screen->triangle;
   for (int c = 0; c < 3; ++c) v.point.corners[c] = scene.corners[3 * tri + c];
-  v.point.normal = scene.normals[tri];
+  // n . (eye - p) is the same at every point p of the triangle's plane, so one test per
+  // triangle turns the back of a two-sided face towards the viewer.
+  const glm::vec3 normal = scene.normals[tri];
+  const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward
+                                                   : f.uniforms.eye - v.point.corners[0];
+  v.point.normal = glm::dot(normal, to_eye) < 0.f ? -normal : normal;
   v.point.color = to_unit_rgb(scene.colors[tri]);
   v.is_floor = scene.kinds[tri] == FaceKind::floor;
+  for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
+    v.receivers[k] = shadow_receiver(f.shadow_maps[k], v.point.normal);
+  }
 }
 
 /// The shaded colour of the sample at (px, py) showing the triangle `v`.
@@ -86,11 +95,9 @@ glm::vec3 shade_sample(const FrameContext& f, const TriangleVarying& v, float px
   s.weights = source_barycentrics(*v.screen, px, py);
   s.world = s.weights[0] * s.corners[0] + s.weights[1] * s.corners[1] +
             s.weights[2] * s.corners[2];
-  const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward : f.uniforms.eye - s.world;
-  if (glm::dot(s.normal, to_eye) < 0.f) s.normal = -s.normal;  // the back of a two-sided face
   if (v.is_floor) s.color = apply_grid(f.uniforms.grid, s.world, s.color);
-  for (int k = 0; k < f.uniforms.light_count && k < static_cast<int>(f.shadow_maps.size()); ++k) {
-    s.shadow[k] = shadow_amount(f.shadow_maps[k], s.world, s.normal, f.filter);
+  for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
+    s.shadow[k] = shadow_amount(f.shadow_maps[k], v.receivers[k], s.world, f.filter);
   }
   return shade_point(f.uniforms, s);
 }

@@ -65,7 +65,9 @@ glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }
 struct TriangleVarying {
   std::uint32_t id = kNoTriangle;
   const ScreenTriangle* screen = nullptr;
-  SurfacePoint point;  ///< corners, normal facing the viewer, plain colour
+  SurfacePoint point;  ///< corners, normal facing the viewer; per sample: the rest
+  glm::vec3 color{0.f};  ///< the face's plain colour
+  BarycentricPlanes weights;
   std::array<ShadowReceiver, kMaxLights> receivers{};
   bool is_floor = false;
 };
@@ -82,20 +84,22 @@ void load_triangle(const FrameContext& f, std::uint32_t id, TriangleVarying& v) 
   const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward
                                                    : f.uniforms.eye - v.point.corners[0];
   v.point.normal = glm::dot(normal, to_eye) < 0.f ? -normal : normal;
-  v.point.color = to_unit_rgb(scene.colors[tri]);
+  v.color = to_unit_rgb(scene.colors[tri]);
+  v.weights = barycentric_planes(*v.screen);
   v.is_floor = scene.kinds[tri] == FaceKind::floor;
   for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
     v.receivers[k] = shadow_receiver(f.shadow_maps[k], v.point.normal);
   }
 }
 
-/// The shaded colour of the sample at (px, py) showing the triangle `v`.
-glm::vec3 shade_sample(const FrameContext& f, const TriangleVarying& v, float px, float py) {
-  SurfacePoint s = v.point;
-  s.weights = source_barycentrics(*v.screen, px, py);
+/// The shaded colour of the sample at (px, py) showing the triangle `v` (whose per-sample
+/// fields it fills in place).
+glm::vec3 shade_sample(const FrameContext& f, TriangleVarying& v, float px, float py) {
+  SurfacePoint& s = v.point;
+  s.weights = v.weights.at(px, py);
   s.world = s.weights[0] * s.corners[0] + s.weights[1] * s.corners[1] +
             s.weights[2] * s.corners[2];
-  if (v.is_floor) s.color = apply_grid(f.uniforms.grid, s.world, s.color);
+  s.color = v.is_floor ? apply_grid(f.uniforms.grid, s.world, v.color) : v.color;
   for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
     s.shadow[k] = shadow_amount(f.shadow_maps[k], v.receivers[k], s.world, f.filter);
   }

@@ -16,7 +16,7 @@ theirs="$build/bench/osmesa_bench"
 # One benchmark row as "real_ms cpu_ms triangles" (google-benchmark CSV).
 measure() {
   "$@" --benchmark_format=csv 2>/dev/null | awk -F, '
-    NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "triangles") t = i }
+    NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "\"triangles\"") t = i }
     $1 ~ /BM_/ { printf "%s %s %d\n", $3, $4, $t }'
 }
 echo "rooms,triangles,llvmpipe_cpu,pcf_cpu,pcf/llvmpipe,noshadow_cpu,llvmpipe_2t_wall,pcf_2t_wall,noshadow_2t_wall"

@@ -79,6 +79,12 @@ TEST(Modeling, FaceRepeatingACornerIsAnError) {
   EXPECT_NE(assembly_error(soup).find("repeats a corner"), std::string::npos);
 }
 
+TEST(Modeling, FaceOfTwoCornersIsAnError) {
+  const detail::FaceSoup soup{{{OpenMesh::Vec3d(0, 0, 0), OpenMesh::Vec3d(1, 0, 0)},
+                               FaceKind::wall_top, 0, {}}};
+  EXPECT_NE(assembly_error(soup).find("2 corners, fewer than 3"), std::string::npos);
+}
+
 // A closed fan of four triangles round v, then one more face at v: OpenMesh has no gap there.
 TEST(Modeling, FaceAtACornerClosedAllRoundIsAnError) {
   const OpenMesh::Vec3d v(0, 0, 0), a(1, 0, 0), b(0, 1, 0), c(-1, 0, 0), d(0, -1, 0);

@@ -1,5 +1,6 @@
 #include "modeling/detail/cgal_booleans.h"
 
+#include <algorithm>
 #include <vector>
 
 #include <CGAL/Nef_polyhedron_3.h>
@@ -46,6 +47,16 @@ Nef unite_balanced(std::vector<Nef> parts) {
   return std::move(parts.front());
 }
 
+// Rounding the exact corners to doubles can merge two corners of a sliver face (where two
+// nearly collinear walls end side by side, their end faces are ~1e-9 m apart): drop the
+// repeats so that the sliver collapses to an edge and its neighbours meet across it.
+// @return false when fewer than 3 corners remain (the face collapsed; leave it out). O(n).
+bool drop_repeated_corners(std::vector<OpenMesh::Vec3d>& points) {
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  while (points.size() > 1 && points.back() == points.front()) points.pop_back();
+  return points.size() >= 3;
+}
+
 FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int first_opening_object) {
   std::vector<EK::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
@@ -59,6 +70,7 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
   for (const auto& polygon : polygons) {
     SoupFace f;
     for (std::size_t i : polygon) f.points.push_back(rounded[i]);
+    if (!drop_repeated_corners(f.points)) continue;
     const FaceLabel label = classify_face(f.points, walls, first_opening_object);
     f.kind = label.kind;
     f.object = label.object;

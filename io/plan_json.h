@@ -8,6 +8,7 @@
 // that reads back to the same double. Saving a canonical file reproduces it byte for byte.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -27,7 +28,12 @@ struct PlanReadResult {
 /// Parses a plan from JSON text. `file` names the source in diagnostics.
 [[nodiscard]] PlanReadResult read_plan_text(std::string_view text, std::string_view file);
 
-/// Reads a plan file. An unreadable file is a parse_error naming it.
+/// Largest plan file read_plan_file reads: parsing holds the text, the document and the
+/// position of every value, several times the file's size in memory.
+inline constexpr std::uintmax_t kMaxPlanFileBytes = 256u << 20;
+
+/// Reads a plan file. An unreadable file, or one larger than kMaxPlanFileBytes, is a
+/// parse_error naming it (and its size).
 [[nodiscard]] PlanReadResult read_plan_file(const std::filesystem::path& path);
 
 /// @return the canonical JSON text of a plan (ends with a newline).

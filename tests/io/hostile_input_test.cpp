@@ -1,0 +1,139 @@
+// Limits on hostile input: every reader refuses what would exhaust memory or time with an error
+// naming the file, the field and the value, and reports many problems in linear time.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "io/detail/plan_reader.h"
+#include "io/detail/sh3d_arcs.h"
+#include "io/detail/positioned_json.h"
+#include "io/image_io.h"
+#include "io/plan_json.h"
+#include "io/sweethome3d_import.h"
+#include "support/run_command.h"
+
+namespace roomcad {
+namespace {
+
+/// The bytes of a PNG signature and IHDR chunk claiming `width` x `height` RGB pixels, and no
+/// data (CRC included, so that libpng reads the header and allocation is the next step).
+std::string png_header(std::uint32_t width, std::uint32_t height) {
+  auto be32 = [](std::string& out, std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) out += static_cast<char>((v >> shift) & 0xff);
+  };
+  std::string chunk = "IHDR";
+  be32(chunk, width);
+  be32(chunk, height);
+  chunk += std::string("\x08\x02\x00\x00\x00", 5);  // 8-bit RGB, no interlace
+  std::uint32_t crc = 0xffffffffu;                  // CRC-32 of type and data, as PNG says
+  for (const char c : chunk) {
+    crc ^= static_cast<unsigned char>(c);
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  std::string out = "\x89PNG\r\n\x1a\n";
+  be32(out, 13);
+  out += chunk;
+  be32(out, ~crc);
+  return out;
+}
+
+TEST(HostileInput, PngClaimingAHugeImageIsRefusedBeforeAllocation) {
+  const Result<RgbImage> huge = read_png_bytes(png_header(100000, 100000), "huge.png");
+  ASSERT_FALSE(huge.ok());
+  EXPECT_NE(huge.error().find("'huge.png' is 100000 x 100000 pixels"), std::string::npos)
+      << huge.error();
+  // One side over the limit, the area within it: still refused.
+  EXPECT_FALSE(read_png_bytes(png_header(kMaxPngSide + 1, 1), "wide.png").ok());
+  // At the limit the header passes the size check and fails only for the missing data.
+  const Result<RgbImage> side = read_png_bytes(png_header(kMaxPngSide, 1), "side.png");
+  ASSERT_FALSE(side.ok());
+  EXPECT_NE(side.error().find("could not be decoded"), std::string::npos) << side.error();
+}
+
+TEST(HostileInput, Sh3dArchiveDeclaringAHugeHomeXmlIsRefused) {
+  // 172 bytes whose Home.xml entry claims 4294967280 bytes (fuzz/corpus/sh3d_archive).
+  const auto archive = test::source_dir() / "fuzz/corpus/sh3d_archive/huge-entry.sh3d";
+  const Result<Sh3dImport> imported = import_sweethome3d_file(archive);
+  ASSERT_FALSE(imported.ok());
+  EXPECT_NE(imported.error().find("huge-entry.sh3d: its Home.xml entry is 4294967280 bytes"),
+            std::string::npos)
+      << imported.error();
+}
+
+TEST(HostileInput, ArcWithAToleranceBelowItsRoundingGetsBoundedChords) {
+  // 1 - tolerance / radius rounds to 1: the chord angle is 0 and the chord count infinite.
+  const std::vector<Point2> points = sh3d::split_arc({0, 0}, {1e9, 0}, 1.0, 1e-12);
+  ASSERT_GE(points.size(), 2u);
+  EXPECT_LE(points.size(), 257u);
+  EXPECT_EQ(points.front(), (Point2{0, 0}));
+  EXPECT_EQ(points.back(), (Point2{1e9, 0}));
+  for (const Point2 p : points) EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
+}
+
+TEST(HostileInput, TooManyObjectsIsAnInvalidValueNamingTheArrayAndCount) {
+  std::string text = R"({"format": "roomcad-plan", "version": 1, "walls": [0)";
+  for (std::size_t i = 0; i < io_detail::kMaxPlanObjects; ++i) text += ",0";
+  text += "]}";
+  const PlanReadResult read = read_plan_text(text, "many.json");
+  ASSERT_FALSE(read.plan);
+  ASSERT_EQ(read.report.items.size(), 1u);
+  const Diagnostic& d = read.report.items[0];
+  EXPECT_EQ(d.code, "invalid_value");
+  EXPECT_EQ(d.message,
+            "many.json:1:51: /walls: 1000001 objects; a plan may hold at most 1000000 of each "
+            "kind (walls, openings, lights, cameras)");
+}
+
+TEST(HostileInput, PlanFileOverTheSizeLimitIsRefusedUnread) {
+  test::TempDir dir;
+  const auto path = dir / "big.json";
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  // Sparse: no disk space used, and the reader must not read it anyway.
+  ASSERT_EQ(::ftruncate(::fileno(file), static_cast<off_t>(kMaxPlanFileBytes + 1)), 0);
+  std::fclose(file);
+  const PlanReadResult read = read_plan_file(path);
+  ASSERT_FALSE(read.plan);
+  ASSERT_EQ(read.report.items.size(), 1u);
+  EXPECT_EQ(read.report.items[0].code, "parse_error");
+  EXPECT_NE(read.report.items[0].message.find("big.json: it is 268435457 bytes"),
+            std::string::npos)
+      << read.report.items[0].message;
+}
+
+TEST(HostileInput, ManyProblemsOnOneLineGetTheirOwnColumns) {
+  // A minified file full of errors: each is located by scanning on from the previous one.
+  std::string text = R"({"format": "roomcad-plan", "version": 1, "walls": [)";
+  const std::size_t n = 2000;
+  for (std::size_t i = 0; i < n; ++i) text += std::string(i ? "," : "") + R"({"id": "é", "x": 1})";
+  text += "]}";
+  const PlanReadResult read = read_plan_text(text, "one-line.json");
+  ASSERT_FALSE(read.plan);
+  std::size_t unknown = 0;
+  for (const Diagnostic& d : read.report.items) {
+    if (d.code != "unknown_field") continue;
+    ASSERT_TRUE(d.source);
+    // Wall i starts at column 52 + 20 i ("é" is one character); its key "x" 12 further on.
+    EXPECT_EQ(d.source->line, 1u);
+    EXPECT_EQ(d.source->column, 52 + 20 * unknown + 12) << d.message;
+    ++unknown;
+  }
+  EXPECT_EQ(unknown, n);
+}
+
+TEST(HostileInput, LineColumnCursorMatchesLineColumnAtInAnyOrder) {
+  const std::string text = "ab\ncdé\n\nfgh";
+  io_detail::LineColumnCursor cursor(text);
+  for (const std::size_t offset : {0u, 4u, 7u, 2u, 11u, 50u, 3u, 3u}) {
+    const io_detail::LineColumn expected = io_detail::line_column_at(text, offset);
+    const io_detail::LineColumn got = cursor.at(offset);
+    EXPECT_EQ(got.line, expected.line) << offset;
+    EXPECT_EQ(got.column, expected.column) << offset;
+  }
+}
+
+}  // namespace
+}  // namespace roomcad

@@ -187,24 +187,16 @@ PlanReadResult read_plan_text(std::string_view text, std::string_view file) {
 }
 
 PlanReadResult read_plan_file(const std::filesystem::path& path) {
-  auto unreadable = [&path](std::string message) {
+  Result<std::string> text = read_text_file(path);
+  if (!text.ok()) {
     PlanReadResult result;
     Diagnostic d;
     d.code = "parse_error";
-    d.message = std::move(message);
+    d.message = text.error();
     d.source = SourceLocation{path.string(), "", 0, 0};
     result.report.add(std::move(d));
     return result;
-  };
-  std::error_code error;
-  const std::uintmax_t size = std::filesystem::file_size(path, error);
-  if (!error && size > kMaxPlanFileBytes) {
-    return unreadable("cannot read " + path.string() + ": it is " + std::to_string(size) +
-                      " bytes; plans of at most " + std::to_string(kMaxPlanFileBytes) +
-                      " bytes (256 MiB) are read");
   }
-  Result<std::string> text = read_text_file(path);
-  if (!text.ok()) return unreadable(text.error());
   return read_plan_text(text.value(), path.string());
 }
 

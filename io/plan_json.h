@@ -8,7 +8,6 @@
 // that reads back to the same double. Saving a canonical file reproduces it byte for byte.
 #pragma once
 
-#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -28,12 +27,8 @@ struct PlanReadResult {
 /// Parses a plan from JSON text. `file` names the source in diagnostics.
 [[nodiscard]] PlanReadResult read_plan_text(std::string_view text, std::string_view file);
 
-/// Largest plan file read_plan_file reads: parsing holds the text, the document and the
-/// position of every value, several times the file's size in memory.
-inline constexpr std::uintmax_t kMaxPlanFileBytes = 256u << 20;
-
-/// Reads a plan file. An unreadable file, or one larger than kMaxPlanFileBytes, is a
-/// parse_error naming it (and its size).
+/// Reads a plan file. An unreadable file, or one larger than kMaxTextFileBytes (io/text_file.h),
+/// is a parse_error naming it.
 [[nodiscard]] PlanReadResult read_plan_file(const std::filesystem::path& path);
 
 /// @return the canonical JSON text of a plan (ends with a newline).

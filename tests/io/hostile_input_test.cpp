@@ -13,6 +13,7 @@
 #include "io/image_io.h"
 #include "io/plan_json.h"
 #include "io/sweethome3d_import.h"
+#include "io/text_file.h"
 #include "support/run_command.h"
 
 namespace roomcad {
@@ -63,6 +64,23 @@ TEST(HostileInput, Sh3dArchiveDeclaringAHugeHomeXmlIsRefused) {
       << imported.error();
 }
 
+TEST(HostileInput, Sh3dHomeWithTooManyWallItemPairsIsRefusedBeforeMatching) {
+  std::string xml = "<home version='6500'>";
+  for (int i = 0; i < 50000; ++i)
+    xml += "<wall id='w" + std::to_string(i) + "' xStart='0' yStart='" + std::to_string(i) +
+           "' xEnd='100' yEnd='" + std::to_string(i) + "' thickness='10' height='250'/>";
+  for (int i = 0; i < 20001; ++i)
+    xml += "<doorOrWindow id='d" + std::to_string(i) +
+           "' x='50' y='0' elevation='0' width='90' depth='10' height='210' angle='0'/>";
+  xml += "</home>";
+  const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "crowded.Home.xml");
+  ASSERT_FALSE(imported.ok());
+  EXPECT_NE(imported.error().find("crowded.Home.xml: 50000 <wall> and 20001 <doorOrWindow> and "
+                                  "<level> elements; at most 1000000000 pairs"),
+            std::string::npos)
+      << imported.error();
+}
+
 TEST(HostileInput, ArcWithAToleranceBelowItsRoundingGetsBoundedChords) {
   // 1 - tolerance / radius rounds to 1: the chord angle is 0 and the chord count infinite.
   const std::vector<Point2> points = sh3d::split_arc({0, 0}, {1e9, 0}, 1.0, 1e-12);
@@ -87,21 +105,29 @@ TEST(HostileInput, TooManyObjectsIsAnInvalidValueNamingTheArrayAndCount) {
             "kind (walls, openings, lights, cameras)");
 }
 
-TEST(HostileInput, PlanFileOverTheSizeLimitIsRefusedUnread) {
+TEST(HostileInput, FilesOverTheSizeLimitAreRefusedUnread) {
   test::TempDir dir;
-  const auto path = dir / "big.json";
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  ASSERT_NE(file, nullptr);
-  // Sparse: no disk space used, and the reader must not read it anyway.
-  ASSERT_EQ(::ftruncate(::fileno(file), static_cast<off_t>(kMaxPlanFileBytes + 1)), 0);
-  std::fclose(file);
-  const PlanReadResult read = read_plan_file(path);
-  ASSERT_FALSE(read.plan);
-  ASSERT_EQ(read.report.items.size(), 1u);
-  EXPECT_EQ(read.report.items[0].code, "parse_error");
-  EXPECT_NE(read.report.items[0].message.find("big.json: it is 268435457 bytes"),
-            std::string::npos)
-      << read.report.items[0].message;
+  for (const char* name : {"big.json", "big.Home.xml"}) {
+    std::FILE* file = std::fopen((dir / name).c_str(), "wb");
+    ASSERT_NE(file, nullptr);
+    // Sparse: no disk space used, and the readers must not read it anyway.
+    ASSERT_EQ(::ftruncate(::fileno(file), static_cast<off_t>(kMaxTextFileBytes + 1)), 0);
+    std::fclose(file);
+  }
+  const std::string why = ": it is 268435457 bytes; files of at most 268435456 bytes (256 MiB)";
+  const PlanReadResult plan = read_plan_file(dir / "big.json");
+  ASSERT_FALSE(plan.plan);
+  ASSERT_EQ(plan.report.items.size(), 1u);
+  EXPECT_EQ(plan.report.items[0].code, "parse_error");
+  EXPECT_NE(plan.report.items[0].message.find("big.json" + why), std::string::npos)
+      << plan.report.items[0].message;
+  const Result<Sh3dImport> home = import_sweethome3d_file(dir / "big.Home.xml");
+  ASSERT_FALSE(home.ok());
+  EXPECT_NE(home.error().find("big.Home.xml" + why), std::string::npos) << home.error();
+  // The command exits 2 (could not run), naming the file.
+  const auto r = test::run_roomcad({"info", (dir / "big.json").string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("big.json" + why), std::string::npos) << r.err;
 }
 
 TEST(HostileInput, ManyProblemsOnOneLineGetTheirOwnColumns) {

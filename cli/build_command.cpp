@@ -45,18 +45,6 @@ bool parse_parts(const std::string& list, Parts& parts, std::string& bad) {
   return parts.walls || parts.floor || parts.fixtures || (bad = list, false);
 }
 
-/// The validation gate: errors stop the build unless --force.
-bool passes_validation(const BuildCommandOptions& options, const Plan& plan) {
-  const Report report = validate(plan);
-  if (report.items.empty()) return true;
-  std::fputs(format_report_text(report, use_colour(stderr)).c_str(), stderr);
-  if (report.ok()) return true;
-  std::fprintf(stderr, "roomcad build: %s: %s%s\n", options.plan.c_str(),
-               format_report_summary(report).c_str(),
-               options.force ? "; building anyway (--force)" : "; not built (use --force to try)");
-  return options.force;
-}
-
 struct CheckVerdict {
   SolidCheck solid;
   double analytic = 0.0;
@@ -138,9 +126,9 @@ int run_build(const BuildCommandOptions& options) {
       std::fprintf(stderr, "roomcad build: error: -o: %s\n", format.error().c_str());
       return kCannotRun;
     }
-  const LoadedPlan loaded = load_plan("build", options.plan);
+  // The validation gate: errors stop the build unless --force.
+  const LoadedPlan loaded = load_valid_plan("build", options.plan, options.force);
   if (!loaded.plan) return loaded.exit_status;
-  if (!passes_validation(options, *loaded.plan)) return kPlanErrors;
   build.boolean = options.boolean == "cgal" ? BooleanPath::cgal : BooleanPath::automatic;
   build.threads = options.threads;
   const bool export_walls = build.parts.walls;

@@ -18,18 +18,21 @@ TEST(Threads, BuildWritesTheSameBytesAtOneAndTwoThreads) {
   const std::vector<fs::path> plans = test::example_plans();
   ASSERT_GE(plans.size(), 4u);
   test::TempDir dir;
+  // The same file name in two folders: an OBJ names its MTL file.
+  fs::create_directory(dir / "1");
+  fs::create_directory(dir / "2");
   for (const fs::path& plan : plans) {
-    const std::string name = plan.stem().string();
+    const std::string obj = plan.stem().string() + ".obj";
+    const std::string mtl = plan.stem().string() + ".mtl";
     for (const char* threads : {"1", "2"}) {
-      const auto out = dir / (name + "-" + threads + ".obj");
+      const auto out = dir / threads / obj;
       const auto r = run_roomcad({"build", plan.string(), "--threads", threads, "-o", out.string()});
-      ASSERT_EQ(r.status, 0) << name << " --threads " << threads << ": " << r.err;
+      ASSERT_EQ(r.status, 0) << obj << " --threads " << threads << ": " << r.err;
     }
-    const std::string one = test::read_bytes(dir / (name + "-1.obj"));
-    EXPECT_GT(one.size(), 1000u) << name;
-    EXPECT_EQ(one, test::read_bytes(dir / (name + "-2.obj"))) << name;
-    EXPECT_EQ(test::read_bytes(dir / (name + "-1.mtl")), test::read_bytes(dir / (name + "-2.mtl")))
-        << name;
+    const std::string one = test::read_bytes(dir / "1" / obj);
+    EXPECT_GT(one.size(), 1000u) << obj;
+    EXPECT_TRUE(one == test::read_bytes(dir / "2" / obj)) << obj << " differs";
+    EXPECT_EQ(test::read_bytes(dir / "1" / mtl), test::read_bytes(dir / "2" / mtl)) << mtl;
   }
 }
 

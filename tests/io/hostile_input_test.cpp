@@ -19,37 +19,44 @@
 namespace roomcad {
 namespace {
 
-/// The bytes of a PNG signature and IHDR chunk claiming `width` x `height` RGB pixels, and no
-/// data (CRC included, so that libpng reads the header and allocation is the next step).
-std::string png_header(std::uint32_t width, std::uint32_t height) {
-  auto be32 = [](std::string& out, std::uint32_t v) {
+/// Appends a PNG chunk: length, type, data and the CRC-32 of type and data.
+void append_chunk(std::string& out, const std::string& type, const std::string& data) {
+  auto be32 = [&out](std::uint32_t v) {
     for (int shift = 24; shift >= 0; shift -= 8) out += static_cast<char>((v >> shift) & 0xff);
   };
-  std::string chunk = "IHDR";
-  be32(chunk, width);
-  be32(chunk, height);
-  chunk += std::string("\x08\x02\x00\x00\x00", 5);  // 8-bit RGB, no interlace
-  std::uint32_t crc = 0xffffffffu;                  // CRC-32 of type and data, as PNG says
-  for (const char c : chunk) {
+  be32(static_cast<std::uint32_t>(data.size()));
+  std::uint32_t crc = 0xffffffffu;
+  for (const char c : type + data) {
     crc ^= static_cast<unsigned char>(c);
     for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
   }
-  std::string out = "\x89PNG\r\n\x1a\n";
-  be32(out, 13);
-  out += chunk;
-  be32(out, ~crc);
-  return out;
+  out += type + data;
+  be32(~crc);
+}
+
+/// A PNG claiming `width` x `height` 8-bit RGB pixels and holding no pixel data: the header
+/// reads, and allocating the image is the next step.
+std::string png_claiming(std::uint32_t width, std::uint32_t height) {
+  std::string ihdr;
+  for (const std::uint32_t v : {width, height})
+    for (int shift = 24; shift >= 0; shift -= 8) ihdr += static_cast<char>((v >> shift) & 0xff);
+  ihdr += std::string("\x08\x02\x00\x00\x00", 5);  // 8-bit RGB, no interlace
+  std::string png = "\x89PNG\r\n\x1a\n";
+  append_chunk(png, "IHDR", ihdr);
+  append_chunk(png, "IDAT", "");
+  append_chunk(png, "IEND", "");
+  return png;
 }
 
 TEST(HostileInput, PngClaimingAHugeImageIsRefusedBeforeAllocation) {
-  const Result<RgbImage> huge = read_png_bytes(png_header(100000, 100000), "huge.png");
+  const Result<RgbImage> huge = read_png_bytes(png_claiming(100000, 100000), "huge.png");
   ASSERT_FALSE(huge.ok());
   EXPECT_NE(huge.error().find("'huge.png' is 100000 x 100000 pixels"), std::string::npos)
       << huge.error();
   // One side over the limit, the area within it: still refused.
-  EXPECT_FALSE(read_png_bytes(png_header(kMaxPngSide + 1, 1), "wide.png").ok());
+  EXPECT_FALSE(read_png_bytes(png_claiming(kMaxPngSide + 1, 1), "wide.png").ok());
   // At the limit the header passes the size check and fails only for the missing data.
-  const Result<RgbImage> side = read_png_bytes(png_header(kMaxPngSide, 1), "side.png");
+  const Result<RgbImage> side = read_png_bytes(png_claiming(kMaxPngSide, 1), "side.png");
   ASSERT_FALSE(side.ok());
   EXPECT_NE(side.error().find("could not be decoded"), std::string::npos) << side.error();
 }

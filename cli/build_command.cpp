@@ -3,19 +3,17 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "cli/command.h"
+#include "cli/parts_option.h"
 #include "cli/plan_loading.h"
 #include "io/mesh_export.h"
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
-#include "validation/report_format.h"
-#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -31,19 +29,6 @@ struct BuildCommandOptions {
   bool force = false;
   bool stats = false;
 };
-
-/// Parses `walls,floor,fixtures` (any subset, any order). @return false on an unknown name.
-bool parse_parts(const std::string& list, Parts& parts, std::string& bad) {
-  parts = {false, false, false};
-  std::stringstream in(list);
-  for (std::string name; std::getline(in, name, ',');) {
-    if (name == "walls") parts.walls = true;
-    else if (name == "floor") parts.floor = true;
-    else if (name == "fixtures") parts.fixtures = true;
-    else return bad = name, false;
-  }
-  return parts.walls || parts.floor || parts.fixtures || (bad = list, false);
-}
 
 struct CheckVerdict {
   SolidCheck solid;

@@ -31,5 +31,6 @@ void add_add_command(CLI::App& root, Commands& commands);
 void add_rm_command(CLI::App& root, Commands& commands);
 void add_transform_commands(CLI::App& root, Commands& commands);  ///< move, rotate, scale
 void add_set_command(CLI::App& root, Commands& commands);
+void add_render_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add_rm_command(app, commands);
   add_transform_commands(app, commands);
   add_set_command(app, commands);
+  add_render_command(app, commands);
 
   try {
     app.parse(argc, argv);

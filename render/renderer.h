@@ -64,7 +64,7 @@ struct RenderOptions {
   double view_fov_deg = 50.0;            ///< and field of view (the default camera)
   ShadingMode shading = ShadingMode::phong;
   ShadowFilter shadows = ShadowFilter::pcf;
-  int shadow_resolution = 2048;          ///< texels per side of each light's map, 1 .. 8192
+  int shadow_resolution = 1024;          ///< texels per side of each light's map, 1 .. 8192
   int ssaa = 1;                          ///< samples per pixel side: 1, 2 or 4 (see kMaxImageSamples)
   Color background{0xff, 0xff, 0xff};
   std::vector<Light> lights{};           ///< empty: default_light(); at most kMaxLights used

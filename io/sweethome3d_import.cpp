@@ -147,6 +147,13 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
   out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
   const Box box = bounds_of(out.plan.walls);
+  // The site's cell counts are integers: a home spread over more cells than any plan could
+  // use (coordinates like 1e115 cm) is refused rather than overflowing them.
+  const double span = std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+  if (!((span + 2 * options.site_margin) / options.cell_size <= kMaxSiteCellsPerSide))
+    return Result<Sh3dImport>::failure(fmt::format(
+        "{}: the walls span {:g} m, more than {:g} cells of {:g} m; check the home's coordinates",
+        file, span, kMaxSiteCellsPerSide, options.cell_size));
   out.plan.site = make_site(box, options);
   out.plan.lights = {default_light()};
   out.plan.cameras = make_cameras(home, box, out.z_shift);

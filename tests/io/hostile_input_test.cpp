@@ -88,6 +88,24 @@ TEST(HostileInput, Sh3dHomeWithTooManyWallItemPairsIsRefusedBeforeMatching) {
       << imported.error();
 }
 
+TEST(HostileInput, Sh3dHomeSpreadBeyondAnySiteIsRefused) {
+  // Found by fuzz_sh3d_xml (fuzz/corpus/sh3d_xml/crash-site-cells.Home.xml): the cell count of
+  // a site 3.5e115 m wide overflowed its integer.
+  const std::string xml =
+      "<home><wall id='w' xStart='0' yStart='0' xEnd='3.5e117' yEnd='0' thickness='10' "
+      "height='250'/></home>";
+  const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "far.Home.xml");
+  ASSERT_FALSE(imported.ok());
+  EXPECT_NE(imported.error().find("far.Home.xml: the walls span 3.5e+115 m, more than 1e+09 "
+                                  "cells of 1 m"),
+            std::string::npos)
+      << imported.error();
+  const auto found = test::source_dir() / "fuzz/corpus/sh3d_xml/crash-site-cells.Home.xml";
+  const Result<Sh3dImport> again = import_sweethome3d_file(found);
+  ASSERT_FALSE(again.ok());
+  EXPECT_NE(again.error().find("more than 1e+09 cells"), std::string::npos) << again.error();
+}
+
 TEST(HostileInput, ArcWithAToleranceBelowItsRoundingGetsBoundedChords) {
   // 1 - tolerance / radius rounds to 1: the chord angle is 0 and the chord count infinite.
   const std::vector<Point2> points = sh3d::split_arc({0, 0}, {1e9, 0}, 1.0, 1e-12);

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# The main job on a bundled example: set up, build, validate the plan, describe it and render
-# a picture of it (build/demo.png).
+# The main job on a bundled example: set up, build roomcad, then validate the plan, describe
+# it, build and check its 3D model (build/demo.obj), render a picture (build/demo.png) and draw
+# its floor plan (build/demo-plan.svg).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 plan=${1:-examples/house.json}
 bash scripts/build.sh
-./build/roomcad info "$plan"
-./build/roomcad render "$plan" -o build/demo.png --width 1280 --height 720 --ssaa 2
-echo "demo: wrote build/demo.png"
+roomcad=./build/roomcad
+"$roomcad" validate "$plan"
+"$roomcad" info "$plan"
+"$roomcad" build "$plan" -o build/demo.obj --check
+"$roomcad" render "$plan" -o build/demo.png --width 1280 --height 720 --ssaa 2
+"$roomcad" draw "$plan" --view plan --scale 1:100 -o build/demo-plan.svg
+echo "demo: wrote build/demo.obj (+ .mtl), build/demo.png and build/demo-plan.svg"

@@ -15,10 +15,9 @@ namespace {
 using namespace sh3d_test;
 
 // The homes whose model builds today: all but two. 3-BedroomHouseWithMezzanine stops in
-// build_model ("a wall_end face of 'wall32' ... would make the mesh non-manifold", at a T that
-// meets the joint of two nearly collinear walls) and 4-BedroomHouse aborts inside OpenMesh's
-// add_face (walls stacked on a T junction): modeling issues, reported with four-wall repros,
-// to be added here when fixed.
+// build_model with a clear error ("a wall_end face of 'wall32' ... would make the mesh
+// non-manifold", at a T that meets the joint of two nearly collinear walls); 4-BedroomHouse
+// fails an assertion inside OpenMesh's add_face. Modeling issues, to be added here when fixed.
 const char* const kBuildingHomes[] = {
     "eteks-example-homes/1-BedroomApartment",     "eteks-example-homes/2-BedroomApartment",
     "eteks-example-homes/2-BedroomHouseWithBasement", "eteks-example-homes/3-BedroomApartment",

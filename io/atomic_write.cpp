@@ -74,7 +74,10 @@ std::filesystem::path folder_of(const std::filesystem::path& target) {
 /// The start of the names of the target's temporary files: `.<name>.tmp-`; the writer's
 /// process id, a dash and six random characters follow.
 std::string temporary_prefix(const std::filesystem::path& target) {
-  return "." + target.filename().string() + ".tmp-";
+  std::string prefix = target.filename().string();
+  prefix.insert(prefix.begin(), '.');  // appends, not operator+: GCC 12 warns falsely there
+  prefix.append(".tmp-");
+  return prefix;
 }
 
 /// Removes the temporary files of `target` left by writers that were killed midway (a
@@ -103,9 +106,9 @@ void remove_stale_temporaries(const std::filesystem::path& target) {
 class TemporaryFile {
  public:
   explicit TemporaryFile(const std::filesystem::path& target) {
-    name_ = (folder_of(target) /
-             (temporary_prefix(target) + std::to_string(::getpid()) + "-XXXXXX"))
-                .string();
+    std::string leaf = temporary_prefix(target);
+    leaf.append(std::to_string(::getpid())).append("-XXXXXX");
+    name_ = (folder_of(target) / leaf).string();
     fd_ = ::mkstemp(name_.data());
     if (fd_ < 0) error_ = errno;
     created_ = fd_ >= 0;

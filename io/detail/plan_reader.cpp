@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/detail/json_text.h"
+#include "modeling/nearest_name.h"
 
 namespace roomcad::io_detail {
 namespace {
@@ -25,22 +26,6 @@ constexpr EnumName<Swing> kSwings[] = {{"in", Swing::in}, {"out", Swing::out}};
 constexpr EnumName<LightType> kLightTypes[] = {{"directional", LightType::directional}};
 constexpr EnumName<Projection> kProjections[] = {{"perspective", Projection::perspective},
                                                  {"orthographic", Projection::orthographic}};
-
-/// Levenshtein distance, for "did you mean" on unknown fields.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 /// How a found value is shown in a message.
 std::string describe(const Json& v) {
@@ -143,18 +128,9 @@ class PlanReader {
                std::initializer_list<std::string_view> known) {
     std::string what = "unknown field \"" + key + "\"; its value is kept as is";
     std::string fix = "remove the field if it is a mistake";
-    std::string_view best;
-    std::size_t best_distance = 3;
-    for (std::string_view k : known) {
-      const std::size_t d = edit_distance(key, k);
-      if (d < best_distance) {
-        best = k;
-        best_distance = d;
-      }
-    }
-    if (!best.empty()) {
-      what += " (did you mean \"" + std::string(best) + "\"?)";
-      fix = "rename it to \"" + std::string(best) + "\"";
+    if (const auto best = nearest_name(key, {known.begin(), known.size()})) {
+      what += " (did you mean \"" + std::string(*best) + "\"?)";
+      fix = "rename it to \"" + std::string(*best) + "\"";
     }
     report(Severity::warning, "unknown_field", p, true, what, std::move(fix));
     extra.push_back(ExtraField{key, canonical_text(v)});

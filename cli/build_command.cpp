@@ -168,7 +168,7 @@ void add_build_command(CLI::App& root, Commands& commands) {
       ->capture_default_str();
   app->add_flag("--force", options->force, "build even if the plan has validation errors");
   app->add_option("--threads", options->threads, "worker threads, 0 for all cores (same output)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, 256))  // as render/renderer.h kMaxThreads: no thread storm
       ->capture_default_str();
   app->add_flag("--stats", options->stats, "print paths taken, time and face counts to stderr");
   app->footer(

@@ -202,16 +202,30 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
 }  // namespace
 
 std::string check_render_options(const RenderOptions& o) {
-  if (o.width < 1 || o.width > 16384 || o.height < 1 || o.height > 16384) {
-    return fmt::format("width x height is {} x {}; each must be 1 to 16384", o.width, o.height);
+  if (o.width < 1 || o.width > kMaxImageSide || o.height < 1 || o.height > kMaxImageSide) {
+    return fmt::format("width x height is {} x {}; each must be 1 to {}", o.width, o.height,
+                       kMaxImageSide);
+  }
+  const long long pixels = static_cast<long long>(o.width) * o.height;
+  if (pixels > kMaxImagePixels) {
+    return fmt::format("width x height is {} x {} = {} pixels; at most {} are rendered", o.width,
+                       o.height, pixels, kMaxImagePixels);
   }
   if (o.ssaa != 1 && o.ssaa != 2 && o.ssaa != 4) {
     return fmt::format("ssaa is {}; it must be 1, 2 or 4", o.ssaa);
   }
-  if (o.shadow_resolution < 1 || o.shadow_resolution > 16384) {
-    return fmt::format("shadow resolution is {}; it must be 1 to 16384", o.shadow_resolution);
+  if (pixels * o.ssaa * o.ssaa > kMaxImageSamples) {
+    return fmt::format("width x height x ssaa^2 is {} x {} x {} = {} samples; at most {}",
+                       o.width, o.height, o.ssaa * o.ssaa, pixels * o.ssaa * o.ssaa,
+                       kMaxImageSamples);
   }
-  if (o.threads < 0) return fmt::format("threads is {}; it must be 0 (all) or more", o.threads);
+  if (o.shadow_resolution < 1 || o.shadow_resolution > kMaxShadowResolution) {
+    return fmt::format("shadow resolution is {}; it must be 1 to {}", o.shadow_resolution,
+                       kMaxShadowResolution);
+  }
+  if (o.threads < 0 || o.threads > kMaxThreads) {
+    return fmt::format("threads is {}; it must be 0 (all cores) to {}", o.threads, kMaxThreads);
+  }
   const double fov = o.camera ? o.camera->fov_deg : o.view_fov_deg;
   if (!(fov > 0.0 && fov < 180.0)) {
     return fmt::format("field of view is {} degrees; it must be between 0 and 180", fov);

@@ -52,7 +52,7 @@ class PlanReader {
  public:
   PlanReader(const PositionedJson& doc, std::string_view text, std::string_view file,
              Report& report)
-      : doc_(doc), text_(text), file_(file), report_(report) {}
+      : doc_(doc), text_(text), file_(file), report_(report), cursor_(text) {}
 
   Plan read() {
     Plan plan;
@@ -98,7 +98,7 @@ class PlanReader {
     const auto& offsets = at_key ? doc_.key_offsets : doc_.value_offsets;
     const auto found = offsets.find(pointer);
     const std::size_t offset = found == offsets.end() ? 0 : found->second;
-    const LineColumn at = line_column_at(text_, offset);
+    const LineColumn at = cursor_.at(offset);
     Diagnostic d;
     d.severity = severity;
     d.code = std::move(code);
@@ -169,6 +169,11 @@ class PlanReader {
   void read_array(const Json& v, const std::string& p, std::vector<T>& out,
                   T (PlanReader::*read_one)(const Json&, const std::string&)) {
     if (!v.is_array()) return wrong_type(p, "an array", v);
+    if (v.size() > kMaxPlanObjects)
+      return invalid(p, std::to_string(v.size()) + " objects; a plan may hold at most " +
+                            std::to_string(kMaxPlanObjects) +
+                            " of each kind (walls, openings, lights, cameras)",
+                     "split the plan into several files");
     out.reserve(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) {
       const std::string ip = pointer_child(p, i);
@@ -375,6 +380,7 @@ class PlanReader {
   std::string_view text_;
   std::string_view file_;
   Report& report_;
+  LineColumnCursor cursor_;  ///< diagnostics come in file order, mostly
   double scale_ = 1.0;                ///< divisor from the file's units to metres
   std::vector<std::string> objects_;  ///< id of the object being read, for diagnostics
 };

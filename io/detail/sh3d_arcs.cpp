@@ -15,7 +15,10 @@ double distance(Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 /// Cuts (as fractions of the sweep) splitting (from, to] into equal chords of at most `step`.
 void add_even_cuts(double from, double to, double step, std::vector<double>& cuts) {
-  const int n = std::clamp(static_cast<int>(std::ceil((to - from) / step)), 1, kMaxChords);
+  // Clamped as a double: a zero step (tolerance below the radius's rounding) gives infinity,
+  // which no int can hold.
+  const double wanted = std::ceil((to - from) / step);
+  const int n = wanted < kMaxChords ? std::max(1, static_cast<int>(wanted)) : kMaxChords;
   for (int k = 1; k <= n; ++k) cuts.push_back(from + (to - from) * k / n);
 }
 

@@ -163,9 +163,7 @@ void add_build_command(CLI::App& root, Commands& commands) {
                 "check the wall solid as written (closed, 2-manifold, no self-intersection or\n"
                 "degenerate face, outward, genus) and its volume against the plan's analytic volume\n"
                 "(relative difference at most 1e-9); exit 1 if any check fails");
-  app->add_option("--format", options->format, "format of the --check report: text or json")
-      ->check(CLI::IsMember({"text", "json"}))
-      ->capture_default_str();
+  add_format_option(*app, options->format, "format of the --check report");
   app->add_flag("--force", options->force, "build even if the plan has validation errors");
   app->add_option("--threads", options->threads, "worker threads, 0 for all cores (same output)")
       ->check(CLI::Range(0, 256))  // as render/renderer.h kMaxThreads: no thread storm

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -19,6 +20,14 @@ struct Command {
   std::function<int()> run;
 };
 using Commands = std::vector<Command>;
+
+/// Adds `--format text|json` (default text) to a command; `what` says what it formats.
+inline CLI::Option* add_format_option(CLI::App& app, std::string& format,
+                                      const std::string& what = "output format") {
+  return app.add_option("--format", format, what + ": text (default) or json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
+}
 
 void add_info_command(CLI::App& root, Commands& commands);
 void add_fmt_command(CLI::App& root, Commands& commands);

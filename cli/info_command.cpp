@@ -253,9 +253,7 @@ void add_info_command(CLI::App& root, Commands& commands) {
       "reading are printed to stderr; warnings (such as unknown fields) do not stop it. It does\n"
       "not validate the geometry (see `roomcad validate`).");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
-  app->add_option("--format", options->format, "output format: text (default) or json")
-      ->check(CLI::IsMember({"text", "json"}))
-      ->capture_default_str();
+  add_format_option(*app, options->format);
   app->footer(
       "Exit status: 0 described; 1 PLAN has errors (printed to stderr); 2 could not run (bad\n"
       "arguments, PLAN unreadable).\n"

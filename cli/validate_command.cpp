@@ -67,9 +67,7 @@ void add_validate_command(CLI::App& root, Commands& commands) {
       "is never overlapping. Text names the objects, the place and a concrete fix; JSON is the\n"
       "spec's {\"ok\", \"errors\", \"warnings\"} object. Colour only on a terminal.");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
-  app->add_option("--format", options->format, "output format: text (default) or json")
-      ->check(CLI::IsMember({"text", "json"}))
-      ->capture_default_str();
+  add_format_option(*app, options->format);
   app->footer(
       "Exit status: 0 no errors (warnings allowed); 1 the plan has errors; 2 could not run\n"
       "(bad arguments, PLAN unreadable).\n"

@@ -17,11 +17,14 @@ struct PointKey {
 };
 
 struct PointKeyHash {
+  // splitmix64's finaliser on each coordinate: doubles of a grid differ in few bits.
+  static std::uint64_t mix(std::uint64_t x) {
+    x ^= x >> 30, x *= 0xBF58476D1CE4E5B9ull;
+    x ^= x >> 27, x *= 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+  }
   std::size_t operator()(const PointKey& k) const {
-    std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
-    h ^= k.y + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
-    h ^= k.z + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
-    return static_cast<std::size_t>(h);
+    return static_cast<std::size_t>(mix(k.x) ^ mix(k.y + 0x9E3779B97F4A7C15ull) ^ mix(k.z * 3 + 1));
   }
 };
 
@@ -53,7 +56,13 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
   SolidMesh mesh;
   add_face_properties(mesh);
   const FacePropertyHandles props = face_property_handles(mesh);
+  std::size_t faces = 0, corners = 0;
+  for (const FaceSoup& soup : soups)
+    for (const SoupFace& f : soup) ++faces, corners += f.points.size();
+  // Each corner is shared by about three faces; reserving avoids rehashing and regrowing.
+  mesh.reserve(corners / 3 + 1, corners / 2 + faces, faces);
   std::unordered_map<PointKey, SolidMesh::VertexHandle, PointKeyHash> vertices;
+  vertices.reserve(corners / 3 + 1);
   std::vector<SolidMesh::VertexHandle> face;
   for (const FaceSoup& soup : soups) {
     if (!share) vertices.clear();

@@ -22,6 +22,9 @@ using Commands = std::vector<Command>;
 
 void add_info_command(CLI::App& root, Commands& commands);
 void add_fmt_command(CLI::App& root, Commands& commands);
+void add_surface_command(CLI::App& root, Commands& commands);
+void add_draw_command(CLI::App& root, Commands& commands);
+void add_import_command(CLI::App& root, Commands& commands);
 void add_build_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   Commands commands;
   add_info_command(app, commands);
   add_fmt_command(app, commands);
+  add_surface_command(app, commands);
+  add_draw_command(app, commands);
+  add_import_command(app, commands);
   add_build_command(app, commands);
 
   try {

@@ -43,7 +43,11 @@ const Wall* find_wall(const Plan& plan, std::string_view id) {
   return nullptr;
 }
 
-Light default_light() { return Light{.id = "sun"}; }
+Light default_light() {
+  Light sun;
+  sun.id = "sun";
+  return sun;
+}
 
 std::string_view to_string(OpeningType t) { return t == OpeningType::door ? "door" : "window"; }
 std::string_view to_string(Hinge h) { return h == Hinge::left ? "left" : "right"; }

@@ -11,6 +11,9 @@ namespace roomcad {
 
 struct ValidateOptions {
   bool room_warnings = true;  ///< find rooms and warn about rooms with no door or no window
+  /// warn about the fields kept in `extra`; the plan reader already reports them (with line
+  /// and column), so commands that read a file turn this off.
+  bool unknown_field_warnings = true;
 };
 
 /// Checks a plan. Never throws on any Plan value (NaN, negative sizes, dangling references

@@ -1,0 +1,111 @@
+// Render benchmarks: frame times at 1920 x 1080 for grids of rooms from ~1k to ~2M triangles,
+// with and without PCF shadows, at 1 and 2 threads; and shadow-map resolution against shadow
+// error (vs ray-traced shadows) and time. The scene is flattened once (as a GPU uploads its
+// mesh once), so a frame is what render_scene does.
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+#include "render/renderer.h"
+#include "room_grid.h"
+
+namespace roomcad {
+namespace {
+
+const Scene& grid_scene(int n) {
+  static std::map<int, std::unique_ptr<Scene>> cache;
+  auto& slot = cache[n];
+  if (!slot) slot = std::make_unique<Scene>(flatten_model(bench::make_room_grid(n)));
+  return *slot;
+}
+
+/// Args: rooms per side, shadows (0 off, 1 pcf), threads.
+void BM_Frame1080p(benchmark::State& state) {
+  const Scene& scene = grid_scene(static_cast<int>(state.range(0)));
+  const RenderOptions options{.width = 1920, .height = 1080,
+                              .shadows = state.range(1) ? ShadowFilter::pcf : ShadowFilter::off,
+                              .threads = static_cast<int>(state.range(2))};
+  FrameBuffers out;
+  RenderStats stats, sum;
+  for (auto _ : state) {
+    render_scene(scene, options, out, &stats);
+    sum.shadow_ms += stats.shadow_ms;
+    sum.raster_ms += stats.raster_ms;
+  }
+  const double frames = static_cast<double>(state.iterations());
+  state.counters["triangles"] = static_cast<double>(scene.triangle_count());
+  state.counters["shadow_ms"] = sum.shadow_ms / frames;
+  state.counters["raster_ms"] = sum.raster_ms / frames;
+}
+BENCHMARK(BM_Frame1080p)
+    ->ArgsProduct({{2, 10, 25, 50, 82}, {0, 1}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(0.3);
+
+/// Shadowed floor pixels of a hard-shadow frame (unlit: a shadowed floor pixel is darker).
+std::vector<int> shadow_classes(const FrameBuffers& out) {
+  std::vector<int> classes(out.objects.ids.size(), -1);
+  for (std::size_t i = 0; i < classes.size(); ++i) {
+    if (out.objects.ids[i] == 0) classes[i] = out.color.pixels[3 * i] < test::kFloorColor.r / 2;
+  }
+  return classes;
+}
+
+/// The ray-traced shadow class of every floor pixel of the 3 x 3 grid seen from the top.
+const std::vector<int>& reference_classes(const Model& m, const CameraMatrices& cam, int w,
+                                          int h) {
+  static std::vector<int> classes;
+  if (!classes.empty()) return classes;
+  const test::RayCaster all({&m.walls, &m.floor, &m.fixtures}), occluders({&m.walls, &m.fixtures});
+  const glm::dvec3 to_light = -glm::normalize(glm::dvec3(-0.4, 0.5, -1.0));
+  classes.assign(static_cast<std::size_t>(w) * h, -1);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const test::PixelRay r = test::pixel_ray(cam, w, h, x, y);
+      if (all.first_object(r.origin, r.direction) != 0) continue;
+      const glm::dvec3 p = r.origin + r.direction * (-r.origin.z / r.direction.z);
+      classes[static_cast<std::size_t>(y) * w + x] = occluders.is_blocked(p, to_light);
+    }
+  return classes;
+}
+
+/// Arg: shadow-map resolution. Counters: the share of floor pixels whose hard shadow differs
+/// from the ray-traced one, and the shadow pass time.
+void BM_ShadowResolutionError(benchmark::State& state) {
+  static const Model model = bench::make_room_grid(3);
+  const Scene scene = flatten_model(model);
+  RenderOptions options{.width = 800, .height = 800, .shading = ShadingMode::unlit,
+                        .shadows = ShadowFilter::hard,
+                        .shadow_resolution = static_cast<int>(state.range(0))};
+  options.camera = frame_view(scene.bounds, ViewPreset::top, Projection::orthographic, 50.0, 1.0);
+  FrameBuffers out;
+  RenderStats stats;
+  double shadow_ms = 0.0;
+  for (auto _ : state) {
+    render_scene(scene, options, out, &stats);
+    shadow_ms += stats.shadow_ms;
+  }
+  const auto& ref = reference_classes(model, frame_camera(scene, options), 800, 800);
+  const std::vector<int> got = shadow_classes(out);
+  double floor = 0, wrong = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    if (ref[i] < 0 || got[i] < 0) continue;
+    ++floor;
+    wrong += ref[i] != got[i];
+  }
+  state.counters["error_pct"] = 100.0 * wrong / floor;
+  state.counters["texel_cm"] =
+      100.0 * render_shadow_map(scene, default_light(), options.shadow_resolution).texel_size();
+  state.counters["shadow_ms"] = shadow_ms / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_ShadowResolutionError)
+    ->Arg(256)->Arg(512)->Arg(1024)->Arg(2048)->Arg(4096)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+}  // namespace roomcad
+
+BENCHMARK_MAIN();

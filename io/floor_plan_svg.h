@@ -1,0 +1,18 @@
+// Floor plans (render/floor_plan.h) as SVG documents.
+#pragma once
+
+#include <string>
+
+#include "io/svg_writer.h"
+#include "render/floor_plan.h"
+
+namespace roomcad {
+
+/// Builds the SVG of a floor plan on a page of its size (mm). Each kind of element sits in a
+/// group with an id and class of its own: rooms, walls-below, walls-above, cut-walls, windows,
+/// doors, dimensions, room-labels, scale-bar, labels. Cut walls are filled solid (poché).
+/// @return the document. O(elements).
+[[nodiscard]] SvgDocument make_floor_plan_svg(const FloorPlanDrawing& drawing,
+                                              const std::string& title);
+
+}  // namespace roomcad

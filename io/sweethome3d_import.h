@@ -1,0 +1,62 @@
+// Importing Sweet Home 3D homes (`Home.xml`, or a `.sh3d` archive holding one) as plans.
+//
+// Mapping (centimetres to metres, Sweet Home 3D's downward y negated):
+// - each straight `<wall>` becomes a wall; a curved one (`arcExtent`) a chain of straight walls
+//   `<id>-arc1..n` within `chord_tolerance` of the arc; a sloped top (`heightAtEnd`) is made
+//   flat at its higher end. Walls of a level stand on its elevation, and on every level but the
+//   lowest reach down through the floor slab as in Sweet Home 3D, so storeys stack with no gap;
+// - each `<doorOrWindow>` becomes an opening of the wall that holds it (found by geometry: see
+//   sh3d::find_host_wall), width along the wall, sill from its elevation;
+// - the whole home is raised so that its lowest wall stands at z = 0 (a basement below ground
+//   in Sweet Home 3D starts at 0 in the plan);
+// - the site is a grid of `cell_size` tiles covering the walls plus `site_margin`;
+// - one default sun, and the home's observer and aerial cameras.
+// Every approximation is a warning that names the wall or item concerned.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "io/result.h"
+#include "modeling/plan.h"
+#include "validation/report.h"
+
+namespace roomcad {
+
+struct Sh3dImportOptions {
+  std::optional<std::string> level;  ///< import only the level with this name; all if unset
+  double chord_tolerance = 0.01;     ///< metres between a curved wall and its straight pieces
+  double site_margin = 1.0;          ///< metres of site around the walls
+  double cell_size = 1.0;            ///< site tile side, metres
+  /// Join tolerance of the plan. Sweet Home 3D keeps float32 centimetres (a few 1e-7 m of
+  /// rounding at 10 m), so an end point drawn onto another wall's centre line can miss it by
+  /// about 1e-6 m; 1e-5 m absorbs that and is far below any drawn detail.
+  double join_tolerance = 1e-5;
+};
+
+struct Sh3dImport {
+  Plan plan;
+  Report warnings;              ///< every approximation or omission, naming the object
+  std::size_t source_walls = 0;  ///< `<wall>` elements imported (before splitting arcs)
+  std::size_t source_items = 0;  ///< `<doorOrWindow>` elements on the imported levels
+  double z_shift = 0.0;          ///< metres added to every Sweet Home 3D elevation
+};
+
+/// Imports the text of a `Home.xml`. `file` names the source in messages.
+/// @return the plan and its warnings, or an error naming the file, element, attribute and
+///   value (malformed XML, a missing or non-numeric attribute, an unknown `--level` name, a
+///   home with no walls to import). The plan is not validated. O(walls x items).
+[[nodiscard]] Result<Sh3dImport> import_sweethome3d_text(std::string_view xml,
+                                                         std::string_view file,
+                                                         const Sh3dImportOptions& options = {});
+
+/// Imports a `Home.xml` file, or a `.sh3d` archive (recognised by its content, whatever its
+/// name) through its `Home.xml` entry.
+/// @return as import_sweethome3d_text; unreadable files and archives without `Home.xml` are
+///   errors naming the file.
+[[nodiscard]] Result<Sh3dImport> import_sweethome3d_file(const std::filesystem::path& path,
+                                                         const Sh3dImportOptions& options = {});
+
+}  // namespace roomcad

@@ -1,0 +1,144 @@
+// find_joins: broad phase on grown centre-line boxes, then exact tests on the candidate pairs.
+//
+// End clusters. The tolerance makes "shared end point" non-transitive: ends A, B, C may have
+// A~B and B~C within tolerance but A and C farther apart. We decide per end, not per
+// cluster: wall w's end E is mitred to wall v's end F only if E is within tolerance of F,
+// v is the ONLY other wall whose centre line comes within tolerance of E, w is the only other
+// wall within tolerance of F, and the two centre lines do not overlap along a length. So any
+// chain of three or more ends (or a third centre line through the corner) unites all of
+// them, and a mitre pairs exactly two ends, both ways. This is the spec's "exactly two walls
+// and touched by no third centre line", made symmetric.
+#include "modeling/joins.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "modeling/broad_phase.h"
+#include "modeling/detail/segment_predicates.h"
+
+namespace roomcad {
+namespace {
+
+bool is_usable(const Wall& w) {
+  return std::isfinite(w.from.x) && std::isfinite(w.from.y) && std::isfinite(w.to.x) &&
+         std::isfinite(w.to.y) && w.from != w.to;
+}
+
+Point2 end_point(const Wall& w, int end) { return end == 0 ? w.from : w.to; }
+
+/// What one wall end sees: how many other centre lines come within tolerance, the last such
+/// wall, and which of its ends (if any) is within tolerance of this end.
+struct EndNeighbours {
+  int count = 0;
+  std::size_t wall = 0;
+  int matched_ends = 0;  ///< ends of `wall` within tolerance of this end
+  int matched_end = 0;
+};
+
+struct PairContact {
+  bool joined = false;
+  std::optional<Point2> point;  ///< first end within tolerance of the other wall
+};
+
+/// Tests the four ends of a candidate pair against the other centre line and records them.
+PairContact touch_ends(const Plan& plan, std::size_t a, std::size_t b, double tol,
+                       std::vector<std::array<EndNeighbours, 2>>& ends) {
+  PairContact contact;
+  const std::size_t walls[2] = {a, b};
+  for (int k = 0; k < 2; ++k) {
+    const Wall& w = plan.walls[walls[k]];
+    const Wall& v = plan.walls[walls[1 - k]];
+    for (int e = 0; e < 2; ++e) {
+      const Point2 p = end_point(w, e);
+      if (!detail::is_near_segment(p, v.from, v.to, tol)) continue;
+      contact.joined = true;
+      if (!contact.point) contact.point = p;
+      EndNeighbours& n = ends[walls[k]][e];
+      ++n.count;
+      n.wall = walls[1 - k];
+      n.matched_ends = 0;
+      for (int f = 0; f < 2; ++f)
+        if (detail::is_near_point(p, end_point(v, f), tol)) {
+          ++n.matched_ends;
+          n.matched_end = f;
+        }
+    }
+  }
+  return contact;
+}
+
+/// @return the crossing of two centre lines that meet (rounded; only for reports).
+Point2 crossing_point(const Wall& a, const Wall& b) {
+  const double dx1 = a.to.x - a.from.x, dy1 = a.to.y - a.from.y;
+  const double dx2 = b.to.x - b.from.x, dy2 = b.to.y - b.from.y;
+  const double denom = dx1 * dy2 - dy1 * dx2;
+  if (denom == 0.0) return a.from;
+  const double s = ((b.from.x - a.from.x) * dy2 - (b.from.y - a.from.y) * dx2) / denom;
+  return {a.from.x + s * dx1, a.from.y + s * dy1};
+}
+
+bool is_mitre_end(const Plan& plan, const std::vector<std::array<EndNeighbours, 2>>& ends,
+                  std::size_t w, int e) {
+  const EndNeighbours& mine = ends[w][e];
+  if (mine.count != 1 || mine.matched_ends != 1) return false;
+  const EndNeighbours& theirs = ends[mine.wall][mine.matched_end];
+  if (theirs.count != 1 || theirs.matched_ends != 1 || theirs.wall != w ||
+      theirs.matched_end != e)
+    return false;
+  const Wall& a = plan.walls[w];
+  const Wall& b = plan.walls[mine.wall];
+  return !detail::overlap_collinearly(a.from, a.to, b.from, b.to);
+}
+
+std::vector<Box2> centre_line_boxes(const Plan& plan, double tol) {
+  std::vector<Box2> boxes;
+  boxes.reserve(plan.walls.size());
+  for (std::size_t i = 0; i < plan.walls.size(); ++i) {
+    const Wall& w = plan.walls[i];
+    if (!is_usable(w)) continue;
+    Box2 box = grown_segment_box(w.from.x, w.from.y, w.to.x, w.to.y, tol);
+    box.index = i;
+    boxes.push_back(box);
+  }
+  return boxes;
+}
+
+}  // namespace
+
+Joins find_joins(const Plan& plan) {
+  const double tol =
+      std::isfinite(plan.site.tolerance) && plan.site.tolerance > 0 ? plan.site.tolerance : 0.0;
+  Joins joins;
+  joins.mitre.assign(plan.walls.size(), {});
+  std::vector<std::array<EndNeighbours, 2>> ends(plan.walls.size());
+  for (const auto& [a, b] : find_meeting_boxes(centre_line_boxes(plan, tol))) {
+    const Wall& wa = plan.walls[a];
+    const Wall& wb = plan.walls[b];
+    const PairContact contact = touch_ends(plan, a, b, tol, ends);
+    if (contact.joined || detail::segments_meet(wa.from, wa.to, wb.from, wb.to))
+      joins.pairs.push_back(
+          Join{a, b, JoinKind::unite, contact.point.value_or(crossing_point(wa, wb))});
+  }
+  for (Join& j : joins.pairs)
+    for (int e = 0; e < 2; ++e) {
+      if (!is_mitre_end(plan, ends, j.a, e) || ends[j.a][e].wall != j.b) continue;
+      j.kind = JoinKind::mitre;
+      j.point = end_point(plan.walls[j.a], e);
+      joins.mitre[j.a][e] = j.b;
+      joins.mitre[j.b][ends[j.a][e].matched_end] = j.a;
+    }
+  return joins;
+}
+
+bool Joins::are_joined(std::size_t a, std::size_t b) const { return find(a, b) != nullptr; }
+
+const Join* Joins::find(std::size_t a, std::size_t b) const {
+  if (a > b) std::swap(a, b);
+  const auto it = std::lower_bound(pairs.begin(), pairs.end(), std::pair{a, b},
+                                   [](const Join& j, const std::pair<std::size_t, std::size_t>& key) {
+                                     return std::pair{j.a, j.b} < key;
+                                   });
+  return it != pairs.end() && it->a == a && it->b == b ? &*it : nullptr;
+}
+
+}  // namespace roomcad

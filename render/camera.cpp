@@ -1,0 +1,146 @@
+// View and reversed-Z projection matrices; framing a box from a preset direction.
+#include "render/camera.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace roomcad {
+namespace {
+
+glm::dvec3 to_glm(const Vec3& v) { return {v.x, v.y, v.z}; }
+Vec3 to_vec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+std::array<glm::dvec3, 8> corners_of(const Bounds& b) {
+  std::array<glm::dvec3, 8> out;
+  for (int i = 0; i < 8; ++i) {
+    out[i] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+              (i & 4) ? b.max.z : b.min.z};
+  }
+  return out;
+}
+
+/// An up vector usable with `forward`: `up` itself unless (nearly) parallel, else world y.
+glm::dvec3 usable_up(const glm::dvec3& forward, const glm::dvec3& up) {
+  const double len = glm::length(up);
+  if (len > 0.0 && glm::length(glm::cross(forward, up / len)) > 1e-6) return up / len;
+  return std::abs(forward.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+}
+
+/// Reversed-Z perspective with an infinite far plane: clip z = near, clip w = -z_eye, so
+/// depth = near / distance (1 at the near plane, towards 0 far away).
+glm::dmat4 perspective_reversed_z(double fov_deg, double aspect) {
+  const double f = 1.0 / std::tan(glm::radians(fov_deg) / 2.0);
+  glm::dmat4 p(0.0);
+  p[0][0] = f / aspect;
+  p[1][1] = f;
+  p[3][2] = kPerspectiveNear;
+  p[2][3] = -1.0;
+  return p;
+}
+
+/// Reversed-Z orthographic over the scene's depth range seen by `view` (never behind the eye).
+glm::dmat4 orthographic_reversed_z(const glm::dmat4& view, const Bounds& scene,
+                                   double view_height, double aspect) {
+  double near_d = 0.0;
+  double far_d = 1.0;
+  if (!scene.is_empty()) {
+    double lo = 1e300, hi = -1e300;
+    for (const glm::dvec3& c : corners_of(scene)) {
+      const double d = -(view * glm::dvec4(c, 1.0)).z;
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    const double margin = 0.01 * (hi - lo) + 0.01;
+    near_d = std::max(lo - margin, 0.0);
+    far_d = std::max(hi + margin, near_d + 1.0);
+  }
+  const double half_h = view_height / 2.0;
+  glm::dmat4 p(0.0);
+  p[0][0] = 1.0 / (half_h * aspect);
+  p[1][1] = 1.0 / half_h;
+  p[2][2] = 1.0 / (far_d - near_d);
+  p[3][2] = far_d / (far_d - near_d);
+  p[3][3] = 1.0;
+  return p;
+}
+
+struct Direction {
+  glm::dvec3 forward;
+  glm::dvec3 up;
+};
+
+Direction preset_direction(ViewPreset preset) {
+  switch (preset) {
+    case ViewPreset::front: return {{0, 1, 0}, {0, 0, 1}};
+    case ViewPreset::back: return {{0, -1, 0}, {0, 0, 1}};
+    case ViewPreset::left: return {{1, 0, 0}, {0, 0, 1}};
+    case ViewPreset::right: return {{-1, 0, 0}, {0, 0, 1}};
+    case ViewPreset::top: return {{0, 0, -1}, {0, 1, 0}};
+    case ViewPreset::iso: break;
+  }
+  return {glm::normalize(glm::dvec3(1, 1, -1)), {0, 0, 1}};  // from the south-west, 35 deg down
+}
+
+}  // namespace
+
+std::optional<ViewPreset> parse_view_preset(std::string_view text) {
+  constexpr std::array<std::pair<std::string_view, ViewPreset>, 6> names{{
+      {"front", ViewPreset::front}, {"back", ViewPreset::back}, {"left", ViewPreset::left},
+      {"right", ViewPreset::right}, {"top", ViewPreset::top}, {"iso", ViewPreset::iso}}};
+  for (const auto& [name, preset] : names)
+    if (name == text) return preset;
+  return std::nullopt;
+}
+
+CameraMatrices make_camera_matrices(const Camera& camera, const Bounds& scene, double aspect) {
+  CameraMatrices m;
+  m.eye = to_glm(camera.eye);
+  const glm::dvec3 to_target = to_glm(camera.target) - m.eye;
+  m.forward = glm::length(to_target) > 0.0 ? glm::normalize(to_target) : glm::dvec3(0, 1, 0);
+  m.view = glm::lookAtRH(m.eye, m.eye + m.forward, usable_up(m.forward, to_glm(camera.up)));
+  m.orthographic = camera.projection == Projection::orthographic;
+  m.projection = m.orthographic
+                     ? orthographic_reversed_z(m.view, scene, camera.view_height, aspect)
+                     : perspective_reversed_z(camera.fov_deg, aspect);
+  m.view_projection = m.projection * m.view;
+  return m;
+}
+
+Camera frame_view(const Bounds& scene, ViewPreset preset, Projection projection,
+                  double fov_deg, double aspect) {
+  const Direction dir = preset_direction(preset);
+  const glm::dvec3 right = glm::normalize(glm::cross(dir.forward, dir.up));
+  const glm::dvec3 up = glm::cross(right, dir.forward);
+  const glm::dvec3 center = (scene.min + scene.max) / 2.0;
+  const double radius = glm::length(scene.max - scene.min) / 2.0;
+  const double tan_v = std::tan(glm::radians(fov_deg) / 2.0) / 1.05;  // 5% margin
+  const double tan_h = tan_v * aspect;
+  double half_w = 0.0, half_h = 0.0, distance = kPerspectiveNear;
+  for (const glm::dvec3& c : corners_of(scene)) {
+    const glm::dvec3 q = c - center;
+    const double x = std::abs(glm::dot(q, right)), y = std::abs(glm::dot(q, up));
+    const double z = glm::dot(q, dir.forward);
+    half_w = std::max(half_w, x);
+    half_h = std::max(half_h, y);
+    distance = std::max({distance, x / tan_h - z, y / tan_v - z, kPerspectiveNear - z});
+  }
+  Camera cam;
+  cam.id = "view";
+  cam.projection = projection;
+  cam.fov_deg = fov_deg;
+  cam.view_height = std::max(2.0 * std::max(half_h, half_w / aspect) * 1.05, 1e-3);
+  if (projection == Projection::orthographic) distance = radius + 1.0;
+  cam.target = to_vec3(center);
+  cam.eye = to_vec3(center - dir.forward * distance);
+  cam.up = to_vec3(dir.up);
+  return cam;
+}
+
+Camera default_camera(const Bounds& scene, double aspect) {
+  return frame_view(scene, ViewPreset::iso, Projection::perspective, 50.0, aspect);
+}
+
+}  // namespace roomcad

@@ -1,0 +1,64 @@
+// Cameras: from a plan camera, from flags, from a view preset, or the default framing, and the
+// view/projection matrices the pipeline uses (right-handed, z up in the world, reversed-Z).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include <glm/glm.hpp>
+
+#include "modeling/plan.h"
+
+namespace roomcad {
+
+/// An axis-aligned box in world metres; empty when min > max on any axis.
+struct Bounds {
+  glm::dvec3 min{1e300};
+  glm::dvec3 max{-1e300};
+  [[nodiscard]] bool is_empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+  void add(const glm::dvec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+};
+
+/// The six fixed views and the south-west perspective one (`--view`).
+enum class ViewPreset { front, back, left, right, top, iso };
+/// @return the preset named `text` (front|back|left|right|top|iso), or nullopt.
+[[nodiscard]] std::optional<ViewPreset> parse_view_preset(std::string_view text);
+
+/// The near plane distance of perspective cameras, metres. With reversed-Z float depth the
+/// precision does not depend on it much, so it can be small enough to walk through doors.
+inline constexpr double kPerspectiveNear = 0.05;
+
+/// The matrices of one camera (cameras themselves are the plan's Camera: eye, target, up, fov,
+/// view height, all in world metres).
+struct CameraMatrices {
+  glm::dmat4 view{1.0};
+  glm::dmat4 projection{1.0};
+  glm::dmat4 view_projection{1.0};
+  glm::dvec3 eye{0.0};
+  glm::dvec3 forward{0.0, 1.0, 0.0};  ///< unit view direction
+  bool orthographic = false;
+};
+
+/// Builds the view and a reversed-Z projection: perspective has an infinite far plane and
+/// depth = near / distance; orthographic maps the scene's depth range (with a margin) to
+/// [1, 0]. A degenerate up (parallel to the view) is replaced by world y. O(1).
+/// @param[in] camera  eye != target (else the view looks north from the eye)
+/// @param[in] scene   the model's bounds: the orthographic depth range is fitted to them
+/// @param[in] aspect  width / height of the image, > 0
+[[nodiscard]] CameraMatrices make_camera_matrices(const Camera& camera, const Bounds& scene,
+                                                  double aspect);
+
+/// Frames `scene` from a preset direction: the whole box is in view with a 5% margin.
+/// front looks north (from -y), back south, left east (from -x), right west, top down (north
+/// up), iso from the south-west and above. Keeps `projection` and, for perspective, `fov_deg`.
+/// @pre !scene.is_empty()
+[[nodiscard]] Camera frame_view(const Bounds& scene, ViewPreset preset, Projection projection,
+                                double fov_deg, double aspect);
+
+/// The default camera: frame_view(scene, iso, perspective, 50 degrees, aspect).
+[[nodiscard]] Camera default_camera(const Bounds& scene, double aspect);
+
+}  // namespace roomcad

@@ -1,0 +1,161 @@
+// The floor plan's page: layout at the scale, walls, rooms, dimensions, scale bar and title.
+#include "render/floor_plan.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+#include "render/detail/plan_paper.h"
+#include "validation/validate.h"
+
+namespace roomcad {
+namespace {
+
+using detail::PaperMap;
+using detail::operator+;
+using detail::operator-;
+using detail::operator*;
+
+constexpr double kMarginMm = 30.0;        // room for the overall dimensions
+constexpr double kFooterMm = 25.0;        // scale bar and title under the plan
+constexpr double kWallDimensionMm = 5.0;  // per-wall dimension beyond the wall face
+constexpr double kOverallDimensionMm = 18.0;
+
+struct Box {
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  void add(Point2 p) {
+    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  }
+  [[nodiscard]] bool empty() const { return x0 > x1; }
+};
+
+/// The extent of the wall footprints, or of the site when there are no walls.
+Box plan_extent(const Plan& plan, const Joins& joins) {
+  Box box;
+  for (std::size_t i = 0; i < plan.walls.size(); ++i) {
+    const Wall& w = plan.walls[i];
+    if (!(detail::length(w.to - w.from) > 0.0 && w.thickness > 0.0)) continue;
+    for (const Point2& p : wall_footprint(plan, joins, i)) box.add(p);
+  }
+  if (box.empty()) {
+    const Site& s = plan.site;
+    box.add(s.origin);
+    box.add({s.origin.x + s.cells[0] * s.cell_size, s.origin.y + s.cells[1] * s.cell_size});
+  }
+  return box;
+}
+
+/// Dimensions each wall on its side away from the plan's centre, so that the outer walls are
+/// dimensioned outside whichever way they were drawn.
+void add_wall_dimensions(const Plan& plan, Point2 centre, const PaperMap& map,
+                         FloorPlanDrawing& out) {
+  for (const Wall& w : plan.walls) {
+    const Point2 along = w.to - w.from;
+    if (!(detail::length(along) > 0.0)) continue;
+    Point2 side = -1.0 * detail::left_normal(along);
+    if (detail::dot(side, 0.5 * (w.from + w.to) - centre) < 0.0) side = -1.0 * side;
+    detail::add_dimension(w.from, w.to, side, 0.5 * w.thickness * map.mm_per_m + kWallDimensionMm,
+                          map, out);
+  }
+}
+
+void add_rooms(const Plan& plan, const PaperMap& map, FloorPlanDrawing& out) {
+  const std::vector<Room> rooms = find_rooms(plan);
+  for (std::size_t i = 0; i < rooms.size(); ++i) {
+    const Room& room = rooms[i];
+    if (room.outline.size() < 3) continue;
+    out.rooms.push_back(map.to_paper(room.outline));
+    // Label at the area centroid of the outline (the vertex mean for degenerate outlines).
+    double a2 = 0.0;
+    Point2 c{0.0, 0.0};
+    for (std::size_t k = 0; k < room.outline.size(); ++k) {
+      const Point2 p = room.outline[k];
+      const Point2 q = room.outline[(k + 1) % room.outline.size()];
+      const double w = detail::cross(p, q);
+      a2 += w;
+      c = c + (w / 3.0) * (p + q);
+    }
+    c = a2 != 0.0 ? (1.0 / a2) * c : room.outline.front();
+    const Point2 at = map.to_paper(c);
+    out.room_labels.push_back({at, fmt::format("Room {}", i + 1), 3.5, 0.0, TextAnchor::middle});
+    out.room_labels.push_back({at + Point2{0.0, 4.5},
+                               fmt::format("{} m²", detail::format_metres(room.area)), 3.0, 0.0,
+                               TextAnchor::middle});
+  }
+}
+
+/// A scale bar of five cells at `origin` (its top-left corner), as long as a round number of
+/// metres that fits in `room_mm`.
+void add_scale_bar(Point2 origin, double room_mm, const PaperMap& map, FloorPlanDrawing& out) {
+  constexpr std::array kLengths{0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0};
+  double metres = kLengths.front();
+  for (const double l : kLengths) {
+    if (l * map.mm_per_m <= room_mm) metres = l;
+  }
+  const double cell = metres * map.mm_per_m / 5.0;
+  constexpr double kHeight = 2.0;
+  for (int i = 0; i < 5; ++i) {
+    const double x = origin.x + i * cell;
+    PaperPolygon rect{{x, origin.y},
+                      {x + cell, origin.y},
+                      {x + cell, origin.y + kHeight},
+                      {x, origin.y + kHeight}};
+    (i % 2 == 0 ? out.scale_bar_black : out.scale_bar_white).push_back(std::move(rect));
+  }
+  const double baseline = origin.y + kHeight + 4.0;
+  out.labels.push_back({{origin.x, baseline}, "0", 2.5, 0.0, TextAnchor::middle});
+  out.labels.push_back(
+      {{origin.x + 5 * cell, baseline}, fmt::format("{} m", metres), 2.5, 0.0, TextAnchor::middle});
+}
+
+}  // namespace
+
+std::string check_floor_plan_options(const FloorPlanOptions& o) {
+  if (!(o.scale >= 1.0 && o.scale <= 10000.0)) {
+    return fmt::format("scale 1:{} is not between 1:1 and 1:10000", o.scale);
+  }
+  if (!(std::isfinite(o.cut_height) && o.cut_height > 0.0)) {
+    return fmt::format("cut height must be a positive number of metres, got {}", o.cut_height);
+  }
+  return {};
+}
+
+FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& options) {
+  if (std::string problem = check_floor_plan_options(options); !problem.empty()) {
+    throw std::invalid_argument("draw_floor_plan: " + problem);
+  }
+  const Joins joins = find_joins(plan);
+  const Box box = plan_extent(plan, joins);
+  PaperMap map{.mm_per_m = 1000.0 / options.scale,
+               .left = kMarginMm,
+               .top = kMarginMm,
+               .x_min = box.x0,
+               .y_max = box.y1};
+  FloorPlanDrawing out;
+  out.width = (box.x1 - box.x0) * map.mm_per_m + 2.0 * kMarginMm;
+  out.height = (box.y1 - box.y0) * map.mm_per_m + 2.0 * kMarginMm + kFooterMm;
+  add_rooms(plan, map, out);
+  detail::draw_plan_walls(plan, joins, options, map, out);
+  add_wall_dimensions(plan, {0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)}, map, out);
+  if (!plan.walls.empty()) {
+    detail::add_dimension({box.x0, box.y0}, {box.x1, box.y0}, {0.0, -1.0}, kOverallDimensionMm, map,
+                          out);
+    detail::add_dimension({box.x0, box.y0}, {box.x0, box.y1}, {-1.0, 0.0}, kOverallDimensionMm, map,
+                          out);
+  }
+  const double footer = out.height - kFooterMm;
+  add_scale_bar({kMarginMm, footer}, std::max(40.0, 0.35 * (out.width - 2.0 * kMarginMm)), map,
+                out);
+  out.labels.push_back({{kMarginMm, footer + 16.0},
+                        fmt::format("Floor plan, section at {:.2f} m, scale 1:{}, dimensions in "
+                                    "metres",
+                                    options.cut_height, options.scale),
+                        3.5,
+                        0.0,
+                        TextAnchor::start});
+  return out;
+}
+
+}  // namespace roomcad

@@ -1,0 +1,164 @@
+// Edge-function rasterisation in fixed point, with the top-left rule and reversed-Z depth.
+#include "render/rasterizer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace roomcad {
+namespace {
+
+constexpr std::int64_t kHalfPixel = kSubpixelScale / 2;
+
+/// floor(a / b) for b > 0, also for negative a.
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+/// Twice the signed area of (a, b, p): the edge function of edge a -> b at p.
+std::int64_t edge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
+                  std::int64_t px, std::int64_t py) {
+  return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+}
+
+/// One edge's function at the first pixel centre of the box, its steps, and the fill-rule
+/// bias (0 for top and left edges, whose centres on the edge are drawn, else 1).
+struct EdgeWalk {
+  std::int64_t at_start = 0;
+  std::int64_t step_x = 0;
+  std::int64_t step_y = 0;
+  std::int64_t bias = 0;
+};
+
+EdgeWalk walk_edge(const ScreenTriangle& t, int k, std::int64_t sx, std::int64_t sy) {
+  const int a = (k + 1) % 3;
+  const int b = (k + 2) % 3;
+  const bool top_left = t.y[a] > t.y[b] || (t.y[a] == t.y[b] && t.x[b] > t.x[a]);
+  EdgeWalk w;
+  w.bias = top_left ? 0 : 1;
+  w.at_start = edge(t.x[a], t.y[a], t.x[b], t.y[b], sx, sy) - w.bias;
+  w.step_x = -static_cast<std::int64_t>(t.y[b] - t.y[a]) * kSubpixelScale;
+  w.step_y = static_cast<std::int64_t>(t.x[b] - t.x[a]) * kSubpixelScale;
+  return w;
+}
+
+/// Depth at the first pixel centre of the box and its change per pixel across and down.
+struct DepthPlane {
+  double start = 0.0, dx = 0.0, dy = 0.0;
+};
+
+/// Depth is affine on screen; the plane is kept in double so that the float result is
+/// correctly rounded (the 1 km precision test relies on it).
+DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e) {
+  double area = 0.0;
+  DepthPlane p;
+  for (int k = 0; k < 3; ++k) {
+    area += static_cast<double>(e[k].at_start + e[k].bias);
+    p.start += static_cast<double>(e[k].at_start + e[k].bias) * t.depth[k];
+    p.dx += static_cast<double>(e[k].step_x) * t.depth[k];
+    p.dy += static_cast<double>(e[k].step_y) * t.depth[k];
+  }
+  return {p.start / area, p.dx / area, p.dy / area};
+}
+
+/// Narrows the pixel offsets [lo, hi) of a row to where `w + i * step >= 0`.
+void narrow_span(std::int64_t w, std::int64_t step, int& lo, int& hi) {
+  if (step == 0) {
+    if (w < 0) hi = lo;  // the whole row is outside this edge
+  } else if (step > 0) {  // i >= ceil(-w / step)
+    if (w < 0) lo = static_cast<int>(std::max<std::int64_t>(lo, (-w + step - 1) / step));
+  } else {  // i <= floor(w / -step)
+    hi = w < 0 ? lo : static_cast<int>(std::min<std::int64_t>(hi, w / -step + 1));
+  }
+}
+
+}  // namespace
+
+std::optional<ScreenTriangle> set_up_triangle(const std::array<ClipVertex, 3>& v, int width,
+                                              int height, std::uint32_t triangle,
+                                              Culling culling) {
+  ScreenTriangle t;
+  t.triangle = triangle;
+  for (int i = 0; i < 3; ++i) {
+    const glm::vec4& p = v[i].position;
+    const float inv_w = 1.f / p.w;
+    const double sx = (static_cast<double>(p.x) * inv_w + 1.0) * 0.5 * width;
+    const double sy = (1.0 - static_cast<double>(p.y) * inv_w) * 0.5 * height;
+    t.x[i] = static_cast<std::int32_t>(std::lround(sx * kSubpixelScale));
+    t.y[i] = static_cast<std::int32_t>(std::lround(sy * kSubpixelScale));
+    t.depth[i] = std::clamp(p.z * inv_w, 0.f, 1.f);
+    t.inv_w[i] = inv_w;
+    t.source[i] = v[i].source;
+  }
+  const std::int64_t area = edge(t.x[0], t.y[0], t.x[1], t.y[1], t.x[2], t.y[2]);
+  if (area == 0) return std::nullopt;
+  // y points down on screen, so a triangle counter-clockwise in NDC (front-facing) has a
+  // negative area here; orient every kept triangle to positive area.
+  if (area > 0 && culling == Culling::back_faces) return std::nullopt;
+  if (area < 0) {
+    std::swap(t.x[1], t.x[2]);
+    std::swap(t.y[1], t.y[2]);
+    std::swap(t.depth[1], t.depth[2]);
+    std::swap(t.inv_w[1], t.inv_w[2]);
+    std::swap(t.source[1], t.source[2]);
+  }
+  return t;
+}
+
+void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
+  const auto [min_x, max_x] = std::minmax({t.x[0], t.x[1], t.x[2]});
+  const auto [min_y, max_y] = std::minmax({t.y[0], t.y[1], t.y[2]});
+  // Pixels whose centre px * 256 + 128 lies inside the box, within the target.
+  const int x_begin = static_cast<int>(std::max<std::int64_t>(
+      target.x0, -floor_div(-(min_x - kHalfPixel), kSubpixelScale)));
+  const int x_end = static_cast<int>(
+      std::min<std::int64_t>(target.x1, floor_div(max_x - kHalfPixel, kSubpixelScale) + 1));
+  const int y_begin = static_cast<int>(std::max<std::int64_t>(
+      target.y0, -floor_div(-(min_y - kHalfPixel), kSubpixelScale)));
+  const int y_end = static_cast<int>(
+      std::min<std::int64_t>(target.y1, floor_div(max_y - kHalfPixel, kSubpixelScale) + 1));
+  if (x_begin >= x_end || y_begin >= y_end) return;
+
+  const std::int64_t sx = static_cast<std::int64_t>(x_begin) * kSubpixelScale + kHalfPixel;
+  const std::int64_t sy = static_cast<std::int64_t>(y_begin) * kSubpixelScale + kHalfPixel;
+  const std::array<EdgeWalk, 3> e{walk_edge(t, 0, sx, sy), walk_edge(t, 1, sx, sy),
+                                  walk_edge(t, 2, sx, sy)};
+  const DepthPlane plane = depth_plane(t, e);
+  const int stride = target.stride > 0 ? target.stride : target.x1 - target.x0;
+  std::array<std::int64_t, 3> w{e[0].at_start, e[1].at_start, e[2].at_start};
+  for (int y = y_begin; y < y_end; ++y) {
+    // The row's span: the pixels where all three (biased) edge functions are >= 0.
+    int lo = 0, hi = x_end - x_begin;
+    for (int k = 0; k < 3; ++k) narrow_span(w[k], e[k].step_x, lo, hi);
+    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride +
+                               (x_begin - target.x0);
+    const double row_z = plane.start + (y - y_begin) * plane.dy;
+    for (int i = lo; i < hi; ++i) {
+      const float z = static_cast<float>(row_z + i * plane.dx);
+      if (z > target.depth[row + i]) {  // reversed-Z: nearer
+        target.depth[row + i] = z;
+        if (target.ids) target.ids[row + i] = target.id_value;
+      }
+    }
+    for (int k = 0; k < 3; ++k) w[k] += e[k].step_y;
+  }
+}
+
+glm::vec3 source_barycentrics(const ScreenTriangle& t, float px, float py) {
+  const double x = static_cast<double>(px) * kSubpixelScale;
+  const double y = static_cast<double>(py) * kSubpixelScale;
+  double l[3];
+  for (int k = 0; k < 3; ++k) {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    l[k] = ((static_cast<double>(t.x[b]) - t.x[a]) * (y - t.y[a]) -
+            (static_cast<double>(t.y[b]) - t.y[a]) * (x - t.x[a])) * t.inv_w[k];
+  }
+  const double sum = l[0] + l[1] + l[2];
+  const glm::dvec3 b = glm::dvec3(l[0], l[1], l[2]) / sum;  // weights of the screen corners
+  // Map to the scene triangle: each screen corner has known weights in it.
+  glm::dvec2 s(0.0);
+  for (int k = 0; k < 3; ++k) s += b[k] * glm::dvec2(t.source[k]);
+  return {static_cast<float>(1.0 - s.x - s.y), static_cast<float>(s.x), static_cast<float>(s.y)};
+}
+
+}  // namespace roomcad

@@ -1,0 +1,240 @@
+// One frame: shadow maps, then tiles rasterised, shaded and resolved in parallel.
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "render/detail/geometry_pass.h"
+
+namespace roomcad {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// Everything the tile tasks read (the frame's `uniform_` state).
+struct FrameContext {
+  const Scene* scene = nullptr;
+  detail::BinnedTriangles bins;
+  std::vector<ShadowMap> shadow_maps;
+  ShadowFilter filter = ShadowFilter::off;
+  ShadingUniforms uniforms;
+  glm::vec3 background{1.f};
+  glm::dmat4 inverse_projection{1.0};
+  int ssaa = 1;
+};
+
+ShadingUniforms make_uniforms(const RenderOptions& options, const CameraMatrices& cam,
+                              const std::vector<Light>& lights) {
+  ShadingUniforms u;
+  u.mode = options.shading;
+  u.light_count = static_cast<int>(std::min<std::size_t>(lights.size(), kMaxLights));
+  for (int k = 0; k < u.light_count; ++k) u.lights[k] = to_shading_light(lights[k]);
+  u.eye = glm::vec3(cam.eye);
+  u.forward = glm::vec3(cam.forward);
+  u.orthographic = cam.orthographic;
+  u.grid = options.grid;
+  return u;
+}
+
+glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }
+
+/// What one visible triangle gives each of its samples; loaded once per run of samples that
+/// show the same triangle (neighbouring samples mostly do).
+struct TriangleVarying {
+  std::uint32_t id = kNoTriangle;
+  const ScreenTriangle* screen = nullptr;
+  SurfacePoint point;  ///< corners, normal as stored, plain colour
+  bool is_floor = false;
+};
+
+void load_triangle(const FrameContext& f, std::uint32_t id, TriangleVarying& v) {
+  const Scene& scene = *f.scene;
+  v.id = id;
+  v.screen = &f.bins.at(id);
+  const std::size_t tri = v.screen->triangle;
+  for (int c = 0; c < 3; ++c) v.point.corners[c] = scene.corners[3 * tri + c];
+  v.point.normal = scene.normals[tri];
+  v.point.color = to_unit_rgb(scene.colors[tri]);
+  v.is_floor = scene.kinds[tri] == FaceKind::floor;
+}
+
+/// The shaded colour of the sample at (px, py) showing the triangle `v`.
+glm::vec3 shade_sample(const FrameContext& f, const TriangleVarying& v, float px, float py) {
+  SurfacePoint s = v.point;
+  s.weights = source_barycentrics(*v.screen, px, py);
+  s.world = s.weights[0] * s.corners[0] + s.weights[1] * s.corners[1] +
+            s.weights[2] * s.corners[2];
+  const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward : f.uniforms.eye - s.world;
+  if (glm::dot(s.normal, to_eye) < 0.f) s.normal = -s.normal;  // the back of a two-sided face
+  if (v.is_floor) s.color = apply_grid(f.uniforms.grid, s.world, s.color);
+  for (int k = 0; k < f.uniforms.light_count && k < static_cast<int>(f.shadow_maps.size()); ++k) {
+    s.shadow[k] = shadow_amount(f.shadow_maps[k], s.world, s.normal, f.filter);
+  }
+  return shade_point(f.uniforms, s);
+}
+
+/// Metres along the view direction of a reversed-Z depth value (0: nothing there).
+float view_distance(const glm::dmat4& inverse_projection, float depth) {
+  if (depth <= 0.f) return 0.f;
+  const glm::dvec4 v = inverse_projection * glm::dvec4(0.0, 0.0, depth, 1.0);
+  return static_cast<float>(-v.z / v.w);
+}
+
+/// Writes the output pixels of one tile: colour averaged over its k x k samples; depth and
+/// object id of the sample nearest the pixel's centre (up and left of it for even k).
+void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vector<glm::vec3>& rgb,
+                  FrameBuffers& out) {
+  const int k = f.ssaa, w = t.x1 - t.x0;
+  const int centre = (k - 1) / 2;
+  for (int oy = t.y0 / k; oy < t.y1 / k; ++oy) {
+    for (int ox = t.x0 / k; ox < t.x1 / k; ++ox) {
+      glm::vec3 sum(0.f);
+      for (int sy = 0; sy < k; ++sy)
+        for (int sx = 0; sx < k; ++sx)
+          sum += rgb[static_cast<std::size_t>(oy * k + sy - t.y0) * w + (ox * k + sx - t.x0)];
+      const glm::vec3 c = sum / static_cast<float>(k * k);
+      std::uint8_t* px = out.color.at(ox, oy);
+      for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(c[ch] * 255.f + 0.5f);
+      const std::size_t s = static_cast<std::size_t>(oy * k + centre - t.y0) * w +
+                            (ox * k + centre - t.x0);
+      out.depth.at(ox, oy) = view_distance(f.inverse_projection, t.depth[s]);
+      const std::uint32_t id = t.ids[s];
+      out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox] =
+          id == kNoTriangle ? -1 : f.scene->objects[f.bins.at(id).triangle];
+    }
+  }
+}
+
+void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
+  RasterTarget t = detail::tile_rectangle(f.bins, tile);
+  const std::size_t n = static_cast<std::size_t>(t.x1 - t.x0) * (t.y1 - t.y0);
+  thread_local std::vector<float> depth;  // reused: tiles are many and small
+  thread_local std::vector<std::uint32_t> ids;
+  thread_local std::vector<glm::vec3> rgb;
+  depth.assign(n, 0.f);
+  ids.assign(n, kNoTriangle);
+  rgb.assign(n, f.background);
+  t.depth = depth.data();
+  t.ids = ids.data();
+  detail::rasterize_tile(f.bins, tile, t);
+  TriangleVarying v;
+  std::size_t i = 0;
+  for (int y = t.y0; y < t.y1; ++y) {
+    for (int x = t.x0; x < t.x1; ++x, ++i) {
+      if (ids[i] == kNoTriangle) continue;
+      if (ids[i] != v.id) load_triangle(f, ids[i], v);
+      rgb[i] = shade_sample(f, v, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    }
+  }
+  resolve_tile(f, t, rgb, out);
+}
+
+void size_buffers(int width, int height, FrameBuffers& out) {
+  if (out.color.width != width || out.color.height != height) out.color = RgbImage(width, height);
+  if (out.depth.width != width || out.depth.height != height) out.depth = FloatImage(width, height);
+  out.objects.width = width;
+  out.objects.height = height;
+  out.objects.ids.resize(static_cast<std::size_t>(width) * height);
+}
+
+void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
+                  RenderStats& stats) {
+  const std::vector<Light> lights = options.lights.empty() ? std::vector<Light>{default_light()}
+                                                           : options.lights;
+  FrameContext f;
+  f.scene = &scene;
+  f.ssaa = options.ssaa;
+  f.filter = options.shadows;
+  f.background = to_unit_rgb(options.background);
+  const auto shadow_start = Clock::now();
+  if (options.shadows != ShadowFilter::off) {
+    for (std::size_t k = 0; k < lights.size() && k < kMaxLights; ++k)
+      f.shadow_maps.push_back(render_shadow_map(scene, lights[k], options.shadow_resolution));
+  }
+  stats.shadow_ms = ms_since(shadow_start);
+  const auto raster_start = Clock::now();
+  const CameraMatrices cam = frame_camera(scene, options);
+  f.uniforms = make_uniforms(options, cam, lights);
+  f.inverse_projection = glm::inverse(cam.projection);
+  f.bins = detail::run_geometry_pass(
+      scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
+                                  .width = options.width * options.ssaa,
+                                  .height = options.height * options.ssaa,
+                                  .tile_size = 64,
+                                  .cull_back_faces = true});
+  size_buffers(options.width, options.height, out);
+  tbb::parallel_for(0, f.bins.tile_count(), [&](int tile) { render_tile(f, tile, out); });
+  stats.raster_ms = ms_since(raster_start);
+  stats.triangles = scene.triangle_count();
+  stats.screen_triangles = f.bins.triangle_count();
+}
+
+}  // namespace
+
+std::string check_render_options(const RenderOptions& o) {
+  if (o.width < 1 || o.width > 16384 || o.height < 1 || o.height > 16384) {
+    return fmt::format("width x height is {} x {}; each must be 1 to 16384", o.width, o.height);
+  }
+  if (o.ssaa != 1 && o.ssaa != 2 && o.ssaa != 4) {
+    return fmt::format("ssaa is {}; it must be 1, 2 or 4", o.ssaa);
+  }
+  if (o.shadow_resolution < 1 || o.shadow_resolution > 16384) {
+    return fmt::format("shadow resolution is {}; it must be 1 to 16384", o.shadow_resolution);
+  }
+  if (o.threads < 0) return fmt::format("threads is {}; it must be 0 (all) or more", o.threads);
+  const double fov = o.camera ? o.camera->fov_deg : o.view_fov_deg;
+  if (!(fov > 0.0 && fov < 180.0)) {
+    return fmt::format("field of view is {} degrees; it must be between 0 and 180", fov);
+  }
+  if (o.camera && o.camera->projection == Projection::orthographic &&
+      !(o.camera->view_height > 0.0 && std::isfinite(o.camera->view_height))) {
+    return fmt::format("camera '{}' view height is {} m; it must be positive", o.camera->id,
+                       o.camera->view_height);
+  }
+  return {};
+}
+
+CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options) {
+  const double aspect = static_cast<double>(options.width) / options.height;
+  Bounds bounds = scene.bounds;
+  if (bounds.is_empty()) bounds.add(glm::dvec3(0.0));  // nothing to frame: look at the origin
+  const Camera camera =
+      options.camera ? *options.camera
+                     : frame_view(bounds, options.view, options.view_projection,
+                                  options.view_fov_deg, aspect);
+  return make_camera_matrices(camera, bounds, aspect);
+}
+
+void render_scene(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
+                  RenderStats* stats) {
+  if (const std::string problem = check_render_options(options); !problem.empty()) {
+    throw std::invalid_argument("render: " + problem);
+  }
+  const auto start = Clock::now();
+  RenderStats local;
+  const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
+  tbb::task_arena arena(threads);
+  arena.execute([&] { render_frame(scene, options, out, local); });
+  local.frame_ms = ms_since(start);
+  if (stats) *stats = local;
+}
+
+void render_model(const Model& model, const RenderOptions& options, FrameBuffers& out,
+                  RenderStats* stats) {
+  const auto start = Clock::now();
+  const Scene scene = flatten_model(model, options.parts);
+  render_scene(scene, options, out, stats);
+  if (stats) stats->frame_ms = ms_since(start);
+}
+
+}  // namespace roomcad

@@ -1,0 +1,96 @@
+// The CPU renderer: draws a model into buffers the caller owns (a file writer, a test or the
+// editor's window can share it).
+//
+// One frame: a shadow map per directional light (shadow_map.h), then the colour pass: the
+// geometry pass (transform, frustum-cull clusters, clip, cull back faces, bin into 64-pixel
+// tiles), and per tile, in parallel: rasterise depth and triangle ids (rasterizer.h), shade
+// each visible sample once (shading.h), box-filter the k x k samples of each pixel. Every tile
+// is one task writing only its own pixels, in scene order, so the image is identical at any
+// thread count.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "modeling/build_model.h"
+#include "modeling/plan.h"
+#include "render/camera.h"
+#include "render/image.h"
+#include "render/scene.h"
+#include "render/shading.h"
+#include "render/shadow_map.h"
+
+namespace roomcad {
+
+/// Per pixel, the index into Model::objects of what is seen there; -1: background or a face
+/// without object.
+struct ObjectIdImage {
+  int width = 0;
+  int height = 0;
+  std::vector<std::int32_t> ids;
+  [[nodiscard]] std::int32_t at(int x, int y) const {
+    return ids[static_cast<std::size_t>(y) * width + x];
+  }
+};
+
+/// What render_model draws into. Resized by the renderer (kept when already the right size,
+/// so a window can render into the same buffers frame after frame); contents replaced.
+struct FrameBuffers {
+  RgbImage color;
+  FloatImage depth;       ///< metres along the view direction; 0 where nothing is drawn
+  ObjectIdImage objects;  ///< what each pixel shows
+};
+
+/// Everything a frame depends on besides the model. Designated initialisers welcome.
+struct RenderOptions {
+  int width = 1280;   ///< output pixels, 1 .. 16384
+  int height = 720;
+  std::optional<Camera> camera{};        ///< nullopt: frame the scene from `view`
+  ViewPreset view = ViewPreset::iso;     ///< without a camera: frame_view() of the scene's
+  Projection view_projection = Projection::perspective;  ///< bounds with this projection
+  double view_fov_deg = 50.0;            ///< and field of view (the default camera)
+  ShadingMode shading = ShadingMode::phong;
+  ShadowFilter shadows = ShadowFilter::pcf;
+  int shadow_resolution = 2048;          ///< texels per side of each light's map, >= 1
+  int ssaa = 1;                          ///< samples per pixel side: 1, 2 or 4
+  Color background{0xff, 0xff, 0xff};
+  std::vector<Light> lights{};           ///< empty: default_light(); at most kMaxLights used
+  GridLines grid{};                      ///< tile lines on floor faces
+  Parts parts{};                         ///< which parts of the model to draw
+  int threads = 0;                       ///< 0: all cores; the image does not depend on it
+};
+
+/// What a frame cost, for --stats and benchmarks.
+struct RenderStats {
+  std::size_t triangles = 0;         ///< scene triangles submitted
+  std::size_t screen_triangles = 0;  ///< after culling and clipping
+  double shadow_ms = 0.0;            ///< all shadow maps
+  double raster_ms = 0.0;            ///< the colour pass: geometry, raster, shading, resolve
+  double frame_ms = 0.0;             ///< everything render_model did
+};
+
+/// Checks options. @return an empty string, or what is wrong (field and value).
+[[nodiscard]] std::string check_render_options(const RenderOptions& options);
+
+/// Renders a model.
+/// @param[in]  model    the meshes (their rc:object, rc:kind and rc:color face properties)
+/// @param[in]  options  check_render_options(options).empty()
+/// @param[out] out      resized and overwritten: colour, depth and object ids
+/// @param[out] stats    timings and counts, or nullptr
+/// @throws std::invalid_argument naming the option when check_render_options fails.
+/// Cost: O(triangles + pixels * ssaa^2 * lights) plus O(triangles + resolution^2) per shadow map.
+void render_model(const Model& model, const RenderOptions& options, FrameBuffers& out,
+                  RenderStats* stats = nullptr);
+
+/// The same for a scene already flattened (benchmarks and windows flatten once; the scene
+/// already holds only the parts wanted, so options.parts is not used).
+void render_scene(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
+                  RenderStats* stats = nullptr);
+
+/// The camera matrices a frame with these options uses (tests cast rays through them).
+[[nodiscard]] CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options);
+
+}  // namespace roomcad

@@ -1,0 +1,100 @@
+// Flattening OpenMesh polygon meshes into the renderer's triangle arrays.
+#include "render/scene.h"
+
+#include <algorithm>
+
+#include "modeling/triangulate_face.h"
+
+namespace roomcad {
+namespace {
+
+/// The persistent face properties of a mesh, where present.
+struct FaceProperties {
+  OpenMesh::FPropHandleT<int> object;
+  OpenMesh::FPropHandleT<FaceKind> kind;
+  OpenMesh::FPropHandleT<Color> color;
+  bool has_object = false;
+  bool has_kind = false;
+  bool has_color = false;
+
+  explicit FaceProperties(const SolidMesh& mesh)
+      : has_object(mesh.get_property_handle(object, kObjectProperty)),
+        has_kind(mesh.get_property_handle(kind, kKindProperty)),
+        has_color(mesh.get_property_handle(color, kColorProperty)) {}
+};
+
+/// Newell's normal of a polygon: robust for non-convex and collinear-vertex polygons.
+OpenMesh::Vec3d newell_normal(const std::vector<OpenMesh::Vec3d>& p) {
+  OpenMesh::Vec3d n(0.0, 0.0, 0.0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const OpenMesh::Vec3d& a = p[i];
+    const OpenMesh::Vec3d& b = p[(i + 1) % p.size()];
+    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  return n;
+}
+
+glm::vec3 to_vec3f(const OpenMesh::Vec3d& p) {
+  return {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
+}
+
+/// Opens a new cluster when the current one is full (or there is none).
+void start_cluster_if_full(Scene& scene) {
+  const auto first = static_cast<std::uint32_t>(scene.triangle_count());
+  if (scene.clusters.empty() || scene.clusters.back().count >= kClusterSize) {
+    scene.clusters.push_back(Cluster{.first = first, .count = 0, .bounds = {}});
+  }
+}
+
+void push_triangle(Scene& scene, const std::array<glm::vec3, 3>& corners, const glm::vec3& normal) {
+  start_cluster_if_full(scene);
+  Cluster& cluster = scene.clusters.back();
+  for (const glm::vec3& c : corners) {
+    scene.corners.push_back(c);
+    cluster.bounds.add(glm::dvec3(c));
+    scene.bounds.add(glm::dvec3(c));
+  }
+  scene.normals.push_back(normal);
+  ++cluster.count;
+}
+
+}  // namespace
+
+void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene) {
+  const FaceProperties props(mesh);
+  std::vector<OpenMesh::Vec3d> points;
+  for (const auto fh : mesh.faces()) {
+    if (mesh.has_face_status() && mesh.status(fh).deleted()) continue;
+    points.clear();
+    for (const auto vh : mesh.fv_range(fh)) points.push_back(mesh.point(vh));
+    const OpenMesh::Vec3d normal = newell_normal(points);
+    const double length = normal.norm();
+    if (points.size() < 3 || !(length > 0.0)) continue;  // degenerate: nothing to draw
+    const glm::vec3 unit = to_vec3f(normal / length);
+    const auto triangles = triangulate_face(points, normal);
+    const std::size_t before = scene.triangle_count();
+    for (const auto& t : triangles) {
+      push_triangle(scene, {to_vec3f(points[t[0]]), to_vec3f(points[t[1]]), to_vec3f(points[t[2]])},
+                    unit);
+    }
+    const std::size_t added = scene.triangle_count() - before;
+    scene.objects.insert(scene.objects.end(), added, props.has_object ? mesh.property(props.object, fh) : -1);
+    scene.kinds.insert(scene.kinds.end(), added,
+                       props.has_kind ? mesh.property(props.kind, fh) : FaceKind::wall_face);
+    scene.colors.insert(scene.colors.end(), added,
+                        props.has_color ? mesh.property(props.color, fh) : Color{0x80, 0x80, 0x80});
+    scene.two_sided.insert(scene.two_sided.end(), added, two_sided ? 1 : 0);
+  }
+}
+
+Scene flatten_model(const Model& model, const Parts& parts) {
+  Scene scene;
+  if (parts.walls) append_mesh(model.walls, false, scene);
+  if (parts.floor) append_mesh(model.floor, false, scene);
+  if (parts.fixtures) append_mesh(model.fixtures, true, scene);
+  return scene;
+}
+
+}  // namespace roomcad

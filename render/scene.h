@@ -1,0 +1,57 @@
+// The model flattened once into triangle arrays the pipeline streams through.
+//
+// Normals: every triangle carries the unit normal of the planar polygon it came from, and its
+// vertices share it. Smoothing across polygons would bend light around the corners of walls
+// that are really flat and square, so Gouraud and Phong differ from flat shading only in where
+// the light is evaluated (per vertex, per pixel), which matters for specular highlights.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "modeling/build_model.h"
+#include "modeling/solid_mesh.h"
+#include "render/camera.h"
+
+namespace roomcad {
+
+/// A run of consecutive triangles with one bounding box, for frustum culling.
+struct Cluster {
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+  Bounds bounds;
+};
+
+/// Triangles in world metres (float: positions of rooms within a few km keep ~0.1 mm).
+struct Scene {
+  std::vector<glm::vec3> corners;         ///< 3 per triangle, counter-clockwise from outside
+  std::vector<glm::vec3> normals;         ///< 1 per triangle, unit
+  std::vector<Color> colors;              ///< 1 per triangle
+  std::vector<std::int32_t> objects;      ///< 1 per triangle: index into Model::objects or -1
+  std::vector<FaceKind> kinds;            ///< 1 per triangle
+  std::vector<std::uint8_t> two_sided;    ///< 1 per triangle: 1 = never back-face culled
+  std::vector<Cluster> clusters;          ///< cover all triangles, in order
+  Bounds bounds;                          ///< of all triangles; empty if there are none
+
+  [[nodiscard]] std::size_t triangle_count() const { return normals.size(); }
+};
+
+/// Most triangles in one cluster: small enough to cull well, large enough to be cheap.
+inline constexpr std::uint32_t kClusterSize = 256;
+
+/// Flattens the chosen parts of a model: each polygon is triangulated (modeling's
+/// triangulate_face), triangles keep the face's rc:object, rc:kind and rc:color (defaults when
+/// a property is missing: -1, wall_face, grey). Walls and floor are one-sided (closed solid,
+/// floor seen from above); fixtures are two-sided (thin leaves and panes).
+/// Degenerate faces (zero area, fewer than 3 vertices) are skipped.
+/// @return the scene; clusters follow face order, one part after the other. O(n) in corners.
+[[nodiscard]] Scene flatten_model(const Model& model, const Parts& parts = {});
+
+/// Appends one mesh to a scene (what flatten_model does for each part).
+/// @param[in,out] scene   grows; its clusters and bounds are updated
+void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene);
+
+}  // namespace roomcad

@@ -1,0 +1,120 @@
+// Shadow-map pass (depth seen from the light) and the biased hard/PCF lookup.
+#include "render/shadow_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <tbb/parallel_for.h>
+
+#include "render/detail/geometry_pass.h"
+#include "render/shading.h"
+
+namespace roomcad {
+namespace {
+
+/// The light's view and its extent around the scene: half sizes and the depth range, metres.
+struct LightFrame {
+  glm::dmat4 view{1.0};
+  double half_x = 1.0, half_y = 1.0, near_d = 0.0, far_d = 1.0;
+};
+
+LightFrame fit_light_frame(const Bounds& scene, const glm::dvec3& to_light) {
+  const glm::dvec3 center = (scene.min + scene.max) / 2.0;
+  const double radius = glm::length(scene.max - scene.min) / 2.0 + 1.0;
+  const glm::dvec3 up = std::abs(to_light.z) < 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+  LightFrame f;
+  f.view = glm::lookAtRH(center + to_light * radius, center, up);
+  double lo = 1e300, hi = -1e300, hx = 0.0, hy = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 c((i & 1) ? scene.max.x : scene.min.x, (i & 2) ? scene.max.y : scene.min.y,
+                       (i & 4) ? scene.max.z : scene.min.z);
+    const glm::dvec4 v = f.view * glm::dvec4(c, 1.0);
+    hx = std::max(hx, std::abs(v.x));
+    hy = std::max(hy, std::abs(v.y));
+    lo = std::min(lo, -v.z);
+    hi = std::max(hi, -v.z);
+  }
+  f.half_x = hx * 1.001 + 1e-3;  // a sliver of margin keeps the bounds' faces inside
+  f.half_y = hy * 1.001 + 1e-3;
+  f.near_d = lo - 0.01;
+  f.far_d = hi + 0.01;
+  return f;
+}
+
+glm::dmat4 light_projection(const LightFrame& f) {
+  glm::dmat4 p(0.0);
+  p[0][0] = 1.0 / f.half_x;
+  p[1][1] = 1.0 / f.half_y;
+  p[2][2] = 1.0 / (f.far_d - f.near_d);
+  p[3][2] = f.far_d / (f.far_d - f.near_d);
+  p[3][3] = 1.0;
+  return p;
+}
+
+void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
+  const detail::BinnedTriangles bins = detail::run_geometry_pass(
+      scene, detail::GeometryPass{.uniform_view_projection = map.light_view_projection,
+                                  .width = resolution,
+                                  .height = resolution,
+                                  .tile_size = 64,
+                                  .cull_back_faces = false});
+  tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
+    RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
+    target.depth = &map.depth.at(target.x0, target.y0);
+    target.stride = resolution;
+    detail::rasterize_tile(bins, tile, target);
+  });
+}
+
+}  // namespace
+
+ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resolution) {
+  ShadowMap map;
+  resolution = std::max(resolution, 1);
+  map.depth = FloatImage(resolution, resolution, 0.f);
+  map.to_light = to_shading_light(light).to_light;
+  const glm::dvec3 to_light(map.to_light);
+  if (scene.bounds.is_empty()) return map;
+  const LightFrame frame = fit_light_frame(scene.bounds, to_light);
+  map.light_view_projection = glm::mat4(light_projection(frame) * frame.view);
+  map.light_rotation = glm::mat3(glm::dmat3(frame.view));
+  map.texel_x = static_cast<float>(2.0 * frame.half_x / resolution);
+  map.texel_y = static_cast<float>(2.0 * frame.half_y / resolution);
+  map.depth_range = static_cast<float>(frame.far_d - frame.near_d);
+  rasterize_map(scene, resolution, map);
+  return map;
+}
+
+float shadow_amount(const ShadowMap& map, const glm::vec3& world, const glm::vec3& normal,
+                    ShadowFilter filter) {
+  if (filter == ShadowFilter::off || map.texel_x == 0.f) return 0.f;
+  const glm::vec3 n = map.light_rotation * normal;  // light view: +z towards the light
+  if (n.z <= 0.f) return 1.f;
+  const float cos_t = std::max(n.z, 0.1f);          // caps tan(angle) at about 10
+  const float tan_t = std::sqrt(1.f - cos_t * cos_t) / cos_t;
+  const glm::vec4 p = map.light_view_projection * glm::vec4(world, 1.f);
+  const int size = map.depth.width;
+  const float u = (p.x + 1.f) * 0.5f * size, v = (1.f - p.y) * 0.5f * size;
+  // Receiver plane: depth change per texel step across (u) and down (v) the map.
+  const float grad_u = -n.x * map.texel_x / (cos_t * map.depth_range);
+  const float grad_v = n.y * map.texel_y / (cos_t * map.depth_range);
+  const float bias = map.texel_size() * (0.05f + 0.1f * tan_t) / map.depth_range;
+  const int iu = static_cast<int>(std::floor(u)), iv = static_cast<int>(std::floor(v));
+  // The receiver's biased depth at the centre of texel (iu, iv); neighbours add the gradient.
+  const float base = p.z + grad_u * (iu + 0.5f - u) + grad_v * (iv + 0.5f - v) + bias;
+  const int reach = filter == ShadowFilter::pcf ? 1 : 0;
+  const bool inside = iu - reach >= 0 && iv - reach >= 0 && iu + reach < size && iv + reach < size;
+  int shadowed = 0;
+  for (int dv = -reach; dv <= reach; ++dv) {
+    if (!inside && (iv + dv < 0 || iv + dv >= size)) continue;  // outside the map: lit
+    const float* row = &map.depth.values[static_cast<std::size_t>(iv + dv) * size];
+    for (int du = -reach; du <= reach; ++du) {
+      if (!inside && (iu + du < 0 || iu + du >= size)) continue;
+      shadowed += row[iu + du] > base + grad_u * du + grad_v * dv;
+    }
+  }
+  return static_cast<float>(shadowed) / static_cast<float>((2 * reach + 1) * (2 * reach + 1));
+}
+
+}  // namespace roomcad

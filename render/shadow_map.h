@@ -1,0 +1,49 @@
+// Shadow maps for directional lights: an orthographic depth image seen from the light, its
+// frustum fitted to the scene's bounds, looked up with a slope-scaled bias (hard or PCF).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "modeling/plan.h"
+#include "render/image.h"
+#include "render/scene.h"
+
+namespace roomcad {
+
+enum class ShadowFilter { off, hard, pcf };
+
+/// The depth the scene shows a directional light. Depth is reversed (1 nearest the light), as
+/// in the colour pass, so both share the rasteriser.
+struct ShadowMap {
+  glm::mat4 light_view_projection{1.f};  ///< world -> light clip space
+  FloatImage depth;                      ///< resolution x resolution, 0 where nothing is
+  glm::mat3 light_rotation{1.f};         ///< world -> light view directions (z to the light)
+  glm::vec3 to_light{0.f, 0.f, 1.f};     ///< unit, from the scene towards the light
+  float texel_x = 0.f;                   ///< metres covered by one texel, across
+  float texel_y = 0.f;                   ///< and up the map
+  float depth_range = 1.f;               ///< metres per unit of depth
+
+  /// The larger side of a texel, metres: what "one texel from a shadow edge" measures.
+  [[nodiscard]] float texel_size() const { return texel_x > texel_y ? texel_x : texel_y; }
+};
+
+/// Renders the shadow map of one light. All triangles cast shadows (no culling).
+/// @param[in] light       direction must be non-zero (else straight down is used)
+/// @param[in] resolution  texels per side, >= 1
+/// @return the map; for an empty scene, a map where nothing is shadowed. O(triangles + texels),
+///         parallel over tiles, identical at any thread count.
+[[nodiscard]] ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resolution);
+
+/// How much of the light a point does not get.
+/// @param[in] world   the point, metres
+/// @param[in] normal  its surface's unit normal (faces the viewer), sets the slope-scaled bias
+/// Each texel is compared with the receiver's plane extended to the texel's centre (so PCF's
+/// neighbours do not shadow their own surface) plus a slope-scaled bias of a tenth of a texel
+/// times tan(angle to the light), plus a twentieth of a texel.
+/// @return 0 lit ... 1 shadowed: hard is 0 or 1, pcf the share of the 3 x 3 texels around the
+///         point that shadow it. Points outside the map are lit; surfaces facing away from the
+///         light are shadowed. O(1).
+[[nodiscard]] float shadow_amount(const ShadowMap& map, const glm::vec3& world,
+                                  const glm::vec3& normal, ShadowFilter filter);
+
+}  // namespace roomcad

@@ -1,0 +1,66 @@
+// `roomcad import` run as a program: exit statuses, the plan file it writes, its messages.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "io/plan_json.h"
+#include "io/sweethome3d_import.h"
+#include "support/run_command.h"
+
+namespace roomcad {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_roomcad;
+
+const fs::path kHomes = test::source_dir() / ".." / "shared" / "realdata" / "sweethome3d";
+
+TEST(ImportCommand, WritesThePlanTheImporterBuilds) {
+  const test::TempDir dir;
+  const fs::path home = kHomes / "eteks-example-homes" / "1-BedroomApartment.Home.xml";
+  const test::CommandResult run = run_roomcad({"import", home.string(), "-o", dir / "a.json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  // The curved wall is announced by id.
+  EXPECT_NE(run.err.find("warning [import_curved_wall]: curved wall 'wall7'"), std::string::npos)
+      << run.err;
+  const PlanReadResult read = read_plan_file(dir / "a.json");
+  ASSERT_TRUE(read.plan.has_value());
+  EXPECT_TRUE(read.report.ok());
+  const Result<Sh3dImport> imported = import_sweethome3d_file(home);
+  ASSERT_TRUE(imported.ok());
+  EXPECT_EQ(*read.plan, imported.value().plan);
+}
+
+TEST(ImportCommand, BadInputExitsTwoNamingTheFileAndWritesNothing) {
+  const test::TempDir dir;
+  ASSERT_TRUE(test::write_bytes(dir / "broken.xml", "<home><wall id='w'"));
+  const std::string plan = dir / "out.json";
+  test::CommandResult run = run_roomcad({"import", dir / "broken.xml", "-o", plan});
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("broken.xml: malformed XML"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(plan));
+
+  run = run_roomcad({"import", dir / "absent.sh3d", "-o", plan});
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("absent.sh3d"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(plan));
+
+  const fs::path sample = kHomes / "edge-cases" / "Sample.Home.xml";
+  run = run_roomcad({"import", sample.string(), "-o", plan, "--level", "Attic"});
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("--level 'Attic' names no level"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(plan));
+}
+
+TEST(ImportCommand, UnwritableOutputExitsTwo) {
+  const test::TempDir dir;
+  const fs::path home = kHomes / "eteks-example-homes" / "Studio.Home.xml";
+  const test::CommandResult run =
+      run_roomcad({"import", home.string(), "-o", dir / "no-such-dir" / "p.json"});
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("no-such-dir"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace roomcad

@@ -1,0 +1,150 @@
+// The renderer as a whole: determinism across thread counts, shading modes, anti-aliasing,
+// grid lines, caller-owned buffers and option errors.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <stdexcept>
+
+#include "render/renderer.h"
+#include "scene_support.h"
+
+namespace roomcad {
+namespace {
+
+Model make_room() {
+  Model m;
+  m.objects = {"floor", "w1", "w2", "leaf"};
+  test::add_floor(m.floor, {0.0, 0.0}, {8.0, 6.0}, 0);
+  test::add_box(m.walls, {0.0, 0.0, 0.0}, {8.0, 0.25, 2.8}, 1);
+  test::add_box(m.walls, {0.0, 0.25, 0.0}, {0.25, 6.0, 2.8}, 2);
+  test::add_face(m.fixtures, {{5.0, 3.0, 0.0}, {5.9, 3.5, 0.0}, {5.9, 3.5, 2.1}, {5.0, 3.0, 2.1}},
+                 3, FaceKind::door, {90, 60, 30});
+  return m;
+}
+
+/// Unlit, unshadowed: each pixel shows a face's plain colour (or a blend of them at edges).
+RenderOptions unlit_options(int width, int height) {
+  return RenderOptions{.width = width, .height = height, .shading = ShadingMode::unlit,
+                       .shadows = ShadowFilter::off};
+}
+
+/// Background, floor, wall and leaf colours of make_room().
+const std::set<std::array<int, 3>> kPlainColours{{255, 255, 255}, {120, 180, 90}, {200, 60, 40},
+                                                 {90, 60, 30}};
+
+std::array<int, 3> pixel(const RgbImage& image, std::size_t i) {
+  return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
+}
+
+TEST(Render, OutputIsIdenticalAtAnyThreadCount) {
+  const Model m = make_room();
+  FrameBuffers one, two, four;
+  RenderOptions options{.width = 200, .height = 150, .ssaa = 2, .threads = 1};
+  render_model(m, options, one);
+  options.threads = 2;
+  render_model(m, options, two);
+  options.threads = 4;
+  render_model(m, options, four);
+  EXPECT_EQ(one.color.pixels, two.color.pixels);
+  EXPECT_EQ(one.color.pixels, four.color.pixels);
+  EXPECT_EQ(one.depth.values, two.depth.values);
+  EXPECT_EQ(one.objects.ids, four.objects.ids);
+}
+
+TEST(Render, UnlitDrawsPlainColoursAndLitModesDiffer) {
+  const Model m = make_room();
+  FrameBuffers unlit, flat, phong;
+  RenderOptions options = unlit_options(160, 120);
+  render_model(m, options, unlit);
+  std::set<std::array<int, 3>> colours;
+  for (std::size_t i = 0; i < unlit.color.pixels.size(); i += 3) colours.insert(pixel(unlit.color, i));
+  EXPECT_EQ(colours, kPlainColours);  // nothing else without shading, shadows or anti-aliasing
+  options.shading = ShadingMode::flat;
+  render_model(m, options, flat);
+  options.shading = ShadingMode::phong;
+  render_model(m, options, phong);
+  EXPECT_NE(flat.color.pixels, unlit.color.pixels);
+  EXPECT_NE(phong.color.pixels, flat.color.pixels);  // specular varies across a face
+  EXPECT_EQ(phong.objects.ids, unlit.objects.ids);   // shading never changes visibility
+}
+
+TEST(Render, SupersamplingBlendsEdgesOnly) {
+  const Model m = make_room();
+  RenderOptions options = unlit_options(160, 120);
+  FrameBuffers aliased, smooth;
+  render_model(m, options, aliased);
+  options.ssaa = 4;
+  render_model(m, options, smooth);
+  int blended = 0, changed = 0;
+  for (std::size_t i = 0; i < smooth.color.pixels.size(); i += 3) {
+    blended += !kPlainColours.contains(pixel(smooth.color, i));
+    changed += smooth.color.pixels[i] != aliased.color.pixels[i];
+  }
+  EXPECT_GT(blended, 50);
+  EXPECT_LT(changed, 160 * 120 / 8);
+}
+
+TEST(Render, GridLinesDarkenTheFloorOnTileBoundaries) {
+  const Model m = make_room();
+  RenderOptions options = unlit_options(200, 150);
+  FrameBuffers plain, grid;
+  render_model(m, options, plain);
+  options.grid = GridLines{.enabled = true, .origin = {0.0, 0.0}, .cell_size = 1.0, .cells = {8, 6}};
+  render_model(m, options, grid);
+  int darkened = 0;
+  for (std::size_t i = 0; i < grid.color.pixels.size(); i += 3) {
+    if (plain.objects.ids[i / 3] != 0) continue;
+    darkened += grid.color.pixels[i] == 72;  // 120 * 0.6
+  }
+  EXPECT_GT(darkened, 100);
+  EXPECT_LT(darkened, 200 * 150 / 4);
+}
+
+TEST(Render, ReusesCallerBuffersAndRejectsBadOptions) {
+  const Model m = make_room();
+  FrameBuffers out;
+  render_model(m, RenderOptions{.width = 64, .height = 48}, out);
+  const std::uint8_t* first = out.color.pixels.data();
+  render_model(m, RenderOptions{.width = 64, .height = 48}, out);
+  EXPECT_EQ(out.color.pixels.data(), first);  // same size: no reallocation
+  EXPECT_EQ(out.objects.ids.size(), 64u * 48u);
+  EXPECT_THROW(render_model(m, RenderOptions{.width = 0}, out), std::invalid_argument);
+  EXPECT_THROW(render_model(m, RenderOptions{.ssaa = 3}, out), std::invalid_argument);
+  EXPECT_NE(check_render_options(RenderOptions{.shadow_resolution = 0}).find("0"),
+            std::string::npos);
+}
+
+TEST(Render, EmptyModelGivesBackgroundOnly) {
+  FrameBuffers out;
+  render_model(Model{}, RenderOptions{.width = 32, .height = 32, .background = {1, 2, 3}}, out);
+  for (std::size_t i = 0; i < out.color.pixels.size(); i += 3) {
+    ASSERT_EQ(out.color.pixels[i + 2], 3);
+  }
+  for (int id : out.objects.ids) EXPECT_EQ(id, -1);
+}
+
+TEST(Render, PresetsFrameTheWholeScene) {
+  const Scene scene = flatten_model(make_room());
+  for (const ViewPreset preset : {ViewPreset::front, ViewPreset::back, ViewPreset::left,
+                                  ViewPreset::right, ViewPreset::top, ViewPreset::iso}) {
+    for (const Projection projection : {Projection::perspective, Projection::orthographic}) {
+      const Camera cam = frame_view(scene.bounds, preset, projection, 50.0, 4.0 / 3.0);
+      const CameraMatrices m = make_camera_matrices(cam, scene.bounds, 4.0 / 3.0);
+      for (const glm::vec3& c : scene.corners) {
+        const glm::dvec4 p = m.view_projection * glm::dvec4(glm::dvec3(c), 1.0);
+        EXPECT_GT(p.w, 0.0);
+        EXPECT_LE(std::abs(p.x / p.w), 1.0);
+        EXPECT_LE(std::abs(p.y / p.w), 1.0);
+        EXPECT_GE(p.z / p.w, 0.0);
+        EXPECT_LE(p.z / p.w, 1.0);
+      }
+    }
+  }
+  EXPECT_EQ(parse_view_preset("iso"), ViewPreset::iso);
+  EXPECT_FALSE(parse_view_preset("Iso").has_value());
+  EXPECT_EQ(parse_shading_mode("gouraud"), ShadingMode::gouraud);
+  EXPECT_FALSE(parse_shading_mode("toon").has_value());
+}
+
+}  // namespace
+}  // namespace roomcad

@@ -1,0 +1,102 @@
+// Rooms from the wall arrangement, their clear areas, and the room warnings.
+#include <gtest/gtest.h>
+
+#include "plan_cases.h"
+
+namespace roomcad {
+namespace {
+
+using namespace roomcad::testing;
+using Codes = std::vector<std::string>;
+
+/// Two 4 x 4 m rooms (centre lines) side by side, 0.2 m walls; a door between them and a
+/// window in the south wall of the west room only.
+Plan two_rooms() {
+  return plan_with({make_wall("s", {0, 0}, {8, 0}, 0.2), make_wall("e", {8, 0}, {8, 4}, 0.2),
+                    make_wall("n", {8, 4}, {0, 4}, 0.2), make_wall("w", {0, 4}, {0, 0}, 0.2),
+                    make_wall("m", {4, 0}, {4, 4}, 0.2)},
+                   {make_opening("d", OpeningType::door, "m", 1, 0.9, 2.1, 0),
+                    make_opening("win", OpeningType::window, "s", 1, 1.2, 1.2, 0.9)});
+}
+
+TEST(Rooms, TwoRoomsWithClearAreasAndTheirOpenings) {
+  const std::vector<Room> rooms = find_rooms(two_rooms());
+  ASSERT_EQ(rooms.size(), 2u);
+  // Numbered from the south-west; clear floor 3.8 x 3.8 m inside 0.2 m walls.
+  EXPECT_NEAR(rooms[0].area, 3.8 * 3.8, 1e-9);
+  EXPECT_NEAR(rooms[1].area, 3.8 * 3.8, 1e-9);
+  EXPECT_EQ(rooms[0].walls, (Codes{"m", "n", "s", "w"}));
+  EXPECT_EQ(rooms[1].walls, (Codes{"e", "m", "n", "s"}));
+  EXPECT_EQ(rooms[0].doors, Codes{"d"});
+  EXPECT_EQ(rooms[1].doors, Codes{"d"});
+  EXPECT_EQ(rooms[0].windows, Codes{"win"});
+  EXPECT_TRUE(rooms[1].windows.empty());
+  ASSERT_EQ(rooms[0].outline.size(), 4u);
+  for (const Point2& c : rooms[0].outline) {  // the clear floor: [0.1, 3.9] x [0.1, 3.9]
+    EXPECT_TRUE(std::fabs(c.x - 0.1) < 1e-12 || std::fabs(c.x - 3.9) < 1e-12) << c.x;
+    EXPECT_TRUE(std::fabs(c.y - 0.1) < 1e-12 || std::fabs(c.y - 3.9) < 1e-12) << c.y;
+  }
+}
+
+TEST(Rooms, WarningsForARoomWithoutWindowAndWithoutDoor) {
+  Plan p = two_rooms();
+  Report r = validate(p);
+  EXPECT_TRUE(r.ok());
+  ASSERT_EQ(r.items.size(), 1u);
+  EXPECT_EQ(r.items[0].code, "room_without_window");
+  EXPECT_EQ(r.items[0].objects, (Codes{"e", "m", "n", "s"}));
+  EXPECT_NE(r.items[0].message.find("room 2"), std::string::npos) << r.items[0].message;
+
+  p.openings.erase(p.openings.begin());  // no door anywhere now
+  r = validate(p);
+  EXPECT_EQ(r.warning_count(), 3u);
+  EXPECT_EQ(validate(p, no_rooms()).warning_count(), 0u);
+}
+
+TEST(Rooms, OpenPlansHaveNoRoomsAndRoomsInsideRoomsAreSubtracted) {
+  Plan open = two_rooms();
+  open.walls.erase(open.walls.begin() + 1);  // no east wall: only the west room is closed
+  EXPECT_EQ(find_rooms(open).size(), 1u);
+
+  Plan nested = plan_with({make_wall("s", {0, 0}, {10, 0}, 0.2), make_wall("e", {10, 0}, {10, 10}, 0.2),
+                           make_wall("n", {10, 10}, {0, 10}, 0.2), make_wall("w", {0, 10}, {0, 0}, 0.2),
+                           make_wall("is", {4, 4}, {6, 4}, 0.2), make_wall("ie", {6, 4}, {6, 6}, 0.2),
+                           make_wall("in", {6, 6}, {4, 6}, 0.2), make_wall("iw", {4, 6}, {4, 4}, 0.2)});
+  const std::vector<Room> rooms = find_rooms(nested);
+  ASSERT_EQ(rooms.size(), 2u);
+  EXPECT_NEAR(rooms[0].area, 9.8 * 9.8 - 2 * 2, 1e-9);  // centre-line area of the inner room
+  EXPECT_NEAR(rooms[1].area, 1.8 * 1.8, 1e-9);
+}
+
+TEST(Openings, OutsideWallMessageSaysHowFarAndHowToFix) {
+  const Plan p = plan_with({make_wall("s", {0, 0}, {4, 0})},
+                           {make_opening("w2", OpeningType::window, "s", 2.95, 1.2, 1.2, 0.9)});
+  const Report r = validate(p, no_rooms());
+  ASSERT_EQ(error_codes(r), Codes{"opening_outside_wall"});
+  EXPECT_NE(r.items[0].message.find("window 'w2' ends 0.15 m past the end of wall 's'"),
+            std::string::npos) << r.items[0].message;
+  EXPECT_EQ(r.items[0].fix, "move it 0.15 m toward the start, or make it 1.05 m wide");
+}
+
+TEST(Openings, BlockedDoorFixOffersClearOffsets) {
+  const Plan p = plan_with({make_wall("a", {0, 0}, {4, 0}), make_wall("b", {2, 0}, {2, 3})},
+                           {make_opening("d", OpeningType::door, "a", 1.5, 0.9, 2.1, 0)});
+  const Report r = validate(p, no_rooms());
+  ASSERT_EQ(error_codes(r), Codes{"opening_blocked"});
+  EXPECT_EQ(r.items[0].objects, (Codes{"d", "a", "b"}));
+  EXPECT_EQ(r.items[0].fix, "move d along a clear of b: offset 0.97 (before it) or offset 2.13 (after it)");
+}
+
+TEST(Openings, OverlapAndNoOverlapAcrossDifferentHeights) {
+  Plan p = plan_with({make_wall("s", {0, 0}, {4, 0})},
+                     {make_opening("w1", OpeningType::window, "s", 0.5, 1, 1, 0.3),
+                      make_opening("w2", OpeningType::window, "s", 1, 1, 0.5, 1.3)});
+  EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});  // stacked: w2 starts at w1's top
+  p.openings[1].sill = 1.2;
+  const Report r = validate(p, no_rooms());
+  ASSERT_EQ(error_codes(r), Codes{"opening_overlap"});
+  EXPECT_EQ(r.items[0].objects, (Codes{"w1", "w2"}));
+}
+
+}  // namespace
+}  // namespace roomcad

@@ -1,0 +1,41 @@
+// The checks validate() runs, one file each, sharing what earlier checks found.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "modeling/joins.h"
+#include "modeling/plan.h"
+#include "validation/report.h"
+#include "validation/validate.h"
+
+namespace roomcad::detail {
+
+/// Which objects passed the value and reference checks. Geometry checks look only at these,
+/// so one mistake gives one error.
+struct Usable {
+  bool site = false;                            ///< origin, cells, cell_size, max_height finite/positive
+  std::vector<bool> walls;                      ///< by index into Plan::walls
+  std::vector<std::optional<std::size_t>> host; ///< by opening: its host wall, if both are usable
+};
+
+/// invalid_value for every number, size and direction of the plan (no geometry).
+/// @return which walls and whether the site are usable. O(n).
+[[nodiscard]] Usable check_values(const Plan& plan, Report& report);
+
+/// duplicate_id across all objects, unknown_reference for openings; fills `usable.host`.
+/// O(n log n).
+void check_ids(const Plan& plan, Usable& usable, Report& report);
+
+/// wall_overlap and out_of_bounds on usable walls; opening_outside_wall, opening_overlap and
+/// opening_blocked on usable openings. O(n log n + k).
+void check_geometry(const Plan& plan, const Joins& joins, const Usable& usable, Report& report);
+
+/// unknown_field (if asked) and door_above_floor warnings. O(n).
+void check_warnings(const Plan& plan, const ValidateOptions& options, Report& report);
+
+/// room_without_door and room_without_window warnings. O(n log n).
+void check_rooms(const Plan& plan, Report& report);
+
+}  // namespace roomcad::detail

@@ -1,0 +1,85 @@
+#include "validation/detail/shapes.h"
+
+#include <cmath>
+#include <limits>
+
+namespace roomcad::detail {
+namespace {
+
+/// Exact corners reduced to enclosing intervals (for boxes when the fast path cannot decide).
+Quad<exact::Approx> enclose(const Quad<exact::Exact>& q) {
+  Quad<exact::Approx> out;
+  for (std::size_t i = 0; i < 4; ++i)
+    out[i] = {exact::Approx(CGAL::to_interval(q[i].x)), exact::Approx(CGAL::to_interval(q[i].y))};
+  return out;
+}
+
+}  // namespace
+
+Box2 box_of(const Quad<exact::Approx>& q, std::size_t index) {
+  Box2 box{q[0].x.inf(), q[0].y.inf(), q[0].x.sup(), q[0].y.sup(), index};
+  for (const auto& p : q) {
+    box.min_x = std::min(box.min_x, p.x.inf());
+    box.min_y = std::min(box.min_y, p.y.inf());
+    box.max_x = std::max(box.max_x, p.x.sup());
+    box.max_y = std::max(box.max_y, p.y.sup());
+  }
+  return box;
+}
+
+Footprints::Footprints(const Plan& plan, const Joins& joins, const std::vector<bool>& usable)
+    : plan_(plan), joins_(joins), approx_(plan.walls.size()) {
+  for (std::size_t w = 0; w < plan.walls.size(); ++w) {
+    if (!usable[w]) continue;
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      try {
+        approx_[w] = exact::wall_corners<exact::Approx>(plan, joins, w);
+      } catch (const CGAL::Uncertain_conversion_exception&) {
+        // A mitre whose walls are nearly parallel: the box comes from exact corners below.
+      }
+    }
+    boxes_.push_back(approx_[w] ? box_of(*approx_[w], w)
+                                : box_of(enclose(exact::wall_corners<exact::Exact>(plan, joins, w)), w));
+  }
+}
+
+std::array<Point2, 4> approximate(const Quad<exact::Approx>& q) {
+  std::array<Point2, 4> out;
+  for (std::size_t i = 0; i < 4; ++i)
+    out[i] = {(q[i].x.inf() + q[i].x.sup()) / 2, (q[i].y.inf() + q[i].y.sup()) / 2};
+  return out;
+}
+
+std::pair<double, Point2> penetration(const std::array<Point2, 4>& p,
+                                      const std::array<Point2, 4>& q) {
+  double best = std::numeric_limits<double>::infinity();
+  Point2 best_axis{1, 0};
+  const auto project = [](Point2 axis, const std::array<Point2, 4>& s) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo, mid = 0;
+    for (const Point2& c : s) {
+      const double t = axis.x * c.x + axis.y * c.y;
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+      mid += t / 4;
+    }
+    return std::array<double, 3>{lo, hi, mid};
+  };
+  for (const auto* shape : {&p, &q})
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Point2 e{(*shape)[(i + 1) % 4].x - (*shape)[i].x, (*shape)[(i + 1) % 4].y - (*shape)[i].y};
+      const double len = std::hypot(e.x, e.y);
+      if (len == 0) continue;
+      Point2 axis{-e.y / len, e.x / len};
+      const auto a = project(axis, p);
+      const auto b = project(axis, q);
+      const double overlap = std::min(a[1], b[1]) - std::max(a[0], b[0]);
+      if (overlap >= best) continue;
+      best = overlap;
+      if (b[2] < a[2]) axis = {-axis.x, -axis.y};
+      best_axis = axis;
+    }
+  return {std::max(best, 0.0), best_axis};
+}
+
+}  // namespace roomcad::detail

@@ -1,0 +1,136 @@
+// Exact shape tests for validation: mitred wall footprints, opening holes, and whether two
+// convex quadrilaterals share interior area, in any number type (see modeling's
+// exact::decide). Includes CGAL: only wall_checks.cpp and opening_checks.cpp include it.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+#include "modeling/broad_phase.h"
+#include "modeling/detail/exact_geometry.h"
+#include "validation/report.h"
+
+namespace roomcad::detail {
+
+template <class NT>
+using Quad = std::array<exact::Pt<NT>, 4>;
+
+/// Interval footprints of the usable walls, computed once, and their outward-rounded boxes.
+/// A footprint whose intervals cannot be formed (a near-parallel mitre) is left empty and
+/// built exactly on demand.
+class Footprints {
+ public:
+  Footprints(const Plan& plan, const Joins& joins, const std::vector<bool>& usable);
+
+  /// @return wall w's mitred footprint in NT (cached for intervals).
+  template <class NT>
+  Quad<NT> get(std::size_t w) const {
+    if constexpr (std::is_same_v<NT, exact::Approx>) {
+      if (approx_[w]) return *approx_[w];
+      throw CGAL::Uncertain_conversion_exception("footprint needs exact arithmetic");
+    } else {
+      return exact::wall_corners<NT>(plan_, joins_, w);
+    }
+  }
+  /// Boxes (index = wall) of the usable walls' footprints.
+  [[nodiscard]] const std::vector<Box2>& boxes() const { return boxes_; }
+
+ private:
+  const Plan& plan_;
+  const Joins& joins_;
+  std::vector<std::optional<Quad<exact::Approx>>> approx_;
+  std::vector<Box2> boxes_;
+};
+
+/// @return the outward-rounded box of a quad given in intervals.
+Box2 box_of(const Quad<exact::Approx>& q, std::size_t index);
+
+/// The hole of an opening in the plane: its span along the host's centre line, through the
+/// full thickness: {start-right, end-right, end-left, start-left} (counter-clockwise).
+template <class NT>
+Quad<NT> hole_corners(const Wall& w, const Opening& o) {
+  const exact::WallLine<NT> line = exact::wall_line<NT>(w);
+  const exact::Pt<NT> d = line.to - line.from;
+  const NT length = CGAL::sqrt(exact::dot(d, d));
+  const exact::Pt<NT> start = line.from + (NT(o.offset) / length) * d;
+  const exact::Pt<NT> end = line.from + ((NT(o.offset) + NT(o.width)) / length) * d;
+  return {start - line.half_normal, end - line.half_normal, end + line.half_normal,
+          start + line.half_normal};
+}
+
+/// @return true if the open intervals (lo1, hi1) and (lo2, hi2) meet.
+template <class NT>
+auto spans_overlap(const NT& lo1, const NT& hi1, const NT& lo2, const NT& hi2) {
+  return lo1 < hi2 && lo2 < hi1;
+}
+
+/// Extremes without a decision: intervals take the hull-wise min/max (equal values are
+/// common here and must not force the exact path); exact numbers compare.
+template <class NT>
+NT lesser(const NT& a, const NT& b) {
+  if constexpr (std::is_same_v<NT, exact::Approx>) return CGAL::min(a, b);
+  else return a < b ? a : b;
+}
+template <class NT>
+NT greater(const NT& a, const NT& b) {
+  if constexpr (std::is_same_v<NT, exact::Approx>) return CGAL::max(a, b);
+  else return a < b ? b : a;
+}
+
+/// @return a fixed point near p: p itself, or for intervals the point of its lower bounds
+/// (exact), so that differences from it carry no extra width.
+template <class NT>
+exact::Pt<NT> anchor_at(const exact::Pt<NT>& p) {
+  if constexpr (std::is_same_v<NT, exact::Approx>) return {NT(p.x.inf()), NT(p.y.inf())};
+  else return p;
+}
+
+/// @return true if `axis` separates p and q (their projections meet at most at a point).
+/// Projections are taken from an anchor on p: the axis is uncertain in intervals, and
+/// multiplying it by coordinates a million metres from the origin would magnify that.
+template <class NT>
+bool separates(const exact::Pt<NT>& axis, const Quad<NT>& p, const Quad<NT>& q) {
+  const exact::Pt<NT> o = anchor_at(p[0]);
+  const auto project = [&](const exact::Pt<NT>& c) { return exact::dot(axis, c - o); };
+  NT p_lo = project(p[0]), p_hi = p_lo, q_lo = project(q[0]), q_hi = q_lo;
+  for (std::size_t i = 1; i < 4; ++i) {
+    const NT a = project(p[i]);
+    const NT b = project(q[i]);
+    p_lo = lesser(p_lo, a);
+    p_hi = greater(p_hi, a);
+    q_lo = lesser(q_lo, b);
+    q_hi = greater(q_hi, b);
+  }
+  return p_hi <= q_lo || q_hi <= p_lo;
+}
+
+/// @return true if convex quads p and q share interior area (touching is not sharing).
+/// Separating-axis test on the edge normals of both; zero-length edges give no axis.
+template <class NT>
+bool interiors_overlap(const Quad<NT>& p, const Quad<NT>& q) {
+  for (const Quad<NT>* shape : {&p, &q})
+    for (std::size_t i = 0; i < 4; ++i) {
+      const exact::Pt<NT> edge = (*shape)[(i + 1) % 4] - (*shape)[i];
+      if (edge.x == NT(0) && edge.y == NT(0)) continue;
+      if (separates(exact::Pt<NT>{-edge.y, edge.x}, p, q)) return false;
+    }
+  return true;
+}
+
+/// @return the midpoints of a quad's intervals: the shape as doubles, for messages.
+std::array<Point2, 4> approximate(const Quad<exact::Approx>& q);
+
+/// @return how far p and q overlap: the least distance one must move to clear the other,
+///         along the returned unit direction (pointing from p to q). Doubles; for messages.
+std::pair<double, Point2> penetration(const std::array<Point2, 4>& p,
+                                      const std::array<Point2, 4>& q);
+
+struct Usable;
+
+/// opening_outside_wall, opening_overlap and opening_blocked (opening_checks.cpp).
+void check_openings(const Plan& plan, const Joins& joins, const Footprints& footprints,
+                    const Usable& usable, Report& report);
+
+}  // namespace roomcad::detail

@@ -1,0 +1,47 @@
+// Warnings that do not depend on geometry: unknown_field and door_above_floor.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "validation/detail/checks.h"
+#include "validation/detail/diagnostics.h"
+
+namespace roomcad::detail {
+namespace {
+
+void warn_extra(const ExtraFields& extra, std::string_view owner, const std::string& id,
+                Report& report) {
+  for (const ExtraField& f : extra)
+    report.add(make_diagnostic(
+        Severity::warning, "unknown_field", id.empty() ? std::vector<std::string>{} : std::vector{id},
+        fmt::format("{} has a field '{}' that the plan format does not define; it is kept but "
+                    "has no effect.", owner, f.key),
+        fmt::format("check the spelling of '{}', or remove it", f.key)));
+}
+
+void warn_unknown_fields(const Plan& plan, Report& report) {
+  warn_extra(plan.extra, "the plan", "", report);
+  warn_extra(plan.site.extra, "the site", "", report);
+  for (const Wall& w : plan.walls) warn_extra(w.extra, name_of(w), w.id, report);
+  for (const Opening& o : plan.openings) warn_extra(o.extra, name_of(o), o.id, report);
+  for (const Light& l : plan.lights)
+    warn_extra(l.extra, fmt::format("light '{}'", l.id), l.id, report);
+  for (const Camera& c : plan.cameras)
+    warn_extra(c.extra, fmt::format("camera '{}'", c.id), c.id, report);
+}
+
+}  // namespace
+
+void check_warnings(const Plan& plan, const ValidateOptions& options, Report& report) {
+  if (options.unknown_field_warnings) warn_unknown_fields(plan, report);
+  for (const Opening& o : plan.openings) {
+    if (o.type != OpeningType::door || !std::isfinite(o.sill) || o.sill <= 0) continue;
+    report.add(make_diagnostic(
+        Severity::warning, "door_above_floor", {o.id},
+        fmt::format("{} starts {} above the base of wall '{}'; a door normally starts at the "
+                    "floor.", name_of(o), metres(o.sill), o.wall),
+        "set its sill to 0, or make it a window if it is one"));
+  }
+}
+
+}  // namespace roomcad::detail

@@ -1,0 +1,49 @@
+// validate(): value checks, then ids and references, then exact geometry on what passed,
+// then warnings. Every check runs; nothing stops at the first problem.
+#include "validation/validate.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "modeling/joins.h"
+#include "validation/detail/checks.h"
+
+namespace roomcad {
+namespace {
+
+/// The plan the geometry checks see: walls that failed a value check are made to join
+/// nothing (NaN ends), so a bad thickness cannot bend a good wall's mitre.
+Plan geometry_plan(const Plan& plan, const detail::Usable& usable) {
+  Plan copy;
+  copy.site = plan.site;
+  copy.walls = plan.walls;
+  for (std::size_t w = 0; w < copy.walls.size(); ++w)
+    if (!usable.walls[w]) copy.walls[w].from = copy.walls[w].to = {NAN, NAN};
+  return copy;
+}
+
+}  // namespace
+
+Report validate(const Plan& plan, const ValidateOptions& options) {
+  Report report;
+  detail::Usable usable = detail::check_values(plan, report);
+  detail::check_ids(plan, usable, report);
+  const bool all_walls_usable =
+      std::all_of(usable.walls.begin(), usable.walls.end(), [](bool ok) { return ok; });
+  if (all_walls_usable) {
+    detail::check_geometry(plan, find_joins(plan), usable, report);
+  } else {
+    Plan geometry = geometry_plan(plan, usable);
+    geometry.openings = plan.openings;
+    detail::check_geometry(geometry, find_joins(geometry), usable, report);
+  }
+  const bool has_errors = !report.ok();
+  detail::check_warnings(plan, options, report);
+  // Rooms are only meaningful on a plan whose walls are sound: with errors, say nothing more.
+  if (options.room_warnings && !has_errors) detail::check_rooms(plan, report);
+  std::stable_partition(report.items.begin(), report.items.end(),
+                        [](const Diagnostic& d) { return d.severity == Severity::error; });
+  return report;
+}
+
+}  // namespace roomcad

@@ -46,6 +46,13 @@ Nef unite_balanced(std::vector<Nef> parts) {
   return std::move(parts.front());
 }
 
+// Names the walls of a cluster for messages.
+std::string wall_list(std::span<const WallFrame* const> walls) {
+  std::string ids;
+  for (std::size_t k = 0; k < walls.size() && k < 6; ++k) ids += fmt::format("{}#{}", k ? ", " : "", walls[k]->wall);
+  return walls.size() > 6 ? ids + ", ..." : ids;
+}
+
 FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int first_opening_object) {
   std::vector<EK::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
@@ -54,11 +61,20 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
   rounded.reserve(points.size());
   for (const EK::Point_3& p : points)
     rounded.emplace_back(round_to_nearest(p.x()), round_to_nearest(p.y()), round_to_nearest(p.z()));
+  std::pair<std::size_t, std::size_t> bad;
+  const auto copies = split_fans(polygons, points.size(), bad);
+  if (copies.empty() && !polygons.empty())
+    throw PreconditionError(fmt::format(
+        "build_model: the solid of walls {} is not 2-manifold: more than two of its faces meet at "
+        "the edge from ({}, {}, {}) to ({}, {}, {}) (walls touching along an edge)", wall_list(walls),
+        rounded[bad.first][0], rounded[bad.first][1], rounded[bad.first][2], rounded[bad.second][0],
+        rounded[bad.second][1], rounded[bad.second][2]));
   FaceSoup soup;
   soup.reserve(polygons.size());
-  for (const auto& polygon : polygons) {
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
     SoupFace f;
-    for (std::size_t i : polygon) f.points.push_back(rounded[i]);
+    for (std::size_t i : polygons[k]) f.points.push_back(rounded[i]);
+    f.copies = copies[k];
     const FaceLabel label = classify_face(f.points, walls, first_opening_object);
     f.kind = label.kind;
     f.object = label.object;

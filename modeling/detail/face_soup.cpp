@@ -13,6 +13,7 @@ namespace {
 
 struct PointKey {
   std::uint64_t x, y, z;
+  std::uint32_t copy;
   friend bool operator==(const PointKey&, const PointKey&) = default;
 };
 
@@ -24,14 +25,15 @@ struct PointKeyHash {
     return x ^ (x >> 31);
   }
   std::size_t operator()(const PointKey& k) const {
-    return static_cast<std::size_t>(mix(k.x) ^ mix(k.y + 0x9E3779B97F4A7C15ull) ^ mix(k.z * 3 + 1));
+    return static_cast<std::size_t>(mix(k.x) ^ mix(k.y + 0x9E3779B97F4A7C15ull) ^ mix(k.z * 3 + 1) ^
+                                    k.copy);
   }
 };
 
 // Adding 0.0 turns -0.0 into +0.0, so that the two zeros share a vertex.
-PointKey key_of(const OpenMesh::Vec3d& p) {
+PointKey key_of(const OpenMesh::Vec3d& p, std::uint32_t copy) {
   return {std::bit_cast<std::uint64_t>(p[0] + 0.0), std::bit_cast<std::uint64_t>(p[1] + 0.0),
-          std::bit_cast<std::uint64_t>(p[2] + 0.0)};
+          std::bit_cast<std::uint64_t>(p[2] + 0.0), copy};
 }
 
 std::string object_name(const std::vector<std::string>& objects, int object) {
@@ -39,7 +41,50 @@ std::string object_name(const std::vector<std::string>& objects, int object) {
   return objects[static_cast<std::size_t>(object)];
 }
 
+struct Corners {
+  std::vector<std::size_t> vertex, next;  // per corner, in polygon order
+  std::vector<std::size_t> parent;        // union-find over corners
+  std::size_t find(std::size_t c) {
+    while (parent[c] != c) c = parent[c] = parent[parent[c]];
+    return c;
+  }
+};
+
 }  // namespace
+
+std::vector<std::vector<std::uint32_t>> split_fans(const std::vector<std::vector<std::size_t>>& polygons,
+                                                   std::size_t points,
+                                                   std::pair<std::size_t, std::size_t>& bad_edge) {
+  Corners c;
+  std::unordered_map<std::uint64_t, std::size_t> corner_after;  // edge a->b: the corner at b
+  for (const auto& poly : polygons)
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const std::size_t prev = poly[(k + poly.size() - 1) % poly.size()];
+      const std::size_t id = c.vertex.size();
+      c.vertex.push_back(poly[k]);
+      c.next.push_back(poly[(k + 1) % poly.size()]);
+      c.parent.push_back(id);
+      if (!corner_after.emplace(std::uint64_t(prev) * points + poly[k], id).second) {
+        bad_edge = {prev, poly[k]};
+        return {};
+      }
+    }
+  // A corner joins the corner of the neighbouring face across its outgoing edge.
+  for (std::size_t id = 0; id < c.vertex.size(); ++id) {
+    const auto it = corner_after.find(std::uint64_t(c.next[id]) * points + c.vertex[id]);
+    if (it != corner_after.end()) c.parent[c.find(id)] = c.find(it->second);
+  }
+  std::vector<std::uint32_t> copy_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0);
+  std::vector<std::vector<std::uint32_t>> copies(polygons.size());
+  std::size_t id = 0;
+  for (std::size_t p = 0; p < polygons.size(); ++p)
+    for (std::size_t k = 0; k < polygons[p].size(); ++k, ++id) {
+      std::uint32_t& copy = copy_of_root[c.find(id)];
+      if (copy == UINT32_MAX) copy = copies_used[c.vertex[id]]++;
+      copies[p].push_back(copy);
+    }
+  return copies;
+}
 
 OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points) {
   OpenMesh::Vec3d n(0.0, 0.0, 0.0);
@@ -68,8 +113,9 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
     if (!share) vertices.clear();
     for (const SoupFace& f : soup) {
       face.clear();
-      for (const OpenMesh::Vec3d& p : f.points) {
-        auto [it, added] = vertices.try_emplace(key_of(p));
+      for (std::size_t k = 0; k < f.points.size(); ++k) {
+        const OpenMesh::Vec3d& p = f.points[k];
+        auto [it, added] = vertices.try_emplace(key_of(p, f.copies.empty() ? 0 : f.copies[k]));
         if (added) it->second = mesh.add_vertex(p);
         face.push_back(it->second);
       }

@@ -14,7 +14,7 @@ struct GridPoint {
 };
 
 struct GridFace {
-  std::array<GridPoint, 4> corners;
+  std::vector<GridPoint> corners;  // in order; edges run along grid lines or across the thickness
   FaceKind kind;
   int object;
 };
@@ -48,20 +48,24 @@ class WallGrid {
     else xy = side_point(f_, u_[p.i], p.s == 0 ? -1 : 1);
     return {xy.x, xy.y, z_[p.j]};
   }
+  /// The cells of hole k: columns [c0, c1) and rows [r0, r1).
+  std::array<std::size_t, 4> cells_of(std::size_t k) const {
+    const Hole& h = f_.holes[k];
+    return {index_of(u_, h.u0), index_of(u_, h.u1), index_of(z_, h.z0), index_of(z_, h.z1)};
+  }
 
  private:
   static void sort_unique(std::vector<double>& v) {
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
   }
-  std::size_t index_of(const std::vector<double>& v, double x) const {
+  static std::size_t index_of(const std::vector<double>& v, double x) {
     return std::size_t(std::lower_bound(v.begin(), v.end(), x) - v.begin());
   }
   void mark_hole(std::size_t k) {
-    const Hole& h = f_.holes[k];
-    for (std::size_t c = index_of(u_, h.u0); c < index_of(u_, h.u1); ++c)
-      for (std::size_t r = index_of(z_, h.z0); r < index_of(z_, h.z1); ++r)
-        cells_[c * (nz() - 1) + r] = int(k);
+    const auto [c0, c1, r0, r1] = cells_of(k);
+    for (std::size_t c = c0; c < c1; ++c)
+      for (std::size_t r = r0; r < r1; ++r) cells_[c * (nz() - 1) + r] = int(k);
   }
   const WallFrame& f_;
   std::vector<double> u_, z_;
@@ -79,19 +83,96 @@ struct Context {
   }
 };
 
-void add_side_faces(const Context& cx, std::vector<GridFace>& out) {
-  const std::size_t nr = cx.grid.nz() - 1;
-  for (std::size_t c = 0; c + 1 < cx.grid.nu(); ++c) {
-    for (std::size_t r0 = 0; r0 < nr;) {
-      if (cx.grid.cell(std::ptrdiff_t(c), std::ptrdiff_t(r0)) != kSolid) { ++r0; continue; }
-      std::size_t r1 = r0 + 1;
-      while (r1 < nr && cx.grid.cell(std::ptrdiff_t(c), std::ptrdiff_t(r1)) == kSolid) ++r1;
-      out.push_back({{{{c, r0, 0}, {c + 1, r0, 0}, {c + 1, r1, 0}, {c, r1, 0}}},
-                     FaceKind::wall_face, cx.wall_object});
-      out.push_back({{{{c, r0, 1}, {c, r1, 1}, {c + 1, r1, 1}, {c + 1, r0, 1}}},
-                     FaceKind::wall_face, cx.wall_object});
-      r0 = r1;
+bool is_solid(const WallGrid& g, std::ptrdiff_t c, std::ptrdiff_t r) { return g.cell(c, r) == kSolid; }
+
+// Vertical cuts that leave no side-face piece around a hole: from each hole enclosed by wall
+// material, down and up along its first column line, through solid cells, to the next empty
+// cell or the border. cut[i * rows + r]: the edge on column line i at row r is cut.
+std::vector<char> find_cuts(const Context& cx) {
+  const WallGrid& g = cx.grid;
+  const std::size_t nc = g.nu() - 1, nr = g.nz() - 1;
+  std::vector<char> cut(g.nu() * nr, 0);
+  for (std::size_t k = 0; k < cx.frame.holes.size(); ++k) {
+    const auto [c0, c1, r0, r1] = g.cells_of(k);
+    if (c0 == 0 || c1 == nc || r0 == 0 || r1 == nr) continue;  // a notch: nothing to cut
+    auto both_solid = [&](std::size_t r) {
+      return is_solid(g, std::ptrdiff_t(c0) - 1, std::ptrdiff_t(r)) && is_solid(g, std::ptrdiff_t(c0), std::ptrdiff_t(r));
+    };
+    for (std::size_t r = r0; r-- > 0 && both_solid(r);) cut[c0 * nr + r] = 1;
+    for (std::size_t r = r1; r < nr && both_solid(r); ++r) cut[c0 * nr + r] = 1;
+  }
+  return cut;
+}
+
+struct Edge {
+  std::size_t i, j;  // start
+  int dir;           // 0: +u, 1: +z, 2: -u, 3: -z
+};
+
+std::pair<std::size_t, std::size_t> end_of(const Edge& e) {
+  const std::size_t i = e.dir == 0 ? e.i + 1 : e.dir == 2 ? e.i - 1 : e.i;
+  const std::size_t j = e.dir == 1 ? e.j + 1 : e.dir == 3 ? e.j - 1 : e.j;
+  return {i, j};
+}
+
+// The boundary edges of the solid cells (and both sides of each cut), counter-clockwise
+// around the solid in the (u, z) plane.
+std::vector<Edge> side_edges(const WallGrid& g, const std::vector<char>& cut) {
+  const std::size_t nr = g.nz() - 1;
+  auto apart_u = [&](std::size_t c, std::size_t r) {  // on column line c, row r
+    return !(is_solid(g, std::ptrdiff_t(c) - 1, std::ptrdiff_t(r)) && is_solid(g, std::ptrdiff_t(c), std::ptrdiff_t(r))) ||
+           cut[c * nr + r];
+  };
+  auto apart_z = [&](std::size_t c, std::size_t r) {  // on row line r, column c
+    return !(is_solid(g, std::ptrdiff_t(c), std::ptrdiff_t(r) - 1) && is_solid(g, std::ptrdiff_t(c), std::ptrdiff_t(r)));
+  };
+  std::vector<Edge> edges;
+  for (std::size_t c = 0; c + 1 < g.nu(); ++c)
+    for (std::size_t r = 0; r < nr; ++r) {
+      if (!is_solid(g, std::ptrdiff_t(c), std::ptrdiff_t(r))) continue;
+      if (apart_z(c, r)) edges.push_back({c, r, 0});
+      if (apart_u(c + 1, r)) edges.push_back({c + 1, r, 1});
+      if (apart_z(c, r + 1)) edges.push_back({c + 1, r + 1, 2});
+      if (apart_u(c, r)) edges.push_back({c, r + 1, 3});
     }
+  return edges;
+}
+
+// Links the edges into loops; where two loops touch at a point, each turns left, so every
+// loop stays a simple polygon. @return the loops' corners (where the direction changes).
+std::vector<std::vector<GridPoint>> trace_loops(const WallGrid& g, const std::vector<Edge>& edges) {
+  std::vector<std::vector<std::size_t>> leaving(g.nu() * g.nz());
+  for (std::size_t e = 0; e < edges.size(); ++e) leaving[edges[e].i * g.nz() + edges[e].j].push_back(e);
+  std::vector<char> used(edges.size(), 0);
+  std::vector<std::vector<GridPoint>> loops;
+  for (std::size_t first = 0; first < edges.size(); ++first) {
+    if (used[first]) continue;
+    std::vector<GridPoint> corners;
+    std::size_t e = first;
+    do {
+      used[e] = 1;
+      const auto [i, j] = end_of(edges[e]);
+      std::size_t next = first;
+      bool found = false;
+      for (const int turn : {1, 0, 3})  // left, straight, right
+        for (std::size_t n : leaving[i * g.nz() + j])
+          if (!found && (!used[n] || n == first) && edges[n].dir == (edges[e].dir + turn) % 4)
+            next = n, found = true;
+      if (edges[next].dir != edges[e].dir) corners.push_back({i, j, 0});
+      e = next;
+    } while (e != first);
+    loops.push_back(std::move(corners));
+  }
+  return loops;
+}
+
+// The side faces: the solid part of the (u, z) grid, cut into pieces without holes.
+void add_side_faces(const Context& cx, std::vector<GridFace>& out) {
+  for (const std::vector<GridPoint>& loop : trace_loops(cx.grid, side_edges(cx.grid, find_cuts(cx)))) {
+    out.push_back({loop, FaceKind::wall_face, cx.wall_object});
+    std::vector<GridPoint> left(loop.rbegin(), loop.rend());
+    for (GridPoint& p : left) p.s = 1;
+    out.push_back({std::move(left), FaceKind::wall_face, cx.wall_object});
   }
 }
 
@@ -120,9 +201,9 @@ void add_u_faces(const Context& cx, std::size_t i, std::vector<GridFace>& out) {
       const FaceKind kind = s.second == kOutside ? FaceKind::wall_end : FaceKind::jamb;
       const int obj = cx.object_of(s.second);
       if (s.first > 0)
-        out.push_back({{{{i, r0, 0}, {i, r0, 1}, {i, r1, 1}, {i, r1, 0}}}, kind, obj});
+        out.push_back({{{i, r0, 0}, {i, r0, 1}, {i, r1, 1}, {i, r1, 0}}, kind, obj});
       else
-        out.push_back({{{{i, r0, 0}, {i, r1, 0}, {i, r1, 1}, {i, r0, 1}}}, kind, obj});
+        out.push_back({{{i, r0, 0}, {i, r1, 0}, {i, r1, 1}, {i, r0, 1}}, kind, obj});
     }
     r0 = r1;
   }
@@ -150,9 +231,9 @@ void add_z_faces(const Context& cx, std::size_t j, std::vector<GridFace>& out) {
       const FaceKind kind = z_face_kind(s.first, s.second);
       const int obj = cx.object_of(s.second);
       if (s.first > 0)
-        out.push_back({{{{c0, j, 0}, {c1, j, 0}, {c1, j, 1}, {c0, j, 1}}}, kind, obj});
+        out.push_back({{{c0, j, 0}, {c1, j, 0}, {c1, j, 1}, {c0, j, 1}}, kind, obj});
       else
-        out.push_back({{{{c0, j, 0}, {c0, j, 1}, {c1, j, 1}, {c1, j, 0}}}, kind, obj});
+        out.push_back({{{c0, j, 0}, {c0, j, 1}, {c1, j, 1}, {c1, j, 0}}, kind, obj});
     }
     c0 = c1;
   }
@@ -168,9 +249,10 @@ FaceSoup emit_faces(const Context& cx, const std::vector<GridFace>& faces) {
   FaceSoup soup;
   soup.reserve(faces.size());
   for (const GridFace& f : faces) {
-    SoupFace out{{}, f.kind, f.object, cx.frame.color};
-    for (std::size_t k = 0; k < 4; ++k) {
-      const GridPoint a = f.corners[k], b = f.corners[(k + 1) % 4];
+    SoupFace out{{}, f.kind, f.object, cx.frame.color, {}};
+    const std::size_t n = f.corners.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const GridPoint a = f.corners[k], b = f.corners[(k + 1) % n];
       out.points.push_back(cx.grid.point(a));
       if (a.s != b.s) continue;  // an edge across the thickness has no inner vertices
       const bool along_u = a.j == b.j;

@@ -1,5 +1,7 @@
 #include "modeling/detail/cgal_booleans.h"
 
+#include <array>
+#include <map>
 #include <vector>
 
 #include <CGAL/Nef_polyhedron_3.h>
@@ -53,27 +55,52 @@ std::string wall_list(std::span<const WallFrame* const> walls) {
   return walls.size() > 6 ? ids + ", ..." : ids;
 }
 
-FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int first_opening_object) {
-  std::vector<EK::Point_3> points;
+// The result's points rounded to doubles, merged where they round to the same point, and its
+// polygons over them (a polygon left with fewer than three corners is dropped).
+struct RoundedSoup {
+  std::vector<OpenMesh::Vec3d> points;
   std::vector<std::vector<std::size_t>> polygons;
-  CGAL::convert_nef_polyhedron_to_polygon_soup(solid, points, polygons, false);
-  std::vector<OpenMesh::Vec3d> rounded;
-  rounded.reserve(points.size());
-  for (const EK::Point_3& p : points)
-    rounded.emplace_back(round_to_nearest(p.x()), round_to_nearest(p.y()), round_to_nearest(p.z()));
+};
+
+RoundedSoup round_soup(const std::vector<EK::Point_3>& exact, const std::vector<std::vector<std::size_t>>& polygons) {
+  RoundedSoup out;
+  std::map<std::array<double, 3>, std::size_t> index;
+  std::vector<std::size_t> id(exact.size());
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    const std::array<double, 3> p{round_to_nearest(exact[i].x()) + 0.0, round_to_nearest(exact[i].y()) + 0.0,
+                                  round_to_nearest(exact[i].z()) + 0.0};
+    const auto [it, added] = index.try_emplace(p, out.points.size());
+    if (added) out.points.emplace_back(p[0], p[1], p[2]);
+    id[i] = it->second;
+  }
+  for (const auto& polygon : polygons) {
+    std::vector<std::size_t> ids;
+    for (std::size_t i : polygon)
+      if (ids.empty() || ids.back() != id[i]) ids.push_back(id[i]);
+    while (ids.size() > 1 && ids.back() == ids.front()) ids.pop_back();
+    if (ids.size() >= 3) out.polygons.push_back(std::move(ids));
+  }
+  return out;
+}
+
+FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int first_opening_object) {
+  std::vector<EK::Point_3> exact;
+  std::vector<std::vector<std::size_t>> polygons;
+  CGAL::convert_nef_polyhedron_to_polygon_soup(solid, exact, polygons, false);
+  const RoundedSoup r = round_soup(exact, polygons);
   std::pair<std::size_t, std::size_t> bad;
-  const auto copies = split_fans(polygons, points.size(), bad);
-  if (copies.empty() && !polygons.empty())
+  const auto copies = split_fans(r.polygons, r.points.size(), bad);
+  if (copies.empty() && !r.polygons.empty())
     throw PreconditionError(fmt::format(
         "build_model: the solid of walls {} is not 2-manifold: more than two of its faces meet at "
         "the edge from ({}, {}, {}) to ({}, {}, {}) (walls touching along an edge)", wall_list(walls),
-        rounded[bad.first][0], rounded[bad.first][1], rounded[bad.first][2], rounded[bad.second][0],
-        rounded[bad.second][1], rounded[bad.second][2]));
+        r.points[bad.first][0], r.points[bad.first][1], r.points[bad.first][2],
+        r.points[bad.second][0], r.points[bad.second][1], r.points[bad.second][2]));
   FaceSoup soup;
-  soup.reserve(polygons.size());
-  for (std::size_t k = 0; k < polygons.size(); ++k) {
+  soup.reserve(r.polygons.size());
+  for (std::size_t k = 0; k < r.polygons.size(); ++k) {
     SoupFace f;
-    for (std::size_t i : polygons[k]) f.points.push_back(rounded[i]);
+    for (std::size_t i : r.polygons[k]) f.points.push_back(r.points[i]);
     f.copies = copies[k];
     const FaceLabel label = classify_face(f.points, walls, first_opening_object);
     f.kind = label.kind;

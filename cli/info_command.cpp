@@ -6,6 +6,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -36,14 +38,35 @@ struct PlanInfo {
   std::size_t windows = 0;
   double total_wall_length = 0.0;
   double max_wall_height = 0.0;
-  std::optional<Box3> bounds;  ///< of the walls' footprint rectangles, base to top
+  std::optional<Box3> bounds;  ///< of the walls' footprints, base to top
 };
 
-/// Counts and measures; the bounds are those of each wall's footprint rectangle (before
-/// mitring: a mitred corner can reach further only at angles sharper than 90 degrees).
+/// A wall's centre line seen from one of its ends: that end, the unit direction away from it,
+/// and half the thickness.
+struct WallEndView {
+  Point2 at;
+  double dx, dy;
+  double half;
+};
+
+/// Where side `side_a` of wall a (+1 left, -1 right, seen leaving `a.at`) crosses side
+/// `side_b` of wall b, which leaves the same point; nothing when the walls are parallel.
+std::optional<Point2> side_crossing(const WallEndView& a, double side_a, const WallEndView& b,
+                                    double side_b) {
+  const Point2 pa{a.at.x - a.dy * a.half * side_a, a.at.y + a.dx * a.half * side_a};
+  const Point2 pb{b.at.x - b.dy * b.half * side_b, b.at.y + b.dx * b.half * side_b};
+  const double cross = a.dx * b.dy - a.dy * b.dx;
+  if (std::abs(cross) < 1e-12) return std::nullopt;
+  const double t = ((pb.x - pa.x) * b.dy - (pb.y - pa.y) * b.dx) / cross;
+  return Point2{pa.x + t * a.dx, pa.y + t * a.dy};
+}
+
+/// Counts and measures. The bounds are those of the wall footprints: each wall's rectangle,
+/// and at an end point shared by exactly two walls, the two corners of their mitre.
 PlanInfo measure(const Plan& plan) {
   PlanInfo info;
   for (const Opening& o : plan.openings) (o.type == OpeningType::door ? info.doors : info.windows)++;
+  std::vector<std::pair<WallEndView, const Wall*>> ends;
   for (const Wall& w : plan.walls) {
     const double dx = w.to.x - w.from.x;
     const double dy = w.to.y - w.from.y;
@@ -51,15 +74,38 @@ PlanInfo measure(const Plan& plan) {
     info.total_wall_length += length;
     info.max_wall_height = std::max(info.max_wall_height, w.height);
     if (!info.bounds) info.bounds.emplace();
+    const double lo = w.base;
+    const double hi = w.base + w.height;
     // Half-thickness offset along the left normal; a zero-length wall is just its point.
     const double nx = length > 0 ? -dy / length * w.thickness / 2 : 0.0;
     const double ny = length > 0 ? dx / length * w.thickness / 2 : 0.0;
     for (const Point2& p : {w.from, w.to}) {
       for (double side : {-1.0, 1.0}) {
-        info.bounds->add(p.x + side * nx, p.y + side * ny, w.base);
-        info.bounds->add(p.x + side * nx, p.y + side * ny, w.base + w.height);
+        info.bounds->add(p.x + side * nx, p.y + side * ny, lo);
+        info.bounds->add(p.x + side * nx, p.y + side * ny, hi);
       }
     }
+    if (length > 0) {
+      ends.push_back({{w.from, dx / length, dy / length, w.thickness / 2}, &w});
+      ends.push_back({{w.to, -dx / length, -dy / length, w.thickness / 2}, &w});
+    }
+  }
+  std::sort(ends.begin(), ends.end(), [](const auto& a, const auto& b) {
+    return std::pair(a.first.at.x, a.first.at.y) < std::pair(b.first.at.x, b.first.at.y);
+  });
+  for (std::size_t i = 0; i < ends.size();) {
+    std::size_t j = i;
+    while (j < ends.size() && ends[j].first.at == ends[i].first.at) ++j;
+    if (j - i == 2) {  // a mitred corner
+      const auto& [a, wa] = ends[i];
+      const auto& [b, wb] = ends[i + 1];
+      for (double side : {-1.0, 1.0}) {
+        if (const auto corner = side_crossing(a, side, b, -side)) {
+          info.bounds->add(corner->x, corner->y, std::max(wa->base, wb->base));
+        }
+      }
+    }
+    i = j;
   }
   return info;
 }
@@ -164,8 +210,8 @@ void add_info_command(CLI::App& root, Commands& commands) {
       "info",
       "Describe a plan: the site (cells, size in metres, max height), how many walls, openings\n"
       "(doors and windows), lights and cameras it has, the total length of its walls (along\n"
-      "their centre lines), the tallest wall, and the bounds of the walls (their footprint\n"
-      "rectangles, from base to top). Problems found while reading are printed to stderr;\n"
+      "their centre lines), the tallest wall, and the bounds of the walls (their footprints,\n"
+      "mitred corners included, from base to top). Problems found while reading are printed to stderr;\n"
       "warnings (such as unknown fields) do not stop it. It does not validate the geometry.");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
   app->add_option("--format", options->format, "output format: text (default) or json")

@@ -51,7 +51,11 @@ std::string describe(const Json& v) {
                        : "an array of " + std::to_string(v.size()) + (v.size() == 1 ? " item" : " items");
     case Json::value_t::string: {
       std::string s = canonical_text(v);
-      if (s.size() > 42) s = s.substr(0, 40) + "...\"";
+      if (s.size() > 42) {
+        std::size_t cut = 40;
+        while (cut > 1 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // whole characters
+        s = s.substr(0, cut) + "...\"";
+      }
       return s;
     }
     default: return canonical_text(v);

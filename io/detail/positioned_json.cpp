@@ -119,6 +119,7 @@ class PositionedBuilder {
 
   std::size_t first_non_separator() const {
     std::size_t at = previous_end_;
+    if (at == 0 && text_.substr(0, 3) == "\xEF\xBB\xBF") at = 3;  // nlohmann skips a UTF-8 BOM
     while (at < text_.size() && is_separator(text_[at])) ++at;
     return at;
   }

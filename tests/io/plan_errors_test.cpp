@@ -257,6 +257,23 @@ TEST(PlanErrors, ColumnsCountCharactersNotBytes) {
                    {"parse_error", "/walls/0/from", 1, 32, "expected an array of 2 numbers"});
 }
 
+TEST(PlanErrors, ByteOrderMarkIsSkipped) {
+  EXPECT_EQ(test::read_ok("\xEF\xBB\xBF{\"site\": {}}"), Plan{});
+  expect_one_error("\xEF\xBB\xBF{\"walls\": 1}", {"parse_error", "/walls", 1, 12, "expected an array"});
+  expect_one_error("\xEF\xBB\xBF[]", {"parse_error", "", 1, 2, "expected an object"});
+}
+
+TEST(PlanErrors, LongStringsAreShortenedInMessages) {
+  const std::string id(100, 'x');
+  expect_one_error("{\"units\": \"" + std::string(60, 'y') + "\"}",
+                   {"invalid_value", "/units", 1, 11, "unsupported units \"" + std::string(39, 'y') + "...\""});
+  const std::string accents = "{\"format\": \"" + std::string(38, 'a') + "\xC3\xA9\xC3\xA9\xC3\xA9\"}";
+  const PlanReadResult r = read_plan_text(accents, "plan.json");
+  ASSERT_EQ(r.report.items.size(), 1u);
+  EXPECT_NE(r.report.items[0].message.find(std::string(38, 'a') + "...\""), std::string::npos)
+      << r.report.items[0].message;
+}
+
 TEST(PlanErrors, NeverCrashOnMangledInput) {
   // Every prefix, and every single-byte change of the spec example, reads without crashing.
   const std::string text(test::kSpecExample);

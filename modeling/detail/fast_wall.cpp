@@ -1,6 +1,7 @@
 #include "modeling/detail/fast_wall.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace roomcad::detail {
 namespace {
@@ -28,10 +29,19 @@ class WallGrid {
       u_.insert(u_.end(), {h.u0, h.u1});
       z_.insert(z_.end(), {h.z0, h.z1});
     }
+    for (const Attachment& a : f.attachments) u_.insert(u_.end(), {a.u0, a.u1});
     sort_unique(u_);
     sort_unique(z_);
     cells_.assign((u_.size() - 1) * (z_.size() - 1), kSolid);
     for (std::size_t k = 0; k < f.holes.size(); ++k) mark_hole(k);
+    attached_.assign(2 * (u_.size() - 1), 0);
+    for (const Attachment& a : f.attachments)
+      for (std::size_t c = index_of(u_, a.u0); c < index_of(u_, a.u1); ++c) attached_[2 * c + (a.side > 0)] = 1;
+  }
+  /// Whether the side face s (0 right, 1 left) is solid at cell (c, r): wall material not
+  /// covered by an attached stem.
+  bool is_side_solid(int s, std::ptrdiff_t c, std::ptrdiff_t r) const {
+    return cell(c, r) == kSolid && !attached_[2 * std::size_t(c) + std::size_t(s)];
   }
   std::size_t nu() const { return u_.size(); }
   std::size_t nz() const { return z_.size(); }
@@ -45,8 +55,17 @@ class WallGrid {
     Point2 xy;
     if (p.i == 0) xy = f_.footprint[p.s == 0 ? 0 : 3];
     else if (p.i == nu() - 1) xy = f_.footprint[p.s == 0 ? 1 : 2];
-    else xy = side_point(f_, u_[p.i], p.s == 0 ? -1 : 1);
+    else xy = attached_point(p).value_or(side_point(f_, u_[p.i], p.s == 0 ? -1 : 1));
     return {xy.x, xy.y, z_[p.j]};
+  }
+  /// A stem's corner, where one lies at this grid point: shared exactly with the stem.
+  std::optional<Point2> attached_point(const GridPoint& p) const {
+    for (const Attachment& a : f_.attachments) {
+      if ((a.side > 0) != (p.s == 1)) continue;
+      if (a.u0 == u_[p.i]) return a.p0;
+      if (a.u1 == u_[p.i]) return a.p1;
+    }
+    return std::nullopt;
   }
   /// The cells of hole k: columns [c0, c1) and rows [r0, r1).
   std::array<std::size_t, 4> cells_of(std::size_t k) const {
@@ -70,6 +89,7 @@ class WallGrid {
   const WallFrame& f_;
   std::vector<double> u_, z_;
   std::vector<int> cells_;
+  std::vector<char> attached_;  // [2 * column + side]
 };
 
 struct Context {
@@ -83,12 +103,11 @@ struct Context {
   }
 };
 
-bool is_solid(const WallGrid& g, std::ptrdiff_t c, std::ptrdiff_t r) { return g.cell(c, r) == kSolid; }
 
 // Vertical cuts that leave no side-face piece around a hole: from each hole enclosed by wall
 // material, down and up along its first column line, through solid cells, to the next empty
 // cell or the border. cut[i * rows + r]: the edge on column line i at row r is cut.
-std::vector<char> find_cuts(const Context& cx) {
+std::vector<char> find_cuts(const Context& cx, int s) {
   const WallGrid& g = cx.grid;
   const std::size_t nc = g.nu() - 1, nr = g.nz() - 1;
   std::vector<char> cut(g.nu() * nr, 0);
@@ -96,7 +115,7 @@ std::vector<char> find_cuts(const Context& cx) {
     const auto [c0, c1, r0, r1] = g.cells_of(k);
     if (c0 == 0 || c1 == nc || r0 == 0 || r1 == nr) continue;  // a notch: nothing to cut
     auto both_solid = [&](std::size_t r) {
-      return is_solid(g, std::ptrdiff_t(c0) - 1, std::ptrdiff_t(r)) && is_solid(g, std::ptrdiff_t(c0), std::ptrdiff_t(r));
+      return g.is_side_solid(s, std::ptrdiff_t(c0) - 1, std::ptrdiff_t(r)) && g.is_side_solid(s, std::ptrdiff_t(c0), std::ptrdiff_t(r));
     };
     for (std::size_t r = r0; r-- > 0 && both_solid(r);) cut[c0 * nr + r] = 1;
     for (std::size_t r = r1; r < nr && both_solid(r); ++r) cut[c0 * nr + r] = 1;
@@ -117,19 +136,20 @@ std::pair<std::size_t, std::size_t> end_of(const Edge& e) {
 
 // The boundary edges of the solid cells (and both sides of each cut), counter-clockwise
 // around the solid in the (u, z) plane.
-std::vector<Edge> side_edges(const WallGrid& g, const std::vector<char>& cut) {
+std::vector<Edge> side_edges(const WallGrid& g, const std::vector<char>& cut, int s) {
   const std::size_t nr = g.nz() - 1;
+  auto is_solid = [&](std::ptrdiff_t c, std::ptrdiff_t r) { return g.is_side_solid(s, c, r); };
   auto apart_u = [&](std::size_t c, std::size_t r) {  // on column line c, row r
-    return !(is_solid(g, std::ptrdiff_t(c) - 1, std::ptrdiff_t(r)) && is_solid(g, std::ptrdiff_t(c), std::ptrdiff_t(r))) ||
+    return !(is_solid(std::ptrdiff_t(c) - 1, std::ptrdiff_t(r)) && is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r))) ||
            cut[c * nr + r];
   };
   auto apart_z = [&](std::size_t c, std::size_t r) {  // on row line r, column c
-    return !(is_solid(g, std::ptrdiff_t(c), std::ptrdiff_t(r) - 1) && is_solid(g, std::ptrdiff_t(c), std::ptrdiff_t(r)));
+    return !(is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r) - 1) && is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r)));
   };
   std::vector<Edge> edges;
   for (std::size_t c = 0; c + 1 < g.nu(); ++c)
     for (std::size_t r = 0; r < nr; ++r) {
-      if (!is_solid(g, std::ptrdiff_t(c), std::ptrdiff_t(r))) continue;
+      if (!is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r))) continue;
       if (apart_z(c, r)) edges.push_back({c, r, 0});
       if (apart_u(c + 1, r)) edges.push_back({c + 1, r, 1});
       if (apart_z(c, r + 1)) edges.push_back({c + 1, r + 1, 2});
@@ -166,14 +186,17 @@ std::vector<std::vector<GridPoint>> trace_loops(const WallGrid& g, const std::ve
   return loops;
 }
 
-// The side faces: the solid part of the (u, z) grid, cut into pieces without holes.
+// The side faces: the solid part of the (u, z) grid, cut into pieces without holes. The left
+// face is traced on its own (stems may be glued to one side only), then turned to face +w.
 void add_side_faces(const Context& cx, std::vector<GridFace>& out) {
-  for (const std::vector<GridPoint>& loop : trace_loops(cx.grid, side_edges(cx.grid, find_cuts(cx)))) {
-    out.push_back({loop, FaceKind::wall_face, cx.wall_object});
-    std::vector<GridPoint> left(loop.rbegin(), loop.rend());
-    for (GridPoint& p : left) p.s = 1;
-    out.push_back({std::move(left), FaceKind::wall_face, cx.wall_object});
-  }
+  for (const int s : {0, 1})
+    for (std::vector<GridPoint> loop : trace_loops(cx.grid, side_edges(cx.grid, find_cuts(cx, s), s))) {
+      if (s == 1) {
+        std::reverse(loop.begin(), loop.end());
+        for (GridPoint& p : loop) p.s = 1;
+      }
+      out.push_back({std::move(loop), FaceKind::wall_face, cx.wall_object});
+    }
 }
 
 /// The boundary between cells `before` and `after` along one axis: 0 if both solid or both

@@ -18,6 +18,14 @@ struct Hole {
   double u0 = 0.0, u1 = 0.0, z0 = 0.0, z1 = 0.0;
 };
 
+/// Where the end of another wall (a stem) is glued to one side face of this wall: that side
+/// has no face over u in [u0, u1] (full height), and its corners there are p0 and p1 exactly.
+struct Attachment {
+  double u0 = 0.0, u1 = 0.0;
+  int side = 1;  ///< -1 right face, +1 left face
+  Point2 p0, p1;
+};
+
 struct WallFrame {
   std::size_t wall = 0;  ///< index into Plan::walls
   Point2 from;
@@ -32,6 +40,7 @@ struct WallFrame {
   std::array<bool, 2> capless{false, false};  ///< per WallEnd: no end cap (mitred, or on a hub)
   Color color;
   std::vector<Hole> holes;  ///< sorted by u0
+  std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
 
 /// Frames for every wall, with the holes of every opening.

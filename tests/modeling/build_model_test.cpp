@@ -112,6 +112,24 @@ TEST(Modeling, TJoin) {
   add_opening(plan, "door", kDoor, "through", 0.5, 0.9, 0.0, 2.0);
   const double volume = 0.2 * 2.5 * (6 + 3.9) - 0.2 * (1.0 + 0.9 * 2.0);
   expect_paths_agree(plan, 1, volume);
+  BuildStats stats;
+  (void)build_model(plan, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 2u);  // the stem is clipped at the through-wall's face
+}
+
+TEST(Modeling, SlantedStemsOnBothSidesOfAWallFarAway) {
+  Plan plan = empty_plan();
+  add_wall(plan, "through", {0, 0}, {8, 0});
+  add_wall(plan, "north", {2, 0}, {4, 3});  // 56 degrees
+  add_wall(plan, "south", {6, 0}, {4, -3});
+  add_wall(plan, "south2", {2.5, 0}, {2.5, -2});
+  add_opening(plan, "win", kWindow, "through", 4.5, 1.0, 1.0, 1.0);
+  add_opening(plan, "door", kDoor, "north", 1.5, 0.8, 0.0, 2.0);
+  const Plan moved = test::transformed(plan, 23.9, 1e6, 1e6);
+  BuildStats stats;
+  (void)build_model(moved, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 4u);
+  expect_paths_agree(moved, 1);
 }
 
 TEST(Modeling, XJoin) {

@@ -143,7 +143,7 @@ Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, Boolean
   // longer reaches the walls on the other side (all of them are joined to that wall anyway).
   link_walls(work.fast_frames, joins, explained_pairs(work.hubs, work.tees), general, sets);
   for (std::size_t i = 0; i < n; ++i)
-    if (!has_holes_clear_of_mitres(work.fast_frames[i])) general[i] = 1;
+    if (!has_holes_clear_of_joins(work.fast_frames[i])) general[i] = 1;
   const std::vector<char> root_general = find_general_components(general, sets);
   work.items = group_walls(root_general, sets);
   // A hub among fast walls adds its top and bottom; a cluster's hubs are CGAL's business.

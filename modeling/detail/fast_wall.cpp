@@ -297,7 +297,7 @@ double u_of(const WallFrame& f, const Point2& p) {
 
 }  // namespace
 
-bool has_holes_clear_of_mitres(const WallFrame& f) {
+bool has_holes_clear_of_joins(const WallFrame& f) {
   if (f.holes.empty()) return true;
   const double lo = f.capless[0] ? std::max(u_of(f, f.footprint[0]), u_of(f, f.footprint[3])) : 0.0;
   const double hi = f.capless[1] ? std::min(u_of(f, f.footprint[1]), u_of(f, f.footprint[2])) : f.length;

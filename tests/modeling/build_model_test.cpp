@@ -214,6 +214,33 @@ TEST(Modeling, OpeningOutsideItsWallIsAnErrorNamingIt) {
   }
 }
 
+TEST(Modeling, WallsTouchingAlongAnEdgeAreAnErrorNotACrash) {
+  Plan plan = empty_plan();
+  // Thickness 0.25 keeps the side faces exact: a touches b only along the edge x=2, y=0.25.
+  add_wall(plan, "a", {0, 0.125}, {2, 0.125}).thickness = 0.25;
+  add_wall(plan, "b", {2, 0.375}, {4, 0.375}).thickness = 0.25;
+  try {
+    (void)build_model(plan);
+    FAIL() << "expected PreconditionError";
+  } catch (const PreconditionError& e) {
+    EXPECT_NE(std::string(e.what()).find("not 2-manifold"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Modeling, WallsTouchingAtAPointGetSeparateVertices) {
+  Plan plan = empty_plan();
+  add_wall(plan, "low", {0, 0.125}, {2, 0.125}).thickness = 0.25;
+  Wall& high = add_wall(plan, "high", {2, 0.375}, {4, 0.375});
+  high.thickness = 0.25;
+  high.base = 2.5;  // touches "low" only at the point (2, 0.25, 2.5)
+  const Model model = build_model(plan);
+  const SolidCheck c = check_solid(model.walls);
+  EXPECT_TRUE(c.is_closed());
+  EXPECT_TRUE(c.is_manifold());
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_NEAR(c.volume, 2 * 2 * 0.25 * 2.5, 1e-12);
+}
+
 TEST(Modeling, FloorAndFixtures) {
   Plan plan = single_wall();
   plan.site.cells = {3, 2};

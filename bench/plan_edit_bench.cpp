@@ -1,6 +1,7 @@
 // Cost of the decimal-exact plan transforms (modeling/transform2d.h, modeling/plan_edit.h)
 // against plain double arithmetic, as the number of walls grows.
 #include <benchmark/benchmark.h>
+#include <fmt/format.h>
 
 #include <array>
 
@@ -15,13 +16,13 @@ Plan grid_plan(int n) {
   Plan plan;
   for (int i = 0; i < n; ++i) {
     Wall w;
-    w.id = "w" + std::to_string(i);
+    w.id = fmt::format("w{}", i);
     w.from = {0.1 + 1.25 * (i % 100), 0.35 + 2.5 * (i / 100)};
     w.to = {w.from.x + 1.1, w.from.y};
     plan.walls.push_back(w);
     if (i % 4 != 0) continue;
     Opening o = default_opening(OpeningType::window);
-    o.id = "o" + std::to_string(i);
+    o.id = fmt::format("o{}", i);
     o.wall = w.id;
     o.width = 0.6;
     o.offset = 0.2;

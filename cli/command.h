@@ -26,5 +26,9 @@ void add_surface_command(CLI::App& root, Commands& commands);
 void add_draw_command(CLI::App& root, Commands& commands);
 void add_import_command(CLI::App& root, Commands& commands);
 void add_build_command(CLI::App& root, Commands& commands);
+void add_add_command(CLI::App& root, Commands& commands);
+void add_rm_command(CLI::App& root, Commands& commands);
+void add_transform_commands(CLI::App& root, Commands& commands);  ///< move, rotate, scale
+void add_set_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -1,7 +1,5 @@
 // `roomcad draw`: line drawings of a plan as SVG. Views are looked up in one table, so the
 // elevations and camera views can be added beside `plan` without touching the rest.
-#include <fmt/format.h>
-
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -11,10 +9,13 @@
 #include <memory>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "cli/command.h"
+#include "cli/plan_loading.h"
 #include "io/floor_plan_svg.h"
-#include "io/plan_json.h"
 #include "render/floor_plan.h"
+#include "validation/report_format.h"
 #include "validation/validate.h"
 
 namespace roomcad::cli {
@@ -28,14 +29,12 @@ struct DrawOptions {
   std::filesystem::path output;
 };
 
-/// A view: draws a validated plan with the parsed options. @return the document or an error.
+/// A view: draws a validated plan with checked options (scale = the N of 1:N).
+/// @return the document, or why this view cannot draw this plan.
 using ViewDrawer = std::function<Result<SvgDocument>(const Plan&, const DrawOptions&, double)>;
 
 Result<SvgDocument> draw_plan_view(const Plan& plan, const DrawOptions& o, double scale) {
   const FloorPlanOptions options{.scale = scale, .cut_height = o.cut_height};
-  if (std::string problem = check_floor_plan_options(options); !problem.empty()) {
-    return Result<SvgDocument>::failure(problem);
-  }
   return make_floor_plan_svg(draw_floor_plan(plan, options),
                              fmt::format("{}: floor plan", o.plan_file.filename().string()));
 }
@@ -58,35 +57,29 @@ double parse_scale(const std::string& text) {
   return ec == std::errc{} && end == number.data() + number.size() ? value : NAN;
 }
 
-void print_report(const std::filesystem::path& file, const Report& report) {
-  for (const Diagnostic& d : report.items) {
-    std::fprintf(stderr, "%s: %s: %s: %s\n", file.string().c_str(),
-                 d.severity == Severity::error ? "error" : "warning", d.code.c_str(),
-                 d.message.c_str());
-  }
-}
-
 int run_draw(const DrawOptions& o) {
   const double scale = parse_scale(o.scale);
-  if (std::isnan(scale))
+  if (std::isnan(scale)) {
     return fail(fmt::format("--scale \"{}\": expected 1:N, e.g. 1:50", o.scale));
+  }
+  if (std::string problem = check_floor_plan_options({.scale = scale, .cut_height = o.cut_height});
+      !problem.empty()) {
+    return fail(problem);
+  }
   if (o.output.extension() != ".svg") {
     return fail(fmt::format("-o \"{}\": drawings are written as .svg", o.output.string()));
   }
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(o.plan_file, ec)) {
-    return fail(fmt::format("cannot read plan file \"{}\"", o.plan_file.string()));
-  }
-  PlanReadResult read = read_plan_file(o.plan_file);
-  Report report = read.report;
-  if (read.plan) report.append(validate(*read.plan));
-  print_report(o.plan_file, report);
-  if (!read.plan || !report.ok()) {
-    std::fprintf(stderr, "roomcad draw: %s has %zu error(s); nothing drawn\n",
-                 o.plan_file.string().c_str(), report.error_count());
+  const LoadedPlan loaded = load_plan("draw", o.plan_file);
+  if (!loaded.plan) return loaded.exit_status;
+  // load_plan printed what reading found; validation's errors are printed the same way.
+  const Report checked = validate(*loaded.plan);
+  std::fputs(format_report_text(checked, use_colour(stderr)).c_str(), stderr);
+  if (!checked.ok()) {
+    std::fprintf(stderr, "%s: %s; nothing drawn\n", o.plan_file.string().c_str(),
+                 format_report_summary(checked).c_str());
     return kPlanErrors;
   }
-  Result<SvgDocument> document = views().at(o.view)(*read.plan, o, scale);
+  Result<SvgDocument> document = views().at(o.view)(*loaded.plan, o, scale);
   if (!document.ok()) return fail(document.error());
   if (const Status written = write_svg(document.value(), o.output); !written.ok()) {
     return fail(written.error);

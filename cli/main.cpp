@@ -20,6 +20,10 @@ int main(int argc, char** argv) {
   add_draw_command(app, commands);
   add_import_command(app, commands);
   add_build_command(app, commands);
+  add_add_command(app, commands);
+  add_rm_command(app, commands);
+  add_transform_commands(app, commands);
+  add_set_command(app, commands);
 
   try {
     app.parse(argc, argv);

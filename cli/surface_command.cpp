@@ -122,6 +122,12 @@ int run_surface(const SurfaceOptions& o) {
                              ? write_svg(make_surface_svg(drawing, "y = " + o.expression), o.output)
                              : write_png(rasterise_surface(drawing), o.output);
   if (!written.ok()) return fail(written.error);
+  if (drawing.polylines.empty()) {
+    std::fprintf(stderr,
+                 "roomcad surface: warning: \"%s\" has no finite value on the range; "
+                 "the picture is empty\n",
+                 o.expression.c_str());
+  }
   std::printf("wrote %s: %zu visible polylines\n", o.output.string().c_str(),
               drawing.polylines.size());
   return kOk;
@@ -152,10 +158,10 @@ void add_surface_command(CLI::App& root, Commands& commands) {
   app->add_flag("--keep-aspect", o->keep_aspect,
                 "one scale for x and y (terrain); by default each axis fills the picture");
   app->add_option("--width", o->width, "picture width in pixels (SVG: 0.25 mm each)")
-      ->check(CLI::Range(16, 10000))
+      ->check(CLI::Range(16, 4096))
       ->capture_default_str();
   app->add_option("--height", o->height, "picture height in pixels")
-      ->check(CLI::Range(16, 10000))
+      ->check(CLI::Range(16, 4096))
       ->capture_default_str();
   app->add_option("-o,--output", o->output, "OUT.svg or OUT.png (written atomically)")->required();
   commands.push_back({app, [o] { return run_surface(*o); }});

@@ -2,11 +2,17 @@
 //
 // Mapping (centimetres to metres, Sweet Home 3D's downward y negated):
 // - each straight `<wall>` becomes a wall; a curved one (`arcExtent`) a chain of straight walls
-//   `<id>-arc1..n` within `chord_tolerance` of the arc; a sloped top (`heightAtEnd`) is made
-//   flat at its higher end. Walls of a level stand on its elevation, and on every level but the
-//   lowest reach down through the floor slab as in Sweet Home 3D, so storeys stack with no gap;
+//   `<id>-arc1..n` within `chord_tolerance` of the arc, cut between its doors and windows; a
+//   sloped top (`heightAtEnd`) is made flat at its higher end. Walls of a level stand on its
+//   elevation, and on every level but the lowest reach down through the floor slab as in
+//   Sweet Home 3D, so storeys stack with no gap;
+// - wall ends that Sweet Home 3D draws anywhere inside the wall they meet are moved onto its
+//   centre line or end (sh3d::join_t_ends), so that the plan's join rule sees the junction;
 // - each `<doorOrWindow>` becomes an opening of the wall that holds it (found by geometry: see
-//   sh3d::find_host_wall), width along the wall, sill from its elevation;
+//   sh3d::find_host_wall), width along the wall, sill from its elevation, and of every other
+//   wall it passes through (`<id>-2`, ...);
+// - z values and opening edges lie on a 2^-20 m grid, so that `base + height`, `offset + width`
+//   and `sill + height` are exact: what touches in the home touches exactly in the plan;
 // - the whole home is raised so that its lowest wall stands at z = 0 (a basement below ground
 //   in Sweet Home 3D starts at 0 in the plan);
 // - the site is a grid of `cell_size` tiles covering the walls plus `site_margin`;

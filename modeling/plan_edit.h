@@ -116,6 +116,11 @@ EditSummary scale_all(Plan& plan, double factor, std::optional<Point2> about = s
 EditSummary set_field(Plan& plan, std::string_view id, std::string_view key,
                       std::string_view value, std::string_view verb = "set");
 
+/// @return the ids of the objects that differ between two versions of a plan that hold the
+///         same objects in the same order ("site" first if the site differs), as an
+///         EditSummary's `changed`. @pre same numbers of walls, openings, lights, cameras.
+[[nodiscard]] EditSummary changed_objects(const Plan& before, const Plan& after);
+
 /// @return the names of the fields set_field accepts for an object kind ("wall", "door",
 ///         "window", "light", "camera", "site"), in file order.
 [[nodiscard]] std::vector<std::string_view> field_names(std::string_view kind);

@@ -22,7 +22,7 @@ using detail::ObjectRef;
 
 /// How one plan transform acts on each kind of quantity.
 struct PlanMap {
-  Transform2d points;           ///< positions
+  std::array<Transform2d, 3> points;  ///< positions: T(-centre), linear part, T(centre)
   Transform2d directions;       ///< the rotation alone: directions ignore moves and scales
   double length_factor = 1.0;   ///< lengths along a wall
 };
@@ -31,8 +31,10 @@ double scaled(double length, double factor) {
   return exact_dot(std::array{length}, std::array{factor});
 }
 
-Vec3 map_position(const Transform2d& t, Vec3 v) {
-  const Point2 p = apply(t, {v.x, v.y});
+Point2 map_point(const PlanMap& map, Point2 p) { return apply_exactly(map.points, p); }
+
+Vec3 map_position(const PlanMap& map, Vec3 v) {
+  const Point2 p = map_point(map, {v.x, v.y});
   return {p.x, p.y, v.z};
 }
 
@@ -42,8 +44,8 @@ Vec3 map_direction(const Transform2d& t, Vec3 v) {
 }
 
 void map_wall(Wall& wall, const PlanMap& map) {
-  wall.from = apply(map.points, wall.from);
-  wall.to = apply(map.points, wall.to);
+  wall.from = map_point(map, wall.from);
+  wall.to = map_point(map, wall.to);
 }
 
 /// Scales the along-wall lengths of the openings hosted by `wall_id`, or of all openings
@@ -58,8 +60,8 @@ void map_openings(Plan& plan, std::optional<std::string_view> wall_id, const Pla
 }
 
 void map_camera(Camera& camera, const PlanMap& map) {
-  camera.eye = map_position(map.points, camera.eye);
-  camera.target = map_position(map.points, camera.target);
+  camera.eye = map_position(map, camera.eye);
+  camera.target = map_position(map, camera.target);
   camera.up = map_direction(map.directions, camera.up);
 }
 
@@ -70,7 +72,7 @@ void map_light(Light& light, const PlanMap& map) {
 /// Maps the site's rectangle when the map keeps it axis-aligned (moves, scales, quarter
 /// turns): the new origin is the low corner of the mapped corners. Else leaves it.
 void map_site(Site& site, const PlanMap& map) {
-  const auto& m = map.points.m;
+  const auto& m = map.points[1].m;  // the linear part
   const bool keeps_axes = m[0][1] == 0.0 && m[1][0] == 0.0;
   const bool swaps_axes = m[0][0] == 0.0 && m[1][1] == 0.0;
   if (!keeps_axes && !swaps_axes) return;
@@ -78,26 +80,11 @@ void map_site(Site& site, const PlanMap& map) {
                              std::array{1.0, site.cell_size}),
                    exact_dot(std::array{site.origin.y, double(site.cells[1])},
                              std::array{1.0, site.cell_size})};
-  const Point2 a = apply(map.points, site.origin);
-  const Point2 b = apply(map.points, far);
+  const Point2 a = map_point(map, site.origin);
+  const Point2 b = map_point(map, far);
   site.origin = {std::min(a.x, b.x), std::min(a.y, b.y)};
   if (swaps_axes) std::swap(site.cells[0], site.cells[1]);
   site.cell_size = scaled(site.cell_size, map.length_factor);
-}
-
-/// @return the ids of objects that differ between two plans with the same objects.
-EditSummary changed_objects(const Plan& before, const Plan& after) {
-  EditSummary summary;
-  if (before.site != after.site) summary.changed.push_back("site");
-  const auto compare = [&](const auto& old_objects, const auto& new_objects) {
-    for (std::size_t i = 0; i < old_objects.size(); ++i)
-      if (old_objects[i] != new_objects[i]) summary.changed.push_back(new_objects[i].id);
-  };
-  compare(before.walls, after.walls);
-  compare(before.openings, after.openings);
-  compare(before.lights, after.lights);
-  compare(before.cameras, after.cameras);
-  return summary;
 }
 
 Point2 midpoint(Point2 a, Point2 b) {
@@ -170,20 +157,35 @@ void require_not_light(const Plan& plan, ObjectRef ref, std::string_view verb) {
 PlanMap translation_map(Point2 by) {
   require_finite(by.x, "move", "--by dx");
   require_finite(by.y, "move", "--by dy");
-  return {translate(by.x, by.y), identity_transform(), 1.0};
+  return {{identity_transform(), identity_transform(), translate(by.x, by.y)}, identity_transform(),
+          1.0};
 }
 
 PlanMap rotation_map(double degrees, Point2 about) {
   require_finite(degrees, "rotate", "the angle");
-  return {rotate(degrees, about), rotate(degrees), 1.0};
+  return {about_point(rotate(degrees), about), rotate(degrees), 1.0};
 }
 
 PlanMap scale_map(double factor, Point2 about) {
   require_factor(factor);
-  return {scale(factor, about), identity_transform(), factor};
+  return {about_point(scale(factor), about), identity_transform(), factor};
 }
 
 }  // namespace
+
+EditSummary changed_objects(const Plan& before, const Plan& after) {
+  EditSummary summary;
+  if (before.site != after.site) summary.changed.push_back("site");
+  const auto compare = [&](const auto& old_objects, const auto& new_objects) {
+    for (std::size_t i = 0; i < old_objects.size(); ++i)
+      if (old_objects[i] != new_objects[i]) summary.changed.push_back(new_objects[i].id);
+  };
+  compare(before.walls, after.walls);
+  compare(before.openings, after.openings);
+  compare(before.lights, after.lights);
+  compare(before.cameras, after.cameras);
+  return summary;
+}
 
 EditSummary move_object(Plan& plan, std::string_view id, Point2 by) {
   const ObjectRef ref = detail::require_object(plan, id, "move");

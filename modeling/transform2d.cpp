@@ -18,12 +18,16 @@ std::pair<double, double> cos_sin(double degrees) {
   return {std::cos(radians), std::sin(radians)};
 }
 
-/// @return T(-about) * t * T(about): `t` (which fixes the origin) moved to act about `about`.
-Transform2d about_point(const Transform2d& t, Point2 about) {
-  return compose(compose(translate(-about.x, -about.y), t), translate(about.x, about.y));
+/// @return the product of a chain, each entry rounded once per product.
+Transform2d compose_chain(const std::array<Transform2d, 3>& chain) {
+  return compose(compose(chain[0], chain[1]), chain[2]);
 }
 
 }  // namespace
+
+std::array<Transform2d, 3> about_point(const Transform2d& linear, Point2 about) {
+  return {translate(-about.x, -about.y), linear, translate(about.x, about.y)};
+}
 
 Transform2d identity_transform() { return {}; }
 
@@ -38,14 +42,14 @@ Transform2d rotate(double degrees, Point2 about) {
   Transform2d r;
   r.m[0] = {c, s, 0.0};   // row-vector convention: x' = x c - y s, y' = x s + y c
   r.m[1] = {-s, c, 0.0};
-  return about_point(r, about);
+  return compose_chain(about_point(r, about));
 }
 
 Transform2d scale(double factor, Point2 about) {
   Transform2d s;
   s.m[0][0] = factor;
   s.m[1][1] = factor;
-  return about_point(s, about);
+  return compose_chain(about_point(s, about));
 }
 
 Transform2d compose(const Transform2d& first, const Transform2d& then) {

@@ -16,6 +16,9 @@
 //    digits the round trip may be off by one unit in the last place; nothing else is promised.
 //  - Rotations by a multiple of 90 degrees use the exact cos/sin 0 and +-1, so they only move
 //    and negate decimals: exact under the 15-digit condition above.
+//  - Composed matrices round each entry; apply_exactly() evaluates a chain such as
+//    T(-c) * R * T(c) without rounding between factors, so the centre of a turn stays put bit for
+//    bit at any angle. Plan edits (modeling/plan_edit.h) use chains.
 //  - A zero result is +0 (decimal zero has no sign). NaN and infinities propagate as in double
 //    arithmetic (the plan validator reports them).
 #pragma once
@@ -58,6 +61,16 @@ struct Transform2d {
 
 /// @return [p.x p.y 1] * t, each coordinate exact then rounded once. O(1).
 [[nodiscard]] Point2 apply(const Transform2d& t, Point2 p);
+
+/// @return [p.x p.y 1] * chain[0] * chain[1] * ..., computed exactly and rounded once at the
+///         end. Unlike apply(compose(...)), whose composed entries are each rounded, a chain
+///         keeps what the exact transform keeps: turning about c leaves c where it is, bit for
+///         bit, at any angle. O(chain length), about a microsecond a matrix.
+[[nodiscard]] Point2 apply_exactly(std::span<const Transform2d> chain, Point2 p);
+
+/// @return {T(-about), linear, T(about)}: `linear` (which fixes the origin) acting about
+///         `about`, as a chain for apply_exactly (rotate() and scale() compose it).
+[[nodiscard]] std::array<Transform2d, 3> about_point(const Transform2d& linear, Point2 about);
 
 /// @return [v.x v.y 0] * t: a direction, which translations do not move. O(1).
 [[nodiscard]] Point2 apply_to_direction(const Transform2d& t, Point2 v);

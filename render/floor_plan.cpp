@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <utility>
 
 #include "render/detail/plan_paper.h"
 #include "validation/validate.h"
@@ -18,7 +19,7 @@ using detail::operator+;
 using detail::operator-;
 using detail::operator*;
 
-constexpr double kMarginMm = 30.0;        // room for the overall dimensions
+constexpr double kMarginMm = 10.0;        // blank border around everything drawn
 constexpr double kFooterMm = 25.0;        // scale bar and title under the plan
 constexpr double kWallDimensionMm = 5.0;  // per-wall dimension beyond the wall face
 constexpr double kOverallDimensionMm = 18.0;
@@ -47,43 +48,89 @@ Box plan_extent(const Plan& plan, const Joins& joins) {
   return box;
 }
 
-/// Dimensions each wall on its side away from the plan's centre, so that the outer walls are
-/// dimensioned outside whichever way they were drawn.
-void add_wall_dimensions(const Plan& plan, Point2 centre, const PaperMap& map,
-                         FloorPlanDrawing& out) {
+/// @return the area centroid of a polygon (its first vertex if it has no area).
+Point2 centroid(const std::vector<Point2>& outline) {
+  double a2 = 0.0;
+  Point2 c{0.0, 0.0};
+  for (std::size_t k = 0; k < outline.size(); ++k) {
+    const Point2 p = outline[k];
+    const Point2 q = outline[(k + 1) % outline.size()];
+    const double w = detail::cross(p, q);
+    a2 += w;
+    c = c + (w / 3.0) * (p + q);
+  }
+  return a2 != 0.0 ? (1.0 / a2) * c : outline.front();
+}
+
+/// Dimensions each wall on its outer side: away from the rooms it bounds, or from the plan's
+/// centre if it bounds none. Partitions with rooms on both sides are left to the room sizes.
+void add_wall_dimensions(const Plan& plan, const std::vector<Room>& rooms, Point2 centre,
+                         const PaperMap& map, FloorPlanDrawing& out) {
   for (const Wall& w : plan.walls) {
     const Point2 along = w.to - w.from;
     if (!(detail::length(along) > 0.0)) continue;
-    Point2 side = -1.0 * detail::left_normal(along);
-    if (detail::dot(side, 0.5 * (w.from + w.to) - centre) < 0.0) side = -1.0 * side;
+    const Point2 left = detail::left_normal(along);
+    bool rooms_left = false;
+    bool rooms_right = false;
+    for (const Room& room : rooms) {
+      if (std::find(room.walls.begin(), room.walls.end(), w.id) == room.walls.end()) continue;
+      (detail::dot(left, centroid(room.outline) - w.from) > 0.0 ? rooms_left : rooms_right) = true;
+    }
+    if (rooms_left && rooms_right) continue;
+    Point2 side = rooms_left ? -1.0 * left : left;
+    if (!rooms_left && !rooms_right && detail::dot(side, 0.5 * (w.from + w.to) - centre) < 0.0) {
+      side = -1.0 * side;
+    }
     detail::add_dimension(w.from, w.to, side, 0.5 * w.thickness * map.mm_per_m + kWallDimensionMm,
                           map, out);
   }
 }
 
-void add_rooms(const Plan& plan, const PaperMap& map, FloorPlanDrawing& out) {
-  const std::vector<Room> rooms = find_rooms(plan);
+void add_rooms(const std::vector<Room>& rooms, const PaperMap& map, FloorPlanDrawing& out) {
   for (std::size_t i = 0; i < rooms.size(); ++i) {
     const Room& room = rooms[i];
     if (room.outline.size() < 3) continue;
     out.rooms.push_back(map.to_paper(room.outline));
-    // Label at the area centroid of the outline (the vertex mean for degenerate outlines).
-    double a2 = 0.0;
-    Point2 c{0.0, 0.0};
-    for (std::size_t k = 0; k < room.outline.size(); ++k) {
-      const Point2 p = room.outline[k];
-      const Point2 q = room.outline[(k + 1) % room.outline.size()];
-      const double w = detail::cross(p, q);
-      a2 += w;
-      c = c + (w / 3.0) * (p + q);
-    }
-    c = a2 != 0.0 ? (1.0 / a2) * c : room.outline.front();
-    const Point2 at = map.to_paper(c);
+    const Point2 at = map.to_paper(centroid(room.outline));
     out.room_labels.push_back({at, fmt::format("Room {}", i + 1), 3.5, 0.0, TextAnchor::middle});
     out.room_labels.push_back({at + Point2{0.0, 4.5},
                                fmt::format("{} m²", detail::format_metres(room.area)), 3.0, 0.0,
                                TextAnchor::middle});
   }
+}
+
+/// Calls f(point, pad) for every point of the drawing; `pad` is how far the element reaches
+/// around it (a text's size, an arc's radius), 0 for plain vertices.
+template <class Drawing, class F>
+void for_each_point(Drawing& d, F f) {
+  for (auto* polygons : {&d.rooms, &d.cut_walls, &d.walls_below, &d.walls_above, &d.scale_bar_black,
+                         &d.scale_bar_white}) {
+    for (auto& polygon : *polygons) {
+      for (auto& p : polygon) f(p, 0.0);
+    }
+  }
+  for (auto* lines : {&d.windows, &d.door_leaves, &d.dimension_lines}) {
+    for (auto& line : *lines) f(line.a, 0.0), f(line.b, 0.0);
+  }
+  for (auto& arc : d.door_swings) f(arc.centre, arc.radius), f(arc.from, 0.0), f(arc.to, 0.0);
+  for (auto* texts : {&d.dimension_texts, &d.room_labels, &d.labels}) {
+    for (auto& text : *texts) f(text.at, text.size);
+  }
+}
+
+/// Moves everything drawn so that it starts kMarginMm from the top-left corner, and sizes the
+/// page to it plus the footer: door swings and dimensions reach beyond the walls.
+void fit_page(FloorPlanDrawing& d) {
+  Box box;
+  for_each_point(std::as_const(d), [&box](const Point2& p, double pad) {
+    box.add(p - Point2{pad, pad});
+    box.add(p + Point2{pad, pad});
+  });
+  if (box.empty()) box.add({0.0, 0.0});
+  const Point2 shift{kMarginMm - box.x0, kMarginMm - box.y0};
+  for_each_point(d, [shift](Point2& p, double) { p = p + shift; });
+  d.width = box.x1 - box.x0 + 2.0 * kMarginMm;
+  d.height = box.y1 - box.y0 + 2.0 * kMarginMm + kFooterMm;
 }
 
 /// A scale bar of five cells at `origin` (its top-left corner), as long as a round number of
@@ -128,33 +175,30 @@ FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& optio
   }
   const Joins joins = find_joins(plan);
   const Box box = plan_extent(plan, joins);
-  PaperMap map{.mm_per_m = 1000.0 / options.scale,
-               .left = kMarginMm,
-               .top = kMarginMm,
-               .x_min = box.x0,
-               .y_max = box.y1};
+  // Placed anywhere for now: fit_page moves everything onto the page once it is all drawn.
+  const PaperMap map{.mm_per_m = 1000.0 / options.scale, .x_min = box.x0, .y_max = box.y1};
   FloorPlanDrawing out;
-  out.width = (box.x1 - box.x0) * map.mm_per_m + 2.0 * kMarginMm;
-  out.height = (box.y1 - box.y0) * map.mm_per_m + 2.0 * kMarginMm + kFooterMm;
-  add_rooms(plan, map, out);
+  const std::vector<Room> rooms = find_rooms(plan);
+  add_rooms(rooms, map, out);
   detail::draw_plan_walls(plan, joins, options, map, out);
-  add_wall_dimensions(plan, {0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)}, map, out);
+  add_wall_dimensions(plan, rooms, {0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)}, map, out);
   if (!plan.walls.empty()) {
     detail::add_dimension({box.x0, box.y0}, {box.x1, box.y0}, {0.0, -1.0}, kOverallDimensionMm, map,
                           out);
     detail::add_dimension({box.x0, box.y0}, {box.x0, box.y1}, {-1.0, 0.0}, kOverallDimensionMm, map,
                           out);
   }
+  fit_page(out);
   const double footer = out.height - kFooterMm;
   add_scale_bar({kMarginMm, footer}, std::max(40.0, 0.35 * (out.width - 2.0 * kMarginMm)), map,
                 out);
-  out.labels.push_back({{kMarginMm, footer + 16.0},
-                        fmt::format("Floor plan, section at {:.2f} m, scale 1:{}, dimensions in "
-                                    "metres",
-                                    options.cut_height, options.scale),
-                        3.5,
-                        0.0,
-                        TextAnchor::start});
+  out.labels.push_back(
+      {{kMarginMm, footer + 16.0},
+       fmt::format("Floor plan, section at {:.2f} m, scale 1:{}, dimensions in metres",
+                   options.cut_height, options.scale),
+       3.5,
+       0.0,
+       TextAnchor::start});
   return out;
 }
 

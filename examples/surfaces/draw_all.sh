@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Draws the 15 test surfaces of the Tomsk lab manual (seed 002, lab 4) with `roomcad surface`.
 # Usage: draw_all.sh OUT_DIR [svg|png] [extra roomcad surface options...]
-# The roomcad binary is $ROOMCAD, else build/cli/roomcad of this checkout.
+# The roomcad binary is $ROOMCAD, else build/roomcad of this checkout.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 out="${1:?usage: draw_all.sh OUT_DIR [svg|png] [options...]}"
 format="${2:-svg}"
 shift $(( $# >= 2 ? 2 : 1 ))
-roomcad="${ROOMCAD:-$here/../../build/cli/roomcad}"
+roomcad="${ROOMCAD:-$here/../../build/roomcad}"
 [[ "$format" == svg || "$format" == png ]] || { echo "draw_all.sh: format must be svg or png" >&2; exit 2; }
 mkdir -p "$out"
 

@@ -141,6 +141,11 @@ void collect_items(pugi::xml_node node, std::string_view file, std::string* erro
     if (std::string_view(child.name()) == "doorOrWindow") {
       AttributeReader r(child, file, error);
       items.push_back(read_item(r));
+      if (const pugi::xml_node sash = child.child("sash")) {
+        AttributeReader s(sash, file, error);
+        items.back().has_sash = true;
+        items.back().sash_on_left = s.number("xAxis") < 0.5;  // a fraction of the width
+      }
     } else if (std::string_view(child.name()) == "furnitureGroup") {
       collect_items(child, file, error, items);
     }

@@ -53,7 +53,9 @@ struct ItemRecord {
   double depth = 0.0;
   double height = 0.0;
   double elevation = 0.0;  ///< bottom above the level's elevation
-  bool mirrored = false;
+  bool mirrored = false;       ///< the model is drawn mirrored (its hinge swaps sides)
+  bool has_sash = false;       ///< it has a `<sash>` (a leaf that opens toward its front)
+  bool sash_on_left = true;    ///< its first `<sash>` turns about the left half of its width
   std::string cut_out_shape;  ///< SVG path in the unit square, empty if absent
   // The part of the footprint cut in the wall, as fractions of width and height (DTD defaults).
   double wall_width = 1.0;

@@ -25,8 +25,8 @@ bool is_straight(const WallRecord& w) { return !w.arc_extent || *w.arc_extent ==
 /// Where the end `end` of a wall from `far` (thickness `own_thickness`) joins `host`, when it
 /// lies inside `host`'s box (its footprint extended by half its thickness past each end, as
 /// Sweet Home 3D fills corners): moved along its own wall onto `host`'s centre line, or, if that
-/// point is within half of either wall's thickness of an end of `host`, that end (an L corner,
-/// or a junction of three walls).
+/// point is within half of either wall's thickness of an end of `host` and the moving wall is
+/// not the thicker, that end (an L corner, or a junction of three walls).
 /// @return the new end point and its distance from `host`'s centre line before the move.
 std::optional<std::pair<Point2, double>> join_point(Point2 far, Point2 end, double own_thickness,
                                                     const WallRecord& host) {
@@ -47,9 +47,11 @@ std::optional<std::pair<Point2, double>> join_point(Point2 far, Point2 end, doub
   const Point2 moved{end.x + s * dir.x, end.y + s * dir.y};
   const double moved_u = along.x * (moved.x - host.start.x) + along.y * (moved.y - host.start.y);
   // Near an end of `host` the wall would poke past it (into the walls joined there): it joins
-  // that end instead.
+  // that end instead, unless it is the thicker wall (an outer wall does not bend to meet the
+  // end of an inner one; the inner one moves onto it).
   const Point2 corner = moved_u < length / 2 ? host.start : host.end;
-  if (distance(moved, corner) <= std::min(half, own_thickness / 2))
+  if (own_thickness <= host.thickness &&
+      distance(moved, corner) <= std::min(half, own_thickness / 2))
     return end == corner ? std::nullopt : std::optional{std::pair{corner, std::abs(off)}};
   if (moved_u < 0 || moved_u > length || std::abs(off) <= kOnLine) return std::nullopt;
   return std::pair{moved, std::abs(off)};

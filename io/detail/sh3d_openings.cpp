@@ -86,7 +86,14 @@ std::optional<Opening> cut_piece(const ItemRecord& item, const Fit& fit, Interva
   o.width = hi - lo;
   o.sill = v0;
   o.height = v1 - v0;
-  o.hinge = item.mirrored ? Hinge::right : Hinge::left;  // a mirrored model hinges on the right
+  // The hinge is on the item's left (seen along its width axis) unless mirrored; the wall's
+  // `left` is its `from` end, which is the item's left when both axes run the same way.
+  const bool hinge_on_item_left = item.sash_on_left != item.mirrored;
+  o.hinge = hinge_on_item_left == (fit.way > 0) ? Hinge::left : Hinge::right;
+  // A sash opens toward the item's front, which lies to the right of its width axis (its hinge
+  // axis sits on the front face of the part in the wall): `in` (the wall's left side) when the
+  // item faces against the wall's direction.
+  if (item.has_sash) o.swing = fit.way > 0 ? Swing::out : Swing::in;
   return o;
 }
 

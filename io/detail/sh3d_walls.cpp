@@ -96,10 +96,17 @@ std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> 
   join_t_ends(walls, options.snap_distance, warnings);
   std::vector<PlacedWall> placed;
   for (const WallRecord& w : walls) {
+    if (w.start == w.end) {  // nothing to build, and the plan format forbids it
+      warnings.add(import_warning(
+          "import_zero_length_wall", w.id,
+          fmt::format("wall '{}' starts and ends at the same point in the home; it is left out",
+                      w.id)));
+      continue;
+    }
     const LevelBase level = level_base(home, w.level);
     const double base_cm = level.base_cm + options.z_shift_cm;
     const double top_cm = base_cm + level.floor_offset_cm + flat_height_cm(home, w, warnings);
-    if (!w.arc_extent || *w.arc_extent == 0 || w.start == w.end) {
+    if (!w.arc_extent || *w.arc_extent == 0) {
       placed.push_back({make_wall(w, w.id, w.start, w.end, base_cm, top_cm), w.level});
       continue;
     }

@@ -51,7 +51,8 @@ struct WallOptions {
 };
 
 /// Converts `walls` (a selection of `home.walls`, in file order) to plan walls, one per straight
-/// wall and one per chord of a curved wall (no chord break falls in one of `items`).
+/// wall and one per chord of a curved wall (no chord break falls in one of `items`); a wall
+/// of zero length is left out with an `import_zero_length_wall` warning.
 /// @param[out] warnings appended: one warning per curved or sloped wall, naming it.
 /// @return the placed walls, in file order (an arc's chords in order from its start).
 /// O(walls + chords).

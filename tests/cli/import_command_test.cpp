@@ -32,6 +32,18 @@ TEST(ImportCommand, WritesThePlanTheImporterBuilds) {
   EXPECT_EQ(*read.plan, imported.value().plan);
 }
 
+TEST(ImportCommand, OneLevelByName) {
+  const test::TempDir dir;
+  const fs::path home = kHomes / "eteks-example-homes" / "2-BedroomHouseWithBasement.Home.xml";
+  const test::CommandResult run =
+      run_roomcad({"import", home.string(), "-o", dir / "b.json", "--level", "Basement"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const PlanReadResult read = read_plan_file(dir / "b.json");
+  ASSERT_TRUE(read.plan.has_value());
+  EXPECT_EQ(read.plan->walls.size(), 14u);  // the <wall level='level0'> elements of the file
+  for (const Wall& w : read.plan->walls) EXPECT_EQ(w.base, 0.0);
+}
+
 TEST(ImportCommand, BadInputExitsTwoNamingTheFileAndWritesNothing) {
   const test::TempDir dir;
   ASSERT_TRUE(test::write_bytes(dir / "broken.xml", "<home><wall id='w'"));

@@ -1,98 +1,120 @@
 // `roomcad surface` end to end: exit statuses, messages and the files it writes.
-#include <filesystem>
-#include <string>
-
 #include <gtest/gtest.h>
 
-#include "cli/cli_test_support.h"
+#include <filesystem>
+#include <string>
+#include <vector>
 
-namespace roomcad::cli_test {
+#include "support/run_command.h"
+
+namespace roomcad::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-class SurfaceCommand : public ::testing::Test {
- protected:
-  ScratchDir scratch_{std::string("surface_") +
-                      ::testing::UnitTest::GetInstance()->current_test_info()->name()};
-  const fs::path& dir_ = scratch_.path();
-};
+CommandResult surface(std::vector<std::string> args) {
+  args.insert(args.begin(), "surface");
+  return run_roomcad(args);
+}
 
-TEST_F(SurfaceCommand, WritesAnSvgOfTheSaddle) {
-  const fs::path out = dir_ / "saddle.svg";
-  const CommandRun run =
-      run_roomcad("surface 'x*x - z*z' --x -2:2 --z -2:2 -o " + shell_quoted(out));
-  ASSERT_EQ(run.status, 0) << run.output;
-  const std::string svg = read_bytes(out);
+TEST(SurfaceCommand, WritesAnSvgOfTheSaddle) {
+  const TempDir dir;
+  const CommandResult run =
+      surface({"x*x - z*z", "--x", "-2:2", "--z", "-2:2", "-o", (dir / "saddle.svg").string()});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::string svg = read_bytes(dir / "saddle.svg");
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("width=\"200mm\" height=\"150mm\""), std::string::npos);
   EXPECT_NE(svg.find("<g id=\"upper\""), std::string::npos);
   EXPECT_NE(svg.find("<polyline"), std::string::npos);
   // Deterministic: the same command gives the same bytes.
-  const fs::path again = dir_ / "again.svg";
-  ASSERT_EQ(run_roomcad("surface 'x*x - z*z' --x -2:2 --z -2:2 -o " + shell_quoted(again)).status,
+  ASSERT_EQ(surface({"x*x - z*z", "--x", "-2:2", "--z", "-2:2", "-o", (dir / "again.svg").string()})
+                .status,
             0);
-  EXPECT_EQ(read_bytes(again), svg);
+  EXPECT_EQ(read_bytes(dir / "again.svg"), svg);
 }
 
-TEST_F(SurfaceCommand, WritesAPngOfTheDampedWave) {
-  const fs::path out = dir_ / "wave.png";
-  const CommandRun run = run_roomcad(
-      "surface 'cos(sqrt(x*x+z*z))/(sqrt(x*x+z*z)+1)' --x=-2*pi:2*pi --z=-2*pi:2*pi "
-      "--width 320 --height 200 -o " +
-      shell_quoted(out));
-  ASSERT_EQ(run.status, 0) << run.output;
+TEST(SurfaceCommand, WritesAPngOfTheDampedWave) {
+  const TempDir dir;
+  const fs::path out = dir / "wave.png";
+  const CommandResult run =
+      surface({"cos(sqrt(x*x+z*z))/(sqrt(x*x+z*z)+1)", "--x=-2*pi:2*pi", "--z=-2*pi:2*pi",
+               "--width", "320", "--height", "200", "-o", out.string()});
+  ASSERT_EQ(run.status, 0) << run.err;
   const std::string png = read_bytes(out);
   ASSERT_GT(png.size(), 33u);
   EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
   // IHDR holds the size, big-endian, at bytes 16..23.
   const auto u32 = [&](std::size_t at) {
-    return (static_cast<unsigned char>(png[at]) << 24) |
-           (static_cast<unsigned char>(png[at + 1]) << 16) |
-           (static_cast<unsigned char>(png[at + 2]) << 8) | static_cast<unsigned char>(png[at + 3]);
+    unsigned value = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+      value = value << 8 | static_cast<unsigned char>(png[at + i]);
+    return value;
   };
   EXPECT_EQ(u32(16), 320u);
   EXPECT_EQ(u32(20), 200u);
 }
 
-TEST_F(SurfaceCommand, BadExpressionNamesTheColumn) {
-  const fs::path out = dir_ / "bad.svg";
-  const CommandRun run = run_roomcad("surface 'x^' --x -2:2 --z -2:2 -o " + shell_quoted(out));
-  EXPECT_EQ(run.status, 2);
-  EXPECT_NE(run.output.find("expected a number, variable or '(' at column 3"), std::string::npos)
-      << run.output;
-  EXPECT_FALSE(fs::exists(out));
+TEST(SurfaceCommand, ExpressionStartingWithMinusGoesAfterDoubleDash) {
+  const TempDir dir;
+  const CommandResult run =
+      surface({"--x", "-2:2", "--z", "-2:2", "-o", (dir / "cap.svg").string(), "--", "-x*x"});
+  EXPECT_EQ(run.status, 0) << run.err;
 }
 
-TEST_F(SurfaceCommand, BadOptionsExitTwoAndWriteNothing) {
-  const std::string out = shell_quoted(dir_ / "out.svg");
+TEST(SurfaceCommand, UndefinedEverywhereWarnsAndDrawsAnEmptyPicture) {
+  const TempDir dir;
+  const CommandResult run =
+      surface({"sqrt(-1-x*x)", "--x", "-1:1", "--z", "-1:1", "-o", (dir / "none.svg").string()});
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("has no finite value"), std::string::npos) << run.err;
+  EXPECT_EQ(read_bytes(dir / "none.svg").find("<polyline"), std::string::npos);
+}
+
+TEST(SurfaceCommand, BadExpressionNamesTheColumn) {
+  const TempDir dir;
+  const CommandResult run =
+      surface({"x^", "--x", "-2:2", "--z", "-2:2", "-o", (dir / "bad.svg").string()});
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("EXPR \"x^\": expected a number, variable or '(' at column 3"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir / "bad.svg"));
+}
+
+TEST(SurfaceCommand, BadOptionsExitTwoAndWriteNothing) {
+  const TempDir dir;
+  const std::string out = (dir / "out.svg").string();
   const struct {
-    std::string args;
+    std::vector<std::string> args;
     std::string message;
   } cases[] = {
-      {"'x' --x 2 --z -1:1 -o " + out, "--x \"2\": expected A:B"},
-      {"'x' --x -1:1 --z q:1 -o " + out, "--z \"q:1\""},
-      {"'x' --x -1:1 --z -1:1 --dx 0 -o " + out, "dx must be positive, got 0"},
-      {"'x' --x -1:1 --z -1:1 --rotate-x 90 -o " + out, "rotate_x"},
-      {"'x' --x 1:-1 --z -1:1 -o " + out, "x range 1:-1 is empty"},
-      {"'x' --x -1:1 --z -1:1 --dx 1e-7 -o " + out, "samples"},
-      {"'x' --x -1:1 --z -1:1 -o " + shell_quoted(dir_ / "out.txt"), ".svg or .png"},
-      {"'x' --x -1:1 --z -1:1", "--output is required"},
+      {{"x", "--x", "2", "--z", "-1:1", "-o", out}, "--x \"2\": expected A:B"},
+      {{"x", "--x", "-1:1", "--z", "q:1", "-o", out}, "--z \"q:1\""},
+      {{"x", "--x", "-1:x", "--z", "-1:1", "-o", out}, "must not use x or z"},
+      {{"x", "--x", "-1:1", "--z", "-1:1", "--dx", "0", "-o", out}, "dx must be positive, got 0"},
+      {{"x", "--x", "-1:1", "--z", "-1:1", "--rotate-x", "90", "-o", out}, "rotate_x"},
+      {{"x", "--x", "1:-1", "--z", "-1:1", "-o", out}, "x range 1:-1 is empty"},
+      {{"x", "--x", "-1:1", "--z", "-1:1", "--dx", "1e-7", "-o", out}, "samples"},
+      {{"x", "--x", "-1:1", "--z", "-1:1", "--width", "5", "-o", out}, "--width"},
+      {{"x", "--x", "-1:1", "--z", "-1:1", "-o", (dir / "out.txt").string()}, ".svg or .png"},
+      {{"x", "--x", "-1:1", "--z", "-1:1"}, "--output is required"},
   };
   for (const auto& c : cases) {
-    const CommandRun run = run_roomcad("surface " + c.args);
-    EXPECT_EQ(run.status, 2) << c.args << "\n" << run.output;
-    EXPECT_NE(run.output.find(c.message), std::string::npos) << c.args << "\n" << run.output;
+    const CommandResult run = surface(c.args);
+    EXPECT_EQ(run.status, 2) << c.message << "\n" << run.err;
+    EXPECT_NE((run.out + run.err).find(c.message), std::string::npos) << run.out << run.err;
   }
-  EXPECT_TRUE(fs::is_empty(dir_));
+  EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 
-TEST_F(SurfaceCommand, UnwritableOutputExitsTwo) {
-  const fs::path out = dir_ / "no" / "such" / "dir" / "out.svg";
-  const CommandRun run = run_roomcad("surface 'x' --x -1:1 --z -1:1 -o " + shell_quoted(out));
+TEST(SurfaceCommand, UnwritableOutputExitsTwo) {
+  const TempDir dir;
+  const fs::path out = dir / "no" / "such" / "dir" / "out.svg";
+  const CommandResult run = surface({"x", "--x", "-1:1", "--z", "-1:1", "-o", out.string()});
   EXPECT_EQ(run.status, 2);
-  EXPECT_NE(run.output.find("out.svg"), std::string::npos) << run.output;
+  EXPECT_NE(run.err.find("out.svg"), std::string::npos) << run.err;
 }
 
 }  // namespace
-}  // namespace roomcad::cli_test
+}  // namespace roomcad::test

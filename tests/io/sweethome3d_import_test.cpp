@@ -44,8 +44,13 @@ TEST(Sh3dImport, WallCountsMatchTheXmlWithArcsSplitIntoChords) {
     const std::vector<Attributes> xml_walls = elements(read_text(home), "wall");
     const Sh3dImport imported = import_or_fail(home);
     EXPECT_EQ(imported.source_walls, xml_walls.size());
+    const std::set<std::string> left_out = objects_warned(imported.warnings, "import_zero_length_wall");
     std::size_t expected = 0;
     for (const Attributes& w : xml_walls) {
+      if (left_out.contains(w.at("id"))) {
+        EXPECT_EQ(w.at("xStart") + " " + w.at("yStart"), w.at("xEnd") + " " + w.at("yEnd"));
+        continue;
+      }
       const bool curved = w.contains("arcExtent") && std::stod(w.at("arcExtent")) != 0;
       std::size_t chords = 0;
       for (const Wall& p : imported.plan.walls)
@@ -189,6 +194,24 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   EXPECT_NEAR(door->width, 0.915, 2e-6);
   EXPECT_EQ(find_wall(imported.plan, door->wall)->base, 0.0);
   EXPECT_DOUBLE_EQ(imported.z_shift, 1.5);
+  // Both doors hinge on the left of their model (sash xAxis 0.05) and face against their wall's
+  // direction (angle pi); the second is mirrored. Seen from the wall, the first hinges at its
+  // `to` end, the second at its `from` end.
+  const Opening* turned = find_opening(imported.plan, "doorOrWindow-cb59f9df-1827-4d5b-bf6b-68a3270f72ed");
+  const Opening* mirrored = find_opening(imported.plan, "doorOrWindow-791c3bc2-fb47-47ab-81c4-713ff1895434");
+  ASSERT_TRUE(turned && mirrored);
+  EXPECT_EQ(turned->hinge, Hinge::right);
+  EXPECT_EQ(mirrored->hinge, Hinge::left);
+  // They open toward their front, the wall's left side here, and so does every door with a
+  // sash that faces along its wall the other way round (angle 0 on a wall drawn leftwards).
+  EXPECT_EQ(turned->swing, Swing::in);
+  EXPECT_EQ(mirrored->swing, Swing::in);
+  const Opening* along = find_opening(imported.plan, "doorOrWindow-dd84126e-0437-4e76-ba8b-f685211624ef");
+  ASSERT_NE(along, nullptr);
+  const Wall* along_host = find_wall(imported.plan, along->wall);
+  EXPECT_EQ(along->wall, "wall35");  // drawn from x = 7.00 m to 6.00 m
+  EXPECT_LT(along_host->to.x, along_host->from.x);
+  EXPECT_EQ(along->swing, Swing::in);
 }
 
 TEST(Sh3dImport, StoreysStandExactlyOnTheWallsBelow) {
@@ -307,6 +330,15 @@ TEST(Sh3dImport, NoLooseWallEndInsideACrossingWallOffItsCentreLine) {
   // Left: ends at the corner of two walls or shared with another wall's end, which no single
   // move along the wall joins. Validation reports them as overlaps.
   EXPECT_LE(loose.size(), 5u) << ::testing::PrintToString(loose);
+}
+
+TEST(Sh3dImport, ZeroLengthWallIsLeftOutWithAWarning) {
+  // ApartmentWithBowWindow's wall36 has xStart == xEnd and yStart == yEnd.
+  const Sh3dImport imported =
+      import_or_fail(kData / "eteks-example-homes" / "ApartmentWithBowWindow.Home.xml");
+  EXPECT_EQ(objects_warned(imported.warnings, "import_zero_length_wall"),
+            std::set<std::string>{"wall36"});
+  EXPECT_EQ(find_wall(imported.plan, "wall36"), nullptr);
 }
 
 TEST(Sh3dImport, OneLevelByName) {

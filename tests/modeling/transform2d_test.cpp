@@ -124,9 +124,25 @@ TEST(Transform2d, GeneralAnglesRoundTripWithinAnUlpOrTwo) {
   EXPECT_NEAR(q.y, p.y, 4e-15);
 }
 
+TEST(Transform2d, AnExactChainKeepsTheCentreOfAnyTurn) {
+  const Point2 c{5.9, 3.85};
+  for (const double deg : {30.0, -17.5, 123.4}) {
+    const auto chain = about_point(rotate(deg), c);
+    expect_same_bits(apply_exactly(chain, c), c);
+    const Point2 p = apply_exactly(chain, {1.1, 2.3});
+    const Point2 q = apply(rotate(deg, c), {1.1, 2.3});  // composed entries: within an ulp or so
+    EXPECT_NEAR(p.x, q.x, 4e-15);
+    EXPECT_NEAR(p.y, q.y, 4e-15);
+  }
+  const auto quarter = about_point(rotate(90.0), c);
+  for (const Point2& p : decimal_points())
+    expect_same_bits(apply_exactly(quarter, p), apply(rotate(90.0, c), p));
+}
+
 TEST(Transform2d, NonFiniteValuesPropagate) {
   EXPECT_TRUE(std::isnan(apply(translate(1.0, 0.0), {std::nan(""), 0.0}).x));
   EXPECT_TRUE(std::isinf(apply(translate(1.0, 0.0), {INFINITY, 0.0}).x));
+  EXPECT_TRUE(std::isnan(apply_exactly(about_point(rotate(30.0), {1, 1}), {std::nan(""), 0.0}).y));
 }
 
 TEST(Transform2d, ExactZeroHasNoSign) {

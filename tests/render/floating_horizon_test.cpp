@@ -52,6 +52,34 @@ TEST(FloatingHorizon, TiltedPlaneShowsEverySectionWhole) {
   EXPECT_NEAR(d.polylines[0].points.back().x, 790.0, 1e-9);
 }
 
+TEST(FloatingHorizon, PlaneTurnedAboutBothAxesShowsEverySection) {
+  // y = 0 turned 30 degrees about y, then 30 about x: section z = c is the line
+  // X = x cos ry + c sin ry, Y = (c cos ry - x sin ry) sin rx. All sections are parallel and
+  // each lies dz sin rx / cos ry above the one before at equal X, so all are wholly visible.
+  const double ry = 30 * std::numbers::pi / 180, rx = 30 * std::numbers::pi / 180;
+  const SurfaceView view{.x_min = -2,
+                         .x_max = 2,
+                         .z_min = -1,
+                         .z_max = 1,
+                         .dx = 0.5,
+                         .dz = 0.25,
+                         .rotate_x_deg = 30,
+                         .rotate_y_deg = 30};
+  const SurfaceDrawing d = draw_floating_horizon(function_of("0"), view, plain_screen());
+  ASSERT_EQ(d.polylines.size(), 9u);
+  for (std::size_t j = 0; j < 9; ++j) {
+    const double c = -1.0 + 0.25 * j;
+    ASSERT_EQ(d.polylines[j].points.size(), 9u) << "section " << j;
+    for (std::size_t i = 0; i < 9; ++i) {
+      const double x = -2.0 + 0.5 * i;
+      const double px = x * std::cos(ry) + c * std::sin(ry);
+      const double py = (c * std::cos(ry) - x * std::sin(ry)) * std::sin(rx);
+      EXPECT_NEAR(d.polylines[j].points[i].x, d.origin_x + d.scale_x * px, 1e-9);
+      EXPECT_NEAR(d.polylines[j].points[i].y, d.origin_y - d.scale_y * py, 1e-9);
+    }
+  }
+}
+
 TEST(FloatingHorizon, SideEdgesJoinTheSectionsOfAPlane) {
   const SurfaceView view{
       .x_min = -2, .x_max = 2, .z_min = -1, .z_max = 1, .dx = 0.5, .dz = 0.5, .rotate_x_deg = 30};

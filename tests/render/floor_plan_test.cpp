@@ -1,17 +1,19 @@
 #include "render/floor_plan.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "validation/validate.h"
+
 namespace roomcad {
 namespace {
 
 // One straight wall, 4 m along x, 0.2 m thick, with a window (sill 0.9, top 2.2) at u = 1..2
-// and a door at u = 2.5..3.3. At 1:50 a metre is 20 mm; the page margin is 30 mm and the plan's
-// top edge (y = 0.1) is at paper y = 30, so plan (u, across) is paper (30 + 20u, 32 - 20 across).
+// and a door at u = 2.5..3.3. At 1:50 a metre is 20 mm.
 Plan one_wall_plan() {
   Plan plan;
   Wall wall;
@@ -37,7 +39,19 @@ Plan one_wall_plan() {
   return plan;
 }
 
-Point2 paper(double u, double across) { return {30.0 + 20.0 * u, 32.0 - 20.0 * across}; }
+/// Where plan point (u, across) of the wall lies on the drawing's paper: 20 mm a metre, north
+/// up, from the wall's top-left corner (the first cut part's, u = 0, across = 0.1).
+struct WallPaper {
+  Point2 corner;
+  explicit WallPaper(const FloorPlanDrawing& d) : corner{INFINITY, INFINITY} {
+    for (const Point2& p : d.cut_walls.at(0)) {
+      corner = {std::min(corner.x, p.x), std::min(corner.y, p.y)};
+    }
+  }
+  Point2 operator()(double u, double across) const {
+    return {corner.x + 20.0 * u, corner.y + 20.0 * (0.1 - across)};
+  }
+};
 
 void expect_near(Point2 got, Point2 want) {
   EXPECT_NEAR(got.x, want.x, 1e-9);
@@ -53,6 +67,7 @@ std::pair<double, double> x_span(const PaperPolygon& polygon) {
 
 TEST(FloorPlan, CutsTheWallAtTheOpeningsTheSectionPasses) {
   const FloorPlanDrawing d = draw_floor_plan(one_wall_plan(), {});
+  const WallPaper paper(d);
   ASSERT_EQ(d.cut_walls.size(), 3u);
   const double want[3][2] = {{0.0, 1.0}, {2.0, 2.5}, {3.3, 4.0}};
   for (int i = 0; i < 3; ++i) {
@@ -67,13 +82,16 @@ TEST(FloorPlan, CutsTheWallAtTheOpeningsTheSectionPasses) {
     expect_near(d.windows[i].a, paper(1.0, across));
     expect_near(d.windows[i].b, paper(2.0, across));
   }
-  EXPECT_DOUBLE_EQ(d.width, 4 * 20 + 60.0);
-  EXPECT_DOUBLE_EQ(d.height, 0.2 * 20 + 60.0 + 25.0);
+  // The page holds everything with a 10 mm border: the door swing reaches furthest up.
+  EXPECT_NEAR(d.door_swings[0].centre.y - d.door_swings[0].radius, 10.0, 1e-9);
+  EXPECT_GT(d.width, 4 * 20 + 20.0);
+  EXPECT_GT(d.height, 0.9 * 20 + 20.0 + 25.0);
 }
 
 TEST(FloorPlan, DrawsTheDoorLeafAndSwingPerHingeAndSwing) {
   Plan plan = one_wall_plan();
   FloorPlanDrawing d = draw_floor_plan(plan, {});
+  WallPaper paper(d);
   // hinge left, swing in: turns about u = 2.5 on the left face, opens towards +y.
   ASSERT_EQ(d.door_leaves.size(), 1u);
   ASSERT_EQ(d.door_swings.size(), 1u);
@@ -87,6 +105,7 @@ TEST(FloorPlan, DrawsTheDoorLeafAndSwingPerHingeAndSwing) {
   plan.openings[0].hinge = Hinge::right;
   plan.openings[0].swing = Swing::out;
   d = draw_floor_plan(plan, {});
+  paper = WallPaper(d);
   expect_near(d.door_leaves[0].a, paper(3.3, -0.1));
   expect_near(d.door_leaves[0].b, paper(3.3, -0.9));
   expect_near(d.door_swings[0].to, paper(2.5, -0.1));
@@ -124,6 +143,49 @@ TEST(FloorPlan, DimensionsScaleBarAndTitle) {
   ASSERT_GE(d.labels.size(), 3u);
   EXPECT_EQ(d.labels[1].text, "2 m");  // the longest round length fitting 40 mm at 1:50
   EXPECT_NE(d.labels.back().text.find("section at 1.00 m, scale 1:50"), std::string::npos);
+}
+
+TEST(FloorPlan, NamesRoomsAndDimensionsOuterWallsOutside) {
+  // A 4 x 3 m box drawn clockwise, split by a partition at x = 3: two rooms.
+  Plan plan;
+  const auto add_wall = [&](const char* id, Point2 from, Point2 to) {
+    Wall w;
+    w.id = id;
+    w.from = from;
+    w.to = to;
+    w.thickness = 0.2;
+    plan.walls.push_back(w);
+  };
+  add_wall("w", {1, 1}, {1, 4});
+  add_wall("n", {1, 4}, {5, 4});
+  add_wall("e", {5, 4}, {5, 1});
+  add_wall("s", {5, 1}, {1, 1});
+  add_wall("part", {3, 1}, {3, 4});
+  ASSERT_TRUE(validate(plan).ok());
+  const std::vector<Room> rooms = find_rooms(plan);
+  ASSERT_EQ(rooms.size(), 2u);
+  const FloorPlanDrawing d = draw_floor_plan(plan, {});
+  ASSERT_EQ(d.rooms.size(), 2u);
+  ASSERT_EQ(d.room_labels.size(), 4u);  // name and area of each
+  EXPECT_EQ(d.room_labels[0].text, "Room 1");
+  EXPECT_EQ(d.room_labels[1].text, fmt::format("{:.2f} m²", rooms[0].area));
+  EXPECT_EQ(d.room_labels[3].text, fmt::format("{:.2f} m²", rooms[1].area));
+  // Four outer walls and the two overall sizes; the partition has rooms on both sides.
+  std::vector<std::string> texts;
+  for (const PaperText& t : d.dimension_texts) texts.push_back(t.text);
+  EXPECT_EQ(texts, (std::vector<std::string>{"3.00", "4.00", "3.00", "4.00", "4.20", "3.20"}));
+  // The south wall's dimension sits below the walls, the west wall's to their left, although
+  // the walls run clockwise (their right side is the inside).
+  double walls_bottom = -INFINITY;
+  double walls_left = INFINITY;
+  for (const PaperPolygon& part : d.cut_walls) {
+    for (const Point2& p : part) {
+      walls_bottom = std::max(walls_bottom, p.y);
+      walls_left = std::min(walls_left, p.x);
+    }
+  }
+  EXPECT_GT(d.dimension_texts[3].at.y, walls_bottom);  // "s"
+  EXPECT_LT(d.dimension_texts[0].at.x, walls_left);    // "w"
 }
 
 TEST(FloorPlan, RejectsBadOptions) {

@@ -1,0 +1,35 @@
+// Speed of the floor-plan drawing on the bundled house (21 walls) and on grids of rooms.
+#include <benchmark/benchmark.h>
+
+#include "bench/grid_plan.h"
+#include "io/floor_plan_svg.h"
+#include "io/plan_json.h"
+#include "render/floor_plan.h"
+
+namespace {
+
+using namespace roomcad;
+
+void BM_FloorPlanHouse(benchmark::State& state) {
+  const PlanReadResult read = read_plan_file(ROOMCAD_SOURCE_DIR "/examples/house.json");
+  if (!read.plan) {
+    state.SkipWithError("examples/house.json does not read");
+    return;
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(make_floor_plan_svg(draw_floor_plan(*read.plan, {}), "").to_string());
+  }
+}
+BENCHMARK(BM_FloorPlanHouse)->Unit(benchmark::kMillisecond);
+
+/// n x n rooms (bench/grid_plan.h): 2 n (n + 1) walls, with doors and windows; rooms included.
+void BM_FloorPlanGrid(benchmark::State& state) {
+  const Plan plan = bench::make_grid_plan({.n = static_cast<int>(state.range(0))});
+  for (auto _ : state) benchmark::DoNotOptimize(draw_floor_plan(plan, {}).cut_walls.size());
+  state.counters["walls"] = static_cast<double>(plan.walls.size());
+}
+BENCHMARK(BM_FloorPlanGrid)->Arg(2)->Arg(5)->Arg(10)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

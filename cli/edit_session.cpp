@@ -1,0 +1,134 @@
+#include "cli/edit_session.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "cli/command.h"
+#include "cli/line_diff.h"
+#include "cli/plan_loading.h"
+#include "io/plan_json.h"
+#include "modeling/build_model.h"
+#include "modeling/value_text.h"
+#include "validation/report_format.h"
+#include "validation/validate.h"
+
+namespace roomcad::cli {
+namespace {
+
+/// An error's identity across an edit: its code and the ids it involves (messages and places
+/// change when objects move, the problem does not).
+using ErrorKey = std::pair<std::string, std::vector<std::string>>;
+
+ErrorKey key_of(const Diagnostic& d) {
+  std::vector<std::string> ids = d.objects;
+  std::sort(ids.begin(), ids.end());
+  return {d.code, std::move(ids)};
+}
+
+/// @return the errors of `after` beyond those `before` had, counted per ErrorKey.
+Report introduced_errors(const Report& before, const Report& after) {
+  std::map<ErrorKey, int> budget;
+  for (const Diagnostic& d : before.items)
+    if (d.severity == Severity::error) ++budget[key_of(d)];
+  Report fresh;
+  for (const Diagnostic& d : after.items) {
+    if (d.severity != Severity::error) continue;
+    int& left = budget[key_of(d)];
+    if (left > 0) --left;
+    else fresh.add(d);
+  }
+  return fresh;
+}
+
+void print_report(const Report& report) {
+  std::fputs(format_report_text(report, use_colour(stderr)).c_str(), stderr);
+}
+
+/// Prints "+ id" / "- id" / "~ id" lines, one per object added, removed, changed.
+void print_summary(const EditSummary& summary) {
+  for (const std::string& id : summary.added) fmt::print("+ {}\n", id);
+  for (const std::string& id : summary.removed) fmt::print("- {}\n", id);
+  for (const std::string& id : summary.changed) fmt::print("~ {}\n", id);
+}
+
+/// Refuses (exit 1) or, with --force, warns about errors the edit introduces.
+/// @return true if the edit may go on.
+bool accept_new_errors(std::string_view command, const std::string& path, const EditFlags& flags,
+                       const Report& fresh) {
+  if (fresh.ok()) return true;
+  if (flags.force)
+    fmt::print(stderr, "roomcad {}: warning: the edit introduces {} (kept: --force)\n", command,
+               format_report_summary(fresh));
+  else
+    fmt::print(stderr,
+               "roomcad {}: refused: the edit introduces {}; '{}' is left as it was "
+               "(--force writes it anyway)\n",
+               command, format_report_summary(fresh), path);
+  print_report(fresh);
+  return flags.force;
+}
+
+}  // namespace
+
+void add_edit_flags(CLI::App& command, EditFlags& flags) {
+  command.add_flag("--force", flags.force,
+                   "write the edit even if it introduces plan errors (they are printed)");
+  command.add_flag("--dry-run", flags.dry_run,
+                   "print what would change (objects, then a line diff of the file), write nothing");
+}
+
+int run_edit(std::string_view command, const std::string& path, const EditFlags& flags,
+             const Edit& edit) {
+  const LoadedPlan read = load_plan(command, path);  // prints what reading found
+  if (!read.plan) return read.exit_status;
+  Plan edited = *read.plan;
+  EditSummary summary;
+  try {
+    summary = edit(edited);
+  } catch (const EditRefused& e) {
+    fmt::print(stderr, "roomcad {}: refused: {}; '{}' is left as it was\n", command, e.what(), path);
+    return kPlanErrors;
+  } catch (const PreconditionError& e) {
+    std::string_view message = e.what();  // "<command>: ...", as modeling names its function
+    if (message.starts_with(command) && message.substr(command.size()).starts_with(": "))
+      message.remove_prefix(command.size() + 2);
+    fmt::print(stderr, "roomcad {}: error: {}\n", command, message);
+    return kCannotRun;
+  }
+  if (edited == *read.plan) {
+    fmt::print("nothing to change: '{}' is left as it was\n", path);
+    return kOk;
+  }
+  if (!accept_new_errors(command, path, flags, introduced_errors(validate(*read.plan), validate(edited))))
+    return kPlanErrors;
+  print_summary(summary);
+  if (flags.dry_run) {
+    std::fputs(diff_lines(read.text, write_plan_text(edited)).c_str(), stdout);  // the file as it is
+    fmt::print("dry run: '{}' not written\n", path);
+    return kOk;
+  }
+  if (const Status written = write_plan_file(edited, path); !written) {
+    fmt::print(stderr, "roomcad {}: error: {}\n", command, written.error);
+    return kCannotRun;
+  }
+  return kOk;
+}
+
+Point2 require_point(std::string_view option, const std::string& text) {
+  if (const auto p = parse_point2(text)) return *p;
+  throw std::invalid_argument(
+      fmt::format("{} wants a point x,y in metres (e.g. 1.5,2), got '{}'", option, text));
+}
+
+double require_number(std::string_view option, const std::string& text) {
+  if (const auto x = parse_number(text)) return *x;
+  throw std::invalid_argument(fmt::format("{} wants a finite number, got '{}'", option, text));
+}
+
+}  // namespace roomcad::cli

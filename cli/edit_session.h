@@ -1,0 +1,58 @@
+// What every edit command (add, rm, move, rotate, scale, set) does around its edit: read the
+// plan, apply the edit to a copy, validate, refuse an edit that INTRODUCES errors (unless
+// --force), show the change (--dry-run) or write the file atomically.
+//
+// "Introduces" is counted per (code, ids involved): the edit is refused when the edited plan
+// has more errors of some code about some set of objects than the original had. So a plan that
+// already has errors can still be edited (to repair it, or elsewhere), and the same overlap,
+// reworded because a wall moved, is not new. A refused edit leaves the file byte for byte as
+// it was; so does an edit that changes nothing.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <CLI/CLI.hpp>
+
+#include "modeling/plan.h"
+#include "modeling/plan_edit.h"
+
+namespace roomcad::cli {
+
+/// The flags every edit command takes.
+struct EditFlags {
+  bool force = false;    ///< write even when the edit introduces errors
+  bool dry_run = false;  ///< print what would change, write nothing
+};
+
+/// Registers --force and --dry-run on an edit subcommand.
+void add_edit_flags(CLI::App& command, EditFlags& flags);
+
+/// An edit of an in-memory plan: returns what it changed, or throws PreconditionError when
+/// it cannot be made (printed as a usage error, exit 2) or EditRefused.
+using Edit = std::function<EditSummary(Plan&)>;
+
+/// Runs one edit on the plan file `path` and reports on stdout/stderr.
+/// @param[in] command  the subcommand's name, for messages ("move")
+/// @return 0 done (or dry run shown, or nothing to change), 1 refused because the result has
+///         new errors or the plan could not be read as a plan, 2 usage or I/O error.
+[[nodiscard]] int run_edit(std::string_view command, const std::string& path,
+                           const EditFlags& flags, const Edit& edit);
+
+/// @return `text` as a point x,y. @throws CLI::ValidationError naming `option` and the text.
+[[nodiscard]] Point2 require_point(std::string_view option, const std::string& text);
+
+/// @return `text` as a finite number. @throws CLI::ValidationError naming `option`.
+[[nodiscard]] double require_number(std::string_view option, const std::string& text);
+
+/// Thrown by an Edit to refuse it on the plan's grounds (a wall that still holds openings):
+/// run_edit prints "roomcad <command>: refused: <what>" and returns 1, the file untouched.
+/// (PreconditionError, by contrast, is a bad argument: exit 2.)
+class EditRefused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace roomcad::cli

@@ -19,6 +19,16 @@ using test::expect_valid_walls;
 constexpr auto kDoor = OpeningType::door;
 constexpr auto kWindow = OpeningType::window;
 
+// Expects build_model to throw PreconditionError with `text` in its message.
+void expect_build_error(const Plan& plan, const std::string& text) {
+  try {
+    (void)build_model(plan);
+    FAIL() << "expected PreconditionError";
+  } catch (const PreconditionError& e) {
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
+}
+
 // Wall 4 x 0.2 x 2.5 = 2 m^3.
 Plan single_wall() {
   Plan plan = empty_plan();
@@ -206,12 +216,7 @@ TEST(Modeling, SameMeshAtAnyThreadCount) {
 TEST(Modeling, OpeningOutsideItsWallIsAnErrorNamingIt) {
   Plan plan = single_wall();
   add_opening(plan, "too-wide", kWindow, "w", 3.5, 1.0, 1.0, 1.0);
-  try {
-    (void)build_model(plan);
-    FAIL() << "expected PreconditionError";
-  } catch (const PreconditionError& e) {
-    EXPECT_NE(std::string(e.what()).find("too-wide"), std::string::npos) << e.what();
-  }
+  expect_build_error(plan, "too-wide");
 }
 
 TEST(Modeling, WallsTouchingAlongAnEdgeAreAnErrorNotACrash) {
@@ -219,12 +224,7 @@ TEST(Modeling, WallsTouchingAlongAnEdgeAreAnErrorNotACrash) {
   // Thickness 0.25 keeps the side faces exact: a touches b only along the edge x=2, y=0.25.
   add_wall(plan, "a", {0, 0.125}, {2, 0.125}).thickness = 0.25;
   add_wall(plan, "b", {2, 0.375}, {4, 0.375}).thickness = 0.25;
-  try {
-    (void)build_model(plan);
-    FAIL() << "expected PreconditionError";
-  } catch (const PreconditionError& e) {
-    EXPECT_NE(std::string(e.what()).find("not 2-manifold"), std::string::npos) << e.what();
-  }
+  expect_build_error(plan, "not 2-manifold");
 }
 
 TEST(Modeling, WallsTouchingAtAPointGetSeparateVertices) {

@@ -47,7 +47,9 @@ bool parse_parts(const std::string& list, Parts& parts, std::string& bad) {
 
 /// The validation gate: errors stop the build unless --force.
 bool passes_validation(const BuildCommandOptions& options, const Plan& plan) {
-  const Report report = validate(plan);
+  ValidateOptions checks;
+  checks.unknown_field_warnings = false;  // load_plan already printed them, with line and column
+  const Report report = validate(plan, checks);
   if (report.items.empty()) return true;
   std::fputs(format_report_text(report, use_colour(stderr)).c_str(), stderr);
   if (report.ok()) return true;

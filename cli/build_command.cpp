@@ -3,19 +3,17 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "cli/command.h"
+#include "cli/parts_option.h"
 #include "cli/plan_loading.h"
 #include "io/mesh_export.h"
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
-#include "validation/report_format.h"
-#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -31,33 +29,6 @@ struct BuildCommandOptions {
   bool force = false;
   bool stats = false;
 };
-
-/// Parses `walls,floor,fixtures` (any subset, any order). @return false on an unknown name.
-bool parse_parts(const std::string& list, Parts& parts, std::string& bad) {
-  parts = {false, false, false};
-  std::stringstream in(list);
-  for (std::string name; std::getline(in, name, ',');) {
-    if (name == "walls") parts.walls = true;
-    else if (name == "floor") parts.floor = true;
-    else if (name == "fixtures") parts.fixtures = true;
-    else return bad = name, false;
-  }
-  return parts.walls || parts.floor || parts.fixtures || (bad = list, false);
-}
-
-/// The validation gate: errors stop the build unless --force.
-bool passes_validation(const BuildCommandOptions& options, const Plan& plan) {
-  ValidateOptions checks;
-  checks.unknown_field_warnings = false;  // load_plan already printed them, with line and column
-  const Report report = validate(plan, checks);
-  if (report.items.empty()) return true;
-  std::fputs(format_report_text(report, use_colour(stderr)).c_str(), stderr);
-  if (report.ok()) return true;
-  std::fprintf(stderr, "roomcad build: %s: %s%s\n", options.plan.c_str(),
-               format_report_summary(report).c_str(),
-               options.force ? "; building anyway (--force)" : "; not built (use --force to try)");
-  return options.force;
-}
 
 struct CheckVerdict {
   SolidCheck solid;
@@ -140,9 +111,9 @@ int run_build(const BuildCommandOptions& options) {
       std::fprintf(stderr, "roomcad build: error: -o: %s\n", format.error().c_str());
       return kCannotRun;
     }
-  const LoadedPlan loaded = load_plan("build", options.plan);
+  // The validation gate: errors stop the build unless --force.
+  const LoadedPlan loaded = load_valid_plan("build", options.plan, options.force);
   if (!loaded.plan) return loaded.exit_status;
-  if (!passes_validation(options, *loaded.plan)) return kPlanErrors;
   build.boolean = options.boolean == "cgal" ? BooleanPath::cgal : BooleanPath::automatic;
   build.threads = options.threads;
   const bool export_walls = build.parts.walls;
@@ -193,12 +164,10 @@ void add_build_command(CLI::App& root, Commands& commands) {
                 "degenerate face, outward, genus) and its volume against the plan's analytic volume\n"
                 "(relative difference at most 1e-9); exit 1 if any check fails. It checks the\n"
                 "doubles that .obj, .off and .ply store exactly (.stl rounds them to float32)");
-  app->add_option("--format", options->format, "format of the --check report: text or json")
-      ->check(CLI::IsMember({"text", "json"}))
-      ->capture_default_str();
+  add_format_option(*app, options->format, "format of the --check report");
   app->add_flag("--force", options->force, "build even if the plan has validation errors");
   app->add_option("--threads", options->threads, "worker threads, 0 for all cores (same output)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, 256))  // as render/renderer.h kMaxThreads: no thread storm
       ->capture_default_str();
   app->add_flag("--stats", options->stats, "print paths taken, time and face counts to stderr");
   app->footer(

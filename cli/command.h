@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -20,8 +21,17 @@ struct Command {
 };
 using Commands = std::vector<Command>;
 
+/// Adds `--format text|json` (default text) to a command; `what` says what it formats.
+inline CLI::Option* add_format_option(CLI::App& app, std::string& format,
+                                      const std::string& what = "output format") {
+  return app.add_option("--format", format, what + ": text (default) or json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
+}
+
 void add_info_command(CLI::App& root, Commands& commands);
 void add_fmt_command(CLI::App& root, Commands& commands);
+void add_validate_command(CLI::App& root, Commands& commands);
 void add_surface_command(CLI::App& root, Commands& commands);
 void add_draw_command(CLI::App& root, Commands& commands);
 void add_import_command(CLI::App& root, Commands& commands);
@@ -30,5 +40,6 @@ void add_add_command(CLI::App& root, Commands& commands);
 void add_rm_command(CLI::App& root, Commands& commands);
 void add_transform_commands(CLI::App& root, Commands& commands);  ///< move, rotate, scale
 void add_set_command(CLI::App& root, Commands& commands);
+void add_render_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -15,8 +15,6 @@
 #include "cli/plan_loading.h"
 #include "io/floor_plan_svg.h"
 #include "render/floor_plan.h"
-#include "validation/report_format.h"
-#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -69,16 +67,8 @@ int run_draw(const DrawOptions& o) {
   if (o.output.extension() != ".svg") {
     return fail(fmt::format("-o \"{}\": drawings are written as .svg", o.output.string()));
   }
-  const LoadedPlan loaded = load_plan("draw", o.plan_file);
+  const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, /*force=*/false);
   if (!loaded.plan) return loaded.exit_status;
-  // load_plan printed what reading found; validation's errors are printed the same way.
-  const Report checked = validate(*loaded.plan);
-  std::fputs(format_report_text(checked, use_colour(stderr)).c_str(), stderr);
-  if (!checked.ok()) {
-    std::fprintf(stderr, "%s: %s; nothing drawn\n", o.plan_file.string().c_str(),
-                 format_report_summary(checked).c_str());
-    return kPlanErrors;
-  }
   Result<SvgDocument> document = views().at(o.view)(*loaded.plan, o, scale);
   if (!document.ok()) return fail(document.error());
   if (const Status written = write_svg(document.value(), o.output); !written.ok()) {

@@ -10,9 +10,11 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -39,6 +41,7 @@ struct PlanInfo {
   double total_wall_length = 0.0;
   double max_wall_height = 0.0;
   std::optional<Box3> bounds;  ///< of the walls' footprints, base to top
+  std::vector<Room> rooms;     ///< closed regions of the walls, with their clear floor areas
 };
 
 /// A wall's centre line seen from one of its ends: that end, the unit direction away from it,
@@ -107,6 +110,7 @@ PlanInfo measure(const Plan& plan) {
     }
     i = j;
   }
+  info.rooms = find_rooms(plan);
   return info;
 }
 
@@ -136,6 +140,37 @@ std::string json_string(const std::string& s) {
   return out + '"';
 }
 
+std::string json_strings(const std::vector<std::string>& items) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + json_string(items[i]);
+  return out + ']';
+}
+
+/// `"rooms": [...]`: name, clear floor area (m^2) and the walls, doors and windows of each.
+std::string json_rooms(const std::vector<Room>& rooms) {
+  std::string out = "  \"rooms\": [";
+  for (std::size_t i = 0; i < rooms.size(); ++i)
+    out += fmt::format("{}\n    {{\"name\": \"room {}\", \"area\": {}, \"walls\": {}, \"doors\": {}, "
+                       "\"windows\": {}}}", i ? "," : "", i + 1, json_number(rooms[i].area),
+                       json_strings(rooms[i].walls), json_strings(rooms[i].doors),
+                       json_strings(rooms[i].windows));
+  return out + (rooms.empty() ? "],\n" : "\n  ],\n");
+}
+
+/// One line per room: "room 1  14.44 m2  walls a, b  doors d  windows none".
+std::string text_rooms(const std::vector<Room>& rooms) {
+  const auto list = [](const std::vector<std::string>& ids) {
+    return ids.empty() ? std::string("none") : fmt::format("{}", fmt::join(ids, ", "));
+  };
+  std::string out = fmt::format("  rooms     {}{}\n", rooms.size(),
+                                rooms.empty() ? " (no closed region of walls)" : "");
+  for (std::size_t i = 0; i < rooms.size(); ++i)
+    out += fmt::format("    room {}  {:.2f} m2 clear  walls {}  doors {}  windows {}\n", i + 1,
+                       rooms[i].area, list(rooms[i].walls), list(rooms[i].doors),
+                       list(rooms[i].windows));
+  return out;
+}
+
 void print_json(const std::string& file, const Plan& plan, const PlanInfo& info) {
   const Site& s = plan.site;
   const auto xyz = [](const Vec3& v) {
@@ -155,6 +190,7 @@ void print_json(const std::string& file, const Plan& plan, const PlanInfo& info)
                      plan.lights.size(), plan.cameras.size());
   out += fmt::format("  \"total_wall_length\": {},\n  \"max_wall_height\": {},\n",
                      json_number(info.total_wall_length), json_number(info.max_wall_height));
+  out += json_rooms(info.rooms);
   out += "  \"bounds\": ";
   out += info.bounds ? fmt::format("{{\"min\": {}, \"max\": {}}}", xyz(info.bounds->min),
                                    xyz(info.bounds->max))
@@ -187,6 +223,7 @@ void print_text(const std::string& file, const Plan& plan, const PlanInfo& info)
   } else {
     out += "  bounds    none (no walls)\n";
   }
+  out += text_rooms(info.rooms);
   std::fputs(out.c_str(), stdout);
 }
 
@@ -210,13 +247,13 @@ void add_info_command(CLI::App& root, Commands& commands) {
       "info",
       "Describe a plan: the site (cells, size in metres, max height), how many walls, openings\n"
       "(doors and windows), lights and cameras it has, the total length of its walls (along\n"
-      "their centre lines), the tallest wall, and the bounds of the walls (their footprints,\n"
-      "mitred corners included, from base to top). Problems found while reading are printed to stderr;\n"
-      "warnings (such as unknown fields) do not stop it. It does not validate the geometry.");
+      "their centre lines), the tallest wall, the bounds of the walls (their footprints,\n"
+      "mitred corners included, from base to top), and its rooms (closed regions of the walls'\n"
+      "centre lines) with their clear floor areas inside the walls. Problems found while\n"
+      "reading are printed to stderr; warnings (such as unknown fields) do not stop it. It does\n"
+      "not validate the geometry (see `roomcad validate`).");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
-  app->add_option("--format", options->format, "output format: text (default) or json")
-      ->check(CLI::IsMember({"text", "json"}))
-      ->capture_default_str();
+  add_format_option(*app, options->format);
   app->footer(
       "Exit status: 0 described; 1 PLAN has errors (printed to stderr); 2 could not run (bad\n"
       "arguments, PLAN unreadable).\n"

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   Commands commands;
   add_info_command(app, commands);
   add_fmt_command(app, commands);
+  add_validate_command(app, commands);
   add_surface_command(app, commands);
   add_draw_command(app, commands);
   add_import_command(app, commands);
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   add_rm_command(app, commands);
   add_transform_commands(app, commands);
   add_set_command(app, commands);
+  add_render_command(app, commands);
 
   try {
     app.parse(argc, argv);

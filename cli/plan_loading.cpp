@@ -9,6 +9,7 @@
 #include "io/plan_json.h"
 #include "io/text_file.h"
 #include "validation/report_format.h"
+#include "validation/validate.h"
 
 namespace roomcad::cli {
 
@@ -37,6 +38,25 @@ LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path
   }
   loaded.plan = std::move(read.plan);
   loaded.report = std::move(read.report);
+  return loaded;
+}
+
+LoadedPlan load_valid_plan(std::string_view command, const std::filesystem::path& path,
+                           bool force) {
+  LoadedPlan loaded = load_plan(command, path);
+  if (!loaded.plan) return loaded;
+  ValidateOptions options;
+  options.unknown_field_warnings = false;  // the reader has reported them, with positions
+  const Report checks = validate(*loaded.plan, options);
+  std::fputs(format_report_text(checks, use_colour(stderr)).c_str(), stderr);
+  loaded.report.append(checks);
+  if (checks.ok()) return loaded;
+  std::fprintf(stderr, "%s: %s%s\n", path.string().c_str(), format_report_summary(loaded.report).c_str(),
+               force ? " (going on: --force)" : "; fix them, or pass --force to go on anyway");
+  if (!force) {
+    loaded.plan.reset();
+    loaded.exit_status = kPlanErrors;
+  }
   return loaded;
 }
 

@@ -25,6 +25,14 @@ struct LoadedPlan {
 /// a file that is read but is not a valid plan gives kPlanErrors.
 [[nodiscard]] LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path);
 
+/// Reads and validates the plan for a command that needs a sound plan (build, render): the
+/// gate. Prints reading and validation problems to stderr as text, and a summary line when
+/// there are errors. With errors the plan is withheld (exit_status kPlanErrors) unless
+/// `force`, when it is returned anyway and the command goes on at its own risk.
+/// @return the plan and the combined report; `plan` empty means stop with `exit_status`.
+[[nodiscard]] LoadedPlan load_valid_plan(std::string_view command, const std::filesystem::path& path,
+                                         bool force);
+
 /// @return true when `stream` (stdout or stderr) is a terminal and NO_COLOR is not set.
 [[nodiscard]] bool use_colour(std::FILE* stream);
 

@@ -2,12 +2,15 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <streambuf>
 #include <string>
 #include <vector>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -63,15 +66,49 @@ mode_t mode_for(const std::string& target) {
   return 0666 & ~mask;
 }
 
+/// The folder a target lives in.
+std::filesystem::path folder_of(const std::filesystem::path& target) {
+  return target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+}
+
+/// The start of the names of the target's temporary files: `.<name>.tmp-`; the writer's
+/// process id, a dash and six random characters follow.
+std::string temporary_prefix(const std::filesystem::path& target) {
+  std::string prefix = target.filename().string();
+  prefix.insert(prefix.begin(), '.');  // appends, not operator+: GCC 12 warns falsely there
+  prefix.append(".tmp-");
+  return prefix;
+}
+
+/// Removes the temporary files of `target` left by writers that were killed midway (a
+/// destructor cannot run after SIGKILL or a power cut): those whose process no longer exists.
+/// A live writer's file is never touched, so concurrent saves stay safe. Best effort: errors
+/// are ignored. O(entries of the folder).
+void remove_stale_temporaries(const std::filesystem::path& target) {
+  const std::string prefix = temporary_prefix(target);
+  std::error_code error;
+  for (auto it = std::filesystem::directory_iterator(folder_of(target), error);
+       !error && it != std::filesystem::directory_iterator(); it.increment(error)) {
+    const std::string leaf = it->path().filename().string();
+    if (!leaf.starts_with(prefix)) continue;
+    const std::string rest = leaf.substr(prefix.size());  // "<pid>-XXXXXX"
+    const std::size_t dash = rest.find('-');
+    if (dash == std::string::npos || dash == 0 || rest.size() - dash != 7 ||
+        rest.find_first_not_of("0123456789") != dash)
+      continue;
+    const long pid = std::strtol(rest.c_str(), nullptr, 10);
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+      std::filesystem::remove(it->path(), error);
+  }
+}
+
 /// A temporary file beside the target, removed unless committed.
 class TemporaryFile {
  public:
   explicit TemporaryFile(const std::filesystem::path& target) {
-    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
-    std::string leaf = target.filename().string();
-    leaf.insert(leaf.begin(), '.');
-    leaf.append(".tmp-XXXXXX");
-    name_ = (dir / leaf).string();
+    std::string leaf = temporary_prefix(target);
+    leaf.append(std::to_string(::getpid())).append("-XXXXXX");
+    name_ = (folder_of(target) / leaf).string();
     fd_ = ::mkstemp(name_.data());
     if (fd_ < 0) error_ = errno;
     created_ = fd_ >= 0;
@@ -109,8 +146,7 @@ class TemporaryFile {
 };
 
 void sync_directory(const std::filesystem::path& target) {
-  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+  const int fd = ::open(folder_of(target).c_str(), O_RDONLY | O_DIRECTORY);
   if (fd < 0) return;
   ::fsync(fd);  // best effort: the data itself is already on disk
   ::close(fd);
@@ -128,6 +164,7 @@ Status write_file_atomically(const std::filesystem::path& path,
   if (path.empty() || !path.has_filename()) return fail(path, "not a file name", 0);
   const std::string target = path.string();
   const mode_t mode = mode_for(target);
+  remove_stale_temporaries(path);
   TemporaryFile temp(path);
   if (!temp.created()) return fail(path, "cannot create a temporary file beside it", temp.error());
 

@@ -53,13 +53,20 @@ bool encode_png(const RgbImage& image, std::string& out, std::string& error) {
 }
 
 /// Decodes PNG bytes with libpng's simplified API, converting any format to 8-bit RGB.
-Result<RgbImage> decode_png(const std::string& bytes, const std::string& file) {
+Result<RgbImage> decode_png(std::string_view bytes, std::string_view file) {
   png_image header;
   std::memset(&header, 0, sizeof header);
   header.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&header, bytes.data(), bytes.size())) {
     return Result<RgbImage>::failure(
         fmt::format("read_png: '{}' is not a PNG file: {}", file, header.message));
+  }
+  if (header.width > kMaxPngSide || header.height > kMaxPngSide ||
+      static_cast<long long>(header.width) * header.height > kMaxPngPixels) {
+    png_image_free(&header);
+    return Result<RgbImage>::failure(fmt::format(
+        "read_png: '{}' is {} x {} pixels; at most {} per side and {} in all are read", file,
+        header.width, header.height, kMaxPngSide, kMaxPngPixels));
   }
   header.format = PNG_FORMAT_RGB;  // drops alpha, expands grey and palettes
   RgbImage image(static_cast<int>(header.width), static_cast<int>(header.height));
@@ -96,6 +103,10 @@ Result<RgbImage> read_png(const std::filesystem::path& path) {
   }
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   return decode_png(bytes, path.string());
+}
+
+Result<RgbImage> read_png_bytes(std::string_view bytes, std::string_view file) {
+  return decode_png(bytes, file);
 }
 
 Status write_pfm(const FloatImage& image, const std::filesystem::path& path) {

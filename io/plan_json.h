@@ -27,7 +27,8 @@ struct PlanReadResult {
 /// Parses a plan from JSON text. `file` names the source in diagnostics.
 [[nodiscard]] PlanReadResult read_plan_text(std::string_view text, std::string_view file);
 
-/// Reads a plan file. An unreadable file is a parse_error naming it.
+/// Reads a plan file. An unreadable file, or one larger than kMaxTextFileBytes (io/text_file.h),
+/// is a parse_error naming it.
 [[nodiscard]] PlanReadResult read_plan_file(const std::filesystem::path& path);
 
 /// @return the canonical JSON text of a plan (ends with a newline).

@@ -13,6 +13,7 @@
 #include "io/detail/sh3d_home.h"
 #include "io/detail/sh3d_openings.h"
 #include "io/detail/sh3d_walls.h"
+#include "io/text_file.h"
 
 namespace roomcad {
 namespace {
@@ -123,6 +124,14 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   std::erase_if(home.items, [&](const sh3d::ItemRecord& i) { return !on_level(i.level); });
   if (home.walls.empty())
     return Result<Sh3dImport>::failure(fmt::format("{}: no <wall> to import", file));
+  // Matching is O(walls x (items + levels)): bounded, so that no file can make it hang.
+  const double pairs = static_cast<double>(home.walls.size()) *
+                       static_cast<double>(home.items.size() + home.levels.size());
+  if (pairs > kMaxImportPairs)
+    return Result<Sh3dImport>::failure(fmt::format(
+        "{}: {} <wall> and {} <doorOrWindow> and <level> elements; at most {:.0f} pairs of them "
+        "are matched (a home of a thousand walls and a thousand items has a million)",
+        file, home.walls.size(), home.items.size() + home.levels.size(), kMaxImportPairs));
 
   Sh3dImport out;
   out.source_walls = home.walls.size();
@@ -138,6 +147,13 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
   out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
   const Box box = bounds_of(out.plan.walls);
+  // The site's cell counts are integers: a home spread over more cells than any plan could
+  // use (coordinates like 1e115 cm) is refused rather than overflowing them.
+  const double span = std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+  if (!((span + 2 * options.site_margin) / options.cell_size <= kMaxSiteCellsPerSide))
+    return Result<Sh3dImport>::failure(fmt::format(
+        "{}: the walls span {:g} m, more than {:g} cells of {:g} m; check the home's coordinates",
+        file, span, kMaxSiteCellsPerSide, options.cell_size));
   out.plan.site = make_site(box, options);
   out.plan.lights = {default_light()};
   out.plan.cameras = make_cameras(home, box, out.z_shift);
@@ -146,6 +162,12 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
 
 Result<Sh3dImport> import_sweethome3d_file(const std::filesystem::path& path,
                                            const Sh3dImportOptions& options) {
+  std::error_code error;
+  if (const std::uintmax_t size = std::filesystem::file_size(path, error);
+      !error && size > kMaxTextFileBytes)
+    return Result<Sh3dImport>::failure(
+        fmt::format("{}: it is {} bytes; files of at most {} bytes (256 MiB) are read",
+                    path.string(), size, kMaxTextFileBytes));
   std::ifstream in(path, std::ios::binary);
   if (!in)
     return Result<Sh3dImport>::failure(fmt::format("{}: cannot open the file", path.string()));

@@ -50,10 +50,17 @@ struct Sh3dImport {
   double z_shift = 0.0;          ///< metres added to every Sweet Home 3D elevation
 };
 
+/// Most (wall, door-or-window or level) pairs an import matches: the work is proportional.
+inline constexpr double kMaxImportPairs = 1e9;
+/// Most site cells along a side of an imported home (a billion metres at the default size).
+inline constexpr double kMaxSiteCellsPerSide = 1e9;
+
 /// Imports the text of a `Home.xml`. `file` names the source in messages.
 /// @return the plan and its warnings, or an error naming the file, element, attribute and
 ///   value (malformed XML, a missing or non-numeric attribute, an unknown `--level` name, a
-///   home with no walls to import). The plan is not validated. O(walls x items).
+///   home with no walls to import, more than kMaxImportPairs pairs of walls and items or
+///   levels, walls spread over more than kMaxSiteCellsPerSide cells). The plan is not
+///   validated. O(walls x items).
 [[nodiscard]] Result<Sh3dImport> import_sweethome3d_text(std::string_view xml,
                                                          std::string_view file,
                                                          const Sh3dImportOptions& options = {});

@@ -18,6 +18,9 @@ Result<std::string> read_text_file(const std::filesystem::path& path) {
   if (::stat(name.c_str(), &info) != 0) return failure(std::strerror(errno));
   if (S_ISDIR(info.st_mode)) return failure("it is a directory, not a file");
   if (!S_ISREG(info.st_mode)) return failure("it is not a regular file");
+  if (static_cast<std::uintmax_t>(info.st_size) > kMaxTextFileBytes)
+    return failure("it is " + std::to_string(info.st_size) + " bytes; files of at most " +
+                   std::to_string(kMaxTextFileBytes) + " bytes (256 MiB) are read");
 
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"), std::fclose);
   if (!file) return failure(std::strerror(errno));

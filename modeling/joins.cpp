@@ -8,6 +8,10 @@
 // chain of three or more ends (or a third centre line through the corner) unites all of
 // them, and a mitre pairs exactly two ends, both ways. This is the spec's "exactly two walls
 // and touched by no third centre line", made symmetric.
+//
+// Heights. The spec's junctions are drawn in plan; walls whose height ranges share no length
+// (a storey standing on the one below) never meet, so they are not joined and do not count
+// as touching ends either: a ground-floor corner stays mitred under the walls above it.
 #include "modeling/joins.h"
 
 #include <algorithm>
@@ -114,6 +118,7 @@ Joins find_joins(const Plan& plan) {
   for (const auto& [a, b] : find_meeting_boxes(centre_line_boxes(plan, tol))) {
     const Wall& wa = plan.walls[a];
     const Wall& wb = plan.walls[b];
+    if (!detail::share_heights(wa, wb)) continue;  // one above the other: they cannot meet
     const PairContact contact = touch_ends(plan, a, b, tol, ends);
     if (contact.joined || detail::segments_meet(wa.from, wa.to, wb.from, wb.to))
       joins.pairs.push_back(

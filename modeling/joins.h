@@ -43,7 +43,10 @@ struct Joins {
   [[nodiscard]] const Join* find(std::size_t a, std::size_t b) const;
 };
 
-/// Finds every join of the plan's walls.
+/// Finds every join of the plan's walls. Distances are compared with the tolerance exactly.
+/// End clusters (ends within tolerance of each other, but not all of them pairwise) are
+/// decided per end: a mitre needs two ends that see only each other, both ways; any chain
+/// of three or more unites (see joins.cpp).
 /// @param[in] plan  walls with finite coordinates; zero-length walls join nothing.
 /// @return the joins; cost O(n log n + k) for n walls and k joined pairs (broad phase on boxes).
 [[nodiscard]] Joins find_joins(const Plan& plan);
@@ -52,8 +55,11 @@ struct Joins {
 /// from-end on the wall's right (the side of -normal, normal = left of from->to), i.e.
 /// {from-right, to-right, to-left, from-left}. An unmitred end is square to the wall; a
 /// mitred end lies on the mitre line through the crossings of the two walls' side lines
-/// (the bisector for equal thicknesses; square when the two walls are collinear).
-/// Corners are the exact points rounded to the nearest double.
+/// (the bisector for equal thicknesses; square when the two walls are collinear, i.e. when
+/// the cross product of their directions evaluated in doubles is 0).
+/// Corners are the exact points rounded to the nearest double, so a corner shared by the two
+/// walls of a mitre comes out bit-identical for both. Cost O(log n); O(1) when the corners
+/// are exact in interval arithmetic (axis-aligned walls), else an exact CORE construction.
 /// @pre the wall has positive length and thickness.
 [[nodiscard]] std::array<Point2, 4> wall_footprint(const Plan& plan, const Joins& joins,
                                                    std::size_t wall);

@@ -8,6 +8,7 @@
 
 #include "modeling/build_model.h"
 #include "modeling/detail/plan_objects.h"
+#include "modeling/nearest_name.h"
 #include "modeling/plan_edit.h"
 #include "modeling/value_text.h"
 
@@ -82,31 +83,12 @@ std::string_view expected(Projection*) { return "perspective or orthographic"; }
 std::string_view expected(std::array<std::int64_t, 2>*) { return "two integers nx,ny"; }
 std::string_view expected(std::string*) { return "a non-empty id"; }
 
-/// Levenshtein distance, for "did you mean". O(|a| |b|).
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 /// @return " (did you mean 'x'?)" for a near name, else " (fields: a, b, ...)".
 std::string suggestion(const std::vector<Field>& fields, std::string_view key) {
-  const auto nearest = std::min_element(fields.begin(), fields.end(), [&](const Field& a, const Field& b) {
-    return edit_distance(key, a.name) < edit_distance(key, b.name);
-  });
-  if (nearest != fields.end() && edit_distance(key, nearest->name) <= 2)
-    return fmt::format(" (did you mean '{}'?)", nearest->name);
   std::vector<std::string_view> names;
   for (const Field& f : fields) names.push_back(f.name);
+  if (const auto nearest = nearest_name(key, names))
+    return fmt::format(" (did you mean '{}'?)", *nearest);
   return fmt::format(" (fields: {})", fmt::join(names, ", "));
 }
 

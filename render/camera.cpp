@@ -109,30 +109,75 @@ CameraMatrices make_camera_matrices(const Camera& camera, const Bounds& scene, d
   return m;
 }
 
+namespace {
+
+/// The view basis of a preset and the perspective half-angle tangents (with a 5% margin).
+struct Framing {
+  glm::dvec3 forward, right, up;
+  double tan_h, tan_v;
+};
+
+/// The smallest distance from `center` (backwards along the view) at which every corner of
+/// `scene` is inside the perspective frustum.
+double fitting_distance(const Bounds& scene, const Framing& f, const glm::dvec3& center) {
+  double distance = kPerspectiveNear;
+  for (const glm::dvec3& c : corners_of(scene)) {
+    const glm::dvec3 q = c - center;
+    const double x = std::abs(glm::dot(q, f.right)), y = std::abs(glm::dot(q, f.up));
+    const double z = glm::dot(q, f.forward);
+    distance = std::max({distance, x / f.tan_h - z, y / f.tan_v - z, kPerspectiveNear - z});
+  }
+  return distance;
+}
+
+/// Moves the looked-at point so that the box's perspective image is centred in the picture
+/// (a box seen from above and aside projects lopsided around its centre's image). A few
+/// fixed-point steps; each measures the image's extent and shifts by half its imbalance.
+glm::dvec3 centred_target(const Bounds& scene, const Framing& f, glm::dvec3 center) {
+  for (int step = 0; step < 4; ++step) {
+    const double distance = fitting_distance(scene, f, center);
+    const glm::dvec3 eye = center - f.forward * distance;
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (const glm::dvec3& c : corners_of(scene)) {
+      const glm::dvec3 q = c - eye;
+      const double z = glm::dot(q, f.forward);
+      const glm::dvec2 ndc(glm::dot(q, f.right) / (z * f.tan_h), glm::dot(q, f.up) / (z * f.tan_v));
+      lo = glm::min(lo, ndc);
+      hi = glm::max(hi, ndc);
+    }
+    const glm::dvec2 offset = (lo + hi) / 2.0;
+    center += f.right * (offset.x * distance * f.tan_h) + f.up * (offset.y * distance * f.tan_v);
+  }
+  return center;
+}
+
+}  // namespace
+
 Camera frame_view(const Bounds& scene, ViewPreset preset, Projection projection,
                   double fov_deg, double aspect) {
   const Direction dir = preset_direction(preset);
-  const glm::dvec3 right = glm::normalize(glm::cross(dir.forward, dir.up));
-  const glm::dvec3 up = glm::cross(right, dir.forward);
-  const glm::dvec3 center = (scene.min + scene.max) / 2.0;
-  const double radius = glm::length(scene.max - scene.min) / 2.0;
-  const double tan_v = std::tan(glm::radians(fov_deg) / 2.0) / 1.05;  // 5% margin
-  const double tan_h = tan_v * aspect;
-  double half_w = 0.0, half_h = 0.0, distance = kPerspectiveNear;
+  Framing f;
+  f.forward = dir.forward;
+  f.right = glm::normalize(glm::cross(dir.forward, dir.up));
+  f.up = glm::cross(f.right, dir.forward);
+  f.tan_v = std::tan(glm::radians(fov_deg) / 2.0) / 1.05;
+  f.tan_h = f.tan_v * aspect;
+  glm::dvec3 center = (scene.min + scene.max) / 2.0;
+  double half_w = 0.0, half_h = 0.0;
   for (const glm::dvec3& c : corners_of(scene)) {
-    const glm::dvec3 q = c - center;
-    const double x = std::abs(glm::dot(q, right)), y = std::abs(glm::dot(q, up));
-    const double z = glm::dot(q, dir.forward);
-    half_w = std::max(half_w, x);
-    half_h = std::max(half_h, y);
-    distance = std::max({distance, x / tan_h - z, y / tan_v - z, kPerspectiveNear - z});
+    half_w = std::max(half_w, std::abs(glm::dot(c - center, f.right)));
+    half_h = std::max(half_h, std::abs(glm::dot(c - center, f.up)));
+  }
+  double distance = glm::length(scene.max - scene.min) / 2.0 + 1.0;  // orthographic: outside
+  if (projection == Projection::perspective) {
+    center = centred_target(scene, f, center);
+    distance = fitting_distance(scene, f, center);
   }
   Camera cam;
   cam.id = "view";
   cam.projection = projection;
   cam.fov_deg = fov_deg;
   cam.view_height = std::max(2.0 * std::max(half_h, half_w / aspect) * 1.05, 1e-3);
-  if (projection == Projection::orthographic) distance = radius + 1.0;
   cam.target = to_vec3(center);
   cam.eye = to_vec3(center - dir.forward * distance);
   cam.up = to_vec3(dir.up);

@@ -144,21 +144,22 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
   }
 }
 
-glm::vec3 source_barycentrics(const ScreenTriangle& t, float px, float py) {
-  const double x = static_cast<double>(px) * kSubpixelScale;
-  const double y = static_cast<double>(py) * kSubpixelScale;
-  double l[3];
-  for (int k = 0; k < 3; ++k) {
+BarycentricPlanes barycentric_planes(const ScreenTriangle& t) {
+  BarycentricPlanes p;
+  for (int k = 0; k < 3; ++k) {  // edge function k over pixels, divided by corner k's w
     const int a = (k + 1) % 3, b = (k + 2) % 3;
-    l[k] = ((static_cast<double>(t.x[b]) - t.x[a]) * (y - t.y[a]) -
-            (static_cast<double>(t.y[b]) - t.y[a]) * (x - t.x[a])) * t.inv_w[k];
+    const double dx = static_cast<double>(t.x[b]) - t.x[a], dy = static_cast<double>(t.y[b]) - t.y[a];
+    const glm::dvec3 e = glm::dvec3(-dy * kSubpixelScale, dx * kSubpixelScale,
+                                    dy * t.x[a] - dx * t.y[a]) * static_cast<double>(t.inv_w[k]);
+    p.denominator += e;
+    p.weight1 += e * static_cast<double>(t.source[k].x);
+    p.weight2 += e * static_cast<double>(t.source[k].y);
   }
-  const double sum = l[0] + l[1] + l[2];
-  const glm::dvec3 b = glm::dvec3(l[0], l[1], l[2]) / sum;  // weights of the screen corners
-  // Map to the scene triangle: each screen corner has known weights in it.
-  glm::dvec2 s(0.0);
-  for (int k = 0; k < 3; ++k) s += b[k] * glm::dvec2(t.source[k]);
-  return {static_cast<float>(1.0 - s.x - s.y), static_cast<float>(s.x), static_cast<float>(s.y)};
+  return p;
+}
+
+glm::vec3 source_barycentrics(const ScreenTriangle& t, float px, float py) {
+  return barycentric_planes(t).at(px, py);
 }
 
 }  // namespace roomcad

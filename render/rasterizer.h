@@ -62,8 +62,27 @@ struct RasterTarget {
 /// the first triangle drawn stays). O(pixels of the triangle's box within the target).
 void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target);
 
+/// The perspective-correct weights of a screen triangle's scene triangle as planes over the
+/// screen: each sample then costs six multiply-adds and a division. Double precision.
+struct BarycentricPlanes {
+  glm::dvec3 denominator{0.0};  ///< (per pixel across, per pixel down, at the origin)
+  glm::dvec3 weight1{0.0};      ///< numerator of the weight of scene corner 1
+  glm::dvec3 weight2{0.0};      ///< and of corner 2 (corner 0 takes the rest)
+
+  /// @return the scene triangle's weights at (px, py) pixels, summing to 1. O(1).
+  [[nodiscard]] glm::vec3 at(float px, float py) const {
+    const double d = denominator.x * px + denominator.y * py + denominator.z;
+    const double w1 = (weight1.x * px + weight1.y * py + weight1.z) / d;
+    const double w2 = (weight2.x * px + weight2.y * py + weight2.z) / d;
+    return {static_cast<float>(1.0 - w1 - w2), static_cast<float>(w1), static_cast<float>(w2)};
+  }
+};
+
+/// @return the planes of a set-up triangle (edge functions over 1 / w). O(1).
+[[nodiscard]] BarycentricPlanes barycentric_planes(const ScreenTriangle& t);
+
 /// Perspective-correct barycentric weights of the scene triangle's three corners at a point
-/// of the screen triangle.
+/// of the screen triangle: barycentric_planes(t).at(px, py).
 /// @param[in] px, py  position in pixels (a pixel centre is x + 0.5)
 /// @return weights summing to 1 (outside the triangle some are negative). O(1).
 [[nodiscard]] glm::vec3 source_barycentrics(const ScreenTriangle& t, float px, float py);

@@ -21,6 +21,18 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+/// Reversed-Z depth -> metres along the view direction, from the inverse projection:
+/// distance = -(a * depth + b) / (c * depth + d); 0 stays 0 (nothing there).
+struct DepthToDistance {
+  double a = 0.0, b = 0.0, c = 0.0, d = 1.0;
+  explicit DepthToDistance(const glm::dmat4& inverse_projection = glm::dmat4(1.0))
+      : a(inverse_projection[2][2]), b(inverse_projection[3][2]), c(inverse_projection[2][3]),
+        d(inverse_projection[3][3]) {}
+  [[nodiscard]] float operator()(float depth) const {
+    return depth <= 0.f ? 0.f : static_cast<float>(-(a * depth + b) / (c * depth + d));
+  }
+};
+
 /// Everything the tile tasks read (the frame's `uniform_` state).
 struct FrameContext {
   const Scene* scene = nullptr;
@@ -29,7 +41,7 @@ struct FrameContext {
   ShadowFilter filter = ShadowFilter::off;
   ShadingUniforms uniforms;
   glm::vec3 background{1.f};
-  glm::dmat4 inverse_projection{1.0};
+  DepthToDistance depth_to_distance;
   int ssaa = 1;
 };
 
@@ -53,7 +65,10 @@ glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }
 struct TriangleVarying {
   std::uint32_t id = kNoTriangle;
   const ScreenTriangle* screen = nullptr;
-  SurfacePoint point;  ///< corners, normal as stored, plain colour
+  SurfacePoint point;  ///< corners, normal facing the viewer; per sample: the rest
+  glm::vec3 color{0.f};  ///< the face's plain colour
+  BarycentricPlanes weights;
+  std::array<ShadowReceiver, kMaxLights> receivers{};
   bool is_floor = false;
 };
 
@@ -63,31 +78,32 @@ void load_triangle(const FrameContext& f, std::uint32_t id, TriangleVarying& v) 
   v.screen = &f.bins.at(id);
   const std::size_t tri = v.screen->triangle;
   for (int c = 0; c < 3; ++c) v.point.corners[c] = scene.corners[3 * tri + c];
-  v.point.normal = scene.normals[tri];
-  v.point.color = to_unit_rgb(scene.colors[tri]);
+  // n . (eye - p) is the same at every point p of the triangle's plane, so one test per
+  // triangle turns the back of a two-sided face towards the viewer.
+  const glm::vec3 normal = scene.normals[tri];
+  const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward
+                                                   : f.uniforms.eye - v.point.corners[0];
+  v.point.normal = glm::dot(normal, to_eye) < 0.f ? -normal : normal;
+  v.color = to_unit_rgb(scene.colors[tri]);
+  v.weights = barycentric_planes(*v.screen);
   v.is_floor = scene.kinds[tri] == FaceKind::floor;
+  for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
+    v.receivers[k] = shadow_receiver(f.shadow_maps[k], v.point.normal);
+  }
 }
 
-/// The shaded colour of the sample at (px, py) showing the triangle `v`.
-glm::vec3 shade_sample(const FrameContext& f, const TriangleVarying& v, float px, float py) {
-  SurfacePoint s = v.point;
-  s.weights = source_barycentrics(*v.screen, px, py);
+/// The shaded colour of the sample at (px, py) showing the triangle `v` (whose per-sample
+/// fields it fills in place).
+glm::vec3 shade_sample(const FrameContext& f, TriangleVarying& v, float px, float py) {
+  SurfacePoint& s = v.point;
+  s.weights = v.weights.at(px, py);
   s.world = s.weights[0] * s.corners[0] + s.weights[1] * s.corners[1] +
             s.weights[2] * s.corners[2];
-  const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward : f.uniforms.eye - s.world;
-  if (glm::dot(s.normal, to_eye) < 0.f) s.normal = -s.normal;  // the back of a two-sided face
-  if (v.is_floor) s.color = apply_grid(f.uniforms.grid, s.world, s.color);
-  for (int k = 0; k < f.uniforms.light_count && k < static_cast<int>(f.shadow_maps.size()); ++k) {
-    s.shadow[k] = shadow_amount(f.shadow_maps[k], s.world, s.normal, f.filter);
+  s.color = v.is_floor ? apply_grid(f.uniforms.grid, s.world, v.color) : v.color;
+  for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
+    s.shadow[k] = shadow_amount(f.shadow_maps[k], v.receivers[k], s.world, f.filter);
   }
   return shade_point(f.uniforms, s);
-}
-
-/// Metres along the view direction of a reversed-Z depth value (0: nothing there).
-float view_distance(const glm::dmat4& inverse_projection, float depth) {
-  if (depth <= 0.f) return 0.f;
-  const glm::dvec4 v = inverse_projection * glm::dvec4(0.0, 0.0, depth, 1.0);
-  return static_cast<float>(-v.z / v.w);
 }
 
 /// Writes the output pixels of one tile: colour averaged over its k x k samples; depth and
@@ -96,6 +112,8 @@ void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vecto
                   FrameBuffers& out) {
   const int k = f.ssaa, w = t.x1 - t.x0;
   const int centre = (k - 1) / 2;
+  std::uint32_t last_id = kNoTriangle;
+  std::int32_t last_object = -1;
   for (int oy = t.y0 / k; oy < t.y1 / k; ++oy) {
     for (int ox = t.x0 / k; ox < t.x1 / k; ++ox) {
       glm::vec3 sum(0.f);
@@ -107,10 +125,12 @@ void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vecto
       for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(c[ch] * 255.f + 0.5f);
       const std::size_t s = static_cast<std::size_t>(oy * k + centre - t.y0) * w +
                             (ox * k + centre - t.x0);
-      out.depth.at(ox, oy) = view_distance(f.inverse_projection, t.depth[s]);
-      const std::uint32_t id = t.ids[s];
-      out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox] =
-          id == kNoTriangle ? -1 : f.scene->objects[f.bins.at(id).triangle];
+      out.depth.at(ox, oy) = f.depth_to_distance(t.depth[s]);
+      if (t.ids[s] != last_id) {  // neighbours mostly show the same triangle
+        last_id = t.ids[s];
+        last_object = last_id == kNoTriangle ? -1 : f.scene->objects[f.bins.at(last_id).triangle];
+      }
+      out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox] = last_object;
     }
   }
 }
@@ -165,7 +185,7 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   const auto raster_start = Clock::now();
   const CameraMatrices cam = frame_camera(scene, options);
   f.uniforms = make_uniforms(options, cam, lights);
-  f.inverse_projection = glm::inverse(cam.projection);
+  f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
   f.bins = detail::run_geometry_pass(
       scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
                                   .width = options.width * options.ssaa,
@@ -182,16 +202,30 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
 }  // namespace
 
 std::string check_render_options(const RenderOptions& o) {
-  if (o.width < 1 || o.width > 16384 || o.height < 1 || o.height > 16384) {
-    return fmt::format("width x height is {} x {}; each must be 1 to 16384", o.width, o.height);
+  if (o.width < 1 || o.width > kMaxImageSide || o.height < 1 || o.height > kMaxImageSide) {
+    return fmt::format("width x height is {} x {}; each must be 1 to {}", o.width, o.height,
+                       kMaxImageSide);
+  }
+  const long long pixels = static_cast<long long>(o.width) * o.height;
+  if (pixels > kMaxImagePixels) {
+    return fmt::format("width x height is {} x {} = {} pixels; at most {} are rendered", o.width,
+                       o.height, pixels, kMaxImagePixels);
   }
   if (o.ssaa != 1 && o.ssaa != 2 && o.ssaa != 4) {
     return fmt::format("ssaa is {}; it must be 1, 2 or 4", o.ssaa);
   }
-  if (o.shadow_resolution < 1 || o.shadow_resolution > 16384) {
-    return fmt::format("shadow resolution is {}; it must be 1 to 16384", o.shadow_resolution);
+  if (pixels * o.ssaa * o.ssaa > kMaxImageSamples) {
+    return fmt::format("width x height x ssaa^2 is {} x {} x {} = {} samples; at most {}",
+                       o.width, o.height, o.ssaa * o.ssaa, pixels * o.ssaa * o.ssaa,
+                       kMaxImageSamples);
   }
-  if (o.threads < 0) return fmt::format("threads is {}; it must be 0 (all) or more", o.threads);
+  if (o.shadow_resolution < 1 || o.shadow_resolution > kMaxShadowResolution) {
+    return fmt::format("shadow resolution is {}; it must be 1 to {}", o.shadow_resolution,
+                       kMaxShadowResolution);
+  }
+  if (o.threads < 0 || o.threads > kMaxThreads) {
+    return fmt::format("threads is {}; it must be 0 (all cores) to {}", o.threads, kMaxThreads);
+  }
   const double fov = o.camera ? o.camera->fov_deg : o.view_fov_deg;
   if (!(fov > 0.0 && fov < 180.0)) {
     return fmt::format("field of view is {} degrees; it must be between 0 and 180", fov);

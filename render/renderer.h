@@ -44,9 +44,19 @@ struct FrameBuffers {
   ObjectIdImage objects;  ///< what each pixel shows
 };
 
+/// Limits of check_render_options, so that no options can exhaust memory or run for days:
+/// the frame buffers take 11 bytes a pixel (704 MiB at kMaxImagePixels), the colour pass's
+/// time grows with the samples, and each of up to kMaxLights shadow maps takes 4 bytes a texel
+/// (256 MiB at kMaxShadowResolution).
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr long long kMaxImagePixels = 1LL << 26;   // 64 Mpixel: 8192 x 8192
+inline constexpr long long kMaxImageSamples = 1LL << 28;  // 8192 x 8192 at ssaa 2
+inline constexpr int kMaxShadowResolution = 8192;
+inline constexpr int kMaxThreads = 256;
+
 /// Everything a frame depends on besides the model. Designated initialisers welcome.
 struct RenderOptions {
-  int width = 1280;   ///< output pixels, 1 .. 16384
+  int width = 1280;   ///< output pixels, 1 .. kMaxImageSide, width * height <= kMaxImagePixels
   int height = 720;
   std::optional<Camera> camera{};        ///< nullopt: frame the scene from `view`
   ViewPreset view = ViewPreset::iso;     ///< without a camera: frame_view() of the scene's
@@ -54,8 +64,8 @@ struct RenderOptions {
   double view_fov_deg = 50.0;            ///< and field of view (the default camera)
   ShadingMode shading = ShadingMode::phong;
   ShadowFilter shadows = ShadowFilter::pcf;
-  int shadow_resolution = 2048;          ///< texels per side of each light's map, >= 1
-  int ssaa = 1;                          ///< samples per pixel side: 1, 2 or 4
+  int shadow_resolution = 1024;          ///< texels per side of each light's map, 1 .. 8192
+  int ssaa = 1;                          ///< samples per pixel side: 1, 2 or 4 (see kMaxImageSamples)
   Color background{0xff, 0xff, 0xff};
   std::vector<Light> lights{};           ///< empty: default_light(); at most kMaxLights used
   GridLines grid{};                      ///< tile lines on floor faces

@@ -58,7 +58,7 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
                                   .width = resolution,
                                   .height = resolution,
                                   .tile_size = 64,
-                                  .cull_back_faces = false});
+                                  .cull_back_faces = true});
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
     target.depth = &map.depth.at(target.x0, target.y0);
@@ -86,20 +86,27 @@ ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resoluti
   return map;
 }
 
-float shadow_amount(const ShadowMap& map, const glm::vec3& world, const glm::vec3& normal,
-                    ShadowFilter filter) {
-  if (filter == ShadowFilter::off || map.texel_x == 0.f) return 0.f;
+ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal) {
+  ShadowReceiver r;
   const glm::vec3 n = map.light_rotation * normal;  // light view: +z towards the light
-  if (n.z <= 0.f) return 1.f;
+  r.faces_light = n.z > 0.f;
+  if (!r.faces_light || map.texel_x == 0.f) return r;
   const float cos_t = std::max(n.z, 0.1f);          // caps tan(angle) at about 10
   const float tan_t = std::sqrt(1.f - cos_t * cos_t) / cos_t;
+  r.grad_u = -n.x * map.texel_x / (cos_t * map.depth_range);
+  r.grad_v = n.y * map.texel_y / (cos_t * map.depth_range);
+  r.bias = map.texel_size() * (0.05f + 0.1f * tan_t) / map.depth_range;
+  return r;
+}
+
+float shadow_amount(const ShadowMap& map, const ShadowReceiver& receiver, const glm::vec3& world,
+                    ShadowFilter filter) {
+  if (filter == ShadowFilter::off || map.texel_x == 0.f) return 0.f;
+  if (!receiver.faces_light) return 1.f;
   const glm::vec4 p = map.light_view_projection * glm::vec4(world, 1.f);
   const int size = map.depth.width;
   const float u = (p.x + 1.f) * 0.5f * size, v = (1.f - p.y) * 0.5f * size;
-  // Receiver plane: depth change per texel step across (u) and down (v) the map.
-  const float grad_u = -n.x * map.texel_x / (cos_t * map.depth_range);
-  const float grad_v = n.y * map.texel_y / (cos_t * map.depth_range);
-  const float bias = map.texel_size() * (0.05f + 0.1f * tan_t) / map.depth_range;
+  const float grad_u = receiver.grad_u, grad_v = receiver.grad_v, bias = receiver.bias;
   const int iu = static_cast<int>(std::floor(u)), iv = static_cast<int>(std::floor(v));
   // The receiver's biased depth at the centre of texel (iu, iv); neighbours add the gradient.
   const float base = p.z + grad_u * (iu + 0.5f - u) + grad_v * (iv + 0.5f - v) + bias;

@@ -27,23 +27,37 @@ struct ShadowMap {
   [[nodiscard]] float texel_size() const { return texel_x > texel_y ? texel_x : texel_y; }
 };
 
-/// Renders the shadow map of one light. All triangles cast shadows (no culling).
+/// Renders the shadow map of one light. Only faces turned towards the light are drawn (the
+/// backs of closed solids lie behind their fronts; two-sided fixtures are always drawn), so
+/// the map holds the first surface the light meets.
 /// @param[in] light       direction must be non-zero (else straight down is used)
 /// @param[in] resolution  texels per side, >= 1
 /// @return the map; for an empty scene, a map where nothing is shadowed. O(triangles + texels),
 ///         parallel over tiles, identical at any thread count.
 [[nodiscard]] ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resolution);
 
-/// How much of the light a point does not get.
-/// @param[in] world   the point, metres
-/// @param[in] normal  its surface's unit normal (faces the viewer), sets the slope-scaled bias
-/// Each texel is compared with the receiver's plane extended to the texel's centre (so PCF's
-/// neighbours do not shadow their own surface) plus a slope-scaled bias of a tenth of a texel
-/// times tan(angle to the light), plus a twentieth of a texel.
+/// What the lookup needs of a surface, the same at all its points (a plane): whether it faces
+/// the light, the receiver plane's depth change per texel across (u) and down (v) the map,
+/// and the depth bias: a twentieth of a texel plus a slope-scaled tenth of a texel times
+/// tan(angle to the light).
+struct ShadowReceiver {
+  bool faces_light = false;
+  float grad_u = 0.f;
+  float grad_v = 0.f;
+  float bias = 0.f;
+};
+
+/// @param[in] normal  the surface's unit normal (facing the viewer). O(1).
+[[nodiscard]] ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal);
+
+/// How much of the light a point of a surface does not get. Each texel is compared with the
+/// receiver's plane extended to the texel's centre (so PCF's neighbours do not shadow their own
+/// surface) plus the receiver's bias.
+/// @param[in] world  the point, metres
 /// @return 0 lit ... 1 shadowed: hard is 0 or 1, pcf the share of the 3 x 3 texels around the
 ///         point that shadow it. Points outside the map are lit; surfaces facing away from the
 ///         light are shadowed. O(1).
-[[nodiscard]] float shadow_amount(const ShadowMap& map, const glm::vec3& world,
-                                  const glm::vec3& normal, ShadowFilter filter);
+[[nodiscard]] float shadow_amount(const ShadowMap& map, const ShadowReceiver& receiver,
+                                  const glm::vec3& world, ShadowFilter filter);
 
 }  // namespace roomcad

@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
-# The main job on a bundled example: set up, build, validate the plan, describe it, and build
-# its 3D model (written to build/<plan>.obj with its .mtl, the wall solid checked).
+# The main job on a bundled example: set up, build roomcad, then validate the plan, describe
+# it, build and check its 3D model (build/demo.obj), render a picture (build/demo.png) and draw
+# its floor plan (build/demo-plan.svg).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 plan=${1:-examples/house.json}
 bash scripts/build.sh
-./build/roomcad info "$plan"
-./build/roomcad build "$plan" -o "build/$(basename "$plan" .json).obj" --check --stats
+roomcad=./build/roomcad
+"$roomcad" validate "$plan"
+"$roomcad" info "$plan"
+"$roomcad" build "$plan" -o build/demo.obj --check
+"$roomcad" render "$plan" -o build/demo.png --width 1280 --height 720 --ssaa 2
+"$roomcad" draw "$plan" --view plan --scale 1:100 -o build/demo-plan.svg
+echo "demo: wrote build/demo.obj (+ .mtl), build/demo.png and build/demo-plan.svg"

@@ -9,11 +9,13 @@
 // reported (no false warnings).
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <set>
+#include <string_view>
+#include <unordered_map>
 
 #include "modeling/joins.h"
 #include "validation/detail/arrangement.h"
+#include "validation/detail/centre_lines.h"
+#include "validation/detail/checks.h"
 #include "validation/validate.h"
 
 namespace roomcad {
@@ -53,47 +55,31 @@ double polygon_area(const std::vector<Point2>& pts) {
   return twice / 2;
 }
 
-bool is_drawable(const Wall& w) {
-  return std::isfinite(w.from.x) && std::isfinite(w.from.y) && std::isfinite(w.to.x) &&
-         std::isfinite(w.to.y) && w.from != w.to && std::isfinite(w.thickness) && w.thickness > 0;
-}
+/// Opening indices by host wall index (the first wall with the id, as validation reads it).
+using OpeningsByWall = std::vector<std::vector<std::size_t>>;
 
-/// Centre lines of the drawable walls (`walls` maps a segment back to its wall), with mitred
-/// ends snapped to the lower-indexed wall's end point.
-struct CentreLines {
-  std::vector<std::pair<Point2, Point2>> segments;
-  std::vector<std::size_t> walls;  ///< segment index -> wall index
-};
-
-CentreLines snapped_centre_lines(const Plan& plan) {
-  const Joins joins = find_joins(plan);
-  CentreLines out;
-  for (std::size_t w = 0; w < plan.walls.size(); ++w) {
-    if (!is_drawable(plan.walls[w])) continue;
-    Point2 ends[2] = {plan.walls[w].from, plan.walls[w].to};
-    for (int e = 0; e < 2; ++e) {
-      const auto partner = joins.mitre[w][e];
-      if (!partner || *partner > w) continue;
-      const Wall& v = plan.walls[*partner];
-      ends[e] = joins.mitre[*partner][0] == w ? v.from : v.to;
-    }
-    out.segments.emplace_back(ends[0], ends[1]);
-    out.walls.push_back(w);
-  }
+OpeningsByWall openings_by_wall(const Plan& plan) {
+  std::unordered_map<std::string_view, std::size_t> wall_index;
+  wall_index.reserve(plan.walls.size());
+  for (std::size_t w = plan.walls.size(); w-- > 0;) wall_index[plan.walls[w].id] = w;
+  OpeningsByWall out(plan.walls.size());
+  for (std::size_t i = 0; i < plan.openings.size(); ++i)
+    if (const auto it = wall_index.find(plan.openings[i].wall); it != wall_index.end())
+      out[it->second].push_back(i);
   return out;
 }
 
 /// Openings whose span along their wall overlaps the face edge's piece of that wall.
-void collect_openings(const Plan& plan, const std::multimap<std::string_view, std::size_t>& by_wall,
-                      const detail::FaceEdge& e, Room& room) {
+void collect_openings(const Plan& plan, const OpeningsByWall& by_wall, const detail::FaceEdge& e,
+                      Room& room) {
   const Wall& w = plan.walls[e.wall];
   const Point2 d{w.to.x - w.from.x, w.to.y - w.from.y};
   const double len = std::hypot(d.x, d.y);
   const auto along = [&](Point2 p) { return ((p.x - w.from.x) * d.x + (p.y - w.from.y) * d.y) / len; };
   const double lo = std::min(along(e.source), along(e.target));
   const double hi = std::max(along(e.source), along(e.target));
-  for (auto [it, end] = by_wall.equal_range(w.id); it != end; ++it) {
-    const Opening& o = plan.openings[it->second];
+  for (const std::size_t i : by_wall[e.wall]) {
+    const Opening& o = plan.openings[i];
     if (std::max(lo, o.offset) >= std::min(hi, o.offset + o.width)) continue;
     (o.type == OpeningType::door ? room.doors : room.windows).push_back(o.id);
   }
@@ -104,8 +90,7 @@ void sort_unique(std::vector<std::string>& ids) {
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
 }
 
-Room room_of(const Plan& plan, const std::multimap<std::string_view, std::size_t>& by_wall,
-             const detail::Face& face) {
+Room room_of(const Plan& plan, const OpeningsByWall& by_wall, const detail::Face& face) {
   Room room;
   const std::size_t n = face.boundary.size();
   std::vector<Line> lines;
@@ -125,13 +110,16 @@ Room room_of(const Plan& plan, const std::multimap<std::string_view, std::size_t
 
 }  // namespace
 
-std::vector<Room> find_rooms(const Plan& plan) {
-  std::multimap<std::string_view, std::size_t> by_wall;
-  for (std::size_t i = 0; i < plan.openings.size(); ++i) by_wall.emplace(plan.openings[i].wall, i);
-  const CentreLines lines = snapped_centre_lines(plan);
+std::vector<Room> find_rooms(const Plan& plan) { return detail::find_rooms(plan, find_joins(plan)); }
+
+namespace detail {
+
+std::vector<Room> find_rooms(const Plan& plan, const Joins& joins) {
+  const OpeningsByWall by_wall = openings_by_wall(plan);
+  const CentreLines lines = build_centre_lines(plan, joins);
   std::vector<Room> rooms;
-  for (detail::Face& face : detail::find_bounded_faces(lines.segments)) {
-    for (detail::FaceEdge& e : face.boundary) e.wall = lines.walls[e.wall];
+  for (Face& face : find_bounded_faces(lines.segments, lines.interior_disjoint)) {
+    for (FaceEdge& e : face.boundary) e.wall = lines.walls[e.wall];
     rooms.push_back(room_of(plan, by_wall, face));
   }
   // Number rooms from the south-west: by the lowest, then leftmost, corner of the outline.
@@ -146,4 +134,5 @@ std::vector<Room> find_rooms(const Plan& plan) {
   return rooms;
 }
 
+}  // namespace detail
 }  // namespace roomcad

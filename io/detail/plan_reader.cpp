@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/detail/json_text.h"
+#include "modeling/nearest_name.h"
 
 namespace roomcad::io_detail {
 namespace {
@@ -25,22 +26,6 @@ constexpr EnumName<Swing> kSwings[] = {{"in", Swing::in}, {"out", Swing::out}};
 constexpr EnumName<LightType> kLightTypes[] = {{"directional", LightType::directional}};
 constexpr EnumName<Projection> kProjections[] = {{"perspective", Projection::perspective},
                                                  {"orthographic", Projection::orthographic}};
-
-/// Levenshtein distance, for "did you mean" on unknown fields.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 /// How a found value is shown in a message.
 std::string describe(const Json& v) {
@@ -67,7 +52,7 @@ class PlanReader {
  public:
   PlanReader(const PositionedJson& doc, std::string_view text, std::string_view file,
              Report& report)
-      : doc_(doc), text_(text), file_(file), report_(report) {}
+      : doc_(doc), text_(text), file_(file), report_(report), cursor_(text) {}
 
   Plan read() {
     Plan plan;
@@ -113,7 +98,7 @@ class PlanReader {
     const auto& offsets = at_key ? doc_.key_offsets : doc_.value_offsets;
     const auto found = offsets.find(pointer);
     const std::size_t offset = found == offsets.end() ? 0 : found->second;
-    const LineColumn at = line_column_at(text_, offset);
+    const LineColumn at = cursor_.at(offset);
     Diagnostic d;
     d.severity = severity;
     d.code = std::move(code);
@@ -143,18 +128,9 @@ class PlanReader {
                std::initializer_list<std::string_view> known) {
     std::string what = "unknown field \"" + key + "\"; its value is kept as is";
     std::string fix = "remove the field if it is a mistake";
-    std::string_view best;
-    std::size_t best_distance = 3;
-    for (std::string_view k : known) {
-      const std::size_t d = edit_distance(key, k);
-      if (d < best_distance) {
-        best = k;
-        best_distance = d;
-      }
-    }
-    if (!best.empty()) {
-      what += " (did you mean \"" + std::string(best) + "\"?)";
-      fix = "rename it to \"" + std::string(best) + "\"";
+    if (const auto best = nearest_name(key, {known.begin(), known.size()})) {
+      what += " (did you mean \"" + std::string(*best) + "\"?)";
+      fix = "rename it to \"" + std::string(*best) + "\"";
     }
     report(Severity::warning, "unknown_field", p, true, what, std::move(fix));
     extra.push_back(ExtraField{key, canonical_text(v)});
@@ -193,6 +169,11 @@ class PlanReader {
   void read_array(const Json& v, const std::string& p, std::vector<T>& out,
                   T (PlanReader::*read_one)(const Json&, const std::string&)) {
     if (!v.is_array()) return wrong_type(p, "an array", v);
+    if (v.size() > kMaxPlanObjects)
+      return invalid(p, std::to_string(v.size()) + " objects; a plan may hold at most " +
+                            std::to_string(kMaxPlanObjects) +
+                            " of each kind (walls, openings, lights, cameras)",
+                     "split the plan into several files");
     out.reserve(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) {
       const std::string ip = pointer_child(p, i);
@@ -399,6 +380,7 @@ class PlanReader {
   std::string_view text_;
   std::string_view file_;
   Report& report_;
+  LineColumnCursor cursor_;  ///< diagnostics come in file order, mostly
   double scale_ = 1.0;                ///< divisor from the file's units to metres
   std::vector<std::string> objects_;  ///< id of the object being read, for diagnostics
 };

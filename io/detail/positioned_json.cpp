@@ -1,5 +1,7 @@
 #include "io/detail/positioned_json.h"
 
+#include <algorithm>
+
 #include <iterator>
 #include <vector>
 
@@ -200,10 +202,11 @@ PositionedJson parse_positioned_json(std::string_view text) {
   return out;
 }
 
-LineColumn line_column_at(std::string_view text, std::size_t offset) {
-  if (offset > text.size()) offset = text.size();
-  LineColumn at;
-  for (std::size_t i = 0; i < offset; ++i) {
+namespace {
+
+/// Advances `at` over bytes [from, to) of `text`.
+void advance(std::string_view text, std::size_t from, std::size_t to, LineColumn& at) {
+  for (std::size_t i = from; i < to; ++i) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c == '\n') {
       ++at.line;
@@ -212,7 +215,25 @@ LineColumn line_column_at(std::string_view text, std::size_t offset) {
       ++at.column;
     }
   }
+}
+
+}  // namespace
+
+LineColumn line_column_at(std::string_view text, std::size_t offset) {
+  LineColumn at;
+  advance(text, 0, std::min(offset, text.size()), at);
   return at;
+}
+
+LineColumn LineColumnCursor::at(std::size_t offset) {
+  offset = std::min(offset, text_.size());
+  if (offset < offset_) {
+    offset_ = 0;
+    at_ = LineColumn{};
+  }
+  advance(text_, offset_, offset, at_);
+  offset_ = offset;
+  return at_;
 }
 
 std::string pointer_child(const std::string& parent, std::string_view token) {

@@ -48,6 +48,22 @@ struct LineColumn {
 /// @return the line and column of byte `offset` of `text` (clamped to the text's end). O(offset).
 [[nodiscard]] LineColumn line_column_at(std::string_view text, std::size_t offset);
 
+/// Line and column of many offsets of one text, scanning on from the previous answer: O(n) in
+/// all for offsets in increasing order (a reader reporting in file order), where calling
+/// line_column_at for each of k problems would be O(n k), a hang for a big file full of them.
+class LineColumnCursor {
+ public:
+  explicit LineColumnCursor(std::string_view text) : text_(text) {}
+  /// @return line_column_at(text, offset). O(distance from the previous offset) going forward,
+  ///   O(offset) going back.
+  [[nodiscard]] LineColumn at(std::size_t offset);
+
+ private:
+  std::string_view text_;
+  std::size_t offset_ = 0;  ///< where `at_` is
+  LineColumn at_;
+};
+
 /// @return `parent` extended by one reference token, escaped as RFC 6901 requires (~0, ~1).
 [[nodiscard]] std::string pointer_child(const std::string& parent, std::string_view token);
 /// @return `parent` extended by an array index.

@@ -47,6 +47,10 @@ Result<std::string> read_home_xml_entry(const std::filesystem::path& path) {
     return Result<std::string>::failure(
         fmt::format("{}: cannot read its Home.xml entry: {}", file,
                     zip_error_strerror(zip_get_error(archive.get()))));
+  if (stat.size > kMaxHomeXmlBytes)
+    return Result<std::string>::failure(
+        fmt::format("{}: its Home.xml entry is {} bytes; at most {} (256 MiB) are read", file,
+                    stat.size, kMaxHomeXmlBytes));
   std::string text(stat.size, '\0');
   const zip_int64_t read = zip_fread(entry.get(), text.data(), stat.size);
   if (read < 0 || static_cast<zip_uint64_t>(read) != stat.size)

@@ -1,4 +1,5 @@
 #include "io/detail/sh3d_arcs.h"
+#include "io/detail/sh3d_walls.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,10 @@ double distance(Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 /// Cuts (as fractions of the sweep) splitting (from, to] into equal chords of at most `step`.
 void add_even_cuts(double from, double to, double step, std::vector<double>& cuts) {
-  const int n = std::clamp(static_cast<int>(std::ceil((to - from) / step)), 1, kMaxChords);
+  // Clamped as a double: a zero step (tolerance below the radius's rounding) gives infinity,
+  // which no int can hold.
+  const double wanted = std::ceil((to - from) / step);
+  const int n = wanted < kMaxChords ? std::max(1, static_cast<int>(wanted)) : kMaxChords;
   for (int k = 1; k <= n; ++k) cuts.push_back(from + (to - from) * k / n);
 }
 
@@ -83,8 +87,10 @@ std::vector<Point2> split_arc(Point2 a, Point2 b, double extent, double toleranc
   for (const double t : cuts) {
     if (t >= 1 - kMinGap) break;
     const double angle = arc.start_angle + arc.sweep * t;
-    points.push_back({arc.centre.x + arc.radius * std::cos(angle),
-                      arc.centre.y + arc.radius * std::sin(angle)});
+    // On the dyadic grid like every other imported length: trigonometry leaves noise such as
+    // 6e-16 m where a point should be 0, which exact geometry would then have to resolve.
+    points.push_back({on_dyadic_grid(arc.centre.x + arc.radius * std::cos(angle)),
+                      on_dyadic_grid(arc.centre.y + arc.radius * std::sin(angle))});
   }
   points.push_back(b);
   return points;

@@ -49,8 +49,15 @@ class AttributeReader {
     return number(name, fallback) * kCm;
   }
 
+  double coordinate(const char* name) {
+    const double metres = length(name);
+    return std::abs(metres) < 1e-9 ? 0.0 : metres;
+  }
+
   /// A point of the plan: x right and y down in centimetres, to x east and y north in metres.
-  Point2 point(const char* x, const char* y) { return {length(x), -length(y)}; }
+  /// Sweet Home 3D leaves float noise such as 6.1e-14 cm where it means 0: magnitudes under a
+  /// nanometre are read as 0 (and the flip of y = 0 gives 0, not -0).
+  Point2 point(const char* x, const char* y) { return {coordinate(x), 0.0 - coordinate(y)}; }
 
  private:
   void fail(const char* name, std::string_view what, std::string_view value) {

@@ -1,7 +1,6 @@
 #include "modeling/detail/cgal_booleans.h"
 
 #include <array>
-#include <map>
 #include <vector>
 
 #include <CGAL/Nef_polyhedron_3.h>
@@ -13,6 +12,7 @@
 #include "modeling/build_model.h"
 #include "modeling/detail/classify_face.h"
 #include "modeling/detail/exact_wall.h"
+#include "modeling/detail/snap_soup.h"
 
 namespace roomcad::detail {
 namespace {
@@ -55,39 +55,24 @@ std::string wall_list(std::span<const WallFrame* const> walls) {
   return walls.size() > 6 ? ids + ", ..." : ids;
 }
 
-// The result's points rounded to doubles, merged where they round to the same point, and its
-// polygons over them (a polygon left with fewer than three corners is dropped).
-struct RoundedSoup {
-  std::vector<OpenMesh::Vec3d> points;
-  std::vector<std::vector<std::size_t>> polygons;
-};
-
-RoundedSoup round_soup(const std::vector<EK::Point_3>& exact, const std::vector<std::vector<std::size_t>>& polygons) {
-  RoundedSoup out;
-  std::map<std::array<double, 3>, std::size_t> index;
-  std::vector<std::size_t> id(exact.size());
-  for (std::size_t i = 0; i < exact.size(); ++i) {
-    const std::array<double, 3> p{round_to_nearest(exact[i].x()) + 0.0, round_to_nearest(exact[i].y()) + 0.0,
-                                  round_to_nearest(exact[i].z()) + 0.0};
-    const auto [it, added] = index.try_emplace(p, out.points.size());
-    if (added) out.points.emplace_back(p[0], p[1], p[2]);
-    id[i] = it->second;
-  }
-  for (const auto& polygon : polygons) {
-    std::vector<std::size_t> ids;
-    for (std::size_t i : polygon)
-      if (ids.empty() || ids.back() != id[i]) ids.push_back(id[i]);
-    while (ids.size() > 1 && ids.back() == ids.front()) ids.pop_back();
-    if (ids.size() >= 3) out.polygons.push_back(std::move(ids));
-  }
-  return out;
+// The result's points rounded to doubles, snapped where they round to within a few ulps of
+// each other (snap_soup), and its polygons over them.
+IndexedSoup round_soup(const std::vector<EK::Point_3>& exact, std::vector<std::vector<std::size_t>> polygons) {
+  IndexedSoup out;
+  out.points.reserve(exact.size());
+  for (const EK::Point_3& p : exact)
+    out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
+                            round_to_nearest(p.z()) + 0.0);
+  out.polygons = std::move(polygons);
+  const double tolerance = snap_tolerance(out.points);
+  return snap_soup(std::move(out), tolerance);
 }
 
 FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int first_opening_object) {
   std::vector<EK::Point_3> exact;
   std::vector<std::vector<std::size_t>> polygons;
   CGAL::convert_nef_polyhedron_to_polygon_soup(solid, exact, polygons, false);
-  const RoundedSoup r = round_soup(exact, polygons);
+  const IndexedSoup r = round_soup(exact, std::move(polygons));
   std::pair<std::size_t, std::size_t> bad;
   const auto copies = split_fans(r.polygons, r.points.size(), bad);
   if (copies.empty() && !r.polygons.empty())

@@ -54,6 +54,14 @@ NT cross(const Pt<NT>& a, const Pt<NT>& b) {
   return a.x * b.y - a.y * b.x;
 }
 
+/// Turns off CORE's own floating-point filter, once: it only runs after our interval filter
+/// has failed (so it would fail too), and on a divisor whose double value is 0 it writes a
+/// warning to a file "Core_Diagnostics" in the working directory.
+inline void prepare_exact() {
+  static const bool prepared = (CORE::setFpFilterFlag(false), true);
+  (void)prepared;
+}
+
 /// Evaluates `predicate(NT{})` exactly: in intervals first, in CORE::Expr if they cannot decide.
 /// @param predicate  generic callable taking a number-type tag and returning a truth value
 ///                   (bool, or CGAL::Uncertain<bool> for intervals).
@@ -68,6 +76,7 @@ bool decide(Predicate&& predicate) {
       // The intervals straddle the decision: fall through to exact arithmetic.
     }
   }
+  prepare_exact();
   return static_cast<bool>(predicate(Exact{}));
 }
 
@@ -105,7 +114,8 @@ Pt<NT> side_point(const WallLine<NT>& w, WallEnd end, int side) {
 /// The corner of wall `w` at `end` on `side` (+1 left, -1 right), mitred per `joins`.
 /// A mitred corner is where this side line crosses the matching side line of the partner:
 /// walking into the joint along one wall and out along the other, left meets left and right
-/// meets right. Parallel partners (a straight continuation) give a square end.
+/// meets right. Parallel partners (a straight continuation) give a square end; see below
+/// for what counts as parallel.
 template <class NT>
 Pt<NT> wall_corner(const Plan& plan, const Joins& joins, std::size_t w, WallEnd end, int side) {
   const WallLine<NT> mine = wall_line<NT>(plan.walls[w]);
@@ -120,9 +130,18 @@ Pt<NT> wall_corner(const Plan& plan, const Joins& joins, std::size_t w, WallEnd 
   const Pt<NT> q = side_point(other, other_end, other_side);
   const Pt<NT> d1 = mine.to - mine.from;
   const Pt<NT> d2 = other.to - other.from;
-  const NT denom = cross(d1, d2);
-  if (denom == NT(0)) return p;
-  return p + (cross(q - p, d2) / denom) * d1;
+  // Parallel partners (a straight continuation) end square. "Parallel" is decided on the
+  // cross product of the two directions evaluated in doubles: when it rounds to 0 the walls
+  // are within an ulp of collinear, the true mitre lies within ~1e-16 of the thickness of
+  // the square end, and constructing it would divide by a number whose double value is 0
+  // (CORE then writes warnings to a file in the working directory). Every number type
+  // takes the same branch, so the footprint is one well-defined shape.
+  const Wall& a = plan.walls[w];
+  const Wall& b = plan.walls[*partner];
+  const double rounded_cross = (a.to.x - a.from.x) * (b.to.y - b.from.y) -
+                               (a.to.y - a.from.y) * (b.to.x - b.from.x);
+  if (rounded_cross == 0.0) return p;
+  return p + (cross(q - p, d2) / cross(d1, d2)) * d1;
 }
 
 /// All four corners {from-right, to-right, to-left, from-left} (counter-clockwise).

@@ -2,6 +2,8 @@
 
 #include <bit>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -49,6 +51,32 @@ struct Corners {
     return c;
   }
 };
+
+using ObjectNamer = std::function<std::string(SolidMesh::FaceHandle)>;
+
+// Why OpenMesh would refuse to add a face with these corners (a repeated corner makes it
+// abort on an assertion, "complex edge"/"complex vertex" only print), checked before add_face
+// so that a bad soup is an error naming the walls, not a crash; nullopt when the face can be
+// added. A corner with a free gap has exactly one, so OpenMesh never needs another to relink
+// a fan there. O(n^2 + sum of corner valences) for n corners.
+std::optional<std::string> find_add_face_problem(const SolidMesh& mesh,
+                                                 std::span<const SolidMesh::VertexHandle> face,
+                                                 const ObjectNamer& name_face) {
+  const std::size_t n = face.size();
+  if (n < 3) return fmt::format("it has {} corners, fewer than 3", n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (face[i] == face[j]) return "it repeats a corner";
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!mesh.is_boundary(face[i])) return "a corner is closed all round (complex vertex)";
+    const SolidMesh::HalfedgeHandle side = mesh.find_halfedge(face[i], face[(i + 1) % n]);
+    if (side.is_valid() && !mesh.is_boundary(side))
+      return fmt::format("an edge shared by more than two faces: a face of '{}' is already "
+                         "on that side (complex edge)",
+                         name_face(mesh.face_handle(side)));
+  }
+  return std::nullopt;
+}
 
 }  // namespace
 
@@ -109,6 +137,9 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
   std::unordered_map<PointKey, SolidMesh::VertexHandle, PointKeyHash> vertices;
   vertices.reserve(corners / 3 + 1);
   std::vector<SolidMesh::VertexHandle> face;
+  const ObjectNamer name_face = [&](SolidMesh::FaceHandle fh) {
+    return object_name(objects, mesh.property(props.object, fh));
+  };
   for (const FaceSoup& soup : soups) {
     if (!share) vertices.clear();
     for (const SoupFace& f : soup) {
@@ -119,13 +150,16 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
         if (added) it->second = mesh.add_vertex(p);
         face.push_back(it->second);
       }
-      const SolidMesh::FaceHandle fh = mesh.add_face(face);
-      if (!fh.is_valid())
+      std::optional<std::string> problem = find_add_face_problem(mesh, face, name_face);
+      const SolidMesh::FaceHandle fh = problem ? SolidMesh::FaceHandle() : mesh.add_face(face);
+      if (!fh.is_valid()) {
+        const OpenMesh::Vec3d at = f.points.empty() ? OpenMesh::Vec3d(0, 0, 0) : f.points[0];
         throw PreconditionError(fmt::format(
             "build_model: a {} face of '{}' with {} corners near ({}, {}, {}) would make the "
-            "mesh non-manifold (an edge shared by more than two faces)",
-            to_string(f.kind), object_name(objects, f.object), f.points.size(), f.points[0][0],
-            f.points[0][1], f.points[0][2]));
+            "mesh non-manifold: {}",
+            to_string(f.kind), object_name(objects, f.object), f.points.size(), at[0], at[1],
+            at[2], problem.value_or("OpenMesh refused it")));
+      }
       mesh.property(props.object, fh) = f.object;
       mesh.property(props.kind, fh) = f.kind;
       mesh.property(props.color, fh) = f.color;

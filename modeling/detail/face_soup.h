@@ -32,8 +32,10 @@ using FaceSoup = std::vector<SoupFace>;
 /// @param[in] share    whether soups share vertices with each other (false: each soup is a
 ///                     separate piece, e.g. fixtures that may touch).
 /// @return the mesh with rc: face properties and face normals. O(n) expected in points.
-/// @throws PreconditionError naming the object if a face cannot join the mesh (it would make
-///         an edge shared by more than two faces, or repeat a vertex).
+/// @throws PreconditionError naming the object, the place and the reason if a face cannot
+///         join the mesh: it repeats a corner, one of its edges already has a face on that
+///         side (naming that face's object), or a corner has no free gap (complex vertex).
+///         Checked before OpenMesh's add_face, which would assert on some of these.
 [[nodiscard]] SolidMesh assemble_mesh(std::span<const FaceSoup> soups,
                                       const std::vector<std::string>& objects, bool share = true);
 

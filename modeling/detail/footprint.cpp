@@ -50,6 +50,7 @@ std::optional<std::array<Point2, 4>> find_exact_corners_fast(const Plan& plan, c
 
 std::array<Point2, 4> wall_footprint(const Plan& plan, const Joins& joins, std::size_t wall) {
   if (const auto fast = find_exact_corners_fast(plan, joins, wall)) return *fast;
+  exact::prepare_exact();
   const std::array<exact::Pt<exact::Exact>, 4> corners =
       exact::wall_corners<exact::Exact>(plan, joins, wall);
   std::array<Point2, 4> out;

@@ -45,6 +45,13 @@ bool is_near_segment(Point2 p, Point2 a, Point2 b, double tol) {
   });
 }
 
+bool share_heights(const Wall& a, const Wall& b) {
+  return exact::decide([&](auto tag) -> bool {
+    using NT = decltype(tag);
+    return NT(a.base) < NT(b.base) + NT(b.height) && NT(b.base) < NT(a.base) + NT(a.height);
+  });
+}
+
 bool is_near_point(Point2 p, Point2 q, double tol) {
   return exact::decide([&](auto tag) {
     using NT = decltype(tag);

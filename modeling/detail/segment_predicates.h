@@ -21,6 +21,10 @@ namespace roomcad::detail {
 ///         Exact. O(1). @pre a != b, c != d.
 [[nodiscard]] bool overlap_collinearly(Point2 a, Point2 b, Point2 c, Point2 d);
 
+/// @return true if the walls' height ranges (base, base + height) share a length: exactly,
+///         for the sums as real numbers. Walls stacked on one another (storeys) do not. O(1).
+[[nodiscard]] bool share_heights(const Wall& a, const Wall& b);
+
 /// @return true if a-b and c-d are parallel (exactly: cross(b - a, d - c) == 0). O(1).
 [[nodiscard]] bool are_parallel(Point2 a, Point2 b, Point2 c, Point2 d);
 

@@ -35,16 +35,7 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   f.base = w.base;
   f.top = w.base + w.height;
   f.capless = {joins.mitre[index][0].has_value(), joins.mitre[index][1].has_value()};
-  // Mitred corners must be the very doubles the partner gets, so they come from
-  // wall_footprint; square ends are simply offset here (wall_footprint's exact constructions
-  // cost far more, and the few-ulp difference is consistent within the model).
-  if (f.capless[0] || f.capless[1]) {
-    f.footprint = wall_footprint(plan, joins, index);
-  } else {
-    const double nx = f.normal.x * f.half, ny = f.normal.y * f.half;
-    f.footprint = {Point2{w.from.x - nx, w.from.y - ny}, Point2{w.to.x - nx, w.to.y - ny},
-                   Point2{w.to.x + nx, w.to.y + ny}, Point2{w.from.x + nx, w.from.y + ny}};
-  }
+  f.footprint = wall_footprint(plan, joins, index);
   f.color = w.color;
   return f;
 }

@@ -14,14 +14,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_roomcad;
 
-std::vector<fs::path> examples() {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::directory_iterator(test::source_dir() / "examples"))
-    if (e.path().extension() == ".json") out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 TEST(Cli, HelpOnEveryCommand) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"--help"}, {"info", "--help"}, {"fmt", "--help"}, {"-h"}}) {
@@ -46,7 +38,7 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 TEST(Cli, InfoDescribesEveryExample) {
-  const auto list = examples();
+  const auto list = test::example_plans();
   ASSERT_GE(list.size(), 4u);
   for (const fs::path& plan : list) {
     const auto r = run_roomcad({"info", plan.string()});
@@ -134,7 +126,7 @@ TEST(Cli, InfoExitStatuses) {
 
 TEST(Cli, FmtIsIdempotentOnEveryExample) {
   test::TempDir dir;
-  for (const fs::path& plan : examples()) {
+  for (const fs::path& plan : test::example_plans()) {
     SCOPED_TRACE(plan.string());
     const std::string original = test::read_bytes(plan);
     const fs::path copy = dir / plan.filename().string();

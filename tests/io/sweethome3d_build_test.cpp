@@ -14,15 +14,16 @@ namespace {
 
 using namespace sh3d_test;
 
-// The homes whose model builds today: all but two. 3-BedroomHouseWithMezzanine stops in
-// build_model ("a wall_end face of 'wall32' ... would make the mesh non-manifold", at a T that
-// meets the joint of two nearly collinear walls) and 4-BedroomHouse aborts inside OpenMesh's
-// add_face (walls stacked on a T junction): modeling issues, reported with four-wall repros,
-// to be added here when fixed.
+// The homes whose model builds today: all but one. 3-BedroomHouseWithMezzanine stops in
+// build_model with a clear error ("a wall_face face of 'wall30' ... would make the mesh
+// non-manifold: a corner is closed all round"), at a T that meets the joint of two nearly
+// collinear walls: rounding the exact union leaves a groove one double step wide there
+// (reduced in tests/modeling/rounded_joints_test.cpp). To be added here when fixed.
 const char* const kBuildingHomes[] = {
     "eteks-example-homes/1-BedroomApartment",     "eteks-example-homes/2-BedroomApartment",
     "eteks-example-homes/2-BedroomHouseWithBasement", "eteks-example-homes/3-BedroomApartment",
-    "eteks-example-homes/3-BedroomHouseWithAttic", "eteks-example-homes/ApartmentWithBowWindow",
+    "eteks-example-homes/3-BedroomHouseWithAttic", "eteks-example-homes/4-BedroomHouse",
+    "eteks-example-homes/ApartmentWithBowWindow",
     "eteks-example-homes/Studio",                 "edge-cases/Sample"};
 
 TEST(Sh3dBuild, HomesBuildAClosedSolidOfTheAnalyticVolume) {

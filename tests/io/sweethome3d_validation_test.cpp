@@ -72,19 +72,31 @@ std::set<Problem> real_problems_of_house(const std::string& home) {
             {"opening_blocked",
              {item("eb07e089-7798-478a-922f-9309c8f437cf-2"), "wall14", "wall4"}},
             {"opening_blocked",
-             {item("eb07e089-7798-478a-922f-9309c8f437cf-2"), "wall2", "wall4"}}};
+             {item("eb07e089-7798-478a-922f-9309c8f437cf-2"), "wall2", "wall4"}},
+            // The basement's 4 cm walls wall17 and wall19 rise to 2.62 m, 12 cm above the first
+            // floor's base, into the mitred outer corners of the walls around them: wall1 and
+            // wall29 (ground) and wall5 and wall25 (first floor) at the west, wall0 and wall1,
+            // wall7 and wall27 at the east.
+            {"wall_overlap", {"wall1", "wall17"}}, {"wall_overlap", {"wall17", "wall29"}},
+            {"wall_overlap", {"wall17", "wall5"}}, {"wall_overlap", {"wall17", "wall25"}},
+            {"wall_overlap", {"wall0", "wall19"}}, {"wall_overlap", {"wall1", "wall19"}},
+            {"wall_overlap", {"wall19", "wall7"}}, {"wall_overlap", {"wall19", "wall27"}}};
   if (home == "3-BedroomHouseWithAttic")
     return {// Walls drawn 1 to 14 mm into a neighbour, where no T or corner join applies.
             {"wall_overlap", {"wall11", "wall30"}}, {"wall_overlap", {"wall16", "wall34"}},
             {"wall_overlap", {"wall16", "wall35"}}, {"wall_overlap", {"wall16", "wall53"}},
             {"wall_overlap", {"wall31", "wall45"}}, {"wall_overlap", {"wall35", "wall53"}},
-            {"wall_overlap", {"wall47", "wall54"}}};
+            {"wall_overlap", {"wall47", "wall54"}},
+            // The mitred corner of wall29 reaches 0.9 mm into the side of wall31.
+            {"wall_overlap", {"wall29", "wall31"}}};
   if (home == "3-BedroomHouseWithMezzanine")
     return {// wall27 pokes 1 cm into wall25 and wall59, off their centre lines.
             {"wall_overlap", {"wall25", "wall27"}},
             {"wall_overlap", {"wall27", "wall59"}},
             // wall63 leans by 2 mm over 5.6 m, so wall64's end is 1 micrometre inside it.
             {"wall_overlap", {"wall63", "wall64"}},
+            // The mitred corner of wall43 reaches 0.3 mm into the thin wall57.
+            {"wall_overlap", {"wall43", "wall57"}},
             // Two fixed windows of wall57 overlap by 16 cm.
             {"opening_overlap", {item("b808eea4-6043-418c-8965-14935f4412bf"),
                                  item("d7c1f1d3-d2ae-4a94-bdf8-7fccba0b117d")}}};
@@ -102,15 +114,6 @@ std::set<Problem> real_problems(const std::string& home) {
   return problems;
 }
 
-/// Walls of different storeys, one on top of the other, that validation reports because their
-/// centre lines coincide in plan (it does not look at heights there yet).
-bool is_stacked_pair(const Plan& plan, const Diagnostic& d) {
-  if (d.code != "wall_overlap" || d.objects.size() != 2) return false;
-  const Wall* a = find_wall(plan, d.objects[0]);
-  const Wall* b = find_wall(plan, d.objects[1]);
-  return a && b && (a->base + a->height <= b->base || b->base + b->height <= a->base);
-}
-
 TEST(Sh3dValidation, OnlyTheHomesOwnProblemsAreErrors) {
   for (const fs::path& home : all_homes()) {
     const std::string name = home.stem().stem().string();
@@ -118,7 +121,7 @@ TEST(Sh3dValidation, OnlyTheHomesOwnProblemsAreErrors) {
     const Plan plan = import_or_fail(home).plan;
     std::set<Problem> errors;
     for (const Diagnostic& d : validate(plan).items) {
-      if (d.severity != Severity::error || is_stacked_pair(plan, d)) continue;
+      if (d.severity != Severity::error) continue;
       Problem p{d.code, d.objects};
       std::ranges::sort(p.objects);
       errors.insert(p);

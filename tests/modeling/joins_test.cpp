@@ -42,6 +42,17 @@ TEST(Joins, LCornerIsMitredWithCornersOnTheBisector) {
   EXPECT_EQ(fb[3], (Point2{-0.1, -0.1}));  // b's left side is x = -0.1 (outer)
 }
 
+TEST(Joins, WallsOnTheStoreyAboveDoNotJoinOrBreakAMitre) {
+  Wall above = wall("c", {0, 0}, {0, 3});
+  above.base = 2.8;  // exactly on top of the ground floor's 2.8 m walls
+  const Plan p = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {0, 0}, {0, 3}), above});
+  const Joins j = find_joins(p);
+  ASSERT_EQ(j.pairs.size(), 1u);
+  EXPECT_EQ(j.pairs[0].kind, JoinKind::mitre) << "the wall above is not a third wall at the corner";
+  EXPECT_FALSE(j.are_joined(0, 2));
+  EXPECT_FALSE(j.are_joined(1, 2));
+}
+
 TEST(Joins, MitreOfDifferentThicknessesPassesThroughSideLineCrossings) {
   const Plan p = plan_of({wall("a", {0, 0}, {4, 0}, 0.2), wall("b", {0, 3}, {0, 0}, 0.4)});
   const Joins j = find_joins(p);

@@ -53,19 +53,28 @@ TEST(Render, OutputIsIdenticalAtAnyThreadCount) {
 
 TEST(Render, UnlitDrawsPlainColoursAndLitModesDiffer) {
   const Model m = make_room();
-  FrameBuffers unlit, flat, phong;
+  FrameBuffers unlit, flat, gouraud, phong;
   RenderOptions options = unlit_options(160, 120);
   render_model(m, options, unlit);
   std::set<std::array<int, 3>> colours;
   for (std::size_t i = 0; i < unlit.color.pixels.size(); i += 3) colours.insert(pixel(unlit.color, i));
   EXPECT_EQ(colours, kPlainColours);  // nothing else without shading, shadows or anti-aliasing
+  // Seen along the sun's mirror direction over the floor, Phong shows a highlight inside the
+  // floor's triangles that flat (per triangle) and Gouraud (per corner) shading do not.
+  const glm::dvec3 centre(4.0, 3.0, 0.0), mirror = glm::normalize(glm::dvec3(-0.4, 0.5, 1.0));
+  options.camera = test::look_from(centre + 6.0 * mirror, centre);
   options.shading = ShadingMode::flat;
   render_model(m, options, flat);
+  options.shading = ShadingMode::gouraud;
+  render_model(m, options, gouraud);
   options.shading = ShadingMode::phong;
   render_model(m, options, phong);
-  EXPECT_NE(flat.color.pixels, unlit.color.pixels);
-  EXPECT_NE(phong.color.pixels, flat.color.pixels);  // specular varies across a face
-  EXPECT_EQ(phong.objects.ids, unlit.objects.ids);   // shading never changes visibility
+  EXPECT_NE(phong.color.pixels, flat.color.pixels);
+  EXPECT_NE(phong.color.pixels, gouraud.color.pixels);
+  FrameBuffers unlit_same_view;
+  options.shading = ShadingMode::unlit;
+  render_model(m, options, unlit_same_view);
+  EXPECT_EQ(phong.objects.ids, unlit_same_view.objects.ids);  // shading never changes visibility
 }
 
 TEST(Render, SupersamplingBlendsEdgesOnly) {
@@ -87,17 +96,21 @@ TEST(Render, SupersamplingBlendsEdgesOnly) {
 TEST(Render, GridLinesDarkenTheFloorOnTileBoundaries) {
   const Model m = make_room();
   RenderOptions options = unlit_options(200, 150);
+  options.view = ViewPreset::top;
   FrameBuffers plain, grid;
   render_model(m, options, plain);
   options.grid = GridLines{.enabled = true, .origin = {0.0, 0.0}, .cell_size = 1.0, .cells = {8, 6}};
   render_model(m, options, grid);
-  int darkened = 0;
+  int darkened = 0, floor = 0;
   for (std::size_t i = 0; i < grid.color.pixels.size(); i += 3) {
     if (plain.objects.ids[i / 3] != 0) continue;
+    ++floor;
     darkened += grid.color.pixels[i] == 72;  // 120 * 0.6
   }
-  EXPECT_GT(darkened, 100);
-  EXPECT_LT(darkened, 200 * 150 / 4);
+  // Lines 3 cm wide every metre, both ways: about 6% of the floor's pixel centres.
+  EXPECT_GT(floor, 5000);
+  EXPECT_GT(darkened, floor * 3 / 100);
+  EXPECT_LT(darkened, floor * 12 / 100);
 }
 
 TEST(Render, ReusesCallerBuffersAndRejectsBadOptions) {

@@ -1,5 +1,6 @@
 #include "support/run_command.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -35,6 +36,14 @@ std::filesystem::path source_dir() {
 #else
   return std::filesystem::current_path();
 #endif
+}
+
+std::vector<std::filesystem::path> example_plans() {
+  std::vector<std::filesystem::path> plans;
+  for (const auto& e : std::filesystem::directory_iterator(source_dir() / "examples"))
+    if (e.path().extension() == ".json") plans.push_back(e.path());
+  std::sort(plans.begin(), plans.end());
+  return plans;
 }
 
 CommandResult run_roomcad(const std::vector<std::string>& args) {

@@ -42,4 +42,7 @@ bool write_bytes(const std::filesystem::path& path, const std::string& bytes);
 /// @return the project's source directory (the ROOMCAD_SOURCE_DIR define or the environment).
 [[nodiscard]] std::filesystem::path source_dir();
 
+/// @return the bundled example plans, examples/*.json of source_dir(), sorted by path.
+[[nodiscard]] std::vector<std::filesystem::path> example_plans();
+
 }  // namespace roomcad::test

@@ -68,6 +68,23 @@ TEST(Rooms, OpenPlansHaveNoRoomsAndRoomsInsideRoomsAreSubtracted) {
   EXPECT_NEAR(rooms[1].area, 1.8 * 1.8, 1e-9);
 }
 
+TEST(Rooms, CrossingWallsAndToleranceJoinsUseTheExactArrangement) {
+  // Two walls crossing in an X inside a square (the crossing is no wall end): four rooms.
+  Plan cross = plan_with({make_wall("s", {0, 0}, {8, 0}, 0.2), make_wall("e", {8, 0}, {8, 8}, 0.2),
+                          make_wall("n", {8, 8}, {0, 8}, 0.2), make_wall("w", {0, 8}, {0, 0}, 0.2),
+                          make_wall("h", {0, 4}, {8, 4}, 0.2), make_wall("v", {4, 0}, {4, 8}, 0.2)});
+  std::vector<Room> rooms = find_rooms(cross);
+  ASSERT_EQ(rooms.size(), 4u);
+  for (const Room& r : rooms) EXPECT_NEAR(r.area, 3.8 * 3.8, 1e-9);
+  EXPECT_EQ(rooms[0].walls, (Codes{"h", "s", "v", "w"}));
+  // A corner whose ends are 0.5 um apart (within the tolerance) still closes its room.
+  Plan gap = plan_with({make_wall("s", {0, 0}, {4, 0}, 0.2), make_wall("e", {4, 0}, {4, 4}, 0.2),
+                        make_wall("n", {4, 4}, {0, 4}, 0.2), make_wall("w", {0, 4}, {0, 0.5e-6}, 0.2)});
+  rooms = find_rooms(gap);
+  ASSERT_EQ(rooms.size(), 1u);
+  EXPECT_NEAR(rooms[0].area, 3.8 * 3.8, 1e-5);
+}
+
 TEST(Openings, OutsideWallMessageSaysHowFarAndHowToFix) {
   const Plan p = plan_with({make_wall("s", {0, 0}, {4, 0})},
                            {make_opening("w2", OpeningType::window, "s", 2.95, 1.2, 1.2, 0.9)});

@@ -47,6 +47,19 @@ TEST(Walls, CentreLinesOverlappingAlongALengthOverlapEvenWhenJoined) {
   EXPECT_NE(r.items[0].message.find("for 1.00 m"), std::string::npos) << r.items[0].message;
 }
 
+TEST(Walls, StoreysStackedOnOneCentreLineDoNotOverlap) {
+  // A wall on the storey above stands on the one below: they touch (at the lower wall's top)
+  // and share a centre line, but no volume, so they are neither joined nor overlapping.
+  const Wall lower = make_wall("a", {0, 0}, {4, 0});
+  Wall upper = make_wall("b", {0, 0}, {4, 0});
+  upper.base = lower.height;
+  const Plan p = plan_with({lower, upper});
+  EXPECT_FALSE(find_joins(p).are_joined(0, 1));
+  EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});
+  upper.base = lower.height - 0.1;  // 0.1 m of the two storeys' walls now share a volume
+  EXPECT_EQ(error_codes(validate(plan_with({lower, upper}), no_rooms())), Codes{"wall_overlap"});
+}
+
 TEST(Walls, OverlapMessageGivesTheDepthAndAFix) {
   const Plan p = plan_with({make_wall("a", {0, 0}, {4, 0}), make_wall("b", {0, 0.2}, {4, 0.2})});
   const Report r = validate(p, no_rooms());

@@ -1,23 +1,34 @@
 #include "validation/detail/arrangement.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
+#include <CGAL/Arr_non_caching_segment_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 namespace roomcad::detail {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using SegmentTraits = CGAL::Arr_segment_traits_2<Kernel>;
-using Traits = CGAL::Arr_consolidated_curve_data_traits_2<SegmentTraits, std::size_t>;
-using Arrangement = CGAL::Arrangement_2<Traits>;
+/// General case: crossings are constructed exactly (Epeck).
+using ExactTraits = CGAL::Arr_consolidated_curve_data_traits_2<
+    CGAL::Arr_segment_traits_2<CGAL::Exact_predicates_exact_constructions_kernel>, std::size_t>;
+/// Interior-disjoint pieces: only predicates on the input points are evaluated, which Epick
+/// does exactly; the non-caching traits keep no rounded supporting lines.
+using FastTraits = CGAL::Arr_consolidated_curve_data_traits_2<
+    CGAL::Arr_non_caching_segment_traits_2<CGAL::Exact_predicates_inexact_constructions_kernel>,
+    std::size_t>;
 
-Point2 to_point(const Kernel::Point_2& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+template <class P>
+Point2 to_point(const P& p) {
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+}
 
-double ccb_area(Arrangement::Ccb_halfedge_const_circulator first) {
+template <class Ccb>
+double ccb_area(Ccb first) {
   double twice = 0;
   auto he = first;
   do {
@@ -28,7 +39,8 @@ double ccb_area(Arrangement::Ccb_halfedge_const_circulator first) {
   return std::fabs(twice) / 2;
 }
 
-Face face_of(const Arrangement::Face_const_handle& f) {
+template <class FaceHandle>
+Face face_of(const FaceHandle& f) {
   Face face;
   auto he = f->outer_ccb();
   const auto first = he;
@@ -42,21 +54,43 @@ Face face_of(const Arrangement::Face_const_handle& f) {
   return face;
 }
 
-}  // namespace
-
-std::vector<Face> find_bounded_faces(const std::vector<std::pair<Point2, Point2>>& segments) {
-  std::vector<Traits::Curve_2> curves;
-  curves.reserve(segments.size());
-  for (std::size_t i = 0; i < segments.size(); ++i) {
-    const auto& [a, b] = segments[i];
-    curves.emplace_back(Kernel::Segment_2({a.x, a.y}, {b.x, b.y}), i);
-  }
+template <class Traits>
+std::vector<Face> bounded_faces(const std::vector<std::pair<Point2, Point2>>& segments,
+                                bool interior_disjoint) {
+  using Arrangement = CGAL::Arrangement_2<Traits>;
+  using Kernel_point = typename Traits::Point_2;
   Arrangement arrangement;
-  CGAL::insert(arrangement, curves.begin(), curves.end());
+  if (interior_disjoint) {
+    // Already x-monotone pieces: built as such, each with its one-element data list.
+    std::vector<typename Traits::X_monotone_curve_2> pieces;
+    pieces.reserve(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const auto& [a, b] = segments[i];
+      pieces.emplace_back(typename Traits::Base_x_monotone_curve_2(Kernel_point(a.x, a.y), Kernel_point(b.x, b.y)),
+                          typename Traits::Data_container(i));
+    }
+    CGAL::insert_non_intersecting_curves(arrangement, pieces.begin(), pieces.end());
+  } else {
+    std::vector<typename Traits::Curve_2> curves;
+    curves.reserve(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const auto& [a, b] = segments[i];
+      curves.emplace_back(typename Traits::Base_curve_2(Kernel_point(a.x, a.y), Kernel_point(b.x, b.y)), i);
+    }
+    CGAL::insert(arrangement, curves.begin(), curves.end());
+  }
   std::vector<Face> faces;
   for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f)
     if (!f->is_unbounded()) faces.push_back(face_of(f));
   return faces;
+}
+
+}  // namespace
+
+std::vector<Face> find_bounded_faces(const std::vector<std::pair<Point2, Point2>>& segments,
+                                     bool interior_disjoint) {
+  return interior_disjoint ? bounded_faces<FastTraits>(segments, true)
+                           : bounded_faces<ExactTraits>(segments, false);
 }
 
 }  // namespace roomcad::detail

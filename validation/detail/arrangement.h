@@ -21,9 +21,14 @@ struct Face {
   double hole_area = 0.0;  ///< centre-line area of the regions nested inside (square metres)
 };
 
-/// @param segments  centre lines (from, to), indexed like the walls; none of zero length.
-/// @return the bounded faces of their arrangement (exact intersections, Epeck).
-///         O((n + k) log n) for n segments and k crossings.
-[[nodiscard]] std::vector<Face> find_bounded_faces(const std::vector<std::pair<Point2, Point2>>& segments);
+/// @param segments  centre-line pieces (from, to); none of zero length. FaceEdge::wall is an
+///                  index into this list.
+/// @param interior_disjoint  the pieces meet only at their end points: the arrangement is
+///                  then built from predicates alone (Epick, exact); otherwise crossings are
+///                  constructed exactly (Epeck).
+/// @return the bounded faces of their arrangement. O((n + k) log n) for n pieces and k
+///         crossings.
+[[nodiscard]] std::vector<Face> find_bounded_faces(
+    const std::vector<std::pair<Point2, Point2>>& segments, bool interior_disjoint);
 
 }  // namespace roomcad::detail

@@ -35,7 +35,10 @@ void check_geometry(const Plan& plan, const Joins& joins, const Usable& usable, 
 /// unknown_field (if asked) and door_above_floor warnings. O(n).
 void check_warnings(const Plan& plan, const ValidateOptions& options, Report& report);
 
-/// room_without_door and room_without_window warnings. O(n log n).
-void check_rooms(const Plan& plan, Report& report);
+/// room_without_door and room_without_window warnings for rooms found by find_rooms. O(n).
+void warn_about_rooms(const std::vector<Room>& rooms, Report& report);
+
+/// find_rooms with the plan's joins already found (rooms.cpp).
+[[nodiscard]] std::vector<Room> find_rooms(const Plan& plan, const Joins& joins);
 
 }  // namespace roomcad::detail

@@ -11,6 +11,16 @@ std::string metres(double value) {
   return fmt::format("{:.2f} m", value);
 }
 
+std::string metres_at_least(double value) {
+  if (value < 0.005) return metres(value);
+  return fmt::format("{:.2f} m", std::ceil(value * 100 - 1e-7) / 100);
+}
+
+std::string metres_at_most(double value) {
+  if (value < 0.005) return metres(value);
+  return fmt::format("{:.2f} m", std::floor(value * 100 + 1e-7) / 100);
+}
+
 std::string point_text(Point2 p) { return fmt::format("({:.2f}, {:.2f})", p.x, p.y); }
 
 std::string direction_text(Point2 unit) {

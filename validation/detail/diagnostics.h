@@ -15,6 +15,12 @@ namespace roomcad::detail {
 ///         that a micrometre does not print as "0.00 m".
 [[nodiscard]] std::string metres(double value);
 
+/// A distance to move or a size to set in a fix, rounded to centimetres so that following
+/// the fix really clears the problem: up for "move by at least", down for "make it at most"
+/// (a nanometre of slack absorbs the rounding of the measurement itself).
+[[nodiscard]] std::string metres_at_least(double value);
+[[nodiscard]] std::string metres_at_most(double value);
+
 /// @return "(x, y)" with 2 decimals.
 [[nodiscard]] std::string point_text(Point2 p);
 

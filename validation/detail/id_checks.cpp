@@ -1,5 +1,4 @@
 // duplicate_id (ids are unique across ALL objects of a plan) and unknown_reference.
-#include <algorithm>
 #include <string_view>
 #include <unordered_map>
 
@@ -14,13 +13,15 @@ namespace {
 
 struct IdUse {
   std::string_view id;
-  std::string label;  ///< "wall #3"
+  std::string_view list;  ///< "walls", "openings", ...
+  std::size_t index;
 };
 
 std::vector<IdUse> collect_ids(const Plan& plan) {
   std::vector<IdUse> uses;
+  uses.reserve(plan.walls.size() + plan.openings.size() + plan.lights.size() + plan.cameras.size());
   const auto add = [&uses](const std::string& id, std::string_view list, std::size_t i) {
-    if (!id.empty()) uses.push_back({id, fmt::format("{}[{}]", list, i)});
+    if (!id.empty()) uses.push_back({id, list, i});
   };
   for (std::size_t i = 0; i < plan.walls.size(); ++i) add(plan.walls[i].id, "walls", i);
   for (std::size_t i = 0; i < plan.openings.size(); ++i) add(plan.openings[i].id, "openings", i);
@@ -29,23 +30,33 @@ std::vector<IdUse> collect_ids(const Plan& plan) {
   return uses;
 }
 
+/// @return the uses of each id used more than once, in order of first use. O(n) expected.
+std::vector<std::vector<const IdUse*>> find_duplicate_groups(const std::vector<IdUse>& uses) {
+  std::unordered_map<std::string_view, std::size_t> count;
+  count.reserve(uses.size());
+  for (const IdUse& u : uses) ++count[u.id];
+  std::unordered_map<std::string_view, std::size_t> group_of;
+  std::vector<std::vector<const IdUse*>> groups;
+  for (const IdUse& u : uses) {
+    if (count[u.id] < 2) continue;
+    const auto [it, added] = group_of.emplace(u.id, groups.size());
+    if (added) groups.emplace_back();
+    groups[it->second].push_back(&u);
+  }
+  return groups;
+}
+
 void report_duplicates(const Plan& plan, Report& report) {
-  std::vector<IdUse> uses = collect_ids(plan);
-  std::stable_sort(uses.begin(), uses.end(),
-                   [](const IdUse& a, const IdUse& b) { return a.id < b.id; });
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i + 1;
-    while (j < uses.size() && uses[j].id == uses[i].id) ++j;
-    if (j - i > 1) {
-      std::vector<std::string> labels;
-      for (std::size_t k = i; k < j; ++k) labels.push_back(uses[k].label);
-      report.add(make_diagnostic(
-          Severity::error, "duplicate_id", {std::string(uses[i].id)},
-          fmt::format("id '{}' is used by {} objects ({}); ids must be unique in the plan.",
-                      uses[i].id, j - i, fmt::join(labels, ", ")),
-          fmt::format("rename all but one of them, e.g. {} to '{}-2'", labels[1], uses[i].id)));
-    }
-    i = j;
+  const std::vector<IdUse> uses = collect_ids(plan);
+  for (const auto& group : find_duplicate_groups(uses)) {
+    std::vector<std::string> labels;
+    for (const IdUse* u : group) labels.push_back(fmt::format("{}[{}]", u->list, u->index));
+    const std::string_view id = group.front()->id;
+    report.add(make_diagnostic(
+        Severity::error, "duplicate_id", {std::string(id)},
+        fmt::format("id '{}' is used by {} objects ({}); ids must be unique in the plan.", id,
+                    group.size(), fmt::join(labels, ", ")),
+        fmt::format("rename all but one of them, e.g. {} to '{}-2'", labels[1], id)));
   }
 }
 
@@ -54,6 +65,7 @@ void report_duplicates(const Plan& plan, Report& report) {
 void check_ids(const Plan& plan, Usable& usable, Report& report) {
   report_duplicates(plan, report);
   std::unordered_map<std::string_view, std::size_t> walls;
+  walls.reserve(plan.walls.size());
   for (std::size_t i = plan.walls.size(); i-- > 0;) walls[plan.walls[i].id] = i;  // first wins
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     const Opening& o = plan.openings[i];

@@ -60,7 +60,7 @@ std::vector<Misfit> find_misfits(const Wall& w, const Opening& o) {
   });
   if (!starts_in)
     out.push_back({fmt::format("starts {} before the start of {}", metres(-o.offset), name_of(w)),
-                   fmt::format("move it {} toward the end (offset 0)", metres(-o.offset))});
+                   fmt::format("move it {} toward the end (offset 0)", metres_at_least(-o.offset))});
   if (!ends_in) {
     const double past = o.offset + o.width - length;
     const double fits = length - std::max(o.offset, 0.0);
@@ -68,15 +68,15 @@ std::vector<Misfit> find_misfits(const Wall& w, const Opening& o) {
                                metres(length)),
                    o.offset - past >= 0
                        ? fmt::format("move it {} toward the start, or make it {} wide",
-                                     metres(past), metres(o.width - past))
-                       : fmt::format("make it at most {} wide", metres(fits))});
+                                     metres_at_least(past), metres_at_most(o.width - past))
+                       : fmt::format("make it at most {} wide", metres_at_most(fits))});
   }
   if (!top_in) {
     const double over = o.sill + o.height - w.height;
     out.push_back({fmt::format("reaches {} above the top of {} ({} high)", metres(over),
                                name_of(w), metres(w.height)),
                    fmt::format("make it {} high or lower its sill by that much",
-                               metres(o.height - over))});
+                               metres_at_most(o.height - over))});
   }
   return out;
 }
@@ -111,7 +111,8 @@ void report_opening_overlap(const Wall& w, const Opening& a, const Opening& b, R
       fmt::format("{} and {} in {} overlap over {} along the wall.", name_of(a), name_of(b),
                   name_of(w), metres(shared)),
       fmt::format("move {} {} toward the end of the wall (offset {:.2f}), or narrow {} by that much",
-                  b.id, metres(a.offset + a.width - b.offset), a.offset + a.width, a.id),
+                  b.id, metres_at_least(a.offset + a.width - b.offset),
+                  std::ceil((a.offset + a.width) * 100 - 1e-7) / 100, a.id),
       opening_where(w, b)));
 }
 
@@ -176,7 +177,7 @@ void report_blocked(const Plan& plan, const Joins& joins, const Opening& o, std:
   const Wall& h = plan.walls[host];
   const Wall& x = plan.walls[other];
   const std::array<Point2, 4> hole = hole_points(h, o);
-  const std::array<Point2, 4> blocker = wall_footprint(plan, joins, other);
+  const std::array<Point2, 4> blocker = approximate_footprint(plan, joins, other);
   report.add(make_diagnostic(
       Severity::error, "opening_blocked", {o.id, h.id, x.id},
       fmt::format("{} in {} is blocked: {} fills its hole {} deep.", name_of(o), name_of(h),

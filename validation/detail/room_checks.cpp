@@ -26,8 +26,7 @@ void warn_room(const Room& room, std::size_t number, std::string_view code, std:
 
 }  // namespace
 
-void check_rooms(const Plan& plan, Report& report) {
-  const std::vector<Room> rooms = find_rooms(plan);
+void warn_about_rooms(const std::vector<Room>& rooms, Report& report) {
   for (std::size_t i = 0; i < rooms.size(); ++i) {
     if (rooms[i].doors.empty()) warn_room(rooms[i], i + 1, "room_without_door", "door", report);
     if (rooms[i].windows.empty())

@@ -44,11 +44,10 @@ Footprints::Footprints(const Plan& plan, const Joins& joins, const std::vector<b
   }
 }
 
-std::array<Point2, 4> approximate(const Quad<exact::Approx>& q) {
-  std::array<Point2, 4> out;
-  for (std::size_t i = 0; i < 4; ++i)
-    out[i] = {(q[i].x.inf() + q[i].x.sup()) / 2, (q[i].y.inf() + q[i].y.sup()) / 2};
-  return out;
+std::array<Point2, 4> approximate_footprint(const Plan& plan, const Joins& joins, std::size_t w) {
+  const Quad<double> q = exact::wall_corners<double>(plan, joins, w);
+  return {Point2{q[0].x, q[0].y}, Point2{q[1].x, q[1].y}, Point2{q[2].x, q[2].y},
+          Point2{q[3].x, q[3].y}};
 }
 
 std::pair<double, Point2> penetration(const std::array<Point2, 4>& p,

@@ -119,8 +119,9 @@ bool interiors_overlap(const Quad<NT>& p, const Quad<NT>& q) {
   return true;
 }
 
-/// @return the midpoints of a quad's intervals: the shape as doubles, for messages.
-std::array<Point2, 4> approximate(const Quad<exact::Approx>& q);
+/// @return wall w's mitred footprint in doubles (not exactly rounded): for messages, where
+///         the exact construction would cost more and say nothing more.
+std::array<Point2, 4> approximate_footprint(const Plan& plan, const Joins& joins, std::size_t w);
 
 /// @return how far p and q overlap: the least distance one must move to clear the other,
 ///         along the returned unit direction (pointing from p to q). Doubles; for messages.

@@ -48,7 +48,7 @@ void report_overlap(const Wall& a, const Wall& b, const std::array<Point2, 4>& f
       fmt::format("{} and {} overlap by {} but are not joined (their centre lines do not meet).",
                   name_of(a), name_of(b), metres(depth)),
       fmt::format("move {} {} {} (or thin one of them), or extend one centre line to meet the "
-                  "other so that they join", b.id, metres(depth), direction_text(dir)),
+                  "other so that they join", b.id, metres_at_least(depth), direction_text(dir)),
       box_where(box.min_x, box.min_y, box.max_x, box.max_y)));
 }
 
@@ -81,7 +81,7 @@ void check_overlaps(const Plan& plan, const Joins& joins, const Footprints& fp, 
       continue;
     }
     if (!solids_overlap(plan, fp, a, b)) continue;
-    report_overlap(wa, wb, wall_footprint(plan, joins, a), wall_footprint(plan, joins, b),
+    report_overlap(wa, wb, approximate_footprint(plan, joins, a), approximate_footprint(plan, joins, b),
                    common_box(*box_of_wall[a], *box_of_wall[b]), report);
   }
 }
@@ -107,6 +107,22 @@ bool is_inside_site(const Site& s, const Footprints& fp, std::size_t w) {
   });
 }
 
+/// @return "cells [7, 6]" (and " from origin [x, y]" if it must move): the smallest site on
+/// the same tile grid that holds both the old site and the box.
+std::string enlarged_site(const SiteRect& r, double cs, double lo_x, double lo_y, double hi_x,
+                          double hi_y) {
+  const auto grown_origin = [cs](double o, double lo) {
+    return lo < o ? o - std::ceil((o - lo) / cs) * cs : o;
+  };
+  const double ox = grown_origin(r.x0, lo_x), oy = grown_origin(r.y0, lo_y);
+  const auto cells = [cs](double o, double hi, double site_hi) {
+    return static_cast<long long>(std::ceil((std::max(hi, site_hi) - o) / cs));
+  };
+  std::string text = fmt::format("cells [{}, {}]", cells(ox, hi_x, r.x1), cells(oy, hi_y, r.y1));
+  if (ox != r.x0 || oy != r.y0) text += fmt::format(" from origin [{}, {}]", ox, oy);
+  return text;
+}
+
 void report_outside_site(const Plan& plan, const std::array<Point2, 4>& f, const Wall& w,
                          Report& report) {
   const SiteRect r = site_rect(plan.site);
@@ -121,17 +137,13 @@ void report_outside_site(const Plan& plan, const std::array<Point2, 4>& f, const
   const Side& worst = *std::max_element(sides, sides + 4, [](const Side& a, const Side& b) {
     return a.excess < b.excess;
   });
-  const double cs = plan.site.cell_size;
-  const auto cells_to = [&](double lo, double hi, double o) {
-    return static_cast<long long>(std::ceil((std::max(hi, o) - std::min(lo, o)) / cs));
-  };
   report.add(make_diagnostic(
       Severity::error, "out_of_bounds", {w.id},
       fmt::format("{} reaches {} past the {} edge of the site [{}, {}] x [{}, {}].", name_of(w),
                   metres(std::max(worst.excess, 0.0)), worst.edge, r.x0, r.x1, r.y0, r.y1),
-      fmt::format("move it {} {}, or enlarge the site (cells [{}, {}] with origin moved to "
-                  "cover it)", metres(std::max(worst.excess, 0.0)), worst.back,
-                  cells_to(lo_x, hi_x, r.x0), cells_to(lo_y, hi_y, r.y0)),
+      fmt::format("move it {} {}, or enlarge the site to {}",
+                  metres_at_least(std::max(worst.excess, 0.0)), worst.back,
+                  enlarged_site(r, plan.site.cell_size, lo_x, lo_y, hi_x, hi_y)),
       box_where(lo_x, lo_y, hi_x, hi_y)));
 }
 
@@ -150,7 +162,7 @@ void report_too_high(const Site& s, const Wall& w, const std::array<Point2, 4>& 
                   name_of(w), metres(w.base + w.height), metres(w.base), metres(w.height),
                   metres(s.max_height)),
       fmt::format("lower its height to {} or less, or raise site.max_height",
-                  metres(std::max(s.max_height - w.base, 0.0))),
+                  metres_at_most(std::max(s.max_height - w.base, 0.0))),
       box_where(std::min({f[0].x, f[1].x, f[2].x, f[3].x}), std::min({f[0].y, f[1].y, f[2].y, f[3].y}),
                 std::max({f[0].x, f[1].x, f[2].x, f[3].x}), std::max({f[0].y, f[1].y, f[2].y, f[3].y}))));
 }
@@ -160,7 +172,7 @@ void check_bounds(const Plan& plan, const Joins& joins, const Footprints& fp, st
   const bool inside = is_inside_site(plan.site, fp, w);
   const bool low = is_under_max_height(plan.site, plan.walls[w]);
   if (inside && low) return;
-  const std::array<Point2, 4> f = wall_footprint(plan, joins, w);
+  const std::array<Point2, 4> f = approximate_footprint(plan, joins, w);
   if (!inside) report_outside_site(plan, f, plan.walls[w], report);
   if (!low) report_too_high(plan.site, plan.walls[w], f, report);
 }

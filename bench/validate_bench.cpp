@@ -1,0 +1,76 @@
+// Validation time for grids of rooms from about 10 to 100,000 walls (a door in every inner
+// wall, three windows in every outer one: about as many openings as walls), printed as a
+// markdown table. Run: build/bench/validate_bench [--quick]
+// Columns: wall-clock time; CPU time of all threads; the critical path (the longer of the
+// two threads validate() runs: rooms beside the other checks), which is the wall-clock time
+// on two idle cores; and the same without room warnings (one thread). Best of 3 to 10 runs.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+
+#include "grid_plan.h"
+#include "validation/validate.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// CPU time in milliseconds of this thread or of the whole process: on a shared machine,
+/// wall-clock time also counts the time other processes hold the cores.
+double cpu_ms(clockid_t clock) {
+  timespec t{};
+  clock_gettime(clock, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
+struct Timing {
+  double wall_ms = 1e300;
+  double cpu_ms = 1e300;       ///< all threads
+  double critical_ms = 1e300;  ///< the longer of the two threads: wall time on 2 idle cores
+  std::size_t errors = 0;
+};
+
+/// @return the best of `runs` wall-clock and CPU times of validate(plan), in milliseconds.
+Timing time_validate(const roomcad::Plan& plan, const roomcad::ValidateOptions& options, int runs) {
+  Timing best;
+  for (int r = 0; r < runs; ++r) {
+    const auto start = Clock::now();
+    const double thread_start = cpu_ms(CLOCK_THREAD_CPUTIME_ID);
+    const double process_start = cpu_ms(CLOCK_PROCESS_CPUTIME_ID);
+    const roomcad::Report report = roomcad::validate(plan, options);
+    const double main_thread = cpu_ms(CLOCK_THREAD_CPUTIME_ID) - thread_start;
+    const double all = cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - process_start;
+    best.cpu_ms = std::min(best.cpu_ms, all);
+    best.critical_ms = std::min(best.critical_ms, std::max(main_thread, all - main_thread));
+    best.wall_ms = std::min(best.wall_ms, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    best.errors = report.error_count();
+  }
+  return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const int sides[] = {2, 7, 22, 70, 223};
+  std::printf("| grid | walls | openings | wall ms | cpu ms | critical path ms | no rooms: wall ms | "
+              "no rooms: cpu ms | errors |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+  for (const int n : sides) {
+    if (quick && n > 22) break;
+    roomcad::bench::GridSpec spec;
+    spec.n = n;
+    const roomcad::Plan plan = roomcad::bench::make_grid_plan(spec);
+    const int runs = plan.walls.size() > 20000 ? 3 : 10;
+    roomcad::ValidateOptions no_rooms;
+    no_rooms.room_warnings = false;
+    const Timing all = time_validate(plan, {}, runs);
+    const Timing without = time_validate(plan, no_rooms, runs);
+    std::printf("| %d x %d | %zu | %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %zu |\n", n, n,
+                plan.walls.size(), plan.openings.size(), all.wall_ms, all.cpu_ms, all.critical_ms,
+                without.wall_ms, without.cpu_ms, all.errors + without.errors);
+  }
+  return 0;
+}

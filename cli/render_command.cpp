@@ -1,0 +1,208 @@
+// roomcad render PLAN -o OUT.png: a picture of the plan's model from the CPU renderer.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli/command.h"
+#include "cli/parts_option.h"
+#include "cli/plan_loading.h"
+#include "io/id_image.h"
+#include "io/image_io.h"
+#include "modeling/build_model.h"
+#include "render/renderer.h"
+
+namespace roomcad::cli {
+namespace {
+
+/// The command line as given; turned into RenderOptions by make_options.
+struct RenderArgs {
+  std::string plan, output, depth, ids;
+  int width = 1280, height = 720, shadow_res = 1024, ssaa = 1, threads = 0;
+  std::string camera, eye, target, up = "0,0,1", projection = "perspective", view;
+  double fov = 50.0, view_height = 10.0;
+  std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";
+  std::string parts = "walls,floor,fixtures";
+  bool stats = false, force = false;
+};
+
+/// A flag's value could not be used: what the user sees, exit status 2.
+struct BadFlag {
+  std::string message;
+};
+
+Vec3 parse_vec3(const std::string& flag, const std::string& text) {
+  Vec3 v;
+  char c1 = 0, c2 = 0;
+  std::istringstream in(text);
+  if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !in.eof() ||
+      !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+    throw BadFlag{fmt::format("{} '{}': expected three finite numbers x,y,z (metres)", flag, text)};
+  }
+  return v;
+}
+
+/// The camera the flags ask for, or nullopt to frame the model from a preset.
+std::optional<Camera> chosen_camera(const RenderArgs& a, const Plan& plan, Projection projection) {
+  if (!a.camera.empty()) {
+    for (const Camera& c : plan.cameras)
+      if (c.id == a.camera) return c;
+    std::string known;
+    for (const Camera& c : plan.cameras) known += (known.empty() ? "" : ", ") + c.id;
+    throw BadFlag{fmt::format("--camera '{}': the plan has no such camera (it has: {})", a.camera,
+                              known.empty() ? "none" : known)};
+  }
+  if (a.eye.empty() != a.target.empty()) {
+    throw BadFlag{"--eye and --target go together: give both or neither"};
+  }
+  if (a.eye.empty()) return std::nullopt;
+  Camera c;
+  c.id = "flags";
+  c.projection = projection;
+  c.eye = parse_vec3("--eye", a.eye);
+  c.target = parse_vec3("--target", a.target);
+  c.up = parse_vec3("--up", a.up);
+  c.fov_deg = a.fov;
+  c.view_height = a.view_height;
+  if (c.eye == c.target) throw BadFlag{fmt::format("--eye and --target are both '{}'", a.eye)};
+  return c;
+}
+
+template <class T>
+T parse_choice(const std::string& flag, const std::string& text, std::optional<T> parsed,
+               const char* choices) {
+  if (!parsed) throw BadFlag{fmt::format("{} '{}': expected one of {}", flag, text, choices)};
+  return *parsed;
+}
+
+RenderOptions make_options(const RenderArgs& a, const Plan& plan) {
+  const Projection projection = parse_choice<Projection>(
+      "--projection", a.projection,
+      a.projection == "perspective"    ? std::optional(Projection::perspective)
+      : a.projection == "orthographic" ? std::optional(Projection::orthographic)
+                                       : std::nullopt,
+      "perspective, orthographic");
+  RenderOptions o{.width = a.width, .height = a.height};
+  o.camera = chosen_camera(a, plan, projection);
+  if (!a.view.empty()) {
+    o.view = parse_choice("--view", a.view, parse_view_preset(a.view), "front, back, left, right, top, iso");
+  }
+  o.view_projection = projection;
+  o.view_fov_deg = a.fov;
+  o.shading = parse_choice("--shading", a.shading, parse_shading_mode(a.shading), "unlit, flat, gouraud, phong");
+  o.shadows = parse_choice<ShadowFilter>(
+      "--shadows", a.shadows,
+      a.shadows == "off" ? std::optional(ShadowFilter::off)
+      : a.shadows == "hard" ? std::optional(ShadowFilter::hard)
+      : a.shadows == "pcf" ? std::optional(ShadowFilter::pcf) : std::nullopt,
+      "off, hard, pcf");
+  o.shadow_resolution = a.shadow_res;
+  o.ssaa = a.ssaa;
+  o.background = parse_choice("--background", a.background, parse_color(a.background), "#rrggbb");
+  if (a.grid != "on" && a.grid != "off") throw BadFlag{fmt::format("--grid '{}': expected on or off", a.grid)};
+  o.grid = GridLines{.enabled = a.grid == "on", .origin = {plan.site.origin.x, plan.site.origin.y},
+                     .cell_size = plan.site.cell_size, .cells = plan.site.cells};
+  o.lights = plan.lights;
+  std::string bad;
+  if (!parse_parts(a.parts, o.parts, bad)) {
+    throw BadFlag{fmt::format("--parts '{}': '{}' is not walls, floor or fixtures", a.parts, bad)};
+  }
+  o.threads = a.threads;
+  if (const std::string problem = check_render_options(o); !problem.empty()) throw BadFlag{problem};
+  return o;
+}
+
+/// Writes the requested files. @return false (after printing why) if one could not be written.
+bool write_outputs(const RenderArgs& a, const FrameBuffers& out, const Model& model) {
+  std::vector<Status> written{write_png(out.color, a.output)};
+  if (!a.depth.empty()) written.push_back(write_pfm(out.depth, a.depth));
+  if (!a.ids.empty()) written.push_back(write_object_ids(out.objects, model.objects, a.ids));
+  bool ok = true;
+  for (const Status& s : written) {
+    if (s.ok()) continue;
+    std::fprintf(stderr, "roomcad render: error: %s\n", s.error.c_str());
+    ok = false;
+  }
+  return ok;
+}
+
+int run_render(const RenderArgs& a) {
+  // The validation gate: errors stop the render unless --force.
+  const LoadedPlan loaded = load_valid_plan("render", a.plan, a.force);
+  if (!loaded.plan) return loaded.exit_status;
+  const Plan& plan = *loaded.plan;
+  RenderOptions options;
+  try {
+    options = make_options(a, plan);
+  } catch (const BadFlag& bad) {
+    std::fprintf(stderr, "roomcad render: error: %s\n", bad.message.c_str());
+    return kCannotRun;
+  }
+  if (plan.lights.size() > static_cast<std::size_t>(kMaxLights)) {
+    std::fprintf(stderr, "roomcad render: warning: %s has %zu lights; the first %d are drawn\n",
+                 a.plan.c_str(), plan.lights.size(), kMaxLights);
+  }
+  Model model;
+  try {
+    model = build_model(plan, BuildOptions{.parts = options.parts, .threads = a.threads});
+  } catch (const PreconditionError& e) {
+    std::fprintf(stderr, "roomcad render: %s: error: %s\n", a.plan.c_str(), e.what());
+    return kPlanErrors;
+  }
+  FrameBuffers out;
+  RenderStats stats;
+  render_model(model, options, out, &stats);
+  if (a.stats) {
+    std::fprintf(stderr,
+                 "{\"triangles\": %zu, \"screen_triangles\": %zu, \"shadow_ms\": %.3f, "
+                 "\"raster_ms\": %.3f, \"frame_ms\": %.3f, \"width\": %d, \"height\": %d}\n",
+                 stats.triangles, stats.screen_triangles, stats.shadow_ms, stats.raster_ms,
+                 stats.frame_ms, options.width, options.height);
+  }
+  return write_outputs(a, out, model) ? kOk : kCannotRun;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& root, Commands& commands) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* app = root.add_subcommand("render", "Render a picture of the plan's 3D model (PNG)");
+  app->add_option("plan", args->plan, "The plan file (JSON)")->required();
+  app->add_option("-o,--output", args->output, "The picture to write (PNG)")->required();
+  const auto pixels = CLI::Range(1, 16384);
+  app->add_option("--width", args->width, "Picture width in pixels")->check(pixels)->capture_default_str();
+  app->add_option("--height", args->height, "Picture height in pixels")->check(pixels)->capture_default_str();
+  app->add_option("--camera", args->camera, "Use the plan's camera with this id");
+  app->add_option("--eye", args->eye, "Camera position x,y,z (metres), with --target");
+  app->add_option("--target", args->target, "Point looked at x,y,z (metres), with --eye");
+  app->add_option("--up", args->up, "Camera up direction x,y,z")->capture_default_str();
+  app->add_option("--fov", args->fov, "Vertical field of view, degrees (perspective)")
+      ->check(CLI::Range(1e-3, 179.999))->capture_default_str();
+  app->add_option("--projection", args->projection, "perspective or orthographic")->capture_default_str();
+  app->add_option("--view-height", args->view_height, "Metres seen vertically (orthographic)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--view", args->view, "Frame the model from front|back|left|right|top|iso (default iso)");
+  app->add_option("--shading", args->shading, "unlit, flat, gouraud or phong")->capture_default_str();
+  app->add_option("--shadows", args->shadows, "off, hard or pcf")->capture_default_str();
+  app->add_option("--shadow-res", args->shadow_res, "Shadow-map texels per side")
+      ->check(pixels)->capture_default_str();
+  app->add_option("--ssaa", args->ssaa, "Supersampling per pixel side: 1, 2 or 4")
+      ->check(CLI::IsMember({1, 2, 4}))->capture_default_str();
+  app->add_option("--background", args->background, "Background colour #rrggbb")->capture_default_str();
+  app->add_option("--grid", args->grid, "Draw the site's tiles on the floor: on or off")->capture_default_str();
+  app->add_option("--parts", args->parts, "Parts to draw: walls,floor,fixtures")->capture_default_str();
+  app->add_option("--depth", args->depth, "Also write the depth (metres along the view) as PFM");
+  app->add_option("--ids", args->ids, "Also write object ids as PNG, with a JSON legend beside it");
+  app->add_option("--threads", args->threads, "Threads, 0 = all cores (same picture at any count)")
+      ->check(CLI::NonNegativeNumber);
+  app->add_flag("--force", args->force, "Render even if the plan has validation errors");
+  app->add_flag("--stats", args->stats, "Print triangles and timings as one JSON line on stderr");
+  commands.push_back({app, [args] { return run_render(*args); }});
+}
+
+}  // namespace roomcad::cli

@@ -1,0 +1,16 @@
+// libFuzzer target: the Sweet Home 3D importer on arbitrary `Home.xml` text, then the plan
+// writer on what it imports. Any crash, sanitizer report, uncaught exception, leak or hang is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "io/plan_json.h"
+#include "io/sweethome3d_import.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view xml(reinterpret_cast<const char*>(data), size);
+  const roomcad::Result<roomcad::Sh3dImport> imported =
+      roomcad::import_sweethome3d_text(xml, "fuzz.Home.xml");
+  if (imported) (void)roomcad::write_plan_text(imported.value().plan);
+  return 0;
+}

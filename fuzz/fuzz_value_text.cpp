@@ -1,0 +1,28 @@
+// libFuzzer target: the strict value parsers of the command line and set_field
+// (modeling/value_text.h) and colours (modeling/plan.h) on arbitrary text. Any crash, sanitizer
+// report or hang is a bug, and so is a number parsed as not finite.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "modeling/plan.h"
+#include "modeling/value_text.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  if (const auto number = roomcad::parse_number(text); number && !std::isfinite(*number))
+    __builtin_trap();
+  (void)roomcad::parse_integer(text);
+  (void)roomcad::parse_point2(text);
+  (void)roomcad::parse_vec3(text);
+  (void)roomcad::parse_cells(text);
+  (void)roomcad::parse_opening_type(text);
+  (void)roomcad::parse_hinge(text);
+  (void)roomcad::parse_swing(text);
+  (void)roomcad::parse_light_type(text);
+  (void)roomcad::parse_projection(text);
+  if (const auto colour = roomcad::parse_color(text))
+    if (roomcad::parse_color(roomcad::to_string(*colour)) != colour) __builtin_trap();
+  return 0;
+}

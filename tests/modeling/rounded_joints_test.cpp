@@ -1,0 +1,90 @@
+// Joints where two nearly collinear walls end side by side and a third wall meets them: the
+// exact union has slivers narrower than a double's step, which rounding must not turn into a
+// crash or a broken mesh. Reduced from the Sweet Home 3D homes 4-BedroomHouse and
+// 3-BedroomHouseWithMezzanine.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "model_support.h"
+#include "modeling/detail/face_soup.h"
+
+namespace roomcad {
+namespace {
+
+using test::add_wall;
+using test::empty_plan;
+using test::expect_valid_walls;
+
+Wall& add_thick_wall(Plan& plan, const std::string& id, Point2 from, Point2 to, double thickness) {
+  Wall& w = add_wall(plan, id, from, to);
+  w.thickness = thickness;
+  return w;
+}
+
+// 4-BedroomHouse: wall28 and wall29 meet nearly collinear (1e-7 m off over 3.6 m) where
+// wall27 ends on them; their rounded end faces leave a sliver whose corners round together.
+TEST(Modeling, TeeAtTheJointOfNearlyCollinearWallsBuildsAClosedSolid) {
+  Plan plan = empty_plan();
+  add_thick_wall(plan, "wall27", {2.8328528, -4.660859}, {-0.055, -4.661003}, 0.16);
+  add_thick_wall(plan, "wall28", {-0.054999900000000004, -8.265}, {-0.055, -4.661003}, 0.26);
+  add_thick_wall(plan, "wall29", {-0.055, -4.661003}, {-0.055, -2.300593}, 0.26);
+  expect_valid_walls(plan, BooleanPath::automatic, 0);
+  expect_valid_walls(plan, BooleanPath::cgal, 0);
+}
+
+// 3-BedroomHouseWithMezzanine: the same joint, where rounding also leaves a groove 1 ulp wide
+// at the node (a zero-width fin once rounded): it builds closed and 2-manifold on both paths.
+TEST(Modeling, TeeAtAJointWithAGrooveOneUlpWideBuildsAClosedSolid) {
+  Plan plan = empty_plan();
+  add_thick_wall(plan, "wall30", {-0.013000030000000001, -4.0055908}, {6.005, -4.0300632}, 0.16);
+  add_thick_wall(plan, "wall32", {-0.013000030000000001, -4.0055908}, {-0.013000183, 0.02025055},
+                 0.26);
+  add_thick_wall(plan, "wall46", {-0.012999873, -9.818}, {-0.013000030000000001, -4.0055908}, 0.26);
+  expect_valid_walls(plan, BooleanPath::automatic, 0);
+  expect_valid_walls(plan, BooleanPath::cgal, 0);
+}
+
+detail::SoupFace triangle(OpenMesh::Vec3d a, OpenMesh::Vec3d b, OpenMesh::Vec3d c, int object) {
+  return {{a, b, c}, FaceKind::wall_face, object, {}, {}};
+}
+
+std::string assembly_error(const detail::FaceSoup& soup) {
+  try {
+    (void)detail::assemble_mesh({&soup, 1}, {"first", "second"});
+  } catch (const PreconditionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Modeling, FaceOnAnEdgeThatHasOneNamesBothWalls) {
+  const OpenMesh::Vec3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), d(0, -1, 0);
+  const std::string what = assembly_error({triangle(a, b, c, 0), triangle(a, b, d, 1)});
+  EXPECT_NE(what.find("of 'second'"), std::string::npos) << what;
+  EXPECT_NE(what.find("'first' is already on that side"), std::string::npos) << what;
+}
+
+TEST(Modeling, FaceRepeatingACornerIsAnError) {
+  const OpenMesh::Vec3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  const detail::FaceSoup soup{{{a, b, a, c}, FaceKind::wall_end, 1, {}, {}}};
+  EXPECT_NE(assembly_error(soup).find("repeats a corner"), std::string::npos);
+}
+
+TEST(Modeling, FaceOfTwoCornersIsAnError) {
+  const detail::FaceSoup soup{{{OpenMesh::Vec3d(0, 0, 0), OpenMesh::Vec3d(1, 0, 0)},
+                               FaceKind::wall_top, 0, {}, {}}};
+  EXPECT_NE(assembly_error(soup).find("2 corners, fewer than 3"), std::string::npos);
+}
+
+// A closed fan of four triangles round v, then one more face at v: OpenMesh has no gap there.
+TEST(Modeling, FaceAtACornerClosedAllRoundIsAnError) {
+  const OpenMesh::Vec3d v(0, 0, 0), a(1, 0, 0), b(0, 1, 0), c(-1, 0, 0), d(0, -1, 0);
+  const OpenMesh::Vec3d e(0, 0, 1), f(0, 0, -1);
+  const detail::FaceSoup soup{triangle(v, a, b, 0), triangle(v, b, c, 0), triangle(v, c, d, 0),
+                              triangle(v, d, a, 0), triangle(v, e, f, 1)};
+  EXPECT_NE(assembly_error(soup).find("complex vertex"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace roomcad

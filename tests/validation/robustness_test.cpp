@@ -1,0 +1,36 @@
+// validate() on random plans (any geometry, awkward numbers): it never throws, it says the
+// same thing twice, and every item is a known code with a message.
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "support/random_plan.h"
+#include "validation/validate.h"
+
+namespace roomcad {
+namespace {
+
+const std::set<std::string> kCodes = {
+    "invalid_value",   "duplicate_id",        "unknown_reference",   "wall_overlap",
+    "opening_outside_wall", "opening_overlap", "opening_blocked",    "out_of_bounds",
+    "unknown_field",   "door_above_floor",    "room_without_door",   "room_without_window"};
+
+TEST(Robustness, RandomPlansAreReportedNotCrashedOn) {
+  for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+    SCOPED_TRACE(seed);
+    test::RandomPlanOptions options;
+    options.awkward_numbers = seed % 2 == 0;
+    const Plan plan = test::random_plan(seed, options);
+    Report first;
+    ASSERT_NO_THROW(first = validate(plan));
+    EXPECT_TRUE(validate(plan).items == first.items) << "not deterministic";
+    for (const Diagnostic& d : first.items) {
+      EXPECT_TRUE(kCodes.contains(d.code)) << d.code;
+      EXPECT_FALSE(d.message.empty());
+    }
+    ASSERT_NO_THROW((void)find_rooms(plan));
+  }
+}
+
+}  // namespace
+}  // namespace roomcad

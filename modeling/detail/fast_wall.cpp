@@ -1,6 +1,7 @@
 #include "modeling/detail/fast_wall.h"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 
 namespace roomcad::detail {
@@ -186,17 +187,49 @@ std::vector<std::vector<GridPoint>> trace_loops(const WallGrid& g, const std::ve
   return loops;
 }
 
+// Where every hole lies inside the side face (touching no border) and the holes follow one
+// another along u without sharing a column, the face splits in two along a chain through
+// existing corners: wall start, each hole's bottom edge, wall end. Below the chain: one
+// polygon; above: one polygon running round each hole. No new vertex, so the triangles are
+// as few as for the face with holes (V + 2H - 2). @return the two loops, counter-clockwise
+// in (u, z) (for s = 0), or nothing where the chain does not apply. O(holes).
+std::optional<std::array<std::vector<GridPoint>, 2>> find_chain_split(const Context& cx, int s) {
+  const WallGrid& g = cx.grid;
+  const std::size_t nc = g.nu() - 1, nr = g.nz() - 1;
+  if (cx.frame.holes.empty()) return std::nullopt;
+  for (const Attachment& a : cx.frame.attachments)
+    if ((a.side > 0) == (s == 1)) return std::nullopt;
+  std::vector<GridPoint> below{{0, 0, 0}, {nc, 0, 0}}, above{{0, 0, 0}};
+  std::size_t last_column = 0;
+  for (std::size_t k = 0; k < cx.frame.holes.size(); ++k) {
+    const auto [c0, c1, r0, r1] = g.cells_of(k);
+    if (c0 <= last_column || c1 >= nc || r0 == 0 || r1 >= nr) return std::nullopt;
+    last_column = c1;
+    above.insert(above.end(), {{c0, r0, 0}, {c0, r1, 0}, {c1, r1, 0}, {c1, r0, 0}});
+  }
+  for (std::size_t k = cx.frame.holes.size(); k-- > 0;) {  // hole bottoms, right to left
+    const auto [c0, c1, r0, r1] = g.cells_of(k);
+    below.insert(below.end(), {{c1, r0, 0}, {c0, r0, 0}});
+  }
+  above.insert(above.end(), {{nc, 0, 0}, {nc, nr, 0}, {0, nr, 0}});
+  return std::array<std::vector<GridPoint>, 2>{std::move(below), std::move(above)};
+}
+
 // The side faces: the solid part of the (u, z) grid, cut into pieces without holes. The left
 // face is traced on its own (stems may be glued to one side only), then turned to face +w.
 void add_side_faces(const Context& cx, std::vector<GridFace>& out) {
-  for (const int s : {0, 1})
-    for (std::vector<GridPoint> loop : trace_loops(cx.grid, side_edges(cx.grid, find_cuts(cx, s), s))) {
+  for (const int s : {0, 1}) {
+    std::vector<std::vector<GridPoint>> loops;
+    if (auto chain = find_chain_split(cx, s)) loops = {std::move((*chain)[0]), std::move((*chain)[1])};
+    else loops = trace_loops(cx.grid, side_edges(cx.grid, find_cuts(cx, s), s));
+    for (std::vector<GridPoint> loop : loops) {
       if (s == 1) {
         std::reverse(loop.begin(), loop.end());
         for (GridPoint& p : loop) p.s = 1;
       }
       out.push_back({std::move(loop), FaceKind::wall_face, cx.wall_object});
     }
+  }
 }
 
 /// The boundary between cells `before` and `after` along one axis: 0 if both solid or both
@@ -277,7 +310,8 @@ FaceSoup emit_faces(const Context& cx, const std::vector<GridFace>& faces) {
     for (std::size_t k = 0; k < n; ++k) {
       const GridPoint a = f.corners[k], b = f.corners[(k + 1) % n];
       out.points.push_back(cx.grid.point(a));
-      if (a.s != b.s) continue;  // an edge across the thickness has no inner vertices
+      // Edges across the thickness and chain cuts through a side's inside have no inner vertices.
+      if (a.s != b.s || (a.i != b.i && a.j != b.j)) continue;
       const bool along_u = a.j == b.j;
       const std::size_t from = along_u ? a.i : a.j, to = along_u ? b.i : b.j;
       const int step = to > from ? 1 : -1;

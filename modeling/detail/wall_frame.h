@@ -43,7 +43,9 @@ struct WallFrame {
   std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
 
-/// Frames for every wall, with the holes of every opening.
+/// Frames for every wall, with the holes of every opening. Ends are mitred per `joins`, and
+/// also where two walls of equal thickness among three or more at one node run on from each
+/// other within 1e-6 rad (a hairline wedge between square ends; see wall_frame.cpp).
 /// @pre validate(plan).ok() for the checks below (validation/validate.h).
 /// @return one frame per wall, in plan order. O(n log n).
 /// @throws PreconditionError naming the wall or opening if a wall is degenerate (length,

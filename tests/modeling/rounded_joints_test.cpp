@@ -45,6 +45,20 @@ TEST(Modeling, TeeAtAJointWithAGrooveOneUlpWideBuildsAClosedSolid) {
   expect_valid_walls(plan, BooleanPath::cgal, 0);
 }
 
+// 3-BedroomHouseWithMezzanine upstairs: wall2 and wall62 run on from each other 7.5e-8 rad
+// apart where wall24 also ends; their square ends would leave a wedge about 1e-11 m wide
+// (a needle face in doubles). Mitred to each other instead, the solid is closed and clean.
+TEST(Modeling, HairlineWedgeBetweenSquareEndsIsMitredShut) {
+  Plan plan = empty_plan();
+  add_thick_wall(plan, "wall2", {-0.013000000000000001, 0.020250525000000002}, {-0.01300018, -4.080249}, 0.26);
+  add_thick_wall(plan, "wall24", {-0.01300018, -4.080249}, {3.287, -4.080249}, 0.26);
+  add_thick_wall(plan, "wall62", {-0.01300018, -4.080249}, {-0.013000000000000001, -9.818316}, 0.26);
+  for (Wall& w : plan.walls) w.base = 2.5, w.height = 2.619999885559082;
+  plan.walls[2].height = 1.119999885559082;  // wall62 is lower
+  expect_valid_walls(plan, BooleanPath::automatic, 0);
+  expect_valid_walls(plan, BooleanPath::cgal, 0);
+}
+
 detail::SoupFace triangle(OpenMesh::Vec3d a, OpenMesh::Vec3d b, OpenMesh::Vec3d c, int object) {
   return {{a, b, c}, FaceKind::wall_face, object, {}, {}};
 }

@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -32,6 +33,7 @@ struct DrawOptions {
   std::string hidden = "dashed";
   std::string parts = "walls,floor,fixtures";
   std::filesystem::path output;
+  bool force = false;
 };
 
 constexpr std::string_view kCameraPrefix = "camera:";
@@ -56,12 +58,8 @@ Result<SvgDocument> draw_model_view(const Plan& plan, const DrawOptions& o, doub
     return Result<SvgDocument>::failure(
         fmt::format("--parts \"{}\": \"{}\" is not walls, floor or fixtures", o.parts, bad));
   }
-  Model model;
-  try {
-    model = build_model(plan, BuildOptions{.parts = options.parts});
-  } catch (const PreconditionError& e) {
-    return Result<SvgDocument>::failure(fmt::format("{}: {}", o.plan_file.string(), e.what()));
-  }
+  // A model that cannot be built throws PreconditionError: run_draw reports it as a plan error.
+  const Model model = build_model(plan, BuildOptions{.parts = options.parts});
   const std::string title = o.plan_file.filename().string();
   const LineDrawing drawing = draw_line_view(model, view, options, title);
   return make_line_drawing_svg(drawing, fmt::format("{}: {}", title, view.name));
@@ -124,13 +122,19 @@ int run_draw(const DrawOptions& o) {
   if (o.output.extension() != ".svg") {
     return fail(fmt::format("-o \"{}\": drawings are written as .svg", o.output.string()));
   }
-  const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, /*force=*/false);
+  const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
   if (!loaded.plan) return loaded.exit_status;
   const Result<ViewDrawer> drawer = find_view(o.view, *loaded.plan);
   if (!drawer.ok()) return fail(o.plan_file.string() + ": " + drawer.error());
-  Result<SvgDocument> document = drawer.value()(*loaded.plan, o, scale);
-  if (!document.ok()) return fail(document.error());
-  if (const Status written = write_svg(document.value(), o.output); !written.ok()) {
+  std::optional<Result<SvgDocument>> document;
+  try {
+    document = drawer.value()(*loaded.plan, o, scale);
+  } catch (const PreconditionError& e) {
+    std::fprintf(stderr, "roomcad draw: %s: error: %s\n", o.plan_file.string().c_str(), e.what());
+    return kPlanErrors;
+  }
+  if (!document->ok()) return fail(document->error());
+  if (const Status written = write_svg(document->value(), o.output); !written.ok()) {
     return fail(written.error);
   }
   std::printf("wrote %s\n", o.output.string().c_str());
@@ -175,6 +179,7 @@ void add_draw_command(CLI::App& root, Commands& commands) {
   app->add_option("--cut-height", o->cut_height, "height of the plan's section, metres")
       ->capture_default_str();
   app->add_option("-o,--output", o->output, "OUT.svg (written atomically)")->required();
+  app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
   commands.push_back({app, [o] { return run_draw(*o); }});
 }
 

@@ -117,6 +117,35 @@ TEST(HiddenLines, NoEdgeBetweenCoplanarFaces) {
   EXPECT_EQ(r.hidden.size(), 3u);
 }
 
+/// One 4 m wall with a window, turned `degrees` about the origin.
+Plan turned_wall(double degrees) {
+  const double a = degrees * M_PI / 180.0;
+  Plan plan;
+  plan.site.origin = {-6.0, -6.0};
+  plan.site.cells = {12, 12};
+  Wall& w = plan.walls.emplace_back();
+  w.id = "w";
+  w.from = {0.0, 0.0};
+  w.to = {4.0 * std::cos(a), 4.0 * std::sin(a)};
+  Opening& o = plan.openings.emplace_back();
+  o.id = "win";
+  o.type = OpeningType::window;
+  o.wall = "w";
+  o.offset = 1.4;
+  o.width = 1.2;
+  return plan;
+}
+
+TEST(HiddenLines, RoundingOfTurnedWallsMakesNoCreases) {
+  // Turned, the faces around the window are one plane only up to the doubles' rounding; they
+  // must still draw no edge between them: as many feature edges as the axis-aligned wall.
+  std::vector<detail::Edge3> straight, turned;
+  detail::append_feature_edges(build_model(turned_wall(0.0)).walls, straight);
+  detail::append_feature_edges(build_model(turned_wall(31.0)).walls, turned);
+  ASSERT_FALSE(straight.empty());
+  EXPECT_EQ(turned.size(), straight.size());
+}
+
 TEST(HiddenLines, CollinearPiecesAreMerged) {
   Model model;
   add_face_properties(model.walls);

@@ -5,6 +5,8 @@
 // visibility (1); counters: triangles, culled (skipped by the pre-pass), cull_ms (the pre-pass
 // itself, inside the frame time), on_screen (triangles set up for the raster),
 // shadowed (triangles the pre-pass from the first light finds wholly in shadow).
+// BM_PrePass/<scene>: find_visible_faces alone; counters: visible, front_facing, regions,
+// crossings (line-triangle crossings computed).
 // BM_HiddenLines/<scene>: the isometric line drawing; counters: edges, pieces.
 #include <benchmark/benchmark.h>
 
@@ -73,6 +75,18 @@ void render_frames(benchmark::State& state, const BenchScene* s, FaceCull cull) 
   state.counters["shadowed"] = static_cast<double>(lit.front_facing - lit.visible_count);
 }
 
+/// The pre-pass alone, with its work counts (independent of the machine's load).
+void run_pre_pass(benchmark::State& state, const BenchScene* s) {
+  const RenderOptions options = frame_options(*s, FaceCull::visibility);
+  const VisibilityView view{frame_camera(s->scene, options), options.width, options.height};
+  VisibilityResult r;
+  for (auto _ : state) r = find_visible_faces(s->scene, view);
+  state.counters["visible"] = static_cast<double>(r.visible_count);
+  state.counters["front_facing"] = static_cast<double>(r.front_facing);
+  state.counters["regions"] = static_cast<double>(r.regions);
+  state.counters["crossings"] = static_cast<double>(r.crossings);
+}
+
 void draw_hidden_lines(benchmark::State& state, const BenchScene* s) {
   const LineView iso = *preset_line_view("iso");
   HiddenLineResult r;
@@ -94,6 +108,8 @@ int main(int argc, char** argv) {
           render_frames, &s, cull)
           ->Unit(benchmark::kMillisecond);
     }
+    benchmark::RegisterBenchmark(("BM_PrePass/" + s.name).c_str(), run_pre_pass, &s)
+        ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("BM_HiddenLines/" + s.name).c_str(), draw_hidden_lines, &s)
         ->Unit(benchmark::kMillisecond);
   }

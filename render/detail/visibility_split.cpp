@@ -153,14 +153,31 @@ bool has_triangle_inside(const Context& cx, const Region& r) {
   });
 }
 
+/// Separating-axis test of a triangle (widened by kCoverSlack) against a closed rectangle:
+/// the boxes overlap and no edge line has the whole rectangle on its outer side.
+bool meets_rectangle(const FlatTriangle& t, double x0, double y0, double x1, double y1) {
+  const Box2& b = t.box;
+  if (b.max.x < x0 - kCoverSlack || b.min.x > x1 + kCoverSlack || b.max.y < y0 - kCoverSlack ||
+      b.min.y > y1 + kCoverSlack) {
+    return false;
+  }
+  const Point2 &p0 = t.p[0], &p1 = t.p[1], &p2 = t.p[2];
+  const double orient = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x) > 0.0 ? 1.0 : -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const Point2 a = t.p[i], e{t.p[(i + 1) % 3].x - a.x, t.p[(i + 1) % 3].y - a.y};
+    // The rectangle's corner farthest inside this edge: if even it is outside, they are apart.
+    const double nx = -orient * e.y, ny = orient * e.x;  // inward normal
+    const double cx = nx > 0.0 ? x1 : x0, cy = ny > 0.0 ? y1 : y0;
+    if (nx * (cx - a.x) + ny * (cy - a.y) < -kCoverSlack * std::hypot(e.x, e.y)) return false;
+  }
+  return true;
+}
+
 std::vector<std::uint32_t> overlapping(const Context& cx, const std::vector<std::uint32_t>& from,
                                        double x0, double y0, double x1, double y1) {
   std::vector<std::uint32_t> out;
   for (const std::uint32_t i : from) {
-    const Box2& b = cx.triangles[i].box;
-    if (b.max.x >= x0 - kCoverSlack && b.min.x <= x1 + kCoverSlack &&
-        b.max.y >= y0 - kCoverSlack && b.min.y <= y1 + kCoverSlack)
-      out.push_back(i);
+    if (meets_rectangle(cx.triangles[i], x0, y0, x1, y1)) out.push_back(i);
   }
   return out;
 }
@@ -202,9 +219,15 @@ void split_horizontally(const Context& cx, Region& r, double c) {
 
 /// The recursion: stop when the contour sees one face and nothing lies wholly inside, or when
 /// no sample centre is left strictly inside; else split the longer side at a sample centre.
+/// A region meeting a single triangle also stops, the triangle marked seen (conservative: it
+/// may cover no sample there).
 void split_region(const Context& cx, Region r) {
   cx.counters.regions.fetch_add(1, std::memory_order_relaxed);
   if (r.candidates.empty() || (sees_one_face(r) && !has_triangle_inside(cx, r))) return;
+  if (r.candidates.size() == 1) {  // nothing can hide it here: seen if it covers a sample
+    cx.visible[cx.triangles[r.candidates.front()].id].store(1, std::memory_order_relaxed);
+    return;
+  }
   const double cx_ = split_at(r.x0, r.x1), cy = split_at(r.y0, r.y1);
   const bool vertical = !std::isnan(cx_) && (std::isnan(cy) || r.x1 - r.x0 >= r.y1 - r.y0);
   if (vertical) split_vertically(cx, r, cx_);

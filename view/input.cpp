@@ -10,9 +10,8 @@
 namespace roomcad {
 namespace {
 
-constexpr std::array<std::string_view, 13> kNamedKeys{
-    "left", "right", "up", "down", "delete", "backspace", "tab", "escape",
-    "space", "plus", "minus", "pageup", "pagedown"};
+constexpr std::array<std::string_view, 10> kNamedKeys{
+    "left", "right", "up", "down", "delete", "backspace", "tab", "escape", "plus", "minus"};
 
 /// @return `text` as an int, or nullopt (no sign other than a leading '-', no spaces).
 std::optional<int> parse_int(std::string_view text) {

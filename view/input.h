@@ -12,7 +12,7 @@
 namespace roomcad {
 
 /// One input. Keys are named in lower case: a..z, 0..9, left, right, up, down, delete,
-/// backspace, tab, escape, space, plus, minus, pageup, pagedown.
+/// backspace, tab, escape, plus, minus.
 struct InputEvent {
   enum class Type { key, click, drag, wheel };
   Type type = Type::key;
@@ -31,7 +31,7 @@ struct InputEvent {
 /// The syntax of `--keys`, for --help.
 inline constexpr std::string_view kKeyScriptSyntax =
     "comma-separated inputs, applied in order: a key name (a..z, 0..9, left, right, up, down, "
-    "delete, backspace, tab, escape, space, plus, minus, pageup, pagedown) with optional ctrl+ "
+    "delete, backspace, tab, escape, plus, minus) with optional ctrl+ "
     "and shift+ prefixes (ctrl+s); click:X:Y (left click at pixel X,Y); drag:DX:DY (left drag "
     "by DX,DY pixels: orbit); pan:DX:DY (right drag); wheel:N (N notches, negative: away)";
 

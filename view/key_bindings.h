@@ -11,6 +11,8 @@
 
 namespace roomcad {
 
+/// What keys do. Viewer::apply dispatches by range, so camera actions stay between
+/// orbit_left and toggle_projection, display toggles between toggle_shadows and toggle_overlay.
 enum class Action {
   orbit_left, orbit_right, orbit_up, orbit_down,           // about the target
   turn_x, turn_x_back, turn_y, turn_y_back, turn_z, turn_z_back,  // about world axes

@@ -36,11 +36,8 @@ std::string key_name(SDL_Keycode k) {
     case SDLK_BACKSPACE: return "backspace";
     case SDLK_TAB: return "tab";
     case SDLK_ESCAPE: return "escape";
-    case SDLK_SPACE: return "space";
     case SDLK_PLUS: case SDLK_EQUALS: case SDLK_KP_PLUS: return "plus";
     case SDLK_MINUS: case SDLK_KP_MINUS: return "minus";
-    case SDLK_PAGEUP: return "pageup";
-    case SDLK_PAGEDOWN: return "pagedown";
     default: return "";
   }
 }
@@ -176,7 +173,10 @@ Status run_window(Viewer& viewer, const WindowOptions& options) {
   bool quit = false;
   for (const InputEvent& input : options.script)
     if (status && !quit) quit = !viewer.handle(input);
-  if (status && !quit)
+  if (status && quit && !options.screenshot.empty())
+    status = Status::failure(fmt::format("--keys quits ('q') before the screenshot {} is taken",
+                                         options.screenshot.string()));
+  else if (status && !quit)
     status = options.screenshot.empty() ? run_interactive(window.get(), viewer)
                                         : run_screenshot(window.get(), viewer, options);
   window.reset();

@@ -165,6 +165,11 @@ TEST_F(ViewCommand, BadInputsAreNamedWithExitStatus2) {
   EXPECT_NE(camera.err.find("--camera 'nope'"), std::string::npos) << camera.err;
   const auto missing = run_roomcad({"view", (dir_ / "missing.json").string()});
   EXPECT_EQ(missing.status, 2);
+  const auto quits = run_roomcad({"view", studio(), "--keys", "1,q", "--screenshot",
+                                  (dir_ / "q.png").string()});
+  EXPECT_EQ(quits.status, 2);
+  EXPECT_NE(quits.err.find("before the screenshot"), std::string::npos) << quits.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "q.png"));
   unsetenv("DISPLAY");  // no screen: SDL's invisible fallback is refused
   unsetenv("SDL_VIDEODRIVER");
   const auto no_screen = run_roomcad({"view", studio(), "--screenshot", (dir_ / "y.png").string()});

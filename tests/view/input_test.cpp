@@ -47,13 +47,10 @@ TEST(KeyBindings, EveryBindingIsAKeyAndUnique) {
                    bindings[i].shift == bindings[j].shift)
           << bindings[i].key;
   }
-  InputEvent save;
-  save.key = "s", save.ctrl = true;
-  EXPECT_EQ(action_for(save), Action::save);
-  save.ctrl = false;
-  EXPECT_EQ(action_for(save), Action::orbit_down);
-  save.key = "k";
-  EXPECT_FALSE(action_for(save));
+  const std::vector<InputEvent> keys = parse_key_script("ctrl+s,s,k").value();
+  EXPECT_EQ(action_for(keys[0]), Action::save);
+  EXPECT_EQ(action_for(keys[1]), Action::orbit_down);
+  EXPECT_FALSE(action_for(keys[2]));
   EXPECT_NE(key_help().find("ctrl+s"), std::string::npos);
 }
 

@@ -2,6 +2,8 @@
 // camera and toggle the display, clicks select through the id buffer, errors are drawn red.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include "io/plan_json.h"
 #include "support/run_command.h"
 #include "view/input.h"
@@ -123,6 +125,25 @@ TEST(Viewer, ErrorsAreDrawnRedLiveAndListed) {
   for (int i = 0; i < 6; ++i) v.handle(key("z", true));
   EXPECT_TRUE(v.session().report().ok());
   EXPECT_EQ(red_pixels(), 0);
+}
+
+TEST(Viewer, RedrawsWhenTheFileChangesOnDisk) {
+  test::TempDir dir;
+  Plan plan = read_plan_file(studio()).plan.value();
+  const auto path = dir / "p.json";
+  ASSERT_TRUE(test::write_bytes(path, write_plan_text(plan)));
+  Viewer v = open_viewer(path);
+  const std::vector<std::uint8_t> before = v.frame().pixels;
+  EXPECT_FALSE(v.poll_file());
+  EXPECT_FALSE(v.needs_redraw());
+  for (Wall& w : plan.walls) w.color = {0x20, 0x60, 0x20};
+  const auto later = std::filesystem::last_write_time(path) + std::chrono::seconds(2);
+  ASSERT_TRUE(test::write_bytes(path, write_plan_text(plan)));
+  std::filesystem::last_write_time(path, later);
+  EXPECT_TRUE(v.poll_file());
+  EXPECT_TRUE(v.needs_redraw());
+  EXPECT_NE(v.frame().pixels, before);
+  EXPECT_EQ(v.session().plan(), plan);
 }
 
 TEST(Viewer, OverlayWritesOnTheFrame) {

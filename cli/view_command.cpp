@@ -23,6 +23,9 @@ struct ViewArgs {
 /// @return the viewer options the flags ask for, or an error naming the flag and value.
 Result<ViewerOptions> make_options(const ViewArgs& a, const Plan& plan) {
   ViewerOptions o{.width = a.width, .height = a.height, .overlay = !a.no_overlay, .threads = a.threads};
+  if (const std::string problem = check_render_options({.width = a.width, .height = a.height});
+      !problem.empty())
+    return Result<ViewerOptions>::failure(fmt::format("--width, --height: {}", problem));
   const auto preset = parse_view_preset(a.view);
   if (!preset)
     return Result<ViewerOptions>::failure(

@@ -163,6 +163,10 @@ TEST_F(ViewCommand, BadInputsAreNamedWithExitStatus2) {
   const auto camera = run_roomcad({"view", studio(), "--camera", "nope"});
   EXPECT_EQ(camera.status, 2);
   EXPECT_NE(camera.err.find("--camera 'nope'"), std::string::npos) << camera.err;
+  const auto huge = run_roomcad({"view", studio(), "--width", "16384", "--height", "16384"});
+  EXPECT_EQ(huge.status, 2);
+  EXPECT_NE(huge.err.find("--width, --height: width x height is 16384 x 16384"), std::string::npos)
+      << huge.err;
   const auto missing = run_roomcad({"view", (dir_ / "missing.json").string()});
   EXPECT_EQ(missing.status, 2);
   const auto quits = run_roomcad({"view", studio(), "--keys", "1,q", "--screenshot",

@@ -1,5 +1,7 @@
-// `roomcad draw`: line drawings of a plan as SVG. Views are looked up in one table, so the
-// elevations and camera views can be added beside `plan` without touching the rest.
+// `roomcad draw`: line drawings of a plan as SVG: the floor plan, elevations, isometric and
+// camera views (render/line_drawing.h) with hidden lines removed. Views are looked up in one
+// table; `camera:ID` names a plan camera.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -7,14 +9,18 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/command.h"
+#include "cli/parts_option.h"
 #include "cli/plan_loading.h"
 #include "io/floor_plan_svg.h"
 #include "render/floor_plan.h"
+#include "render/line_drawing.h"
 
 namespace roomcad::cli {
 namespace {
@@ -24,8 +30,13 @@ struct DrawOptions {
   std::string view = "plan";
   std::string scale = "1:50";
   double cut_height = 1.0;
+  std::string hidden = "dashed";
+  std::string parts = "walls,floor,fixtures";
   std::filesystem::path output;
+  bool force = false;
 };
+
+constexpr std::string_view kCameraPrefix = "camera:";
 
 /// A view: draws a validated plan with checked options (scale = the N of 1:N).
 /// @return the document, or why this view cannot draw this plan.
@@ -37,9 +48,53 @@ Result<SvgDocument> draw_plan_view(const Plan& plan, const DrawOptions& o, doubl
                              fmt::format("{}: floor plan", o.plan_file.filename().string()));
 }
 
+/// Draws the model of `plan` as seen by `view` (hidden lines removed).
+Result<SvgDocument> draw_model_view(const Plan& plan, const DrawOptions& o, double scale,
+                                    const LineView& view) {
+  LineDrawingOptions options{.scale = scale,
+                             .hidden = o.hidden == "off" ? HiddenLines::off : HiddenLines::dashed};
+  std::string bad;
+  if (!parse_parts(o.parts, options.parts, bad)) {
+    return Result<SvgDocument>::failure(
+        fmt::format("--parts \"{}\": \"{}\" is not walls, floor or fixtures", o.parts, bad));
+  }
+  // A model that cannot be built throws PreconditionError: run_draw reports it as a plan error.
+  const Model model = build_model(plan, BuildOptions{.parts = options.parts});
+  const std::string title = o.plan_file.filename().string();
+  const LineDrawing drawing = draw_line_view(model, view, options, title);
+  return make_line_drawing_svg(drawing, fmt::format("{}: {}", title, view.name));
+}
+
+ViewDrawer preset_drawer(const std::string& name) {
+  return [name](const Plan& plan, const DrawOptions& o, double scale) {
+    return draw_model_view(plan, o, scale, *preset_line_view(name));
+  };
+}
+
 const std::map<std::string, ViewDrawer>& views() {
-  static const std::map<std::string, ViewDrawer> table{{"plan", draw_plan_view}};
+  static const std::map<std::string, ViewDrawer> table{
+      {"plan", draw_plan_view},         {"north", preset_drawer("north")},
+      {"south", preset_drawer("south")}, {"east", preset_drawer("east")},
+      {"west", preset_drawer("west")},   {"iso", preset_drawer("iso")}};
   return table;
+}
+
+/// The drawer of a view name: a table entry, or camera:ID of the plan's cameras.
+Result<ViewDrawer> find_view(const std::string& name, const Plan& plan) {
+  if (const auto it = views().find(name); it != views().end()) return it->second;
+  const std::string id = name.substr(kCameraPrefix.size());
+  std::string known;
+  for (const Camera& c : plan.cameras) {
+    if (c.id == id) {
+      return ViewDrawer([c](const Plan& p, const DrawOptions& o, double scale) {
+        return draw_model_view(p, o, scale, camera_line_view(c));
+      });
+    }
+    known += (known.empty() ? "" : ", ") + c.id;
+  }
+  return Result<ViewDrawer>::failure(
+      fmt::format("--view \"{}\": the plan has no camera \"{}\" (it has: {})", name, id,
+                  known.empty() ? "none" : known));
 }
 
 int fail(const std::string& message) {
@@ -67,11 +122,19 @@ int run_draw(const DrawOptions& o) {
   if (o.output.extension() != ".svg") {
     return fail(fmt::format("-o \"{}\": drawings are written as .svg", o.output.string()));
   }
-  const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, /*force=*/false);
+  const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
   if (!loaded.plan) return loaded.exit_status;
-  Result<SvgDocument> document = views().at(o.view)(*loaded.plan, o, scale);
-  if (!document.ok()) return fail(document.error());
-  if (const Status written = write_svg(document.value(), o.output); !written.ok()) {
+  const Result<ViewDrawer> drawer = find_view(o.view, *loaded.plan);
+  if (!drawer.ok()) return fail(o.plan_file.string() + ": " + drawer.error());
+  std::optional<Result<SvgDocument>> document;
+  try {
+    document = drawer.value()(*loaded.plan, o, scale);
+  } catch (const PreconditionError& e) {
+    std::fprintf(stderr, "roomcad draw: %s: error: %s\n", o.plan_file.string().c_str(), e.what());
+    return kPlanErrors;
+  }
+  if (!document->ok()) return fail(document->error());
+  if (const Status written = write_svg(document->value(), o.output); !written.ok()) {
     return fail(written.error);
   }
   std::printf("wrote %s\n", o.output.string().c_str());
@@ -88,18 +151,35 @@ void add_draw_command(CLI::App& root, Commands& commands) {
       "  plan: the architectural floor plan, a horizontal section at --cut-height: cut walls\n"
       "        filled, windows as three lines, doors with leaf and swing, rooms with name and\n"
       "        area, per-wall and overall dimensions (metres), a scale bar.\n"
+      "  north|south|east|west: orthographic elevations named after the face shown (north:\n"
+      "        standing north, looking south); iso: isometric from the south-west;\n"
+      "        camera:ID: the plan camera's view. Feature edges only; hidden lines removed\n"
+      "        exactly, drawn dashed (--hidden dashed) or left out (--hidden off).\n"
       "Example: roomcad draw house.json --view plan --scale 1:50 -o house-plan.svg");
   app->add_option("PLAN", o->plan_file, "the plan file (JSON)")->required();
   std::vector<std::string> names;
   for (const auto& [name, drawer] : views()) names.push_back(name);
-  app->add_option("--view", o->view, "which drawing")
-      ->check(CLI::IsMember(names))
+  const CLI::Validator known_view(
+      [names](std::string& v) -> std::string {
+        if (v.rfind(kCameraPrefix, 0) == 0 && v.size() > kCameraPrefix.size()) return {};
+        if (std::find(names.begin(), names.end(), v) != names.end()) return {};
+        return fmt::format("\"{}\" is not {} or camera:ID", v, fmt::join(names, ", "));
+      },
+      "VIEW");
+  app->add_option("--view", o->view, "which drawing: plan, north, south, east, west, iso, camera:ID")
+      ->check(known_view)
+      ->capture_default_str();
+  app->add_option("--hidden", o->hidden, "hidden edges of views: dashed or off")
+      ->check(CLI::IsMember({"dashed", "off"}))
+      ->capture_default_str();
+  app->add_option("--parts", o->parts, "parts a view draws: walls,floor,fixtures (floor as outline)")
       ->capture_default_str();
   app->add_option("--scale", o->scale, "paper scale 1:N, between 1:1 and 1:10000")
       ->capture_default_str();
   app->add_option("--cut-height", o->cut_height, "height of the plan's section, metres")
       ->capture_default_str();
   app->add_option("-o,--output", o->output, "OUT.svg (written atomically)")->required();
+  app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
   commands.push_back({app, [o] { return run_draw(*o); }});
 }
 

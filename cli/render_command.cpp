@@ -27,7 +27,7 @@ struct RenderArgs {
   std::string camera, eye, target, up = "0,0,1", projection = "perspective", view;
   double fov = 50.0, view_height = 10.0;
   std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";
-  std::string parts = "walls,floor,fixtures";
+  std::string parts = "walls,floor,fixtures", cull = "back";
   bool stats = false, force = false;
 };
 
@@ -113,6 +113,7 @@ RenderOptions make_options(const RenderArgs& a, const Plan& plan) {
     throw BadFlag{fmt::format("--parts '{}': '{}' is not walls, floor or fixtures", a.parts, bad)};
   }
   o.threads = a.threads;
+  o.cull = a.cull == "visibility" ? FaceCull::visibility : FaceCull::back_faces;
   if (const std::string problem = check_render_options(o); !problem.empty()) throw BadFlag{problem};
   return o;
 }
@@ -160,9 +161,11 @@ int run_render(const RenderArgs& a) {
   if (a.stats) {
     std::fprintf(stderr,
                  "{\"triangles\": %zu, \"screen_triangles\": %zu, \"shadow_ms\": %.3f, "
-                 "\"raster_ms\": %.3f, \"frame_ms\": %.3f, \"width\": %d, \"height\": %d}\n",
+                 "\"raster_ms\": %.3f, \"frame_ms\": %.3f, \"width\": %d, \"height\": %d, "
+                 "\"culled_triangles\": %zu, \"cull_ms\": %.3f}\n",
                  stats.triangles, stats.screen_triangles, stats.shadow_ms, stats.raster_ms,
-                 stats.frame_ms, options.width, options.height);
+                 stats.frame_ms, options.width, options.height, stats.culled_triangles,
+                 stats.cull_ms);
   }
   return write_outputs(a, out, model) ? kOk : kCannotRun;
 }
@@ -196,6 +199,11 @@ void add_render_command(CLI::App& root, Commands& commands) {
   app->add_option("--background", args->background, "Background colour #rrggbb")->capture_default_str();
   app->add_option("--grid", args->grid, "Draw the site's tiles on the floor: on or off")->capture_default_str();
   app->add_option("--parts", args->parts, "Parts to draw: walls,floor,fixtures")->capture_default_str();
+  app->add_option("--cull", args->cull,
+                  "back: skip faces turned away; visibility: also faces the seed-004 pre-pass "
+                  "finds hidden (same picture)")
+      ->check(CLI::IsMember({"back", "visibility"}))
+      ->capture_default_str();
   app->add_option("--depth", args->depth, "Also write the depth (metres along the view) as PFM");
   app->add_option("--ids", args->ids, "Also write object ids as PNG, with a JSON legend beside it");
   app->add_option("--threads", args->threads, "Threads, 0 = all cores (same picture at any count)")

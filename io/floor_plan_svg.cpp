@@ -9,6 +9,7 @@ namespace {
 constexpr double kThin = 0.18;    // mm: dimensions, swings, things seen below the cut
 constexpr double kMedium = 0.25;  // windows
 constexpr double kThick = 0.5;    // door leaves
+constexpr double kOutline = 0.35;  // visible edges of elevations and views
 
 std::string_view anchor_name(TextAnchor anchor) {
   switch (anchor) {
@@ -30,6 +31,20 @@ void add_polygons(SvgDocument& doc, std::string_view id, std::span<const PaperPo
 
 void add_lines(SvgDocument& doc, std::span<const PaperLine> lines) {
   for (const PaperLine& l : lines) doc.add_line(l.a, l.b);
+}
+
+void add_line_group(SvgDocument& doc, std::string_view id, std::span<const PaperLine> lines,
+                    const SvgStyle& style) {
+  doc.begin_group(id, id, style);
+  add_lines(doc, lines);
+  doc.end_group();
+}
+
+void add_scale_bar(SvgDocument& doc, std::span<const PaperPolygon> black,
+                   std::span<const PaperPolygon> white) {
+  add_polygons(doc, "scale-bar", black, {.fill = "#000"});
+  add_polygons(doc, "scale-bar-white", white,
+               {.stroke = "#000", .stroke_width = kThin, .fill = "#fff"});
 }
 
 void add_texts(SvgDocument& doc, std::string_view id, std::span<const PaperText> texts) {
@@ -72,18 +87,26 @@ SvgDocument make_floor_plan_svg(const FloorPlanDrawing& d, const std::string& ti
   add_polygons(doc, "walls-above", d.walls_above,
                {.stroke = "#000", .stroke_width = kThin, .fill = "none", .dashes = {2, 1}});
   add_polygons(doc, "cut-walls", d.cut_walls, {.fill = "#1a1a1a"});
-  doc.begin_group("windows", "windows", {.stroke = "#000", .stroke_width = kMedium});
-  add_lines(doc, d.windows);
-  doc.end_group();
+  add_line_group(doc, "windows", d.windows, {.stroke = "#000", .stroke_width = kMedium});
   add_doors(doc, d);
-  doc.begin_group("dimensions", "dimensions", {.stroke = "#000", .stroke_width = kThin});
-  add_lines(doc, d.dimension_lines);
-  doc.end_group();
+  add_line_group(doc, "dimensions", d.dimension_lines, {.stroke = "#000", .stroke_width = kThin});
   add_texts(doc, "dimension-texts", d.dimension_texts);
   add_texts(doc, "room-labels", d.room_labels);
-  add_polygons(doc, "scale-bar", d.scale_bar_black, {.fill = "#000"});
-  add_polygons(doc, "scale-bar-white", d.scale_bar_white,
-               {.stroke = "#000", .stroke_width = kThin, .fill = "#fff"});
+  add_scale_bar(doc, d.scale_bar_black, d.scale_bar_white);
+  add_texts(doc, "labels", d.labels);
+  return doc;
+}
+
+SvgDocument make_line_drawing_svg(const LineDrawing& d, const std::string& title) {
+  SvgDocument doc(d.width, d.height);
+  if (!title.empty()) doc.set_title(title);
+  doc.add_rect({0, 0}, d.width, d.height, {.fill = "#fff"});
+  add_line_group(doc, "hidden", d.hidden,
+                 {.stroke = "#000", .stroke_width = kThin, .dashes = {1.5, 1.0}, .linecap = "butt"});
+  add_line_group(doc, "visible", d.visible,
+                 {.stroke = "#000", .stroke_width = kOutline, .linecap = "round"});
+  add_line_group(doc, "frame", d.frame, {.stroke = "#000", .stroke_width = kThin});
+  add_scale_bar(doc, d.scale_bar_black, d.scale_bar_white);
   add_texts(doc, "labels", d.labels);
   return doc;
 }

@@ -5,6 +5,7 @@
 
 #include "io/svg_writer.h"
 #include "render/floor_plan.h"
+#include "render/line_drawing.h"
 
 namespace roomcad {
 
@@ -14,5 +15,11 @@ namespace roomcad {
 /// @return the document. O(elements).
 [[nodiscard]] SvgDocument make_floor_plan_svg(const FloorPlanDrawing& drawing,
                                               const std::string& title);
+
+/// Builds the SVG of a line drawing (elevation, isometric, camera view): groups hidden (thin,
+/// dashed, under everything), visible (0.35 mm), frame, scale-bar and labels.
+/// @return the document. O(elements).
+[[nodiscard]] SvgDocument make_line_drawing_svg(const LineDrawing& drawing,
+                                                const std::string& title);
 
 }  // namespace roomcad

@@ -4,11 +4,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <stdexcept>
 #include <utility>
 
 #include "render/detail/plan_paper.h"
+#include "render/detail/scale_bar.h"
 #include "validation/validate.h"
 
 namespace roomcad {
@@ -133,30 +133,6 @@ void fit_page(FloorPlanDrawing& d) {
   d.height = box.y1 - box.y0 + 2.0 * kMarginMm + kFooterMm;
 }
 
-/// A scale bar of five cells at `origin` (its top-left corner), as long as a round number of
-/// metres that fits in `room_mm`.
-void add_scale_bar(Point2 origin, double room_mm, const PaperMap& map, FloorPlanDrawing& out) {
-  constexpr std::array kLengths{0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0};
-  double metres = kLengths.front();
-  for (const double l : kLengths) {
-    if (l * map.mm_per_m <= room_mm) metres = l;
-  }
-  const double cell = metres * map.mm_per_m / 5.0;
-  constexpr double kHeight = 2.0;
-  for (int i = 0; i < 5; ++i) {
-    const double x = origin.x + i * cell;
-    PaperPolygon rect{{x, origin.y},
-                      {x + cell, origin.y},
-                      {x + cell, origin.y + kHeight},
-                      {x, origin.y + kHeight}};
-    (i % 2 == 0 ? out.scale_bar_black : out.scale_bar_white).push_back(std::move(rect));
-  }
-  const double baseline = origin.y + kHeight + 4.0;
-  out.labels.push_back({{origin.x, baseline}, "0", 2.5, 0.0, TextAnchor::middle});
-  out.labels.push_back(
-      {{origin.x + 5 * cell, baseline}, fmt::format("{} m", metres), 2.5, 0.0, TextAnchor::middle});
-}
-
 }  // namespace
 
 std::string check_floor_plan_options(const FloorPlanOptions& o) {
@@ -190,8 +166,8 @@ FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& optio
   }
   fit_page(out);
   const double footer = out.height - kFooterMm;
-  add_scale_bar({kMarginMm, footer}, std::max(40.0, 0.35 * (out.width - 2.0 * kMarginMm)), map,
-                out);
+  detail::add_scale_bar({kMarginMm, footer}, std::max(40.0, 0.35 * (out.width - 2.0 * kMarginMm)),
+                        map.mm_per_m, {out.scale_bar_black, out.scale_bar_white, out.labels});
   out.labels.push_back(
       {{kMarginMm, footer + 16.0},
        fmt::format("Floor plan, section at {:.2f} m, scale 1:{}, dimensions in metres",

@@ -11,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include "render/detail/geometry_pass.h"
+#include "render/visibility.h"
 
 namespace roomcad {
 namespace {
@@ -186,12 +187,22 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   const CameraMatrices cam = frame_camera(scene, options);
   f.uniforms = make_uniforms(options, cam, lights);
   f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
+  std::vector<std::uint8_t> seen;
+  if (options.cull == FaceCull::visibility) {
+    const auto cull_start = Clock::now();
+    VisibilityResult v = find_visible_faces(
+        scene, {cam, options.width * options.ssaa, options.height * options.ssaa});
+    stats.culled_triangles = scene.triangle_count() - v.visible_count;
+    seen = std::move(v.visible);
+    stats.cull_ms = ms_since(cull_start);
+  }
   f.bins = detail::run_geometry_pass(
       scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
                                   .width = options.width * options.ssaa,
                                   .height = options.height * options.ssaa,
                                   .tile_size = 64,
-                                  .cull_back_faces = true});
+                                  .cull_back_faces = true,
+                                  .uniform_draw = seen.empty() ? nullptr : seen.data()});
   size_buffers(options.width, options.height, out);
   tbb::parallel_for(0, f.bins.tile_count(), [&](int tile) { render_tile(f, tile, out); });
   stats.raster_ms = ms_since(raster_start);

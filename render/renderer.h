@@ -54,6 +54,12 @@ inline constexpr long long kMaxImageSamples = 1LL << 28;  // 8192 x 8192 at ssaa
 inline constexpr int kMaxShadowResolution = 8192;
 inline constexpr int kMaxThreads = 256;
 
+/// Which faces the colour pass skips before rasterising.
+enum class FaceCull {
+  back_faces,  ///< one-sided faces turned away from the camera
+  visibility,  ///< also every face the seed-004 pre-pass (render/visibility.h) finds unseen
+};
+
 /// Everything a frame depends on besides the model. Designated initialisers welcome.
 struct RenderOptions {
   int width = 1280;   ///< output pixels, 1 .. kMaxImageSide, width * height <= kMaxImagePixels
@@ -70,6 +76,7 @@ struct RenderOptions {
   std::vector<Light> lights{};           ///< empty: default_light(); at most kMaxLights used
   GridLines grid{};                      ///< tile lines on floor faces
   Parts parts{};                         ///< which parts of the model to draw
+  FaceCull cull = FaceCull::back_faces;  ///< the image is the same either way
   int threads = 0;                       ///< 0: all cores; the image does not depend on it
 };
 
@@ -80,6 +87,8 @@ struct RenderStats {
   double shadow_ms = 0.0;            ///< all shadow maps
   double raster_ms = 0.0;            ///< the colour pass: geometry, raster, shading, resolve
   double frame_ms = 0.0;             ///< everything render_model did
+  std::size_t culled_triangles = 0;  ///< skipped by FaceCull::visibility
+  double cull_ms = 0.0;              ///< the visibility pre-pass (part of raster_ms)
 };
 
 /// Checks options. @return an empty string, or what is wrong (field and value).

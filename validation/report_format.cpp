@@ -1,5 +1,7 @@
 #include "validation/report_format.h"
 
+#include <cstdio>
+
 #include <nlohmann/json.hpp>
 
 namespace roomcad {
@@ -45,7 +47,14 @@ std::string json_items(const Report& report, Severity severity) {
   return out.empty() ? "[]" : '[' + out + "\n  ]";
 }
 
-std::string text_number(double x) { return nlohmann::json(x).dump(); }
+/// Ten significant digits: enough to place any problem on a site (a 1e-7 m gap still shows), while
+/// a coordinate computed as 7.859999999999999 reads 7.86. JSON keeps the exact doubles.
+/// Cost: O(1).
+std::string text_number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.10g", x == 0 ? 0.0 : x);  // no "-0"
+  return buffer;
+}
 
 std::string text_point(const Point2& p) {
   return '(' + text_number(p.x) + ", " + text_number(p.y) + ')';

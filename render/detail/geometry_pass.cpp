@@ -126,6 +126,7 @@ BinnedTriangles run_geometry_pass(const Scene& scene, const GeometryPass& pass) 
       const Cluster& cluster = scene.clusters[k];
       if (is_outside_frustum(cluster.bounds, pass.uniform_view_projection)) continue;
       for (std::uint32_t i = cluster.first; i < cluster.first + cluster.count; ++i) {
+        if (pass.uniform_draw && !pass.uniform_draw[i]) continue;
         process_triangle(scene, i, pass, bins.chunks[c]);
       }
     }

@@ -39,6 +39,7 @@ struct GeometryPass {
   int height = 0;
   int tile_size = 64;
   bool cull_back_faces = true;  ///< one-sided scene triangles only; two-sided are never culled
+  const std::uint8_t* uniform_draw = nullptr;  ///< per scene triangle, 0: skip; nullptr: all
 };
 
 /// Runs the pass over the whole scene, in parallel over fixed chunks of clusters (the caller's

@@ -70,7 +70,10 @@ TEST(DrawCommand, BadOptionsExitTwo) {
     std::vector<std::string> args;
     std::string message;
   } cases[] = {
-      {{plan, "--view", "north", "-o", out}, "--view"},
+      {{plan, "--view", "sideways", "-o", out}, "--view"},
+      {{plan, "--view", "camera:nope", "-o", out}, "no camera \"nope\""},
+      {{plan, "--view", "iso", "--hidden", "grey", "-o", out}, "--hidden"},
+      {{plan, "--view", "iso", "--parts", "roof", "-o", out}, "\"roof\""},
       {{plan, "--scale", "1:x", "-o", out}, "--scale \"1:x\""},
       {{plan, "--scale", "1:0", "-o", out}, "scale 1:0"},
       {{plan, "--cut-height", "-1", "-o", out}, "cut height"},
@@ -83,6 +86,40 @@ TEST(DrawCommand, BadOptionsExitTwo) {
     EXPECT_NE((run.out + run.err).find(c.message), std::string::npos) << run.out << run.err;
   }
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(DrawCommand, DrawsElevationsIsoAndCameraViews) {
+  const TempDir dir;
+  std::string text = kRoomPlan;
+  text.replace(text.rfind('}'), 1,
+               R"(, "cameras": [ { "id": "inside", "eye": [2, 2, 1.6], "target": [6, 4, 1.2] } ] })");
+  const std::string plan = (dir / "room.json").string();
+  ASSERT_TRUE(write_bytes(plan, text));
+  for (const char* view : {"north", "south", "east", "west", "iso", "camera:inside"}) {
+    SCOPED_TRACE(view);
+    const fs::path out = dir / (std::string(view).substr(0, 6) + ".svg");
+    const CommandResult run = draw({plan, "--view", view, "-o", out.string()});
+    ASSERT_EQ(run.status, 0) << run.err;
+    const std::string svg = read_bytes(out);
+    EXPECT_NE(svg.find("<g id=\"visible\""), std::string::npos);
+    EXPECT_NE(svg.find("<line"), std::string::npos);
+    EXPECT_NE(svg.find(std::string(view) == "camera:inside" ? "not to scale" : "scale 1:50"),
+              std::string::npos);
+  }
+  // The south elevation looks at the door and the window: hidden lines dashed, or left out.
+  ASSERT_EQ(draw({plan, "--view", "south", "-o", (dir / "dashed.svg").string()}).status, 0);
+  ASSERT_EQ(draw({plan, "--view", "south", "--hidden", "off", "-o", (dir / "off.svg").string()})
+                .status, 0);
+  const std::string dashed = read_bytes(dir / "dashed.svg"), off = read_bytes(dir / "off.svg");
+  const auto hidden_lines = [](const std::string& svg) {
+    const std::size_t begin = svg.find("<g id=\"hidden\"");
+    const std::size_t end = svg.find("</g>", begin);
+    std::size_t n = 0;
+    for (std::size_t p = svg.find("<line", begin); p < end; p = svg.find("<line", p + 1)) ++n;
+    return n;
+  };
+  EXPECT_GT(hidden_lines(dashed), 0u);
+  EXPECT_EQ(hidden_lines(off), 0u);
 }
 
 }  // namespace

@@ -70,12 +70,24 @@ TEST(ReportFormat, WarningsAloneAreOk) {
 TEST(ReportFormat, TextWithoutColour) {
   EXPECT_EQ(format_report_text(sample_report(), false),
             "error[wall_overlap] a, b: walls \"a\" and \"b\" overlap\n"
-            "  at: (1.0, 2.5) .. (3.0, 4.0) m\n"
+            "  at: (1, 2.5) .. (3, 4) m\n"
             "  fix: move wall \"b\" 0.1 m east\n"
             "error[parse_error]: plan.json:3:7: /walls/0/thickness: expected a number, found \"x\"\n"
             "warning[door_above_floor] d\"1: door \"d1\" starts 0.2 m above the floor\n"
-            "  at: (0.1, -0.0) m\n");
+            "  at: (0.1, 0) m\n");
   EXPECT_EQ(format_report_summary(sample_report()), "2 errors, 1 warning");
+}
+
+TEST(ReportFormat, TextRoundsPlacesToTenDigitsButKeepsTinyOnes) {
+  Report r;
+  Diagnostic d;
+  d.code = std::string("wall_overlap");
+  d.message = std::string("m");
+  d.where = Where{{7.859999999999999, 1e-7}, Point2{-2.0000000000000004, 123456.789}};
+  r.add(d);
+  EXPECT_NE(format_report_text(r, false).find("  at: (7.86, 1e-07) .. (-2, 123456.789) m\n"),
+            std::string::npos);
+  EXPECT_NE(format_report_json(r).find("7.859999999999999"), std::string::npos);
 }
 
 TEST(ReportFormat, TextWithColourOnlyAddsEscapes) {

@@ -1,0 +1,67 @@
+// The exact 3D predicates of drawings, with CGAL's filtered kernel.
+#include "render/detail/exact_3d.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include <cmath>
+
+namespace roomcad::detail {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using E = CGAL::Exact_predicates_exact_constructions_kernel;
+using P3 = K::Point_3;
+
+/// Metres off a face's plane below which a neighbour counts as the same plane (rounding).
+constexpr double kFlatTolerance = 1e-9;
+
+P3 to_point(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
+
+}  // namespace
+
+bool segment_meets_triangle(const glm::dvec3& a, const glm::dvec3& b, const Triangle3& t) {
+  const P3 p0 = to_point(t[0]), p1 = to_point(t[1]), p2 = to_point(t[2]);
+  const K::Segment_3 s(to_point(a), to_point(b));
+  if (!CGAL::collinear(p0, p1, p2)) return CGAL::do_intersect(s, K::Triangle_3(p0, p1, p2));
+  // Degenerate: the triangle is its longest side (or a point).
+  const K::Segment_3 sides[] = {{p0, p1}, {p1, p2}, {p2, p0}};
+  for (const K::Segment_3& side : sides) {
+    if (side.is_degenerate() ? s.has_on(side.source()) : CGAL::do_intersect(s, side)) return true;
+  }
+  return false;
+}
+
+bool is_crease(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r0,
+               const glm::dvec3& r1) {
+  const P3 a = to_point(p), b = to_point(q), c = to_point(r0), d = to_point(r1);
+  if (CGAL::collinear(a, b, c) || CGAL::collinear(a, b, d)) return true;
+  if (CGAL::orientation(a, b, c, d) == CGAL::COPLANAR) {
+    return CGAL::coplanar_orientation(a, b, c, d) != CGAL::NEGATIVE;
+  }
+  // Not exactly one plane: a plane the model's exact constructions rounded to doubles (a
+  // rotated wall's face split around an opening) is off by ~1e-15 m, a real crease by far more.
+  const glm::dvec3 n = glm::cross(q - p, r0 - p);
+  const double off_plane = std::abs(glm::dot(n, r1 - p)) / glm::length(n);
+  const bool opposite = glm::dot(n, glm::cross(q - p, r1 - p)) < 0.0;
+  return !(off_plane <= kFlatTolerance && opposite);
+}
+
+bool is_edge_on(const Triangle3& t, const glm::dvec3& eye, const glm::dvec3& forward,
+                bool perspective) {
+  const P3 p0 = to_point(t[0]), p1 = to_point(t[1]), p2 = to_point(t[2]);
+  if (CGAL::collinear(p0, p1, p2)) return true;
+  if (perspective) return CGAL::orientation(p0, p1, p2, to_point(eye)) == CGAL::COPLANAR;
+  // Differences of doubles round, so the edge vectors are built in the lazy exact kernel.
+  const auto e = [](const glm::dvec3& v) { return E::Point_3(v.x, v.y, v.z); };
+  const E::Point_3 e0 = e(t[0]);
+  return CGAL::orientation(e(t[1]) - e0, e(t[2]) - e0, E::Vector_3(forward.x, forward.y, forward.z)) ==
+         CGAL::COPLANAR;
+}
+
+bool is_collinear(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r) {
+  return CGAL::collinear(to_point(p), to_point(q), to_point(r));
+}
+
+}  // namespace roomcad::detail

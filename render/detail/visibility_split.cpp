@@ -1,0 +1,253 @@
+// Seed 004's recursive split: contours as runs of the face seen, the depth order carried along
+// each splitting line from crossing to crossing.
+#include "render/detail/visibility_split.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_invoke.h>
+
+namespace roomcad::detail {
+namespace {
+
+/// Triangles reach this far beyond their edges (samples): covers the rasteriser's float
+/// vertices and fixed-point rounding, so that no sample it draws is missed.
+constexpr double kCoverSlack = 1e-3;
+/// Depths this close (relative) are a tie: both faces count as seen.
+constexpr double kDepthTie = 1e-5;
+/// Regions with fewer candidates than this are split on one thread.
+constexpr std::size_t kParallelGrain = 256;
+
+/// A stretch [from, to] of a contour side and the face seen along it (-1: none).
+struct Run {
+  double from = 0.0, to = 0.0;
+  std::int64_t face = -1;
+};
+using Side = std::vector<Run>;
+
+struct Region {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;  ///< on sample centres
+  Side top, bottom, left, right;  ///< y = y0, y = y1 (along x); x = x0, x = x1 (along y)
+  std::vector<std::uint32_t> candidates;  ///< triangles whose box meets the region
+};
+
+struct Context {
+  const std::vector<FlatTriangle>& triangles;
+  std::vector<std::atomic<std::uint8_t>>& visible;
+  SplitCounters& counters;
+};
+
+/// The interval of the line {along = t, across = c} (horizontal when `horizontal`) inside a
+/// triangle widened by kCoverSlack. @return false if the line misses it.
+bool line_interval(const FlatTriangle& t, bool horizontal, double c, double& lo, double& hi) {
+  lo = -1e300, hi = 1e300;
+  double area2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const Point2 a = t.p[i], b = t.p[(i + 1) % 3];
+    area2 += a.x * b.y - a.y * b.x;
+  }
+  const double orient = area2 > 0.0 ? 1.0 : -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const Point2 a = t.p[i], b = t.p[(i + 1) % 3];
+    // inside: orient * cross(b - a, q - a) >= -slack * |b - a|, with q = (t, c) or (c, t)
+    const double ex = b.x - a.x, ey = b.y - a.y;
+    const double slack = kCoverSlack * std::hypot(ex, ey);
+    const double k = orient * (horizontal ? -ey : ex);       // coefficient of t
+    const double m = orient * (horizontal ? ex * (c - a.y) + ey * a.x
+                                          : -ey * (c - a.x) - ex * a.y) + slack;
+    // inside when k * t + m >= 0 (m holds the terms without t)
+    if (k == 0.0) {
+      if (m < 0.0) return false;
+    } else if (k > 0.0) {
+      lo = std::max(lo, -m / k);
+    } else {
+      hi = std::min(hi, -m / k);
+    }
+  }
+  return lo <= hi;
+}
+
+/// Marks the nearest of the active triangles at the point (and those tied with it).
+/// @return the face seen, or -1.
+std::int64_t mark_front(const Context& cx, const std::vector<std::uint32_t>& active, double x,
+                        double y) {
+  double best = -1e300;
+  std::int64_t face = -1;
+  for (const std::uint32_t i : active) {
+    const double d = cx.triangles[i].depth_at(x, y);
+    if (d > best) best = d, face = i;
+  }
+  if (face < 0) return -1;
+  for (const std::uint32_t i : active) {
+    if (cx.triangles[i].depth_at(x, y) >= best - kDepthTie * std::abs(best)) {
+      cx.visible[cx.triangles[i].id].store(1, std::memory_order_relaxed);
+    }
+  }
+  return face;
+}
+
+/// Sweeps a splitting line from `from` to `to` at `across`: crossings sorted, the covering set
+/// carried from stretch to stretch (enter at a triangle's first crossing, leave at its second).
+Side sweep(const Context& cx, const std::vector<std::uint32_t>& candidates, bool horizontal,
+           double across, double from, double to) {
+  struct Event {
+    double at;
+    int enter;  // 1 enter, 0 leave: leaving first at equal positions
+    std::uint32_t tri;
+    bool operator<(const Event& o) const {
+      return at != o.at ? at < o.at : enter != o.enter ? enter < o.enter : tri < o.tri;
+    }
+  };
+  std::vector<Event> events;
+  std::vector<std::uint32_t> active;
+  for (const std::uint32_t i : candidates) {
+    double lo = 0.0, hi = 0.0;
+    if (!line_interval(cx.triangles[i], horizontal, across, lo, hi) || hi < from || lo > to) continue;
+    if (lo <= from) active.push_back(i);
+    else events.push_back({lo, 1, i});
+    if (hi < to) events.push_back({hi, 0, i});
+  }
+  cx.counters.crossings.fetch_add(events.size(), std::memory_order_relaxed);
+  std::sort(events.begin(), events.end());
+  Side side;
+  double start = from;
+  const auto close = [&](double end) {
+    const double mid = 0.5 * (start + end);
+    const std::int64_t face =
+        horizontal ? mark_front(cx, active, mid, across) : mark_front(cx, active, across, mid);
+    if (!side.empty() && side.back().face == face) side.back().to = end;
+    else side.push_back({start, end, face});
+    start = end;
+  };
+  for (const Event& e : events) {
+    if (e.at > start) close(e.at);
+    if (e.enter) active.push_back(e.tri);
+    else std::erase(active, e.tri);
+  }
+  close(to);
+  // The stretch endpoints themselves (sample centres on corners) are points of both stretches.
+  return side;
+}
+
+Side clip_side(const Side& side, double from, double to) {
+  Side out;
+  for (const Run& r : side) {
+    if (r.to < from || r.from > to) continue;
+    out.push_back({std::max(r.from, from), std::min(r.to, to), r.face});
+  }
+  return out;
+}
+
+bool sees_one_face(const Region& r) {
+  std::int64_t face = r.top.empty() ? -2 : r.top.front().face;
+  for (const Side* s : {&r.top, &r.bottom, &r.left, &r.right})
+    for (const Run& run : *s)
+      if (run.face != face) return false;
+  return true;
+}
+
+bool has_triangle_inside(const Context& cx, const Region& r) {
+  return std::any_of(r.candidates.begin(), r.candidates.end(), [&](std::uint32_t i) {
+    const Box2& b = cx.triangles[i].box;
+    return b.min.x > r.x0 && b.max.x < r.x1 && b.min.y > r.y0 && b.max.y < r.y1;
+  });
+}
+
+/// Separating-axis test of a triangle (widened by kCoverSlack) against a closed rectangle:
+/// the boxes overlap and no edge line has the whole rectangle on its outer side.
+bool meets_rectangle(const FlatTriangle& t, double x0, double y0, double x1, double y1) {
+  const Box2& b = t.box;
+  if (b.max.x < x0 - kCoverSlack || b.min.x > x1 + kCoverSlack || b.max.y < y0 - kCoverSlack ||
+      b.min.y > y1 + kCoverSlack) {
+    return false;
+  }
+  const Point2 &p0 = t.p[0], &p1 = t.p[1], &p2 = t.p[2];
+  const double orient = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x) > 0.0 ? 1.0 : -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const Point2 a = t.p[i], e{t.p[(i + 1) % 3].x - a.x, t.p[(i + 1) % 3].y - a.y};
+    // The rectangle's corner farthest inside this edge: if even it is outside, they are apart.
+    const double nx = -orient * e.y, ny = orient * e.x;  // inward normal
+    const double cx = nx > 0.0 ? x1 : x0, cy = ny > 0.0 ? y1 : y0;
+    if (nx * (cx - a.x) + ny * (cy - a.y) < -kCoverSlack * std::hypot(e.x, e.y)) return false;
+  }
+  return true;
+}
+
+std::vector<std::uint32_t> overlapping(const Context& cx, const std::vector<std::uint32_t>& from,
+                                       double x0, double y0, double x1, double y1) {
+  std::vector<std::uint32_t> out;
+  for (const std::uint32_t i : from) {
+    if (meets_rectangle(cx.triangles[i], x0, y0, x1, y1)) out.push_back(i);
+  }
+  return out;
+}
+
+/// @return the sample-centre coordinate nearest the middle strictly inside (lo, hi), or NaN.
+double split_at(double lo, double hi) {
+  double c = std::floor(0.5 * (lo + hi)) + 0.5;
+  if (c <= lo) c += 1.0;
+  return c < hi ? c : NAN;
+}
+
+void split_region(const Context& cx, Region r);
+
+void split_vertically(const Context& cx, Region& r, double c) {
+  const Side line = sweep(cx, r.candidates, false, c, r.y0, r.y1);
+  Region a{r.x0, r.y0, c, r.y1, clip_side(r.top, r.x0, c), clip_side(r.bottom, r.x0, c),
+           std::move(r.left), line, overlapping(cx, r.candidates, r.x0, r.y0, c, r.y1)};
+  Region b{c, r.y0, r.x1, r.y1, clip_side(r.top, c, r.x1), clip_side(r.bottom, c, r.x1), line,
+           std::move(r.right), overlapping(cx, r.candidates, c, r.y0, r.x1, r.y1)};
+  const bool parallel = r.candidates.size() >= kParallelGrain;
+  r.candidates = {};
+  if (parallel) tbb::parallel_invoke([&] { split_region(cx, std::move(a)); },
+                                     [&] { split_region(cx, std::move(b)); });
+  else split_region(cx, std::move(a)), split_region(cx, std::move(b));
+}
+
+void split_horizontally(const Context& cx, Region& r, double c) {
+  const Side line = sweep(cx, r.candidates, true, c, r.x0, r.x1);
+  Region a{r.x0, r.y0, r.x1, c, std::move(r.top), line, clip_side(r.left, r.y0, c),
+           clip_side(r.right, r.y0, c), overlapping(cx, r.candidates, r.x0, r.y0, r.x1, c)};
+  Region b{r.x0, c, r.x1, r.y1, line, std::move(r.bottom), clip_side(r.left, c, r.y1),
+           clip_side(r.right, c, r.y1), overlapping(cx, r.candidates, r.x0, c, r.x1, r.y1)};
+  const bool parallel = r.candidates.size() >= kParallelGrain;
+  r.candidates = {};
+  if (parallel) tbb::parallel_invoke([&] { split_region(cx, std::move(a)); },
+                                     [&] { split_region(cx, std::move(b)); });
+  else split_region(cx, std::move(a)), split_region(cx, std::move(b));
+}
+
+/// The recursion: stop when the contour sees one face and nothing lies wholly inside, or when
+/// no sample centre is left strictly inside; else split the longer side at a sample centre.
+/// A region meeting a single triangle also stops, the triangle marked seen (conservative: it
+/// may cover no sample there).
+void split_region(const Context& cx, Region r) {
+  cx.counters.regions.fetch_add(1, std::memory_order_relaxed);
+  if (r.candidates.empty() || (sees_one_face(r) && !has_triangle_inside(cx, r))) return;
+  if (r.candidates.size() == 1) {  // nothing can hide it here: seen if it covers a sample
+    cx.visible[cx.triangles[r.candidates.front()].id].store(1, std::memory_order_relaxed);
+    return;
+  }
+  const double cx_ = split_at(r.x0, r.x1), cy = split_at(r.y0, r.y1);
+  const bool vertical = !std::isnan(cx_) && (std::isnan(cy) || r.x1 - r.x0 >= r.y1 - r.y0);
+  if (vertical) split_vertically(cx, r, cx_);
+  else if (!std::isnan(cy)) split_horizontally(cx, r, cy);
+}
+
+}  // namespace
+
+void split_picture(const std::vector<FlatTriangle>& triangles, int width, int height,
+                   std::vector<std::atomic<std::uint8_t>>& visible, SplitCounters& counters) {
+  const Context cx{triangles, visible, counters};
+  Region r{0.5, 0.5, width - 0.5, height - 0.5, {}, {}, {}, {}, {}};
+  std::vector<std::uint32_t> all(triangles.size());
+  for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+  r.candidates = overlapping(cx, all, r.x0, r.y0, r.x1, r.y1);
+  r.top = sweep(cx, r.candidates, true, r.y0, r.x0, r.x1);
+  r.bottom = sweep(cx, r.candidates, true, r.y1, r.x0, r.x1);
+  r.left = sweep(cx, r.candidates, false, r.x0, r.y0, r.y1);
+  r.right = sweep(cx, r.candidates, false, r.x1, r.y0, r.y1);
+  split_region(cx, std::move(r));
+}
+
+}  // namespace roomcad::detail

@@ -1,0 +1,40 @@
+// The recursive split of seed 004's pre-pass over triangles already projected to the sample
+// grid (render/visibility.h says what it finds).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/detail/box_grid.h"
+
+namespace roomcad::detail {
+
+/// A front-facing triangle on the sample grid (x right, y down, samples; centre of sample
+/// (i, j) at (i + 0.5, j + 0.5)) with its depth as a plane: larger is nearer (reversed-Z).
+struct FlatTriangle {
+  std::array<Point2, 3> p{};
+  glm::dvec3 depth{0.0};  ///< depth(x, y) = depth.x * x + depth.y * y + depth.z
+  Box2 box;
+  std::uint32_t id = 0;  ///< scene triangle
+  [[nodiscard]] double depth_at(double x, double y) const {
+    return depth.x * x + depth.y * y + depth.z;
+  }
+};
+
+/// Counters of one run (atomic: regions run in parallel).
+struct SplitCounters {
+  std::atomic<std::size_t> regions{0};
+  std::atomic<std::size_t> crossings{0};
+};
+
+/// Splits the picture [0, width] x [0, height] recursively and marks in `visible` (indexed by
+/// FlatTriangle::id) every triangle seen along a splitting line or the picture's sides.
+/// @param[in,out] visible  entries are only ever set to 1
+void split_picture(const std::vector<FlatTriangle>& triangles, int width, int height,
+                   std::vector<std::atomic<std::uint8_t>>& visible, SplitCounters& counters);
+
+}  // namespace roomcad::detail

@@ -1,0 +1,58 @@
+// The visible-surface pre-pass of seed 004 (Makarov & Safin, 2007): which scene triangles a
+// view can show, found by recursively splitting the picture and carrying the depth order along
+// each splitting line, so the renderer can skip the rest (`roomcad render --cull visibility`).
+//
+// The method: back-face cull; project; start with the picture's four sides as the contour of
+// one region; split a region by a line through pixel centres, find where the line crosses the
+// projected triangles, carry the set of triangles covering each stretch of the line from
+// crossing to crossing (a triangle enters at one crossing and leaves at the other) and take its
+// nearest as the face seen there; stop splitting when the whole contour sees one face (or
+// none) and no triangle lies wholly inside, or when no pixel centre is left inside the region.
+// Every pixel centre lies on some line, so every face the z-buffer shows is found (ties in
+// depth and the rasteriser's rounding are covered by small tolerances: the set is a superset).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/camera.h"
+#include "render/scene.h"
+
+namespace roomcad {
+
+/// What the pre-pass found.
+struct VisibilityResult {
+  std::vector<std::uint8_t> visible;  ///< per scene triangle: 1 seen somewhere, 0 never
+  std::size_t visible_count = 0;
+  std::size_t front_facing = 0;  ///< triangles left after back-face culling
+  std::size_t near_clipped = 0;  ///< crossing the near plane: kept as visible, not split
+  std::size_t regions = 0;       ///< regions examined
+  std::size_t crossings = 0;     ///< line-triangle crossings computed
+};
+
+/// The picture the pre-pass looks at: the camera and the sample grid.
+struct VisibilityView {
+  CameraMatrices camera;  ///< as the colour pass uses it
+  int width = 1;          ///< samples across (output pixels * ssaa), >= 1
+  int height = 1;
+};
+
+/// Finds the triangles visible in a view.
+/// @pre view.width, view.height in 1 .. 2^20
+/// @return per triangle whether it is seen; a superset of the triangle ids the rasteriser's id
+///         buffer shows at the same sample grid. Deterministic; parallel over regions.
+/// Cost: O(T log T) per splitting line for the T triangles overlapping its region; regions
+///       stop early where one face covers them, so the total follows the length of the
+///       projected edges in pixels rather than the pixel count.
+[[nodiscard]] VisibilityResult find_visible_faces(const Scene& scene, const VisibilityView& view);
+
+/// The triangles a directional light reaches somewhere, found the same way from the light
+/// (its shadow map's orthographic frame at `resolution` texels a side). The others are wholly
+/// in shadow. @pre resolution >= 1. Cost as find_visible_faces.
+[[nodiscard]] VisibilityResult find_lit_faces(const Scene& scene, const Light& light,
+                                              int resolution);
+
+}  // namespace roomcad

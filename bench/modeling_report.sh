@@ -24,6 +24,7 @@
 #   cgal_over_fast, nef_over_fast, openscad_over_fast
 #                         time ratios to the fast path
 #   fast_off_bytes        size of the fast path's OFF file
+#   fast_build_ms         the fast path's build alone (fast_ms less the export and its fsync)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}

@@ -31,7 +31,7 @@ inline constexpr const char* kPaths[] = {"fast", "cgal", "nef", "openscad"};
 
 struct PathCell {
   bool ran = false;
-  double ms = 0.0, triangles = 0.0, volume_error = 0.0, bytes = 0.0;
+  double ms = 0.0, triangles = 0.0, volume_error = 0.0, bytes = 0.0, build_ms = 0.0;
 };
 
 struct TableRow {
@@ -55,7 +55,8 @@ inline std::vector<TableRow> make_table(const std::vector<benchmark::BenchmarkRe
     };
     row.walls = counter("walls"), row.openings = counter("openings");
     row.cells[name.substr(0, slash)] = {true, run.real_accumulated_time * 1e3 / double(run.iterations),
-                                        counter("triangles"), counter("volume_error"), counter("bytes")};
+                                        counter("triangles"), counter("volume_error"), counter("bytes"),
+                                        counter("build_ms")};
   }
   std::vector<TableRow> out;
   for (auto& [n, row] : rows) out.push_back(std::move(row));
@@ -85,6 +86,7 @@ inline std::vector<std::string> row_fields(const TableRow& row) {
   for (const char* p : kPaths) f.push_back(cell(row, p, &PathCell::volume_error, "{:.2e}"));
   for (const char* p : {"cgal", "nef", "openscad"}) f.push_back(ratio(row, p));
   f.push_back(cell(row, "fast", &PathCell::bytes, "{:.0f}"));
+  f.push_back(cell(row, "fast", &PathCell::build_ms, "{:.3f}"));
   return f;
 }
 
@@ -93,7 +95,8 @@ inline const std::vector<std::string>& table_header() {
       "scene", "walls", "openings", "fast_ms", "cgal_ms", "nef_ms", "openscad_ms",
       "fast_triangles", "cgal_triangles", "nef_triangles", "openscad_triangles",
       "fast_volume_error", "cgal_volume_error", "nef_volume_error", "openscad_volume_error",
-      "cgal_over_fast", "nef_over_fast", "openscad_over_fast", "fast_off_bytes"};
+      "cgal_over_fast", "nef_over_fast", "openscad_over_fast", "fast_off_bytes",
+      "fast_build_ms"};
   return header;
 }
 

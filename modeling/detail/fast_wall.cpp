@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 
 namespace roomcad::detail {
@@ -30,19 +31,22 @@ class WallGrid {
       u_.insert(u_.end(), {h.u0, h.u1});
       z_.insert(z_.end(), {h.z0, h.z1});
     }
-    for (const Attachment& a : f.attachments) u_.insert(u_.end(), {a.u0, a.u1});
+    for (const Attachment& a : f.attachments) {
+      u_.insert(u_.end(), {a.u0, a.u1});
+      z_.push_back(a.top);
+    }
     sort_unique(u_);
     sort_unique(z_);
     cells_.assign((u_.size() - 1) * (z_.size() - 1), kSolid);
     for (std::size_t k = 0; k < f.holes.size(); ++k) mark_hole(k);
-    attached_.assign(2 * (u_.size() - 1), 0);
+    attached_top_.assign(2 * (u_.size() - 1), -INFINITY);
     for (const Attachment& a : f.attachments)
-      for (std::size_t c = index_of(u_, a.u0); c < index_of(u_, a.u1); ++c) attached_[2 * c + (a.side > 0)] = 1;
+      for (std::size_t c = index_of(u_, a.u0); c < index_of(u_, a.u1); ++c) attached_top_[2 * c + (a.side > 0)] = a.top;
   }
   /// Whether the side face s (0 right, 1 left) is solid at cell (c, r): wall material not
-  /// covered by an attached stem.
+  /// covered by an attached stem (rows below the stem's top, which is a row line).
   bool is_side_solid(int s, std::ptrdiff_t c, std::ptrdiff_t r) const {
-    return cell(c, r) == kSolid && !attached_[2 * std::size_t(c) + std::size_t(s)];
+    return cell(c, r) == kSolid && !(z_[std::size_t(r)] < attached_top_[2 * std::size_t(c) + std::size_t(s)]);
   }
   std::size_t nu() const { return u_.size(); }
   std::size_t nz() const { return z_.size(); }
@@ -90,7 +94,7 @@ class WallGrid {
   const WallFrame& f_;
   std::vector<double> u_, z_;
   std::vector<int> cells_;
-  std::vector<char> attached_;  // [2 * column + side]
+  std::vector<double> attached_top_;  // [2 * column + side]: top of the stem there, or -inf
 };
 
 struct Context {

@@ -29,7 +29,8 @@ std::optional<Tee> make_tee(const std::vector<WallFrame>& frames, std::size_t st
                             std::size_t through) {
   const WallFrame& s = frames[stem];
   const WallFrame& t = frames[through];
-  if (s.base != t.base || s.top != t.top || s.capless[std::size_t(end)]) return std::nullopt;
+  // A stem as high as the through-wall or lower (a garden wall), standing on the same base.
+  if (s.base != t.base || s.top > t.top || s.capless[std::size_t(end)]) return std::nullopt;
   const Point2 e = end == WallEnd::from ? s.from : s.to;
   const Point2 out = end == WallEnd::from ? s.dir : Point2{-s.dir.x, -s.dir.y};
   const double u = u_on(t, e), w = w_on(t, e), along = out.x * t.normal.x + out.y * t.normal.y;
@@ -40,7 +41,7 @@ std::optional<Tee> make_tee(const std::vector<WallFrame>& frames, std::size_t st
   const Point2 right = cross_side(t, side, {e.x - n.x, e.y - n.y}, out);
   Tee tee{stem, end, through, {}, {right, left}};
   const double ul = u_on(t, left), ur = u_on(t, right);
-  tee.attachment = ul < ur ? Attachment{ul, ur, side, left, right} : Attachment{ur, ul, side, right, left};
+  tee.attachment = ul < ur ? Attachment{ul, ur, side, left, right, s.top} : Attachment{ur, ul, side, right, left, s.top};
   const auto [lo, hi] = clear_range(t);
   if (!(tee.attachment.u0 > lo && tee.attachment.u1 < hi) || !(u > 0.0 && u < t.length)) return std::nullopt;
   for (const Hole& h : t.holes)

@@ -1,9 +1,9 @@
-// The fast path at T joins: a stem whose end lies on the middle of a through-wall of the same
-// base and height is clipped at the through-wall's face (its end corners are the crossings of
-// its side lines with that face, and it gets no cap), and the through-wall's face gets the
-// attachment gap with those very corners. Valid when the stem meets the through-wall at 30
-// degrees or more, only that wall joins the stem at that end, and the gap stays clear of the
-// through-wall's ends, holes and other stems.
+// The fast path at T joins: a stem whose end lies on the middle of a through-wall standing on
+// the same base, as high as it or lower, is clipped at the through-wall's face (its end
+// corners are the crossings of its side lines with that face, and it gets no cap), and the
+// through-wall's face gets the attachment gap, up to the stem's top, with those very corners.
+// Valid when the stem meets the through-wall at 30 degrees or more, only that wall joins the
+// stem at that end, and the gap stays clear of the through-wall's ends, holes and other stems.
 #pragma once
 
 #include <cstddef>

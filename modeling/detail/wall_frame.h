@@ -19,11 +19,13 @@ struct Hole {
 };
 
 /// Where the end of another wall (a stem) is glued to one side face of this wall: that side
-/// has no face over u in [u0, u1] (full height), and its corners there are p0 and p1 exactly.
+/// has no face over u in [u0, u1] from the wall's base up to `top` (the stem's top, at most
+/// this wall's), and its corners there are p0 and p1 exactly.
 struct Attachment {
   double u0 = 0.0, u1 = 0.0;
   int side = 1;  ///< -1 right face, +1 left face
   Point2 p0, p1;
+  double top = 0.0;  ///< metres, absolute
 };
 
 struct WallFrame {

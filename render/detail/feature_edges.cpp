@@ -10,14 +10,19 @@ namespace {
 
 glm::dvec3 to_glm(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 
-/// @return a vertex of the face not on the line p-q, or nullopt (a degenerate face).
+/// @return the vertex of the face farthest from the line p-q (so that the plane through p, q
+///         and it is well conditioned: a face split by a diagonal has corners close to that
+///         line), or nullopt if every vertex is on the line (a degenerate face).
 std::optional<glm::dvec3> off_edge_vertex(const SolidMesh& mesh, SolidMesh::FaceHandle f,
                                           const glm::dvec3& p, const glm::dvec3& q) {
+  std::optional<glm::dvec3> best;
+  double best_distance = -1.0;
   for (const auto vh : mesh.fv_range(f)) {
     const glm::dvec3 r = to_glm(mesh.point(vh));
-    if (!is_collinear(p, q, r)) return r;
+    const double distance = glm::length(glm::cross(q - p, r - p));
+    if (distance > best_distance && !is_collinear(p, q, r)) best = r, best_distance = distance;
   }
-  return std::nullopt;
+  return best;
 }
 
 bool is_feature_edge(const SolidMesh& mesh, SolidMesh::EdgeHandle e, const glm::dvec3& p,

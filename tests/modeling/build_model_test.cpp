@@ -142,6 +142,24 @@ TEST(Modeling, SlantedStemsOnBothSidesOfAWallFarAway) {
   expect_paths_agree(moved, 1);
 }
 
+// A garden wall (lower than the house wall it meets) on the fast path: the through-wall's
+// face has the gap only up to the stem's top. Also moved far away and turned.
+TEST(Modeling, LowerStemOnTheFastPath) {
+  Plan plan = empty_plan();
+  add_wall(plan, "through", {0, 0}, {6, 0});
+  add_wall(plan, "garden", {3, 0}, {3, 3}).height = 1.2;
+  add_opening(plan, "win", kWindow, "through", 0.5, 1.0, 1.0, 1.0);
+  const double volume = 0.2 * 2.5 * 6 + 0.2 * 1.2 * 2.9 - 0.2 * 1.0;
+  expect_paths_agree(plan, 1, volume);
+  BuildStats stats;
+  (void)build_model(plan, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 2u);
+  const Plan moved = test::transformed(plan, 23.9, 1e6, -1e6);
+  (void)build_model(moved, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 2u);
+  expect_paths_agree(moved, 1);
+}
+
 TEST(Modeling, XJoin) {
   Plan plan = empty_plan();
   add_wall(plan, "a", {0, 0}, {6, 0});

@@ -11,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include "render/detail/geometry_pass.h"
+#include "render/detail/sample_shading.h"
 
 namespace roomcad {
 namespace {
@@ -35,11 +36,9 @@ struct DepthToDistance {
 
 /// Everything the tile tasks read (the frame's `uniform_` state).
 struct FrameContext {
-  const Scene* scene = nullptr;
   detail::BinnedTriangles bins;
   std::vector<ShadowMap> shadow_maps;
-  ShadowFilter filter = ShadowFilter::off;
-  ShadingUniforms uniforms;
+  detail::ShadeUniforms shade;
   glm::vec3 background{1.f};
   DepthToDistance depth_to_distance;
   int ssaa = 1;
@@ -56,54 +55,6 @@ ShadingUniforms make_uniforms(const RenderOptions& options, const CameraMatrices
   u.orthographic = cam.orthographic;
   u.grid = options.grid;
   return u;
-}
-
-glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }
-
-/// What one visible triangle gives each of its samples; loaded once per run of samples that
-/// show the same triangle (neighbouring samples mostly do).
-struct TriangleVarying {
-  std::uint32_t id = kNoTriangle;
-  const ScreenTriangle* screen = nullptr;
-  SurfacePoint point;  ///< corners, normal facing the viewer; per sample: the rest
-  glm::vec3 color{0.f};  ///< the face's plain colour
-  BarycentricPlanes weights;
-  std::array<ShadowReceiver, kMaxLights> receivers{};
-  bool is_floor = false;
-};
-
-void load_triangle(const FrameContext& f, std::uint32_t id, TriangleVarying& v) {
-  const Scene& scene = *f.scene;
-  v.id = id;
-  v.screen = &f.bins.at(id);
-  const std::size_t tri = v.screen->triangle;
-  for (int c = 0; c < 3; ++c) v.point.corners[c] = scene.corners[3 * tri + c];
-  // n . (eye - p) is the same at every point p of the triangle's plane, so one test per
-  // triangle turns the back of a two-sided face towards the viewer.
-  const glm::vec3 normal = scene.normals[tri];
-  const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward
-                                                   : f.uniforms.eye - v.point.corners[0];
-  v.point.normal = glm::dot(normal, to_eye) < 0.f ? -normal : normal;
-  v.color = to_unit_rgb(scene.colors[tri]);
-  v.weights = barycentric_planes(*v.screen);
-  v.is_floor = scene.kinds[tri] == FaceKind::floor;
-  for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
-    v.receivers[k] = shadow_receiver(f.shadow_maps[k], v.point.normal);
-  }
-}
-
-/// The shaded colour of the sample at (px, py) showing the triangle `v` (whose per-sample
-/// fields it fills in place).
-glm::vec3 shade_sample(const FrameContext& f, TriangleVarying& v, float px, float py) {
-  SurfacePoint& s = v.point;
-  s.weights = v.weights.at(px, py);
-  s.world = s.weights[0] * s.corners[0] + s.weights[1] * s.corners[1] +
-            s.weights[2] * s.corners[2];
-  s.color = v.is_floor ? apply_grid(f.uniforms.grid, s.world, v.color) : v.color;
-  for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
-    s.shadow[k] = shadow_amount(f.shadow_maps[k], v.receivers[k], s.world, f.filter);
-  }
-  return shade_point(f.uniforms, s);
 }
 
 /// Writes the output pixels of one tile: colour averaged over its k x k samples; depth and
@@ -128,7 +79,7 @@ void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vecto
       out.depth.at(ox, oy) = f.depth_to_distance(t.depth[s]);
       if (t.ids[s] != last_id) {  // neighbours mostly show the same triangle
         last_id = t.ids[s];
-        last_object = last_id == kNoTriangle ? -1 : f.scene->objects[f.bins.at(last_id).triangle];
+        last_object = last_id == kNoTriangle ? -1 : f.shade.scene->objects[f.bins.at(last_id).triangle];
       }
       out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox] = last_object;
     }
@@ -147,15 +98,7 @@ void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
   t.depth = depth.data();
   t.ids = ids.data();
   detail::rasterize_tile(f.bins, tile, t);
-  TriangleVarying v;
-  std::size_t i = 0;
-  for (int y = t.y0; y < t.y1; ++y) {
-    for (int x = t.x0; x < t.x1; ++x, ++i) {
-      if (ids[i] == kNoTriangle) continue;
-      if (ids[i] != v.id) load_triangle(f, ids[i], v);
-      rgb[i] = shade_sample(f, v, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-    }
-  }
+  detail::shade_tile(f.shade, t, rgb.data());
   resolve_tile(f, t, rgb, out);
 }
 
@@ -172,9 +115,11 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   const std::vector<Light> lights = options.lights.empty() ? std::vector<Light>{default_light()}
                                                            : options.lights;
   FrameContext f;
-  f.scene = &scene;
+  f.shade.scene = &scene;
+  f.shade.bins = &f.bins;
+  f.shade.shadow_maps = &f.shadow_maps;
   f.ssaa = options.ssaa;
-  f.filter = options.shadows;
+  f.shade.filter = options.shadows;
   f.background = to_unit_rgb(options.background);
   const auto shadow_start = Clock::now();
   if (options.shadows != ShadowFilter::off) {
@@ -184,7 +129,7 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   stats.shadow_ms = ms_since(shadow_start);
   const auto raster_start = Clock::now();
   const CameraMatrices cam = frame_camera(scene, options);
-  f.uniforms = make_uniforms(options, cam, lights);
+  f.shade.shading = make_uniforms(options, cam, lights);
   f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
   f.bins = detail::run_geometry_pass(
       scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),

@@ -13,20 +13,13 @@ constexpr int kShininessLog2 = 5;  // exponent 32, by repeated squaring (std::po
 constexpr float kGridDarkening = 0.6f;
 constexpr double kGridHalfWidth = 0.015;  // of a cell
 
-/// Diffuse factor and specular amount of one light at a point seen along `to_eye`.
-struct DirectLight {
-  float diffuse = 0.f;
-  float specular = 0.f;
-};
-
-DirectLight direct_light(const ShadingLight& light, const glm::vec3& normal,
-                         const glm::vec3& to_eye) {
-  const float n_dot_l = glm::dot(normal, light.to_light);
-  if (n_dot_l <= 0.f) return {};
-  const glm::vec3 half = glm::normalize(light.to_light + to_eye);
+/// The Blinn-Phong highlight of a light at a point seen along `to_eye` (unit), on a surface
+/// that faces the light.
+float specular(const glm::vec3& to_light, const glm::vec3& normal, const glm::vec3& to_eye) {
+  const glm::vec3 half = glm::normalize(to_light + to_eye);
   float highlight = std::max(glm::dot(normal, half), 0.f);
   for (int i = 0; i < kShininessLog2; ++i) highlight *= highlight;
-  return {n_dot_l, kSpecular * highlight};
+  return kSpecular * highlight;
 }
 
 glm::vec3 to_eye_from(const ShadingUniforms& u, const glm::vec3& p) {
@@ -36,21 +29,26 @@ glm::vec3 to_eye_from(const ShadingUniforms& u, const glm::vec3& p) {
   return len > 0.f ? d / len : -u.forward;
 }
 
-/// The direct light of light `k` at the point, as the mode evaluates it.
-DirectLight evaluate(const ShadingUniforms& u, const SurfacePoint& s, int k) {
-  const ShadingLight& light = u.lights[k];
-  if (u.mode == ShadingMode::phong) return direct_light(light, s.normal, to_eye_from(u, s.world));
-  if (u.mode == ShadingMode::flat) {
-    const glm::vec3 centroid = (s.corners[0] + s.corners[1] + s.corners[2]) / 3.f;
-    return direct_light(light, s.normal, to_eye_from(u, centroid));
+/// The specular of light `k` at sample i of the run, as the mode evaluates it.
+float sample_specular(const ShadingUniforms& u, const SurfaceLighting& s, const SampleRun& run,
+                      int k, int i) {
+  if (s.diffuse[k] <= 0.f) return 0.f;  // facing away: no highlight
+  if (u.mode == ShadingMode::phong) {
+    return specular(u.lights[k].to_light, s.normal, to_eye_from(u, run.world[i]));
   }
-  DirectLight sum;  // gouraud: per corner, interpolated
-  for (int c = 0; c < 3; ++c) {
-    const DirectLight d = direct_light(light, s.normal, to_eye_from(u, s.corners[c]));
-    sum.diffuse += s.weights[c] * d.diffuse;
-    sum.specular += s.weights[c] * d.specular;
+  const std::array<float, 3>& c = s.corner_specular[k];  // flat: three equal values
+  return (1.f - run.w1[i] - run.w2[i]) * c[0] + run.w1[i] * c[1] + run.w2[i] * c[2];
+}
+
+/// unlit: the plain colour, times (1 - sum of s * (1 - a)).
+void shade_unlit(const ShadingUniforms& u, const SampleRun& run, glm::vec3* out) {
+  for (int i = 0; i < run.count; ++i) {
+    float dimming = 0.f;
+    for (int k = 0; k < u.light_count; ++k) {
+      dimming += run.shadow[k][i] * (1.f - u.lights[k].ambient);
+    }
+    out[i] = run.color[i] * std::clamp(1.f - dimming, 0.f, 1.f);
   }
-  return sum;
 }
 
 }  // namespace
@@ -65,21 +63,37 @@ std::optional<ShadingMode> parse_shading_mode(std::string_view text) {
   return std::nullopt;
 }
 
-glm::vec3 shade_point(const ShadingUniforms& u, const SurfacePoint& s) {
-  if (u.mode == ShadingMode::unlit) {
-    float dimming = 0.f;
-    for (int k = 0; k < u.light_count; ++k) dimming += s.shadow[k] * (1.f - u.lights[k].ambient);
-    return s.color * std::clamp(1.f - dimming, 0.f, 1.f);
-  }
-  glm::vec3 out(0.f);
+SurfaceLighting light_surface(const ShadingUniforms& u, const glm::vec3& normal,
+                              const std::array<glm::vec3, 3>& corners) {
+  SurfaceLighting s;
+  s.normal = normal;
+  const glm::vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.f;
   for (int k = 0; k < u.light_count; ++k) {
     const ShadingLight& light = u.lights[k];
-    const DirectLight d = evaluate(u, s, k);
-    const float direct = (1.f - light.ambient) * (1.f - s.shadow[k]) * light.intensity;
-    out += s.color * (light.ambient * light.intensity + direct * d.diffuse) +
-           glm::vec3(direct * d.specular);
+    s.ambient += light.ambient * light.intensity;
+    s.direct[k] = (1.f - light.ambient) * light.intensity;
+    s.diffuse[k] = std::max(glm::dot(normal, light.to_light), 0.f);
+    if (s.diffuse[k] <= 0.f || u.mode == ShadingMode::phong) continue;
+    for (int c = 0; c < 3; ++c) {
+      const glm::vec3& at = u.mode == ShadingMode::flat ? centroid : corners[c];
+      s.corner_specular[k][c] = specular(light.to_light, normal, to_eye_from(u, at));
+    }
   }
-  return glm::clamp(out, 0.f, 1.f);
+  return s;
+}
+
+void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
+               glm::vec3* out) {
+  if (u.mode == ShadingMode::unlit) return shade_unlit(u, run, out);
+  for (int i = 0; i < run.count; ++i) {
+    float brightness = surface.ambient, highlight = 0.f;
+    for (int k = 0; k < u.light_count; ++k) {
+      const float direct = surface.direct[k] * (1.f - run.shadow[k][i]);
+      brightness += direct * surface.diffuse[k];
+      highlight += direct * sample_specular(u, surface, run, k, i);
+    }
+    out[i] = glm::clamp(run.color[i] * brightness + glm::vec3(highlight), 0.f, 1.f);
+  }
 }
 
 glm::vec3 apply_grid(const GridLines& grid, const glm::vec3& world, const glm::vec3& color) {

@@ -86,7 +86,8 @@ ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resoluti
   return map;
 }
 
-ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal) {
+ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal,
+                               const std::array<glm::vec3, 3>& corners) {
   ShadowReceiver r;
   const glm::vec3 n = map.light_rotation * normal;  // light view: +z towards the light
   r.faces_light = n.z > 0.f;
@@ -96,21 +97,35 @@ ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal) {
   r.grad_u = -n.x * map.texel_x / (cos_t * map.depth_range);
   r.grad_v = n.y * map.texel_y / (cos_t * map.depth_range);
   r.bias = map.texel_size() * (0.05f + 0.1f * tan_t) / map.depth_range;
+  std::array<glm::vec3, 3> texel;
+  const float size = static_cast<float>(map.depth.width);
+  for (int c = 0; c < 3; ++c) {
+    const glm::vec4 p = map.light_view_projection * glm::vec4(corners[c], 1.f);
+    texel[c] = {(p.x + 1.f) * 0.5f * size, (1.f - p.y) * 0.5f * size, p.z};
+  }
+  r.corner0 = texel[0];
+  r.to_corner1 = texel[1] - texel[0];
+  r.to_corner2 = texel[2] - texel[0];
   return r;
 }
 
-float shadow_amount(const ShadowMap& map, const ShadowReceiver& receiver, const glm::vec3& world,
-                    ShadowFilter filter) {
-  if (filter == ShadowFilter::off || map.texel_x == 0.f) return 0.f;
-  if (!receiver.faces_light) return 1.f;
-  const glm::vec4 p = map.light_view_projection * glm::vec4(world, 1.f);
+namespace {
+
+/// floor(x) for map coordinates (|x| < 2^31), inline: std::floor is a library call on SSE2.
+int floor_to_int(float x) {
+  const int i = static_cast<int>(x);
+  return i - (static_cast<float>(i) > x);
+}
+
+/// The share of the (2 * reach + 1)^2 texels around map point (u, v) that lie nearer the light
+/// than the receiver's biased plane through depth z there.
+float filtered_lookup(const ShadowMap& map, const ShadowReceiver& r, float u, float v, float z,
+                      int reach) {
   const int size = map.depth.width;
-  const float u = (p.x + 1.f) * 0.5f * size, v = (1.f - p.y) * 0.5f * size;
-  const float grad_u = receiver.grad_u, grad_v = receiver.grad_v, bias = receiver.bias;
-  const int iu = static_cast<int>(std::floor(u)), iv = static_cast<int>(std::floor(v));
+  const float grad_u = r.grad_u, grad_v = r.grad_v;
+  const int iu = floor_to_int(u), iv = floor_to_int(v);
   // The receiver's biased depth at the centre of texel (iu, iv); neighbours add the gradient.
-  const float base = p.z + grad_u * (iu + 0.5f - u) + grad_v * (iv + 0.5f - v) + bias;
-  const int reach = filter == ShadowFilter::pcf ? 1 : 0;
+  const float base = z + grad_u * (iu + 0.5f - u) + grad_v * (iv + 0.5f - v) + r.bias;
   const bool inside = iu - reach >= 0 && iv - reach >= 0 && iu + reach < size && iv + reach < size;
   int shadowed = 0;
   for (int dv = -reach; dv <= reach; ++dv) {
@@ -122,6 +137,26 @@ float shadow_amount(const ShadowMap& map, const ShadowReceiver& receiver, const 
     }
   }
   return static_cast<float>(shadowed) / static_cast<float>((2 * reach + 1) * (2 * reach + 1));
+}
+
+}  // namespace
+
+void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, ShadowFilter filter,
+                    const float* w1, const float* w2, int count, float* out) {
+  const bool lit = filter == ShadowFilter::off || map.texel_x == 0.f;
+  if (lit || !receiver.faces_light) {
+    std::fill(out, out + count, lit ? 0.f : 1.f);
+    return;
+  }
+  const int reach = filter == ShadowFilter::pcf ? 1 : 0;
+  // The outside of the map is lit, so coordinates far outside it (up to the float -> int
+  // limit) must stay finite: clamp them to just outside.
+  const float limit = static_cast<float>(map.depth.width) + 2.f;
+  for (int i = 0; i < count; ++i) {
+    const glm::vec3 p = receiver.corner0 + w1[i] * receiver.to_corner1 + w2[i] * receiver.to_corner2;
+    out[i] = filtered_lookup(map, receiver, std::clamp(p.x, -2.f, limit),
+                             std::clamp(p.y, -2.f, limit), p.z, reach);
+  }
 }
 
 }  // namespace roomcad

@@ -23,6 +23,12 @@ bool is_outside_frustum(const Bounds& b, const glm::mat4& view_projection) {
   return all != 0;  // every corner outside one same plane
 }
 
+/// Keeps a set-up triangle unless it was culled or covers no sample (most triangles of a
+/// large scene seen whole are such slivers: binning them would cost more than drawing).
+void keep_if_visible(const std::optional<ScreenTriangle>& t, std::vector<ScreenTriangle>& out) {
+  if (t && !covers_no_sample(*t)) out.push_back(*t);
+}
+
 void process_triangle(const Scene& scene, std::uint32_t i, const GeometryPass& pass,
                       std::vector<ScreenTriangle>& out) {
   const glm::vec3* c = &scene.corners[3 * static_cast<std::size_t>(i)];
@@ -37,13 +43,13 @@ void process_triangle(const Scene& scene, std::uint32_t i, const GeometryPass& p
                       c2 = outcode(v[2].position);
   if (c0 & c1 & c2) return;  // wholly outside one plane
   if (!(c0 | c1 | c2)) {
-    if (auto t = set_up_triangle(v, pass.width, pass.height, i, culling)) out.push_back(*t);
+    keep_if_visible(set_up_triangle(v, pass.width, pass.height, i, culling), out);
     return;
   }
   const ClipPolygon poly = clip_triangle(v);
   for (int k = 1; k + 1 < poly.count; ++k) {  // a fan keeps the polygon's orientation
     const std::array<ClipVertex, 3> piece{poly.vertices[0], poly.vertices[k], poly.vertices[k + 1]};
-    if (auto t = set_up_triangle(piece, pass.width, pass.height, i, culling)) out.push_back(*t);
+    keep_if_visible(set_up_triangle(piece, pass.width, pass.height, i, culling), out);
   }
 }
 

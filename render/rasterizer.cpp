@@ -69,14 +69,25 @@ DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e
   return {p.start / area, p.dx / area, p.dy / area};
 }
 
+/// min(ceil(n / d), cap) for n >= 0, d > 0: a double estimate corrected exactly (a 64-bit
+/// division costs tens of cycles, and this runs for every edge of every row).
+std::int64_t ceil_div_capped(std::int64_t n, std::int64_t d, std::int64_t cap) {
+  const double estimate = static_cast<double>(n) / static_cast<double>(d);
+  if (estimate > static_cast<double>(cap) + 1.0) return cap;
+  std::int64_t q = static_cast<std::int64_t>(estimate);  // within one of the quotient
+  while (q * d < n) ++q;
+  while (q > 0 && (q - 1) * d >= n) --q;
+  return std::min(q, cap);
+}
+
 /// Narrows the pixel offsets [lo, hi) of a row to where `w + i * step >= 0`.
 void narrow_span(std::int64_t w, std::int64_t step, int& lo, int& hi) {
   if (step == 0) {
     if (w < 0) hi = lo;  // the whole row is outside this edge
   } else if (step > 0) {  // i >= ceil(-w / step)
-    if (w < 0) lo = static_cast<int>(std::max<std::int64_t>(lo, (-w + step - 1) / step));
-  } else {  // i <= floor(w / -step)
-    hi = w < 0 ? lo : static_cast<int>(std::min<std::int64_t>(hi, w / -step + 1));
+    if (w < 0) lo = static_cast<int>(std::max<std::int64_t>(lo, ceil_div_capped(-w, step, hi)));
+  } else {  // i <= floor(w / -step), that is i < ceil((w + 1) / -step)
+    hi = w < 0 ? lo : static_cast<int>(std::min<std::int64_t>(hi, ceil_div_capped(w + 1, -step, hi)));
   }
 }
 

@@ -59,10 +59,13 @@ ShadingUniforms make_uniforms(const RenderOptions& options, const CameraMatrices
 
 /// Writes the output pixels of one tile: colour averaged over its k x k samples; depth and
 /// object id of the sample nearest the pixel's centre (up and left of it for even k).
+/// K is the frame's ssaa, a template parameter so that the sample loops unroll.
+template <int K>
 void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vector<glm::vec3>& rgb,
                   FrameBuffers& out) {
-  const int k = f.ssaa, w = t.x1 - t.x0;
-  const int centre = (k - 1) / 2;
+  constexpr int k = K, centre = (K - 1) / 2;
+  constexpr float scale = 255.f / static_cast<float>(K * K);
+  const int w = t.x1 - t.x0;
   std::uint32_t last_id = kNoTriangle;
   std::int32_t last_object = -1;
   for (int oy = t.y0 / k; oy < t.y1 / k; ++oy) {
@@ -71,9 +74,8 @@ void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vecto
       for (int sy = 0; sy < k; ++sy)
         for (int sx = 0; sx < k; ++sx)
           sum += rgb[static_cast<std::size_t>(oy * k + sy - t.y0) * w + (ox * k + sx - t.x0)];
-      const glm::vec3 c = sum / static_cast<float>(k * k);
       std::uint8_t* px = out.color.at(ox, oy);
-      for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(c[ch] * 255.f + 0.5f);
+      for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(sum[ch] * scale + 0.5f);
       const std::size_t s = static_cast<std::size_t>(oy * k + centre - t.y0) * w +
                             (ox * k + centre - t.x0);
       out.depth.at(ox, oy) = f.depth_to_distance(t.depth[s]);
@@ -99,7 +101,11 @@ void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
   t.ids = ids.data();
   detail::rasterize_tile(f.bins, tile, t);
   detail::shade_tile(f.shade, t, rgb.data());
-  resolve_tile(f, t, rgb, out);
+  switch (f.ssaa) {
+    case 1: return resolve_tile<1>(f, t, rgb, out);
+    case 2: return resolve_tile<2>(f, t, rgb, out);
+    default: return resolve_tile<4>(f, t, rgb, out);  // check_render_options: 1, 2 or 4
+  }
 }
 
 void size_buffers(int width, int height, FrameBuffers& out) {
@@ -136,7 +142,10 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
                                   .width = options.width * options.ssaa,
                                   .height = options.height * options.ssaa,
                                   .tile_size = 64,
-                                  .cull_back_faces = true});
+                                  .cull_back_faces = true,
+                                  .uniform_viewer = cam.orthographic
+                                                        ? glm::vec4(-glm::vec3(cam.forward), 0.f)
+                                                        : glm::vec4(glm::vec3(cam.eye), 1.f)});
   size_buffers(options.width, options.height, out);
   tbb::parallel_for(0, f.bins.tile_count(), [&](int tile) { render_tile(f, tile, out); });
   stats.raster_ms = ms_since(raster_start);

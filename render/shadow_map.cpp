@@ -58,7 +58,8 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
                                   .width = resolution,
                                   .height = resolution,
                                   .tile_size = 64,
-                                  .cull_back_faces = true});
+                                  .cull_back_faces = true,
+                                  .uniform_viewer = glm::vec4(map.to_light, 0.f)});
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
     target.depth = &map.depth.at(target.x0, target.y0);
@@ -117,26 +118,34 @@ int floor_to_int(float x) {
   return i - (static_cast<float>(i) > x);
 }
 
-/// The share of the (2 * reach + 1)^2 texels around map point (u, v) that lie nearer the light
-/// than the receiver's biased plane through depth z there.
+/// 1 if texel (iu, iv) lies nearer the light than `depth`, else 0 (also outside the map: lit).
+float is_occluded(const ShadowMap& map, int iu, int iv, float depth) {
+  const auto size = static_cast<unsigned>(map.depth.width);
+  if (static_cast<unsigned>(iu) >= size || static_cast<unsigned>(iv) >= size) return 0.f;
+  return map.depth.values[static_cast<std::size_t>(iv) * size + iu] > depth ? 1.f : 0.f;
+}
+
+/// Hard: whether the texel under map point (u, v) occludes the receiver's biased plane
+/// through depth z there. PCF: the same test for the four texels around the point, weighted
+/// bilinearly (as graphics hardware filters shadow maps), so the penumbra is one texel wide
+/// and changes smoothly.
 float filtered_lookup(const ShadowMap& map, const ShadowReceiver& r, float u, float v, float z,
-                      int reach) {
-  const int size = map.depth.width;
-  const float grad_u = r.grad_u, grad_v = r.grad_v;
-  const int iu = floor_to_int(u), iv = floor_to_int(v);
-  // The receiver's biased depth at the centre of texel (iu, iv); neighbours add the gradient.
-  const float base = z + grad_u * (iu + 0.5f - u) + grad_v * (iv + 0.5f - v) + r.bias;
-  const bool inside = iu - reach >= 0 && iv - reach >= 0 && iu + reach < size && iv + reach < size;
-  int shadowed = 0;
-  for (int dv = -reach; dv <= reach; ++dv) {
-    if (!inside && (iv + dv < 0 || iv + dv >= size)) continue;  // outside the map: lit
-    const float* row = &map.depth.values[static_cast<std::size_t>(iv + dv) * size];
-    for (int du = -reach; du <= reach; ++du) {
-      if (!inside && (iu + du < 0 || iu + du >= size)) continue;
-      shadowed += row[iu + du] > base + grad_u * du + grad_v * dv;
-    }
+                      ShadowFilter filter) {
+  // The receiver's biased depth at the centre of texel (iu, iv).
+  const auto depth_at = [&](int iu, int iv) {
+    return z + r.grad_u * (iu + 0.5f - u) + r.grad_v * (iv + 0.5f - v) + r.bias;
+  };
+  if (filter == ShadowFilter::hard) {
+    const int iu = floor_to_int(u), iv = floor_to_int(v);
+    return is_occluded(map, iu, iv, depth_at(iu, iv));
   }
-  return static_cast<float>(shadowed) / static_cast<float>((2 * reach + 1) * (2 * reach + 1));
+  const int iu = floor_to_int(u - 0.5f), iv = floor_to_int(v - 0.5f);
+  const float fu = u - 0.5f - static_cast<float>(iu), fv = v - 0.5f - static_cast<float>(iv);
+  const float top = (1.f - fu) * is_occluded(map, iu, iv, depth_at(iu, iv)) +
+                    fu * is_occluded(map, iu + 1, iv, depth_at(iu + 1, iv));
+  const float bottom = (1.f - fu) * is_occluded(map, iu, iv + 1, depth_at(iu, iv + 1)) +
+                       fu * is_occluded(map, iu + 1, iv + 1, depth_at(iu + 1, iv + 1));
+  return (1.f - fv) * top + fv * bottom;
 }
 
 }  // namespace
@@ -148,14 +157,13 @@ void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, Shadow
     std::fill(out, out + count, lit ? 0.f : 1.f);
     return;
   }
-  const int reach = filter == ShadowFilter::pcf ? 1 : 0;
   // The outside of the map is lit, so coordinates far outside it (up to the float -> int
   // limit) must stay finite: clamp them to just outside.
   const float limit = static_cast<float>(map.depth.width) + 2.f;
   for (int i = 0; i < count; ++i) {
     const glm::vec3 p = receiver.corner0 + w1[i] * receiver.to_corner1 + w2[i] * receiver.to_corner2;
     out[i] = filtered_lookup(map, receiver, std::clamp(p.x, -2.f, limit),
-                             std::clamp(p.y, -2.f, limit), p.z, reach);
+                             std::clamp(p.y, -2.f, limit), p.z, filter);
   }
 }
 

@@ -29,16 +29,27 @@ void keep_if_visible(const std::optional<ScreenTriangle>& t, std::vector<ScreenT
   if (t && !covers_no_sample(*t)) out.push_back(*t);
 }
 
+/// Whether one-sided triangle i clearly faces away from the viewer: its normal turned from
+/// the viewer by more than about 0.06 degrees past edge-on (nearly edge-on triangles are left
+/// to set_up_triangle's exact screen-space test). O(1), no transform.
+bool is_clearly_back_facing(const Scene& scene, std::uint32_t i, const glm::vec4& viewer) {
+  const glm::vec3 to_viewer =
+      glm::vec3(viewer) - viewer.w * scene.corners[3 * static_cast<std::size_t>(i)];
+  const float facing = glm::dot(scene.normals[i], to_viewer);
+  return facing < 0.f && facing * facing > 1e-6f * glm::dot(to_viewer, to_viewer);
+}
+
 void process_triangle(const Scene& scene, std::uint32_t i, const GeometryPass& pass,
                       std::vector<ScreenTriangle>& out) {
+  const bool one_sided = pass.cull_back_faces && !scene.two_sided[i];
+  if (one_sided && is_clearly_back_facing(scene, i, pass.uniform_viewer)) return;
   const glm::vec3* c = &scene.corners[3 * static_cast<std::size_t>(i)];
   const std::array<ClipVertex, 3> v{{
       {pass.uniform_view_projection * glm::vec4(c[0], 1.f), {0.f, 0.f}},
       {pass.uniform_view_projection * glm::vec4(c[1], 1.f), {1.f, 0.f}},
       {pass.uniform_view_projection * glm::vec4(c[2], 1.f), {0.f, 1.f}},
   }};
-  const Culling culling =
-      pass.cull_back_faces && !scene.two_sided[i] ? Culling::back_faces : Culling::none;
+  const Culling culling = one_sided ? Culling::back_faces : Culling::none;
   const std::uint32_t c0 = outcode(v[0].position), c1 = outcode(v[1].position),
                       c2 = outcode(v[2].position);
   if (c0 & c1 & c2) return;  // wholly outside one plane

@@ -39,6 +39,11 @@ struct GeometryPass {
   int height = 0;
   int tile_size = 64;
   bool cull_back_faces = true;  ///< one-sided scene triangles only; two-sided are never culled
+  /// Where the viewer is, homogeneous: (eye, 1) for a perspective view, (unit direction
+  /// towards the viewer, 0) for an orthographic one; (0, 0, 0, 0) leaves back faces to the
+  /// screen-space test alone. With it, triangles clearly facing away (by their scene normal)
+  /// are culled before they are transformed.
+  glm::vec4 uniform_viewer{0.f};
 };
 
 /// Runs the pass over the whole scene, in parallel over fixed chunks of clusters (the caller's

@@ -12,6 +12,7 @@
 
 #include "render/detail/geometry_pass.h"
 #include "render/detail/sample_shading.h"
+#include "render/detail/shadow_pass.h"
 
 namespace roomcad {
 namespace {
@@ -34,10 +35,21 @@ struct DepthToDistance {
   }
 };
 
+/// Memory a frame needs, kept between the frames of one calling thread (a window redrawing,
+/// a benchmark): allocating and faulting in tens of megabytes a frame costs more than some
+/// whole passes. Its contents never outlive a frame, so images do not depend on it.
+struct FrameMemory {
+  detail::BinnedTriangles bins;
+  detail::BinnedTriangles shadow_bins;
+  std::vector<ShadowMap> shadow_maps;
+};
+
 /// Everything the tile tasks read (the frame's `uniform_` state).
 struct FrameContext {
-  detail::BinnedTriangles bins;
-  std::vector<ShadowMap> shadow_maps;
+  explicit FrameContext(FrameMemory& memory)
+      : bins(memory.bins), shadow_maps(memory.shadow_maps) {}
+  detail::BinnedTriangles& bins;
+  std::vector<ShadowMap>& shadow_maps;
   detail::ShadeUniforms shade;
   glm::vec3 background{1.f};
   DepthToDistance depth_to_distance;
@@ -120,7 +132,8 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
                   RenderStats& stats) {
   const std::vector<Light> lights = options.lights.empty() ? std::vector<Light>{default_light()}
                                                            : options.lights;
-  FrameContext f;
+  thread_local FrameMemory memory;
+  FrameContext f(memory);
   f.shade.scene = &scene;
   f.shade.bins = &f.bins;
   f.shade.shadow_maps = &f.shadow_maps;
@@ -128,16 +141,20 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   f.shade.filter = options.shadows;
   f.background = to_unit_rgb(options.background);
   const auto shadow_start = Clock::now();
-  if (options.shadows != ShadowFilter::off) {
-    for (std::size_t k = 0; k < lights.size() && k < kMaxLights; ++k)
-      f.shadow_maps.push_back(render_shadow_map(scene, lights[k], options.shadow_resolution));
+  const std::size_t maps = options.shadows == ShadowFilter::off
+                               ? 0
+                               : std::min<std::size_t>(lights.size(), kMaxLights);
+  f.shadow_maps.resize(maps);
+  for (std::size_t k = 0; k < maps; ++k) {
+    detail::render_shadow_map_into(scene, lights[k], options.shadow_resolution,
+                                   f.shadow_maps[k], memory.shadow_bins);
   }
   stats.shadow_ms = ms_since(shadow_start);
   const auto raster_start = Clock::now();
   const CameraMatrices cam = frame_camera(scene, options);
   f.shade.shading = make_uniforms(options, cam, lights);
   f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
-  f.bins = detail::run_geometry_pass(
+  detail::run_geometry_pass(
       scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
                                   .width = options.width * options.ssaa,
                                   .height = options.height * options.ssaa,
@@ -145,7 +162,8 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
                                   .cull_back_faces = true,
                                   .uniform_viewer = cam.orthographic
                                                         ? glm::vec4(-glm::vec3(cam.forward), 0.f)
-                                                        : glm::vec4(glm::vec3(cam.eye), 1.f)});
+                                                        : glm::vec4(glm::vec3(cam.eye), 1.f)},
+      f.bins);
   size_buffers(options.width, options.height, out);
   tbb::parallel_for(0, f.bins.tile_count(), [&](int tile) { render_tile(f, tile, out); });
   stats.raster_ms = ms_since(raster_start);

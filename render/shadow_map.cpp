@@ -7,7 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
 
-#include "render/detail/geometry_pass.h"
+#include "render/detail/shadow_pass.h"
 #include "render/shading.h"
 
 namespace roomcad {
@@ -52,14 +52,16 @@ glm::dmat4 light_projection(const LightFrame& f) {
   return p;
 }
 
-void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
-  const detail::BinnedTriangles bins = detail::run_geometry_pass(
+void rasterize_map(const Scene& scene, int resolution, ShadowMap& map,
+                   detail::BinnedTriangles& bins) {
+  detail::run_geometry_pass(
       scene, detail::GeometryPass{.uniform_view_projection = map.light_view_projection,
                                   .width = resolution,
                                   .height = resolution,
                                   .tile_size = 64,
                                   .cull_back_faces = true,
-                                  .uniform_viewer = glm::vec4(map.to_light, 0.f)});
+                                  .uniform_viewer = glm::vec4(map.to_light, 0.f)},
+      bins);
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
     target.depth = &map.depth.at(target.x0, target.y0);
@@ -70,20 +72,30 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
 
 }  // namespace
 
-ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resolution) {
-  ShadowMap map;
+void detail::render_shadow_map_into(const Scene& scene, const Light& light, int resolution,
+                                    ShadowMap& map, BinnedTriangles& bins) {
   resolution = std::max(resolution, 1);
-  map.depth = FloatImage(resolution, resolution, 0.f);
+  std::vector<float> depth = std::move(map.depth.values);  // keeps its memory
+  depth.assign(static_cast<std::size_t>(resolution) * resolution, 0.f);
+  map = ShadowMap{};
+  map.depth.width = map.depth.height = resolution;
+  map.depth.values = std::move(depth);
   map.to_light = to_shading_light(light).to_light;
   const glm::dvec3 to_light(map.to_light);
-  if (scene.bounds.is_empty()) return map;
+  if (scene.bounds.is_empty()) return;
   const LightFrame frame = fit_light_frame(scene.bounds, to_light);
   map.light_view_projection = glm::mat4(light_projection(frame) * frame.view);
   map.light_rotation = glm::mat3(glm::dmat3(frame.view));
   map.texel_x = static_cast<float>(2.0 * frame.half_x / resolution);
   map.texel_y = static_cast<float>(2.0 * frame.half_y / resolution);
   map.depth_range = static_cast<float>(frame.far_d - frame.near_d);
-  rasterize_map(scene, resolution, map);
+  rasterize_map(scene, resolution, map, bins);
+}
+
+ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resolution) {
+  ShadowMap map;
+  detail::BinnedTriangles bins;
+  detail::render_shadow_map_into(scene, light, resolution, map, bins);
   return map;
 }
 

@@ -95,7 +95,8 @@ void for_each_binned(const BinnedTriangles& bins, std::size_t c, Visit&& visit) 
 /// then every chunk fills its own slots; the order is scene order within each tile.
 void bin_triangles(BinnedTriangles& bins) {
   const std::size_t chunks = bins.chunks.size(), tiles = bins.tile_count();
-  std::vector<std::uint32_t> slot(chunks * tiles, 0);
+  std::vector<std::uint32_t>& slot = bins.slots;
+  slot.assign(chunks * tiles, 0);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
     for_each_binned(bins, c, [&](int tile, std::uint32_t) { ++slot[c * tiles + tile]; });
   });
@@ -127,8 +128,7 @@ std::size_t BinnedTriangles::triangle_count() const {
   return n;
 }
 
-BinnedTriangles run_geometry_pass(const Scene& scene, const GeometryPass& pass) {
-  BinnedTriangles bins;
+void run_geometry_pass(const Scene& scene, const GeometryPass& pass, BinnedTriangles& bins) {
   bins.width = pass.width;
   bins.height = pass.height;
   bins.tile_size = pass.tile_size;
@@ -138,6 +138,7 @@ BinnedTriangles run_geometry_pass(const Scene& scene, const GeometryPass& pass) 
       (scene.clusters.size() + kClustersPerChunk - 1) / kClustersPerChunk;
   bins.chunks.resize(chunk_count);
   tbb::parallel_for(std::size_t{0}, chunk_count, [&](std::size_t c) {
+    bins.chunks[c].clear();
     const std::size_t end = std::min(scene.clusters.size(), (c + 1) * kClustersPerChunk);
     for (std::size_t k = c * kClustersPerChunk; k < end; ++k) {
       const Cluster& cluster = scene.clusters[k];
@@ -148,7 +149,6 @@ BinnedTriangles run_geometry_pass(const Scene& scene, const GeometryPass& pass) 
     }
   });
   bin_triangles(bins);
-  return bins;
 }
 
 RasterTarget tile_rectangle(const BinnedTriangles& bins, int tile) {

@@ -51,7 +51,6 @@ struct FrameContext {
   detail::BinnedTriangles& bins;
   std::vector<ShadowMap>& shadow_maps;
   detail::ShadeUniforms shade;
-  glm::vec3 background{1.f};
   DepthToDistance depth_to_distance;
   int ssaa = 1;
 };
@@ -108,7 +107,7 @@ void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
   thread_local std::vector<glm::vec3> rgb;
   depth.assign(n, 0.f);
   ids.assign(n, kNoTriangle);
-  rgb.assign(n, f.background);
+  rgb.resize(n);  // every sample is written by shade_tile
   t.depth = depth.data();
   t.ids = ids.data();
   detail::rasterize_tile(f.bins, tile, t);
@@ -139,7 +138,7 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   f.shade.shadow_maps = &f.shadow_maps;
   f.ssaa = options.ssaa;
   f.shade.filter = options.shadows;
-  f.background = to_unit_rgb(options.background);
+  f.shade.background = to_unit_rgb(options.background);
   const auto shadow_start = Clock::now();
   const std::size_t maps = options.shadows == ShadowFilter::off
                                ? 0

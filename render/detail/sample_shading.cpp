@@ -2,6 +2,7 @@
 // shadow lookups and shading.
 #include "render/detail/sample_shading.h"
 
+#include <algorithm>
 #include <array>
 
 namespace roomcad::detail {
@@ -73,7 +74,9 @@ void shade_tile(const ShadeUniforms& u, const RasterTarget& t, glm::vec3* rgb) {
     for (int i = 0; i < w;) {
       int end = i + 1;  // the run of samples showing the same triangle
       while (end < w && end - i < kMaxRunSamples && ids[end] == ids[i]) ++end;
-      if (ids[i] != kNoTriangle) {
+      if (ids[i] == kNoTriangle) {
+        std::fill(out + i, out + end, u.background);
+      } else {
         if (ids[i] != v.id) load_triangle(u, ids[i], v);
         run.count = end - i;
         interpolate_run(u, v, t.x0 + i, y, run);

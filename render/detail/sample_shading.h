@@ -22,10 +22,10 @@ struct ShadeUniforms {
   const std::vector<ShadowMap>* shadow_maps = nullptr;
   ShadowFilter filter = ShadowFilter::off;
   ShadingUniforms shading;
+  glm::vec3 background{1.f};  ///< sRGB in [0, 1], where no triangle is seen
 };
 
-/// Shades every sample of a rasterised tile that shows a triangle; background samples are left
-/// as they are.
+/// Shades every sample of a rasterised tile: the surface seen there, or the background.
 /// @param[in]  target  the tile: its rectangle and its final ids (BinnedTriangles ids)
 /// @param[out] rgb     one colour per sample of the tile, row by row
 /// Cost: O(samples * lights) plus O(lights) per run of samples showing one triangle.

@@ -36,6 +36,7 @@ struct EdgeWalk {
   std::int64_t step_x = 0;
   std::int64_t step_y = 0;
   std::int64_t bias = 0;
+  double inv_step = 0.0;  ///< 1 / step_x (0 when step_x is)
 };
 
 EdgeWalk walk_edge(const ScreenTriangle& t, int k, std::int64_t sx, std::int64_t sy) {
@@ -47,6 +48,7 @@ EdgeWalk walk_edge(const ScreenTriangle& t, int k, std::int64_t sx, std::int64_t
   w.at_start = edge(t.x[a], t.y[a], t.x[b], t.y[b], sx, sy) - w.bias;
   w.step_x = -static_cast<std::int64_t>(t.y[b] - t.y[a]) * kSubpixelScale;
   w.step_y = static_cast<std::int64_t>(t.x[b] - t.x[a]) * kSubpixelScale;
+  w.inv_step = w.step_x != 0 ? 1.0 / static_cast<double>(w.step_x) : 0.0;
   return w;
 }
 
@@ -69,10 +71,10 @@ DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e
   return {p.start / area, p.dx / area, p.dy / area};
 }
 
-/// min(ceil(n / d), cap) for n >= 0, d > 0: a double estimate corrected exactly (a 64-bit
-/// division costs tens of cycles, and this runs for every edge of every row).
-std::int64_t ceil_div_capped(std::int64_t n, std::int64_t d, std::int64_t cap) {
-  const double estimate = static_cast<double>(n) / static_cast<double>(d);
+/// min(ceil(n / d), cap) for n >= 0, d > 0, given inv_d ~ 1 / d: a double estimate corrected
+/// exactly (a division costs tens of cycles, and this runs for every edge of every row).
+std::int64_t ceil_div_capped(std::int64_t n, std::int64_t d, double inv_d, std::int64_t cap) {
+  const double estimate = static_cast<double>(n) * inv_d;
   if (estimate > static_cast<double>(cap) + 1.0) return cap;
   std::int64_t q = static_cast<std::int64_t>(estimate);  // within one of the quotient
   while (q * d < n) ++q;
@@ -80,14 +82,19 @@ std::int64_t ceil_div_capped(std::int64_t n, std::int64_t d, std::int64_t cap) {
   return std::min(q, cap);
 }
 
-/// Narrows the pixel offsets [lo, hi) of a row to where `w + i * step >= 0`.
-void narrow_span(std::int64_t w, std::int64_t step, int& lo, int& hi) {
+/// Narrows the pixel offsets [lo, hi) of a row to where `w + i * e.step_x >= 0`.
+void narrow_span(std::int64_t w, const EdgeWalk& e, int& lo, int& hi) {
+  const std::int64_t step = e.step_x;
   if (step == 0) {
     if (w < 0) hi = lo;  // the whole row is outside this edge
   } else if (step > 0) {  // i >= ceil(-w / step)
-    if (w < 0) lo = static_cast<int>(std::max<std::int64_t>(lo, ceil_div_capped(-w, step, hi)));
+    if (w < 0) {
+      lo = static_cast<int>(std::max<std::int64_t>(lo, ceil_div_capped(-w, step, e.inv_step, hi)));
+    }
   } else {  // i <= floor(w / -step), that is i < ceil((w + 1) / -step)
-    hi = w < 0 ? lo : static_cast<int>(std::min<std::int64_t>(hi, ceil_div_capped(w + 1, -step, hi)));
+    hi = w < 0 ? lo
+               : static_cast<int>(std::min<std::int64_t>(
+                     hi, ceil_div_capped(w + 1, -step, -e.inv_step, hi)));
   }
 }
 
@@ -178,7 +185,7 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
   for (int y = y_begin; y < y_end; ++y) {
     // The row's span: the pixels where all three (biased) edge functions are >= 0.
     int lo = 0, hi = x_end - x_begin;
-    for (int k = 0; k < 3; ++k) narrow_span(w[k], e[k].step_x, lo, hi);
+    for (int k = 0; k < 3; ++k) narrow_span(w[k], e[k], lo, hi);
     const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride +
                                (x_begin - target.x0);
     const double row_z = plane.start + (y - y_begin) * plane.dy;

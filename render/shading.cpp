@@ -16,8 +16,10 @@ constexpr double kGridHalfWidth = 0.015;  // of a cell
 /// The Blinn-Phong highlight of a light at a point seen along `to_eye` (unit), on a surface
 /// that faces the light.
 float specular(const glm::vec3& to_light, const glm::vec3& normal, const glm::vec3& to_eye) {
-  const glm::vec3 half = glm::normalize(to_light + to_eye);
-  float highlight = std::max(glm::dot(normal, half), 0.f);
+  const glm::vec3 half = to_light + to_eye;  // n . h over |h|: one square root, one division
+  const float length_sq = glm::dot(half, half);
+  if (!(length_sq > 0.f)) return 0.f;  // looking straight against the light
+  float highlight = std::max(glm::dot(normal, half) / std::sqrt(length_sq), 0.f);
   for (int i = 0; i < kShininessLog2; ++i) highlight *= highlight;
   return kSpecular * highlight;
 }
@@ -26,7 +28,7 @@ glm::vec3 to_eye_from(const ShadingUniforms& u, const glm::vec3& p) {
   if (u.orthographic) return -u.forward;
   const glm::vec3 d = u.eye - p;
   const float len = glm::length(d);
-  return len > 0.f ? d / len : -u.forward;
+  return len > 0.f ? d * (1.f / len) : -u.forward;
 }
 
 /// The specular of light `k` at sample i of the run, as the mode evaluates it.
@@ -105,7 +107,12 @@ glm::vec3 apply_grid(const GridLines& grid, const glm::vec3& world, const glm::v
       fy > static_cast<double>(grid.cells[1]) + margin) {
     return color;
   }
-  const double dx = std::abs(fx - std::round(fx)), dy = std::abs(fy - std::round(fy));
+  // fx, fy >= -margin > -0.5 here, so truncating f + 0.5 rounds f to the nearest line
+  // (inline, where std::round is a library call on SSE2, and this runs per floor sample).
+  const auto to_line = [](double f) {
+    return std::abs(f - static_cast<double>(static_cast<std::int64_t>(f + 0.5)));
+  };
+  const double dx = to_line(fx), dy = to_line(fy);
   return std::min(dx, dy) < kGridHalfWidth ? color * kGridDarkening : color;
 }
 

@@ -62,11 +62,27 @@ void interpolate_run(const ShadeUniforms& u, const TriangleVarying& v, int x0, i
   }
 }
 
+/// Recently loaded triangles, by the low bits of their ids: rows cross the same few triangles
+/// again and again (the two halves of a floor tile alternate on every row), and a load costs
+/// as much as shading a dozen samples.
+class TriangleCache {
+ public:
+  const TriangleVarying& get(const ShadeUniforms& u, std::uint32_t id) {
+    TriangleVarying& slot = slots_[id % kSlots];
+    if (slot.id != id) load_triangle(u, id, slot);
+    return slot;
+  }
+
+ private:
+  static constexpr std::uint32_t kSlots = 16;
+  std::array<TriangleVarying, kSlots> slots_{};
+};
+
 }  // namespace
 
 void shade_tile(const ShadeUniforms& u, const RasterTarget& t, glm::vec3* rgb) {
   const int w = t.x1 - t.x0;
-  TriangleVarying v;
+  TriangleCache cache;
   SampleRun run;
   for (int y = t.y0; y < t.y1; ++y) {
     const std::uint32_t* ids = t.ids + static_cast<std::ptrdiff_t>(y - t.y0) * w;
@@ -77,7 +93,7 @@ void shade_tile(const ShadeUniforms& u, const RasterTarget& t, glm::vec3* rgb) {
       if (ids[i] == kNoTriangle) {
         std::fill(out + i, out + end, u.background);
       } else {
-        if (ids[i] != v.id) load_triangle(u, ids[i], v);
+        const TriangleVarying& v = cache.get(u, ids[i]);
         run.count = end - i;
         interpolate_run(u, v, t.x0 + i, y, run);
         shade_run(u.shading, v.lighting, run, out + i);

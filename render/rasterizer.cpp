@@ -68,7 +68,8 @@ DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e
     p.dx += static_cast<double>(e[k].step_x) * t.depth[k];
     p.dy += static_cast<double>(e[k].step_y) * t.depth[k];
   }
-  return {p.start / area, p.dx / area, p.dy / area};
+  const double inv_area = 1.0 / area;  // one division, not three
+  return {p.start * inv_area, p.dx * inv_area, p.dy * inv_area};
 }
 
 /// min(ceil(n / d), cap) for n >= 0, d > 0, given inv_d ~ 1 / d: a double estimate corrected

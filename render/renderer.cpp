@@ -157,7 +157,7 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
       scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
                                   .width = options.width * options.ssaa,
                                   .height = options.height * options.ssaa,
-                                  .tile_size = 64,
+                                  .tile_size = 128,
                                   .cull_back_faces = true,
                                   .uniform_viewer = cam.orthographic
                                                         ? glm::vec4(-glm::vec3(cam.forward), 0.f)

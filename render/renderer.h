@@ -2,7 +2,7 @@
 // editor's window can share it).
 //
 // One frame: a shadow map per directional light (shadow_map.h), then the colour pass: the
-// geometry pass (transform, frustum-cull clusters, clip, cull back faces, bin into 64-pixel
+// geometry pass (transform, frustum-cull clusters, clip, cull back faces, bin into 128-pixel
 // tiles), and per tile, in parallel: rasterise depth and triangle ids (rasterizer.h), shade
 // each visible sample once (shading.h), box-filter the k x k samples of each pixel. Every tile
 // is one task writing only its own pixels, in scene order, so the image is identical at any

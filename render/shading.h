@@ -67,7 +67,7 @@ struct SurfaceLighting {
 [[nodiscard]] SurfaceLighting light_surface(const ShadingUniforms& u, const glm::vec3& normal,
                                             const std::array<glm::vec3, 3>& corners);
 
-/// The most samples one run holds (a row of a 64-pixel tile).
+/// The most samples one run holds (longer runs of one triangle are split).
 inline constexpr int kMaxRunSamples = 64;
 
 /// Neighbouring samples of one surface, as arrays (structure of arrays keeps the loops simple

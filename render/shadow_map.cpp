@@ -58,7 +58,7 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map,
       scene, detail::GeometryPass{.uniform_view_projection = map.light_view_projection,
                                   .width = resolution,
                                   .height = resolution,
-                                  .tile_size = 64,
+                                  .tile_size = 128,
                                   .cull_back_faces = true,
                                   .uniform_viewer = glm::vec4(map.to_light, 0.f)},
       bins);

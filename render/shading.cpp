@@ -9,37 +9,53 @@ namespace roomcad {
 namespace {
 
 constexpr float kSpecular = 0.2f;    // white highlights, a matte finish
-constexpr int kShininessLog2 = 5;  // exponent 32, by repeated squaring (std::pow is slow)
 constexpr float kGridDarkening = 0.6f;
 constexpr double kGridHalfWidth = 0.015;  // of a cell
 
-/// The Blinn-Phong highlight of a light at a point seen along `to_eye` (unit), on a surface
-/// that faces the light.
-float specular(const glm::vec3& to_light, const glm::vec3& normal, const glm::vec3& to_eye) {
-  const glm::vec3 half = to_light + to_eye;  // n . h over |h|: one square root, one division
-  const float length_sq = glm::dot(half, half);
-  if (!(length_sq > 0.f)) return 0.f;  // looking straight against the light
-  float highlight = std::max(glm::dot(normal, half) / std::sqrt(length_sq), 0.f);
-  for (int i = 0; i < kShininessLog2; ++i) highlight *= highlight;
-  return kSpecular * highlight;
+/// The Blinn-Phong highlight (exponent 32, by repeated squaring: std::pow is slow) of light
+/// direction l on a surface of normal n (both unit) that faces the light, seen from the
+/// direction e (any length). Branch-free, so that loops over samples calling it vectorise.
+inline float highlight_at(const glm::vec3& l, const glm::vec3& n, float ex, float ey, float ez) {
+  constexpr float kTiny = 1e-30f;  // keeps a zero vector's inverse length finite
+  const float inv_e = 1.f / std::sqrt(std::max(ex * ex + ey * ey + ez * ez, kTiny));
+  const float hx = l.x + ex * inv_e, hy = l.y + ey * inv_e, hz = l.z + ez * inv_e;
+  const float inv_h = 1.f / std::sqrt(std::max(hx * hx + hy * hy + hz * hz, kTiny));
+  const float h1 = std::max((n.x * hx + n.y * hy + n.z * hz) * inv_h, 0.f);
+  const float h2 = h1 * h1, h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8;  // written out: a
+  return kSpecular * (h16 * h16);  // loop here would keep the caller's loop from vectorising
 }
 
-glm::vec3 to_eye_from(const ShadingUniforms& u, const glm::vec3& p) {
-  if (u.orthographic) return -u.forward;
-  const glm::vec3 d = u.eye - p;
-  const float len = glm::length(d);
-  return len > 0.f ? d * (1.f / len) : -u.forward;
+/// The viewer, homogeneous: (eye, 1) in perspective, (-forward, 0) orthographic, so that the
+/// direction to it from p is viewer - w * p.
+glm::vec4 viewer_of(const ShadingUniforms& u) {
+  return u.orthographic ? glm::vec4(-u.forward, 0.f) : glm::vec4(u.eye, 1.f);
 }
 
-/// The specular of light `k` at sample i of the run, as the mode evaluates it.
-float sample_specular(const ShadingUniforms& u, const SurfaceLighting& s, const SampleRun& run,
-                      int k, int i) {
-  if (s.diffuse[k] <= 0.f) return 0.f;  // facing away: no highlight
-  if (u.mode == ShadingMode::phong) {
-    return specular(u.lights[k].to_light, s.normal, to_eye_from(u, run.world[i]));
+float highlight_from(const ShadingUniforms& u, const glm::vec3& l, const glm::vec3& n,
+                     const glm::vec3& p) {
+  const glm::vec4 v = viewer_of(u);
+  return highlight_at(l, n, v.x - v.w * p.x, v.y - v.w * p.y, v.z - v.w * p.z);
+}
+
+/// The specular of light `k` at every sample of the run, as the mode evaluates it.
+void run_specular(const ShadingUniforms& u, const SurfaceLighting& s, const SampleRun& run,
+                  int k, float* out) {
+  const int n = run.count;
+  if (s.diffuse[k] <= 0.f) {  // facing away: no highlight
+    std::fill(out, out + n, 0.f);
+  } else if (u.mode == ShadingMode::phong) {
+    const glm::vec4 v = viewer_of(u);
+    const glm::vec3 l = u.lights[k].to_light;
+    for (int i = 0; i < n; ++i) {
+      out[i] = highlight_at(l, s.normal, v.x - v.w * run.x[i], v.y - v.w * run.y[i],
+                            v.z - v.w * run.z[i]);
+    }
+  } else {
+    const std::array<float, 3>& c = s.corner_specular[k];  // flat: three equal values
+    for (int i = 0; i < n; ++i) {
+      out[i] = (1.f - run.w1[i] - run.w2[i]) * c[0] + run.w1[i] * c[1] + run.w2[i] * c[2];
+    }
   }
-  const std::array<float, 3>& c = s.corner_specular[k];  // flat: three equal values
-  return (1.f - run.w1[i] - run.w2[i]) * c[0] + run.w1[i] * c[1] + run.w2[i] * c[2];
 }
 
 /// unlit: the plain colour, times (1 - sum of s * (1 - a)).
@@ -78,7 +94,7 @@ SurfaceLighting light_surface(const ShadingUniforms& u, const glm::vec3& normal,
     if (s.diffuse[k] <= 0.f || u.mode == ShadingMode::phong) continue;
     for (int c = 0; c < 3; ++c) {
       const glm::vec3& at = u.mode == ShadingMode::flat ? centroid : corners[c];
-      s.corner_specular[k][c] = specular(light.to_light, normal, to_eye_from(u, at));
+      s.corner_specular[k][c] = highlight_from(u, light.to_light, normal, at);
     }
   }
   return s;
@@ -87,14 +103,19 @@ SurfaceLighting light_surface(const ShadingUniforms& u, const glm::vec3& normal,
 void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
                glm::vec3* out) {
   if (u.mode == ShadingMode::unlit) return shade_unlit(u, run, out);
-  for (int i = 0; i < run.count; ++i) {
-    float brightness = surface.ambient, highlight = 0.f;
-    for (int k = 0; k < u.light_count; ++k) {
+  std::array<float, kMaxRunSamples> brightness, highlight, specular;
+  std::fill_n(brightness.begin(), run.count, surface.ambient);
+  std::fill_n(highlight.begin(), run.count, 0.f);
+  for (int k = 0; k < u.light_count; ++k) {
+    run_specular(u, surface, run, k, specular.data());
+    for (int i = 0; i < run.count; ++i) {
       const float direct = surface.direct[k] * (1.f - run.shadow[k][i]);
-      brightness += direct * surface.diffuse[k];
-      highlight += direct * sample_specular(u, surface, run, k, i);
+      brightness[i] += direct * surface.diffuse[k];
+      highlight[i] += direct * specular[i];
     }
-    out[i] = glm::clamp(run.color[i] * brightness + glm::vec3(highlight), 0.f, 1.f);
+  }
+  for (int i = 0; i < run.count; ++i) {
+    out[i] = glm::clamp(run.color[i] * brightness[i] + glm::vec3(highlight[i]), 0.f, 1.f);
   }
 }
 

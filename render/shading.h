@@ -75,7 +75,7 @@ inline constexpr int kMaxRunSamples = 64;
 struct SampleRun {
   int count = 0;                                    ///< 0 .. kMaxRunSamples
   std::array<float, kMaxRunSamples> w1{}, w2{};     ///< barycentrics of corners 1 and 2
-  std::array<glm::vec3, kMaxRunSamples> world{};    ///< metres
+  std::array<float, kMaxRunSamples> x{}, y{}, z{};  ///< world positions, metres
   std::array<glm::vec3, kMaxRunSamples> color{};    ///< sRGB in [0, 1], grid lines applied
   std::array<std::array<float, kMaxRunSamples>, kMaxLights> shadow{};  ///< 0 lit ... 1 shadowed
 };

@@ -53,8 +53,11 @@ void interpolate_run(const ShadeUniforms& u, const TriangleVarying& v, int x0, i
     const double inv = 1.0 / (d.x * px + d_row);  // perspective-correct: one division
     run.w1[i] = static_cast<float>((a.x * px + a_row) * inv);
     run.w2[i] = static_cast<float>((b.x * px + b_row) * inv);
-    run.world[i] = v.corners[0] + run.w1[i] * e1 + run.w2[i] * e2;
-    run.color[i] = v.is_floor ? apply_grid(u.shading.grid, run.world[i], v.color) : v.color;
+    const glm::vec3 world = v.corners[0] + run.w1[i] * e1 + run.w2[i] * e2;
+    run.x[i] = world.x;
+    run.y[i] = world.y;
+    run.z[i] = world.z;
+    run.color[i] = v.is_floor ? apply_grid(u.shading.grid, world, v.color) : v.color;
   }
   for (std::size_t k = 0; k < u.shadow_maps->size(); ++k) {
     shadow_amounts((*u.shadow_maps)[k], v.receivers[k], u.filter, run.w1.data(), run.w2.data(),

@@ -68,35 +68,50 @@ ShadingUniforms make_uniforms(const RenderOptions& options, const CameraMatrices
   return u;
 }
 
-/// Writes the output pixels of one tile: colour averaged over its k x k samples; depth and
-/// object id of the sample nearest the pixel's centre (up and left of it for even k).
-/// K is the frame's ssaa, a template parameter so that the sample loops unroll.
+/// Writes one row of output pixels of a tile: colour averaged over their k x k samples; depth
+/// and object id of the sample nearest each pixel's centre (up and left of it for even k).
+/// K is the frame's ssaa, a template parameter so that the sample loops unroll; each output
+/// is its own loop over the row, so that the colour and depth loops vectorise.
+template <int K>
+void resolve_row(const FrameContext& f, const RasterTarget& t, const glm::vec3* rgb, int oy,
+                 FrameBuffers& out) {
+  constexpr int centre = (K - 1) / 2;
+  constexpr float scale = 255.f / static_cast<float>(K * K);
+  const int w = t.x1 - t.x0, ox0 = t.x0 / K, n = w / K;
+  const glm::vec3* samples = rgb + static_cast<std::ptrdiff_t>(oy * K - t.y0) * w;
+  std::uint8_t* color = out.color.at(ox0, oy);
+  for (int j = 0; j < n; ++j) {
+    glm::vec3 sum(0.f);
+    for (int sy = 0; sy < K; ++sy)
+      for (int sx = 0; sx < K; ++sx) sum += samples[sy * w + j * K + sx];
+    for (int ch = 0; ch < 3; ++ch) {
+      color[3 * j + ch] = static_cast<std::uint8_t>(sum[ch] * scale + 0.5f);
+    }
+  }
+  const std::ptrdiff_t centre_row =
+      static_cast<std::ptrdiff_t>(oy * K + centre - t.y0) * w + centre;
+  const float* depth = t.depth + centre_row;
+  float* distance = &out.depth.at(ox0, oy);
+  for (int j = 0; j < n; ++j) distance[j] = f.depth_to_distance(depth[j * K]);
+  const std::uint32_t* ids = t.ids + centre_row;
+  std::int32_t* objects = &out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox0];
+  std::uint32_t last_id = kNoTriangle;
+  std::int32_t last_object = -1;
+  for (int j = 0; j < n; ++j) {
+    if (ids[j * K] != last_id) {  // neighbours mostly show the same triangle
+      last_id = ids[j * K];
+      last_object =
+          last_id == kNoTriangle ? -1 : f.shade.scene->objects[f.bins.at(last_id).triangle];
+    }
+    objects[j] = last_object;
+  }
+}
+
+/// Writes the output pixels of one tile (see resolve_row).
 template <int K>
 void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vector<glm::vec3>& rgb,
                   FrameBuffers& out) {
-  constexpr int k = K, centre = (K - 1) / 2;
-  constexpr float scale = 255.f / static_cast<float>(K * K);
-  const int w = t.x1 - t.x0;
-  std::uint32_t last_id = kNoTriangle;
-  std::int32_t last_object = -1;
-  for (int oy = t.y0 / k; oy < t.y1 / k; ++oy) {
-    for (int ox = t.x0 / k; ox < t.x1 / k; ++ox) {
-      glm::vec3 sum(0.f);
-      for (int sy = 0; sy < k; ++sy)
-        for (int sx = 0; sx < k; ++sx)
-          sum += rgb[static_cast<std::size_t>(oy * k + sy - t.y0) * w + (ox * k + sx - t.x0)];
-      std::uint8_t* px = out.color.at(ox, oy);
-      for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(sum[ch] * scale + 0.5f);
-      const std::size_t s = static_cast<std::size_t>(oy * k + centre - t.y0) * w +
-                            (ox * k + centre - t.x0);
-      out.depth.at(ox, oy) = f.depth_to_distance(t.depth[s]);
-      if (t.ids[s] != last_id) {  // neighbours mostly show the same triangle
-        last_id = t.ids[s];
-        last_object = last_id == kNoTriangle ? -1 : f.shade.scene->objects[f.bins.at(last_id).triangle];
-      }
-      out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox] = last_object;
-    }
-  }
+  for (int oy = t.y0 / K; oy < t.y1 / K; ++oy) resolve_row<K>(f, t, rgb.data(), oy, out);
 }
 
 void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {

@@ -173,7 +173,8 @@ void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, Shadow
   // limit) must stay finite: clamp them to just outside.
   const float limit = static_cast<float>(map.depth.width) + 2.f;
   for (int i = 0; i < count; ++i) {
-    const glm::vec3 p = receiver.corner0 + w1[i] * receiver.to_corner1 + w2[i] * receiver.to_corner2;
+    const glm::vec3 p =
+        receiver.corner0 + w1[i] * receiver.to_corner1 + w2[i] * receiver.to_corner2;
     out[i] = filtered_lookup(map, receiver, std::clamp(p.x, -2.f, limit),
                              std::clamp(p.y, -2.f, limit), p.z, filter);
   }

@@ -64,8 +64,9 @@ struct ShadowReceiver {
 /// @param[in]  w1, w2  the samples' barycentric weights of corners 1 and 2, `count` of each
 /// @param[out] out     `count` amounts, 0 lit ... 1 shadowed: hard is 0 or 1, pcf the
 ///                     bilinearly weighted share of the 2 x 2 texels around the point that
-///                     shadow it. Points outside the map are lit; surfaces facing away from the light are shadowed; with
-///                     `off` (or an empty scene's map) every sample is lit. O(count).
+///                     shadow it. Points outside the map are lit; surfaces facing away from
+///                     the light are shadowed; with `off` (or an empty scene's map) every
+///                     sample is lit. O(count).
 void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, ShadowFilter filter,
                     const float* w1, const float* w2, int count, float* out);
 

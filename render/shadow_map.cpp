@@ -130,6 +130,9 @@ int floor_to_int(float x) {
   return i - (static_cast<float>(i) > x);
 }
 
+/// Samples whose map positions shadow_amounts computes at once.
+constexpr int kMaxShadowBatch = 64;
+
 /// 1 if texel (iu, iv) lies nearer the light than `depth`, else 0 (also outside the map: lit).
 float is_occluded(const ShadowMap& map, int iu, int iv, float depth) {
   const auto size = static_cast<unsigned>(map.depth.width);
@@ -172,11 +175,19 @@ void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, Shadow
   // The outside of the map is lit, so coordinates far outside it (up to the float -> int
   // limit) must stay finite: clamp them to just outside.
   const float limit = static_cast<float>(map.depth.width) + 2.f;
-  for (int i = 0; i < count; ++i) {
-    const glm::vec3 p =
-        receiver.corner0 + w1[i] * receiver.to_corner1 + w2[i] * receiver.to_corner2;
-    out[i] = filtered_lookup(map, receiver, std::clamp(p.x, -2.f, limit),
-                             std::clamp(p.y, -2.f, limit), p.z, filter);
+  const glm::vec3 c0 = receiver.corner0, e1 = receiver.to_corner1, e2 = receiver.to_corner2;
+  std::array<float, kMaxShadowBatch> u, v, z;
+  for (int first = 0; first < count; first += kMaxShadowBatch) {
+    const int n = std::min(count - first, kMaxShadowBatch);
+    for (int i = 0; i < n; ++i) {  // branch-free: vectorised
+      const float a = w1[first + i], b = w2[first + i];
+      u[i] = std::clamp(c0.x + a * e1.x + b * e2.x, -2.f, limit);
+      v[i] = std::clamp(c0.y + a * e1.y + b * e2.y, -2.f, limit);
+      z[i] = c0.z + a * e1.z + b * e2.z;
+    }
+    for (int i = 0; i < n; ++i) {
+      out[first + i] = filtered_lookup(map, receiver, u[i], v[i], z[i], filter);
+    }
   }
 }
 

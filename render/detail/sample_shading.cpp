@@ -48,7 +48,7 @@ void interpolate_run(const ShadeUniforms& u, const TriangleVarying& v, int x0, i
   const double py = y + 0.5;
   const double d_row = d.y * py + d.z, a_row = a.y * py + a.z, b_row = b.y * py + b.z;
   const glm::vec3 e1 = v.corners[1] - v.corners[0], e2 = v.corners[2] - v.corners[0];
-  for (int i = 0; i < run.count; ++i) {
+  for (int i = 0; i < run.count; ++i) {  // branch-free: vectorised
     const double px = x0 + i + 0.5;
     const double inv = 1.0 / (d.x * px + d_row);  // perspective-correct: one division
     run.w1[i] = static_cast<float>((a.x * px + a_row) * inv);
@@ -57,7 +57,13 @@ void interpolate_run(const ShadeUniforms& u, const TriangleVarying& v, int x0, i
     run.x[i] = world.x;
     run.y[i] = world.y;
     run.z[i] = world.z;
-    run.color[i] = v.is_floor ? apply_grid(u.shading.grid, world, v.color) : v.color;
+  }
+  if (v.is_floor && u.shading.grid.enabled) {
+    for (int i = 0; i < run.count; ++i) {
+      run.color[i] = apply_grid(u.shading.grid, {run.x[i], run.y[i], run.z[i]}, v.color);
+    }
+  } else {
+    std::fill_n(run.color.begin(), run.count, v.color);
   }
   for (std::size_t k = 0; k < u.shadow_maps->size(); ++k) {
     shadow_amounts((*u.shadow_maps)[k], v.receivers[k], u.filter, run.w1.data(), run.w2.data(),

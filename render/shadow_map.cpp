@@ -2,6 +2,7 @@
 #include "render/shadow_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -156,11 +157,19 @@ float filtered_lookup(const ShadowMap& map, const ShadowReceiver& r, float u, fl
   }
   const int iu = floor_to_int(u - 0.5f), iv = floor_to_int(v - 0.5f);
   const float fu = u - 0.5f - static_cast<float>(iu), fv = v - 0.5f - static_cast<float>(iv);
-  const float top = (1.f - fu) * is_occluded(map, iu, iv, depth_at(iu, iv)) +
-                    fu * is_occluded(map, iu + 1, iv, depth_at(iu + 1, iv));
-  const float bottom = (1.f - fu) * is_occluded(map, iu, iv + 1, depth_at(iu, iv + 1)) +
-                       fu * is_occluded(map, iu + 1, iv + 1, depth_at(iu + 1, iv + 1));
-  return (1.f - fv) * top + fv * bottom;
+  const float d00 = depth_at(iu, iv), d10 = d00 + r.grad_u, d01 = d00 + r.grad_v;
+  const float d11 = d01 + r.grad_u;
+  const auto size = static_cast<unsigned>(map.depth.width);
+  std::array<float, 4> s;  // occluded: (iu, iv), (iu + 1, iv), (iu, iv + 1), (iu + 1, iv + 1)
+  if (static_cast<unsigned>(iu) < size - 1u && static_cast<unsigned>(iv) < size - 1u) {
+    const float* row = &map.depth.values[static_cast<std::size_t>(iv) * size + iu];  // all in
+    s = {row[0] > d00 ? 1.f : 0.f, row[1] > d10 ? 1.f : 0.f, row[size] > d01 ? 1.f : 0.f,
+         row[size + 1] > d11 ? 1.f : 0.f};
+  } else {
+    s = {is_occluded(map, iu, iv, d00), is_occluded(map, iu + 1, iv, d10),
+         is_occluded(map, iu, iv + 1, d01), is_occluded(map, iu + 1, iv + 1, d11)};
+  }
+  return (1.f - fv) * ((1.f - fu) * s[0] + fu * s[1]) + fv * ((1.f - fu) * s[2] + fu * s[3]);
 }
 
 }  // namespace

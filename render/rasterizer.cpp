@@ -57,8 +57,8 @@ struct DepthPlane {
   double start = 0.0, dx = 0.0, dy = 0.0;
 };
 
-/// Depth is affine on screen; the plane is kept in double so that the float result is
-/// correctly rounded (the 1 km precision test relies on it).
+/// Depth is affine on screen; the plane is kept in double so that each row starts correctly
+/// rounded (the 1 km precision test relies on depth within a few float ulps).
 DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e) {
   double area = 0.0;
   DepthPlane p;
@@ -102,10 +102,10 @@ void narrow_span(std::int64_t w, const EdgeWalk& e, int& lo, int& hi) {
 /// Depth-tests pixels [lo, hi) of a row whose depth is z0 + i * dz at pixel i (reversed-Z: a
 /// greater depth is nearer) and keeps the nearer. Every pixel is stored, changed or not, and
 /// the id is selected with a mask, so the compiler turns the loop into SSE2 without branches.
-void test_span(double z0, double dz, int lo, int hi, float* depth, std::uint32_t* ids,
+void test_span(float z0, float dz, int lo, int hi, float* depth, std::uint32_t* ids,
                std::uint32_t id) {
   for (int i = lo; i < hi; ++i) {
-    const float z = static_cast<float>(z0 + i * dz);
+    const float z = z0 + static_cast<float>(i) * dz;
     const std::uint32_t nearer = 0u - static_cast<std::uint32_t>(z > depth[i]);  // all ones
     depth[i] = std::max(depth[i], z);
     ids[i] = (ids[i] & ~nearer) | (id & nearer);
@@ -113,9 +113,9 @@ void test_span(double z0, double dz, int lo, int hi, float* depth, std::uint32_t
 }
 
 /// test_span without ids (shadow maps).
-void test_span_depth_only(double z0, double dz, int lo, int hi, float* depth) {
+void test_span_depth_only(float z0, float dz, int lo, int hi, float* depth) {
   for (int i = lo; i < hi; ++i) {
-    const float z = static_cast<float>(z0 + i * dz);
+    const float z = z0 + static_cast<float>(i) * dz;
     depth[i] = std::max(depth[i], z);
   }
 }
@@ -189,11 +189,14 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
     for (int k = 0; k < 3; ++k) narrow_span(w[k], e[k], lo, hi);
     const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride +
                                (x_begin - target.x0);
-    const double row_z = plane.start + (y - y_begin) * plane.dy;
+    // The row's depth in double, then float across the span (four pixels per SSE2 step):
+    // at most a tile wide, that adds a few float ulps to the correctly rounded value.
+    const float row_z = static_cast<float>(plane.start + (y - y_begin) * plane.dy);
+    const float dx = static_cast<float>(plane.dx);
     if (target.ids) {
-      test_span(row_z, plane.dx, lo, hi, target.depth + row, target.ids + row, target.id_value);
+      test_span(row_z, dx, lo, hi, target.depth + row, target.ids + row, target.id_value);
     } else {
-      test_span_depth_only(row_z, plane.dx, lo, hi, target.depth + row);
+      test_span_depth_only(row_z, dx, lo, hi, target.depth + row);
     }
     for (int k = 0; k < 3; ++k) w[k] += e[k].step_y;
   }

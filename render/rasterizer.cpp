@@ -77,9 +77,12 @@ DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e
 std::int64_t ceil_div_capped(std::int64_t n, std::int64_t d, double inv_d, std::int64_t cap) {
   const double estimate = static_cast<double>(n) * inv_d;
   if (estimate > static_cast<double>(cap) + 1.0) return cap;
-  std::int64_t q = static_cast<std::int64_t>(estimate);  // within one of the quotient
-  while (q * d < n) ++q;
-  while (q > 0 && (q - 1) * d >= n) --q;
+  // The estimate is within 2^-40 of n / d, so its truncation is the ceiling, or one less
+  // (n / d an integer or just above one), or one more (just below one): one exact step up
+  // or down, without branches (their outcome is data-dependent, so they would mispredict).
+  std::int64_t q = static_cast<std::int64_t>(estimate);
+  q += static_cast<std::int64_t>(q * d < n);
+  q -= static_cast<std::int64_t>(q > 0 && (q - 1) * d >= n);
   return std::min(q, cap);
 }
 

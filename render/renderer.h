@@ -97,6 +97,9 @@ void render_model(const Model& model, const RenderOptions& options, FrameBuffers
 
 /// The same for a scene already flattened (benchmarks and windows flatten once; the scene
 /// already holds only the parts wanted, so options.parts is not used).
+/// Both keep their working memory (binned triangles, about 80 bytes per triangle on screen,
+/// and the shadow maps) in the calling thread between frames, so that redrawing allocates
+/// nothing; it is freed when the thread ends.
 void render_scene(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
                   RenderStats* stats = nullptr);
 

@@ -1,7 +1,7 @@
 // Render benchmarks: frame times at 1920 x 1080 for grids of rooms from ~1k to ~2M triangles,
-// with and without PCF shadows, at 1 and 2 threads; and shadow-map resolution against shadow
-// error (vs ray-traced shadows) and time. The scene is flattened once (as a GPU uploads its
-// mesh once), so a frame is what render_scene does.
+// without shadows, with PCF and with hard shadows, at 1 and 2 threads; and shadow-map
+// resolution against shadow error (vs ray-traced shadows) and time. The scene is flattened
+// once (as a GPU uploads its mesh once), so a frame is what render_scene does.
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -20,11 +20,12 @@ const Scene& grid_scene(int n) {
   return *slot;
 }
 
-/// Args: rooms per side, shadows (0 off, 1 pcf), threads.
+/// Args: rooms per side, shadows (0 off, 1 pcf, 2 hard), threads.
 void BM_Frame1080p(benchmark::State& state) {
   const Scene& scene = grid_scene(static_cast<int>(state.range(0)));
+  constexpr ShadowFilter filters[] = {ShadowFilter::off, ShadowFilter::pcf, ShadowFilter::hard};
   const RenderOptions options{.width = 1920, .height = 1080,
-                              .shadows = state.range(1) ? ShadowFilter::pcf : ShadowFilter::off,
+                              .shadows = filters[state.range(1)],
                               .threads = static_cast<int>(state.range(2))};
   FrameBuffers out;
   RenderStats stats, sum;
@@ -39,7 +40,7 @@ void BM_Frame1080p(benchmark::State& state) {
   state.counters["raster_ms"] = sum.raster_ms / frames;
 }
 BENCHMARK(BM_Frame1080p)
-    ->ArgsProduct({{2, 10, 25, 50, 82}, {0, 1}, {1, 2}})
+    ->ArgsProduct({{2, 10, 25, 50, 82}, {0, 1, 2}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(0.3);

@@ -15,6 +15,14 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
   return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
 
+/// The first pixel whose centre (pixel * 256 + 128) is at or after fixed-point `lo`.
+std::int64_t first_centre(std::int64_t lo) {
+  return -floor_div(-(lo - kHalfPixel), kSubpixelScale);
+}
+
+/// The last pixel whose centre is at or before fixed-point `hi`.
+std::int64_t last_centre(std::int64_t hi) { return floor_div(hi - kHalfPixel, kSubpixelScale); }
+
 /// Twice the signed area of (a, b, p): the edge function of edge a -> b at p.
 std::int64_t edge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
                   std::int64_t px, std::int64_t py) {
@@ -28,6 +36,7 @@ struct EdgeWalk {
   std::int64_t step_x = 0;
   std::int64_t step_y = 0;
   std::int64_t bias = 0;
+  double inv_step = 0.0;  ///< 1 / step_x (0 when step_x is)
 };
 
 EdgeWalk walk_edge(const ScreenTriangle& t, int k, std::int64_t sx, std::int64_t sy) {
@@ -39,6 +48,7 @@ EdgeWalk walk_edge(const ScreenTriangle& t, int k, std::int64_t sx, std::int64_t
   w.at_start = edge(t.x[a], t.y[a], t.x[b], t.y[b], sx, sy) - w.bias;
   w.step_x = -static_cast<std::int64_t>(t.y[b] - t.y[a]) * kSubpixelScale;
   w.step_y = static_cast<std::int64_t>(t.x[b] - t.x[a]) * kSubpixelScale;
+  w.inv_step = w.step_x != 0 ? 1.0 / static_cast<double>(w.step_x) : 0.0;
   return w;
 }
 
@@ -47,8 +57,8 @@ struct DepthPlane {
   double start = 0.0, dx = 0.0, dy = 0.0;
 };
 
-/// Depth is affine on screen; the plane is kept in double so that the float result is
-/// correctly rounded (the 1 km precision test relies on it).
+/// Depth is affine on screen; the plane is kept in double so that each row starts correctly
+/// rounded (the 1 km precision test relies on depth within a few float ulps).
 DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e) {
   double area = 0.0;
   DepthPlane p;
@@ -58,21 +68,75 @@ DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e
     p.dx += static_cast<double>(e[k].step_x) * t.depth[k];
     p.dy += static_cast<double>(e[k].step_y) * t.depth[k];
   }
-  return {p.start / area, p.dx / area, p.dy / area};
+  const double inv_area = 1.0 / area;  // one division, not three
+  return {p.start * inv_area, p.dx * inv_area, p.dy * inv_area};
 }
 
-/// Narrows the pixel offsets [lo, hi) of a row to where `w + i * step >= 0`.
-void narrow_span(std::int64_t w, std::int64_t step, int& lo, int& hi) {
+/// min(ceil(n / d), cap) for n >= 0, d > 0, given inv_d ~ 1 / d: a double estimate corrected
+/// exactly (a division costs tens of cycles, and this runs for every edge of every row).
+std::int64_t ceil_div_capped(std::int64_t n, std::int64_t d, double inv_d, std::int64_t cap) {
+  const double estimate = static_cast<double>(n) * inv_d;
+  if (estimate > static_cast<double>(cap) + 1.0) return cap;
+  // The estimate is within 2^-40 of n / d, so its truncation is the ceiling, or one less
+  // (n / d an integer or just above one), or one more (just below one): one exact step up
+  // or down, without branches (their outcome is data-dependent, so they would mispredict).
+  std::int64_t q = static_cast<std::int64_t>(estimate);
+  q += static_cast<std::int64_t>(q * d < n);
+  q -= static_cast<std::int64_t>(q > 0 && (q - 1) * d >= n);
+  return std::min(q, cap);
+}
+
+/// Narrows the pixel offsets [lo, hi) of a row to where `w + i * e.step_x >= 0`.
+void narrow_span(std::int64_t w, const EdgeWalk& e, int& lo, int& hi) {
+  const std::int64_t step = e.step_x;
   if (step == 0) {
     if (w < 0) hi = lo;  // the whole row is outside this edge
   } else if (step > 0) {  // i >= ceil(-w / step)
-    if (w < 0) lo = static_cast<int>(std::max<std::int64_t>(lo, (-w + step - 1) / step));
-  } else {  // i <= floor(w / -step)
-    hi = w < 0 ? lo : static_cast<int>(std::min<std::int64_t>(hi, w / -step + 1));
+    if (w < 0) {
+      lo = static_cast<int>(std::max<std::int64_t>(lo, ceil_div_capped(-w, step, e.inv_step, hi)));
+    }
+  } else {  // i <= floor(w / -step), that is i < ceil((w + 1) / -step)
+    hi = w < 0 ? lo
+               : static_cast<int>(std::min<std::int64_t>(
+                     hi, ceil_div_capped(w + 1, -step, -e.inv_step, hi)));
   }
 }
 
+/// Depth-tests pixels [lo, hi) of a row whose depth is z0 + i * dz at pixel i (reversed-Z: a
+/// greater depth is nearer) and keeps the nearer. Every pixel is stored, changed or not, and
+/// the id is selected with a mask, so the compiler turns the loop into SSE2 without branches.
+void test_span(float z0, float dz, int lo, int hi, float* depth, std::uint32_t* ids,
+               std::uint32_t id) {
+  for (int i = lo; i < hi; ++i) {
+    const float z = z0 + static_cast<float>(i) * dz;
+    const std::uint32_t nearer = 0u - static_cast<std::uint32_t>(z > depth[i]);  // all ones
+    depth[i] = std::max(depth[i], z);
+    ids[i] = (ids[i] & ~nearer) | (id & nearer);
+  }
+}
+
+/// test_span without ids (shadow maps).
+void test_span_depth_only(float z0, float dz, int lo, int hi, float* depth) {
+  for (int i = lo; i < hi; ++i) {
+    const float z = z0 + static_cast<float>(i) * dz;
+    depth[i] = std::max(depth[i], z);
+  }
+}
+
+/// round(v) for the set-up's fixed point, ties away from zero as std::lround, but inline
+/// (lround is a library call, six per triangle). |v| < 2^30.
+std::int32_t round_to_fixed(double v) {
+  const double shifted = v < 0.0 ? v - 0.5 : v + 0.5;
+  return static_cast<std::int32_t>(shifted);  // truncation towards zero completes the rounding
+}
+
 }  // namespace
+
+bool covers_no_sample(const ScreenTriangle& t) {
+  const auto [min_x, max_x] = std::minmax({t.x[0], t.x[1], t.x[2]});
+  const auto [min_y, max_y] = std::minmax({t.y[0], t.y[1], t.y[2]});
+  return first_centre(min_x) > last_centre(max_x) || first_centre(min_y) > last_centre(max_y);
+}
 
 std::optional<ScreenTriangle> set_up_triangle(const std::array<ClipVertex, 3>& v, int width,
                                               int height, std::uint32_t triangle,
@@ -84,8 +148,8 @@ std::optional<ScreenTriangle> set_up_triangle(const std::array<ClipVertex, 3>& v
     const float inv_w = 1.f / p.w;
     const double sx = (static_cast<double>(p.x) * inv_w + 1.0) * 0.5 * width;
     const double sy = (1.0 - static_cast<double>(p.y) * inv_w) * 0.5 * height;
-    t.x[i] = static_cast<std::int32_t>(std::lround(sx * kSubpixelScale));
-    t.y[i] = static_cast<std::int32_t>(std::lround(sy * kSubpixelScale));
+    t.x[i] = round_to_fixed(sx * kSubpixelScale);
+    t.y[i] = round_to_fixed(sy * kSubpixelScale);
     t.depth[i] = std::clamp(p.z * inv_w, 0.f, 1.f);
     t.inv_w[i] = inv_w;
     t.source[i] = v[i].source;
@@ -109,14 +173,10 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
   const auto [min_x, max_x] = std::minmax({t.x[0], t.x[1], t.x[2]});
   const auto [min_y, max_y] = std::minmax({t.y[0], t.y[1], t.y[2]});
   // Pixels whose centre px * 256 + 128 lies inside the box, within the target.
-  const int x_begin = static_cast<int>(std::max<std::int64_t>(
-      target.x0, -floor_div(-(min_x - kHalfPixel), kSubpixelScale)));
-  const int x_end = static_cast<int>(
-      std::min<std::int64_t>(target.x1, floor_div(max_x - kHalfPixel, kSubpixelScale) + 1));
-  const int y_begin = static_cast<int>(std::max<std::int64_t>(
-      target.y0, -floor_div(-(min_y - kHalfPixel), kSubpixelScale)));
-  const int y_end = static_cast<int>(
-      std::min<std::int64_t>(target.y1, floor_div(max_y - kHalfPixel, kSubpixelScale) + 1));
+  const int x_begin = static_cast<int>(std::max<std::int64_t>(target.x0, first_centre(min_x)));
+  const int x_end = static_cast<int>(std::min<std::int64_t>(target.x1, last_centre(max_x) + 1));
+  const int y_begin = static_cast<int>(std::max<std::int64_t>(target.y0, first_centre(min_y)));
+  const int y_end = static_cast<int>(std::min<std::int64_t>(target.y1, last_centre(max_y) + 1));
   if (x_begin >= x_end || y_begin >= y_end) return;
 
   const std::int64_t sx = static_cast<std::int64_t>(x_begin) * kSubpixelScale + kHalfPixel;
@@ -129,16 +189,17 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
   for (int y = y_begin; y < y_end; ++y) {
     // The row's span: the pixels where all three (biased) edge functions are >= 0.
     int lo = 0, hi = x_end - x_begin;
-    for (int k = 0; k < 3; ++k) narrow_span(w[k], e[k].step_x, lo, hi);
+    for (int k = 0; k < 3; ++k) narrow_span(w[k], e[k], lo, hi);
     const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride +
                                (x_begin - target.x0);
-    const double row_z = plane.start + (y - y_begin) * plane.dy;
-    for (int i = lo; i < hi; ++i) {
-      const float z = static_cast<float>(row_z + i * plane.dx);
-      if (z > target.depth[row + i]) {  // reversed-Z: nearer
-        target.depth[row + i] = z;
-        if (target.ids) target.ids[row + i] = target.id_value;
-      }
+    // The row's depth in double, then float across the span (four pixels per SSE2 step):
+    // at most a tile wide, that adds a few float ulps to the correctly rounded value.
+    const float row_z = static_cast<float>(plane.start + (y - y_begin) * plane.dy);
+    const float dx = static_cast<float>(plane.dx);
+    if (target.ids) {
+      test_span(row_z, dx, lo, hi, target.depth + row, target.ids + row, target.id_value);
+    } else {
+      test_span_depth_only(row_z, dx, lo, hi, target.depth + row);
     }
     for (int k = 0; k < 3; ++k) w[k] += e[k].step_y;
   }

@@ -47,6 +47,10 @@ enum class Culling { back_faces, none };
                                                             std::uint32_t triangle,
                                                             Culling culling);
 
+/// @return true if the triangle's bounding box holds no pixel centre, so it cannot draw
+///         anything (a sub-pixel sliver between centres): callers skip it before binning. O(1).
+[[nodiscard]] bool covers_no_sample(const ScreenTriangle& t);
+
 /// The part of a depth (and optional id) buffer one rasterisation call may write: pixels
 /// [x0, x1) x [y0, y1); pixel (x, y) is stored at depth[(y - y0) * stride + (x - x0)].
 struct RasterTarget {

@@ -11,6 +11,8 @@
 #include <tbb/task_arena.h>
 
 #include "render/detail/geometry_pass.h"
+#include "render/detail/sample_shading.h"
+#include "render/detail/shadow_pass.h"
 #include "render/visibility.h"
 
 namespace roomcad {
@@ -34,14 +36,22 @@ struct DepthToDistance {
   }
 };
 
+/// Memory a frame needs, kept between the frames of one calling thread (a window redrawing,
+/// a benchmark): allocating and faulting in tens of megabytes a frame costs more than some
+/// whole passes. Its contents never outlive a frame, so images do not depend on it.
+struct FrameMemory {
+  detail::BinnedTriangles bins;
+  detail::BinnedTriangles shadow_bins;
+  std::vector<ShadowMap> shadow_maps;
+};
+
 /// Everything the tile tasks read (the frame's `uniform_` state).
 struct FrameContext {
-  const Scene* scene = nullptr;
-  detail::BinnedTriangles bins;
-  std::vector<ShadowMap> shadow_maps;
-  ShadowFilter filter = ShadowFilter::off;
-  ShadingUniforms uniforms;
-  glm::vec3 background{1.f};
+  explicit FrameContext(FrameMemory& memory)
+      : bins(memory.bins), shadow_maps(memory.shadow_maps) {}
+  detail::BinnedTriangles& bins;
+  std::vector<ShadowMap>& shadow_maps;
+  detail::ShadeUniforms shade;
   DepthToDistance depth_to_distance;
   int ssaa = 1;
 };
@@ -59,81 +69,50 @@ ShadingUniforms make_uniforms(const RenderOptions& options, const CameraMatrices
   return u;
 }
 
-glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }
-
-/// What one visible triangle gives each of its samples; loaded once per run of samples that
-/// show the same triangle (neighbouring samples mostly do).
-struct TriangleVarying {
-  std::uint32_t id = kNoTriangle;
-  const ScreenTriangle* screen = nullptr;
-  SurfacePoint point;  ///< corners, normal facing the viewer; per sample: the rest
-  glm::vec3 color{0.f};  ///< the face's plain colour
-  BarycentricPlanes weights;
-  std::array<ShadowReceiver, kMaxLights> receivers{};
-  bool is_floor = false;
-};
-
-void load_triangle(const FrameContext& f, std::uint32_t id, TriangleVarying& v) {
-  const Scene& scene = *f.scene;
-  v.id = id;
-  v.screen = &f.bins.at(id);
-  const std::size_t tri = v.screen->triangle;
-  for (int c = 0; c < 3; ++c) v.point.corners[c] = scene.corners[3 * tri + c];
-  // n . (eye - p) is the same at every point p of the triangle's plane, so one test per
-  // triangle turns the back of a two-sided face towards the viewer.
-  const glm::vec3 normal = scene.normals[tri];
-  const glm::vec3 to_eye = f.uniforms.orthographic ? -f.uniforms.forward
-                                                   : f.uniforms.eye - v.point.corners[0];
-  v.point.normal = glm::dot(normal, to_eye) < 0.f ? -normal : normal;
-  v.color = to_unit_rgb(scene.colors[tri]);
-  v.weights = barycentric_planes(*v.screen);
-  v.is_floor = scene.kinds[tri] == FaceKind::floor;
-  for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
-    v.receivers[k] = shadow_receiver(f.shadow_maps[k], v.point.normal);
-  }
-}
-
-/// The shaded colour of the sample at (px, py) showing the triangle `v` (whose per-sample
-/// fields it fills in place).
-glm::vec3 shade_sample(const FrameContext& f, TriangleVarying& v, float px, float py) {
-  SurfacePoint& s = v.point;
-  s.weights = v.weights.at(px, py);
-  s.world = s.weights[0] * s.corners[0] + s.weights[1] * s.corners[1] +
-            s.weights[2] * s.corners[2];
-  s.color = v.is_floor ? apply_grid(f.uniforms.grid, s.world, v.color) : v.color;
-  for (std::size_t k = 0; k < f.shadow_maps.size(); ++k) {
-    s.shadow[k] = shadow_amount(f.shadow_maps[k], v.receivers[k], s.world, f.filter);
-  }
-  return shade_point(f.uniforms, s);
-}
-
-/// Writes the output pixels of one tile: colour averaged over its k x k samples; depth and
-/// object id of the sample nearest the pixel's centre (up and left of it for even k).
-void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vector<glm::vec3>& rgb,
-                  FrameBuffers& out) {
-  const int k = f.ssaa, w = t.x1 - t.x0;
-  const int centre = (k - 1) / 2;
-  std::uint32_t last_id = kNoTriangle;
-  std::int32_t last_object = -1;
-  for (int oy = t.y0 / k; oy < t.y1 / k; ++oy) {
-    for (int ox = t.x0 / k; ox < t.x1 / k; ++ox) {
-      glm::vec3 sum(0.f);
-      for (int sy = 0; sy < k; ++sy)
-        for (int sx = 0; sx < k; ++sx)
-          sum += rgb[static_cast<std::size_t>(oy * k + sy - t.y0) * w + (ox * k + sx - t.x0)];
-      const glm::vec3 c = sum / static_cast<float>(k * k);
-      std::uint8_t* px = out.color.at(ox, oy);
-      for (int ch = 0; ch < 3; ++ch) px[ch] = static_cast<std::uint8_t>(c[ch] * 255.f + 0.5f);
-      const std::size_t s = static_cast<std::size_t>(oy * k + centre - t.y0) * w +
-                            (ox * k + centre - t.x0);
-      out.depth.at(ox, oy) = f.depth_to_distance(t.depth[s]);
-      if (t.ids[s] != last_id) {  // neighbours mostly show the same triangle
-        last_id = t.ids[s];
-        last_object = last_id == kNoTriangle ? -1 : f.scene->objects[f.bins.at(last_id).triangle];
-      }
-      out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox] = last_object;
+/// Writes one row of output pixels of a tile: colour averaged over their k x k samples; depth
+/// and object id of the sample nearest each pixel's centre (up and left of it for even k).
+/// K is the frame's ssaa, a template parameter so that the sample loops unroll; each output
+/// is its own loop over the row, so that the colour and depth loops vectorise.
+template <int K>
+void resolve_row(const FrameContext& f, const RasterTarget& t, const glm::vec3* rgb, int oy,
+                 FrameBuffers& out) {
+  constexpr int centre = (K - 1) / 2;
+  constexpr float scale = 255.f / static_cast<float>(K * K);
+  const int w = t.x1 - t.x0, ox0 = t.x0 / K, n = w / K;
+  const glm::vec3* samples = rgb + static_cast<std::ptrdiff_t>(oy * K - t.y0) * w;
+  std::uint8_t* color = out.color.at(ox0, oy);
+  for (int j = 0; j < n; ++j) {
+    glm::vec3 sum(0.f);
+    for (int sy = 0; sy < K; ++sy)
+      for (int sx = 0; sx < K; ++sx) sum += samples[sy * w + j * K + sx];
+    for (int ch = 0; ch < 3; ++ch) {
+      color[3 * j + ch] = static_cast<std::uint8_t>(sum[ch] * scale + 0.5f);
     }
   }
+  const std::ptrdiff_t centre_row =
+      static_cast<std::ptrdiff_t>(oy * K + centre - t.y0) * w + centre;
+  const float* depth = t.depth + centre_row;
+  float* distance = &out.depth.at(ox0, oy);
+  for (int j = 0; j < n; ++j) distance[j] = f.depth_to_distance(depth[j * K]);
+  const std::uint32_t* ids = t.ids + centre_row;
+  std::int32_t* objects = &out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox0];
+  std::uint32_t last_id = kNoTriangle;
+  std::int32_t last_object = -1;
+  for (int j = 0; j < n; ++j) {
+    if (ids[j * K] != last_id) {  // neighbours mostly show the same triangle
+      last_id = ids[j * K];
+      last_object =
+          last_id == kNoTriangle ? -1 : f.shade.scene->objects[f.bins.at(last_id).triangle];
+    }
+    objects[j] = last_object;
+  }
+}
+
+/// Writes the output pixels of one tile (see resolve_row).
+template <int K>
+void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vector<glm::vec3>& rgb,
+                  FrameBuffers& out) {
+  for (int oy = t.y0 / K; oy < t.y1 / K; ++oy) resolve_row<K>(f, t, rgb.data(), oy, out);
 }
 
 void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
@@ -144,20 +123,16 @@ void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
   thread_local std::vector<glm::vec3> rgb;
   depth.assign(n, 0.f);
   ids.assign(n, kNoTriangle);
-  rgb.assign(n, f.background);
+  rgb.resize(n);  // every sample is written by shade_tile
   t.depth = depth.data();
   t.ids = ids.data();
   detail::rasterize_tile(f.bins, tile, t);
-  TriangleVarying v;
-  std::size_t i = 0;
-  for (int y = t.y0; y < t.y1; ++y) {
-    for (int x = t.x0; x < t.x1; ++x, ++i) {
-      if (ids[i] == kNoTriangle) continue;
-      if (ids[i] != v.id) load_triangle(f, ids[i], v);
-      rgb[i] = shade_sample(f, v, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-    }
+  detail::shade_tile(f.shade, t, rgb.data());
+  switch (f.ssaa) {
+    case 1: return resolve_tile<1>(f, t, rgb, out);
+    case 2: return resolve_tile<2>(f, t, rgb, out);
+    default: return resolve_tile<4>(f, t, rgb, out);  // check_render_options: 1, 2 or 4
   }
-  resolve_tile(f, t, rgb, out);
 }
 
 void size_buffers(int width, int height, FrameBuffers& out) {
@@ -172,20 +147,27 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
                   RenderStats& stats) {
   const std::vector<Light> lights = options.lights.empty() ? std::vector<Light>{default_light()}
                                                            : options.lights;
-  FrameContext f;
-  f.scene = &scene;
+  thread_local FrameMemory memory;
+  FrameContext f(memory);
+  f.shade.scene = &scene;
+  f.shade.bins = &f.bins;
+  f.shade.shadow_maps = &f.shadow_maps;
   f.ssaa = options.ssaa;
-  f.filter = options.shadows;
-  f.background = to_unit_rgb(options.background);
+  f.shade.filter = options.shadows;
+  f.shade.background = to_unit_rgb(options.background);
   const auto shadow_start = Clock::now();
-  if (options.shadows != ShadowFilter::off) {
-    for (std::size_t k = 0; k < lights.size() && k < kMaxLights; ++k)
-      f.shadow_maps.push_back(render_shadow_map(scene, lights[k], options.shadow_resolution));
+  const std::size_t maps = options.shadows == ShadowFilter::off
+                               ? 0
+                               : std::min<std::size_t>(lights.size(), kMaxLights);
+  f.shadow_maps.resize(maps);
+  for (std::size_t k = 0; k < maps; ++k) {
+    detail::render_shadow_map_into(scene, lights[k], options.shadow_resolution,
+                                   f.shadow_maps[k], memory.shadow_bins);
   }
   stats.shadow_ms = ms_since(shadow_start);
   const auto raster_start = Clock::now();
   const CameraMatrices cam = frame_camera(scene, options);
-  f.uniforms = make_uniforms(options, cam, lights);
+  f.shade.shading = make_uniforms(options, cam, lights);
   f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
   std::vector<std::uint8_t> seen;
   if (options.cull == FaceCull::visibility) {
@@ -196,13 +178,17 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
     seen = std::move(v.visible);
     stats.cull_ms = ms_since(cull_start);
   }
-  f.bins = detail::run_geometry_pass(
+  detail::run_geometry_pass(
       scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
                                   .width = options.width * options.ssaa,
                                   .height = options.height * options.ssaa,
-                                  .tile_size = 64,
+                                  .tile_size = 128,
                                   .cull_back_faces = true,
-                                  .uniform_draw = seen.empty() ? nullptr : seen.data()});
+                                  .uniform_draw = seen.empty() ? nullptr : seen.data(),
+                                  .uniform_viewer = cam.orthographic
+                                                        ? glm::vec4(-glm::vec3(cam.forward), 0.f)
+                                                        : glm::vec4(glm::vec3(cam.eye), 1.f)},
+      f.bins);
   size_buffers(options.width, options.height, out);
   tbb::parallel_for(0, f.bins.tile_count(), [&](int tile) { render_tile(f, tile, out); });
   stats.raster_ms = ms_since(raster_start);

@@ -2,7 +2,7 @@
 // editor's window can share it).
 //
 // One frame: a shadow map per directional light (shadow_map.h), then the colour pass: the
-// geometry pass (transform, frustum-cull clusters, clip, cull back faces, bin into 64-pixel
+// geometry pass (transform, frustum-cull clusters, clip, cull back faces, bin into 128-pixel
 // tiles), and per tile, in parallel: rasterise depth and triangle ids (rasterizer.h), shade
 // each visible sample once (shading.h), box-filter the k x k samples of each pixel. Every tile
 // is one task writing only its own pixels, in scene order, so the image is identical at any
@@ -106,6 +106,9 @@ void render_model(const Model& model, const RenderOptions& options, FrameBuffers
 
 /// The same for a scene already flattened (benchmarks and windows flatten once; the scene
 /// already holds only the parts wanted, so options.parts is not used).
+/// Both keep their working memory (binned triangles, about 80 bytes per triangle on screen,
+/// and the shadow maps) in the calling thread between frames, so that redrawing allocates
+/// nothing; it is freed when the thread ends.
 void render_scene(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
                   RenderStats* stats = nullptr);
 

@@ -9,48 +9,64 @@ namespace roomcad {
 namespace {
 
 constexpr float kSpecular = 0.2f;    // white highlights, a matte finish
-constexpr int kShininessLog2 = 5;  // exponent 32, by repeated squaring (std::pow is slow)
 constexpr float kGridDarkening = 0.6f;
 constexpr double kGridHalfWidth = 0.015;  // of a cell
 
-/// Diffuse factor and specular amount of one light at a point seen along `to_eye`.
-struct DirectLight {
-  float diffuse = 0.f;
-  float specular = 0.f;
-};
-
-DirectLight direct_light(const ShadingLight& light, const glm::vec3& normal,
-                         const glm::vec3& to_eye) {
-  const float n_dot_l = glm::dot(normal, light.to_light);
-  if (n_dot_l <= 0.f) return {};
-  const glm::vec3 half = glm::normalize(light.to_light + to_eye);
-  float highlight = std::max(glm::dot(normal, half), 0.f);
-  for (int i = 0; i < kShininessLog2; ++i) highlight *= highlight;
-  return {n_dot_l, kSpecular * highlight};
+/// The Blinn-Phong highlight (exponent 32, by repeated squaring: std::pow is slow) of light
+/// direction l on a surface of normal n (both unit) that faces the light, seen from the
+/// direction e (any length). Branch-free, so that loops over samples calling it vectorise.
+inline float highlight_at(const glm::vec3& l, const glm::vec3& n, float ex, float ey, float ez) {
+  constexpr float kTiny = 1e-30f;  // keeps a zero vector's inverse length finite
+  const float inv_e = 1.f / std::sqrt(std::max(ex * ex + ey * ey + ez * ez, kTiny));
+  const float hx = l.x + ex * inv_e, hy = l.y + ey * inv_e, hz = l.z + ez * inv_e;
+  const float inv_h = 1.f / std::sqrt(std::max(hx * hx + hy * hy + hz * hz, kTiny));
+  const float h1 = std::max((n.x * hx + n.y * hy + n.z * hz) * inv_h, 0.f);
+  const float h2 = h1 * h1, h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8;  // written out: a
+  return kSpecular * (h16 * h16);  // loop here would keep the caller's loop from vectorising
 }
 
-glm::vec3 to_eye_from(const ShadingUniforms& u, const glm::vec3& p) {
-  if (u.orthographic) return -u.forward;
-  const glm::vec3 d = u.eye - p;
-  const float len = glm::length(d);
-  return len > 0.f ? d / len : -u.forward;
+/// The viewer, homogeneous: (eye, 1) in perspective, (-forward, 0) orthographic, so that the
+/// direction to it from p is viewer - w * p.
+glm::vec4 viewer_of(const ShadingUniforms& u) {
+  return u.orthographic ? glm::vec4(-u.forward, 0.f) : glm::vec4(u.eye, 1.f);
 }
 
-/// The direct light of light `k` at the point, as the mode evaluates it.
-DirectLight evaluate(const ShadingUniforms& u, const SurfacePoint& s, int k) {
-  const ShadingLight& light = u.lights[k];
-  if (u.mode == ShadingMode::phong) return direct_light(light, s.normal, to_eye_from(u, s.world));
-  if (u.mode == ShadingMode::flat) {
-    const glm::vec3 centroid = (s.corners[0] + s.corners[1] + s.corners[2]) / 3.f;
-    return direct_light(light, s.normal, to_eye_from(u, centroid));
+float highlight_from(const ShadingUniforms& u, const glm::vec3& l, const glm::vec3& n,
+                     const glm::vec3& p) {
+  const glm::vec4 v = viewer_of(u);
+  return highlight_at(l, n, v.x - v.w * p.x, v.y - v.w * p.y, v.z - v.w * p.z);
+}
+
+/// The specular of light `k` at every sample of the run, as the mode evaluates it.
+void run_specular(const ShadingUniforms& u, const SurfaceLighting& s, const SampleRun& run,
+                  int k, float* out) {
+  const int n = run.count;
+  if (s.diffuse[k] <= 0.f) {  // facing away: no highlight
+    std::fill(out, out + n, 0.f);
+  } else if (u.mode == ShadingMode::phong) {
+    const glm::vec4 v = viewer_of(u);
+    const glm::vec3 l = u.lights[k].to_light;
+    for (int i = 0; i < n; ++i) {
+      out[i] = highlight_at(l, s.normal, v.x - v.w * run.x[i], v.y - v.w * run.y[i],
+                            v.z - v.w * run.z[i]);
+    }
+  } else {
+    const std::array<float, 3>& c = s.corner_specular[k];  // flat: three equal values
+    for (int i = 0; i < n; ++i) {
+      out[i] = (1.f - run.w1[i] - run.w2[i]) * c[0] + run.w1[i] * c[1] + run.w2[i] * c[2];
+    }
   }
-  DirectLight sum;  // gouraud: per corner, interpolated
-  for (int c = 0; c < 3; ++c) {
-    const DirectLight d = direct_light(light, s.normal, to_eye_from(u, s.corners[c]));
-    sum.diffuse += s.weights[c] * d.diffuse;
-    sum.specular += s.weights[c] * d.specular;
+}
+
+/// unlit: the plain colour, times (1 - sum of s * (1 - a)).
+void shade_unlit(const ShadingUniforms& u, const SampleRun& run, glm::vec3* out) {
+  for (int i = 0; i < run.count; ++i) {
+    float dimming = 0.f;
+    for (int k = 0; k < u.light_count; ++k) {
+      dimming += run.shadow[k][i] * (1.f - u.lights[k].ambient);
+    }
+    out[i] = run.color[i] * std::clamp(1.f - dimming, 0.f, 1.f);
   }
-  return sum;
 }
 
 }  // namespace
@@ -65,21 +81,42 @@ std::optional<ShadingMode> parse_shading_mode(std::string_view text) {
   return std::nullopt;
 }
 
-glm::vec3 shade_point(const ShadingUniforms& u, const SurfacePoint& s) {
-  if (u.mode == ShadingMode::unlit) {
-    float dimming = 0.f;
-    for (int k = 0; k < u.light_count; ++k) dimming += s.shadow[k] * (1.f - u.lights[k].ambient);
-    return s.color * std::clamp(1.f - dimming, 0.f, 1.f);
-  }
-  glm::vec3 out(0.f);
+SurfaceLighting light_surface(const ShadingUniforms& u, const glm::vec3& normal,
+                              const std::array<glm::vec3, 3>& corners) {
+  SurfaceLighting s;
+  s.normal = normal;
+  const glm::vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.f;
   for (int k = 0; k < u.light_count; ++k) {
     const ShadingLight& light = u.lights[k];
-    const DirectLight d = evaluate(u, s, k);
-    const float direct = (1.f - light.ambient) * (1.f - s.shadow[k]) * light.intensity;
-    out += s.color * (light.ambient * light.intensity + direct * d.diffuse) +
-           glm::vec3(direct * d.specular);
+    s.ambient += light.ambient * light.intensity;
+    s.direct[k] = (1.f - light.ambient) * light.intensity;
+    s.diffuse[k] = std::max(glm::dot(normal, light.to_light), 0.f);
+    if (s.diffuse[k] <= 0.f || u.mode == ShadingMode::phong) continue;
+    for (int c = 0; c < 3; ++c) {
+      const glm::vec3& at = u.mode == ShadingMode::flat ? centroid : corners[c];
+      s.corner_specular[k][c] = highlight_from(u, light.to_light, normal, at);
+    }
   }
-  return glm::clamp(out, 0.f, 1.f);
+  return s;
+}
+
+void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
+               glm::vec3* out) {
+  if (u.mode == ShadingMode::unlit) return shade_unlit(u, run, out);
+  std::array<float, kMaxRunSamples> brightness, highlight, specular;
+  std::fill_n(brightness.begin(), run.count, surface.ambient);
+  std::fill_n(highlight.begin(), run.count, 0.f);
+  for (int k = 0; k < u.light_count; ++k) {
+    run_specular(u, surface, run, k, specular.data());
+    for (int i = 0; i < run.count; ++i) {
+      const float direct = surface.direct[k] * (1.f - run.shadow[k][i]);
+      brightness[i] += direct * surface.diffuse[k];
+      highlight[i] += direct * specular[i];
+    }
+  }
+  for (int i = 0; i < run.count; ++i) {
+    out[i] = glm::clamp(run.color[i] * brightness[i] + glm::vec3(highlight[i]), 0.f, 1.f);
+  }
 }
 
 glm::vec3 apply_grid(const GridLines& grid, const glm::vec3& world, const glm::vec3& color) {
@@ -91,7 +128,12 @@ glm::vec3 apply_grid(const GridLines& grid, const glm::vec3& world, const glm::v
       fy > static_cast<double>(grid.cells[1]) + margin) {
     return color;
   }
-  const double dx = std::abs(fx - std::round(fx)), dy = std::abs(fy - std::round(fy));
+  // fx, fy >= -margin > -0.5 here, so truncating f + 0.5 rounds f to the nearest line
+  // (inline, where std::round is a library call on SSE2, and this runs per floor sample).
+  const auto to_line = [](double f) {
+    return std::abs(f - static_cast<double>(static_cast<std::int64_t>(f + 0.5)));
+  };
+  const double dx = to_line(fx), dy = to_line(fy);
   return std::min(dx, dy) < kGridHalfWidth ? color * kGridDarkening : color;
 }
 

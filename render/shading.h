@@ -50,25 +50,48 @@ struct ShadingUniforms {
   GridLines grid;
 };
 
-/// What the colour pass knows about one visible point.
-struct SurfacePoint {
-  glm::vec3 world{0.f};                  ///< metres
-  glm::vec3 normal{0.f, 0.f, 1.f};       ///< unit, facing the viewer
-  glm::vec3 color{0.f};                  ///< sRGB in [0, 1], grid lines already applied
-  std::array<glm::vec3, 3> corners{};    ///< the triangle's corners (flat, gouraud)
-  glm::vec3 weights{1.f / 3.f};          ///< the point's barycentrics in that triangle
-  std::array<float, kMaxLights> shadow{};  ///< 0 lit ... 1 shadowed, per light
+/// What shading needs of one flat surface (a triangle) that is the same at all its points.
+/// Normals are per triangle (scene.h), so the diffuse factor of a light is constant; only the
+/// specular highlight varies: per point (phong), between the corners (gouraud) or not (flat).
+struct SurfaceLighting {
+  glm::vec3 normal{0.f, 0.f, 1.f};             ///< unit, facing the viewer
+  float ambient = 0.f;                         ///< sum of ambient * intensity over the lights
+  std::array<float, kMaxLights> direct{};      ///< (1 - ambient) * intensity of each light
+  std::array<float, kMaxLights> diffuse{};     ///< max(n . l, 0) of each light
+  std::array<std::array<float, 3>, kMaxLights> corner_specular{};  ///< flat, gouraud
 };
 
-/// @return the colour of the point in [0, 1] sRGB. Flat evaluates the lights at the triangle's
-///         centroid, Gouraud at its corners (interpolated), Phong at the point; shadows are
-///         always per point. O(lights).
-[[nodiscard]] glm::vec3 shade_point(const ShadingUniforms& u, const SurfacePoint& s);
+/// @param[in] normal   the triangle's unit normal, turned towards the viewer
+/// @param[in] corners  its corners, metres
+/// @return what shade_run needs of the triangle. O(lights).
+[[nodiscard]] SurfaceLighting light_surface(const ShadingUniforms& u, const glm::vec3& normal,
+                                            const std::array<glm::vec3, 3>& corners);
+
+/// The most samples one run holds (longer runs of one triangle are split).
+inline constexpr int kMaxRunSamples = 64;
+
+/// Neighbouring samples of one surface, as arrays (structure of arrays keeps the loops simple
+/// and the compiler free to vectorise them).
+struct SampleRun {
+  int count = 0;                                    ///< 0 .. kMaxRunSamples
+  std::array<float, kMaxRunSamples> w1{}, w2{};     ///< barycentrics of corners 1 and 2
+  std::array<float, kMaxRunSamples> x{}, y{}, z{};  ///< world positions, metres
+  std::array<glm::vec3, kMaxRunSamples> color{};    ///< sRGB in [0, 1], grid lines applied
+  std::array<std::array<float, kMaxRunSamples>, kMaxLights> shadow{};  ///< 0 lit ... 1 shadowed
+};
+
+/// Shades a run of samples of one surface: out[i] in [0, 1] sRGB for i < run.count.
+/// Shadows are always per sample. O(count * lights).
+void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
+               glm::vec3* out);
 
 /// @return `color` darkened where `world` lies on a tile line of the site (half-width 1.5% of
 ///         a cell) and inside the site; unchanged elsewhere or when the grid is off. O(1).
 [[nodiscard]] glm::vec3 apply_grid(const GridLines& grid, const glm::vec3& world,
                                    const glm::vec3& color);
+
+/// @return an 8-bit colour as sRGB in [0, 1]. O(1).
+[[nodiscard]] inline glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }
 
 /// @return the shading light of a plan light (direction normalised; zero: straight down).
 [[nodiscard]] ShadingLight to_shading_light(const Light& light);

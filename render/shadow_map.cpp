@@ -2,12 +2,13 @@
 #include "render/shadow_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
 
-#include "render/detail/geometry_pass.h"
+#include "render/detail/shadow_pass.h"
 #include "render/shading.h"
 
 namespace roomcad {
@@ -52,13 +53,16 @@ glm::dmat4 light_projection(const LightFrame& f) {
   return p;
 }
 
-void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
-  const detail::BinnedTriangles bins = detail::run_geometry_pass(
+void rasterize_map(const Scene& scene, int resolution, ShadowMap& map,
+                   detail::BinnedTriangles& bins) {
+  detail::run_geometry_pass(
       scene, detail::GeometryPass{.uniform_view_projection = map.light_view_projection,
                                   .width = resolution,
                                   .height = resolution,
-                                  .tile_size = 64,
-                                  .cull_back_faces = true});
+                                  .tile_size = 128,
+                                  .cull_back_faces = true,
+                                  .uniform_viewer = glm::vec4(map.to_light, 0.f)},
+      bins);
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
     target.depth = &map.depth.at(target.x0, target.y0);
@@ -69,24 +73,35 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map) {
 
 }  // namespace
 
-ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resolution) {
-  ShadowMap map;
+void detail::render_shadow_map_into(const Scene& scene, const Light& light, int resolution,
+                                    ShadowMap& map, BinnedTriangles& bins) {
   resolution = std::max(resolution, 1);
-  map.depth = FloatImage(resolution, resolution, 0.f);
+  std::vector<float> depth = std::move(map.depth.values);  // keeps its memory
+  depth.assign(static_cast<std::size_t>(resolution) * resolution, 0.f);
+  map = ShadowMap{};
+  map.depth.width = map.depth.height = resolution;
+  map.depth.values = std::move(depth);
   map.to_light = to_shading_light(light).to_light;
   const glm::dvec3 to_light(map.to_light);
-  if (scene.bounds.is_empty()) return map;
+  if (scene.bounds.is_empty()) return;
   const LightFrame frame = fit_light_frame(scene.bounds, to_light);
   map.light_view_projection = glm::mat4(light_projection(frame) * frame.view);
   map.light_rotation = glm::mat3(glm::dmat3(frame.view));
   map.texel_x = static_cast<float>(2.0 * frame.half_x / resolution);
   map.texel_y = static_cast<float>(2.0 * frame.half_y / resolution);
   map.depth_range = static_cast<float>(frame.far_d - frame.near_d);
-  rasterize_map(scene, resolution, map);
+  rasterize_map(scene, resolution, map, bins);
+}
+
+ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resolution) {
+  ShadowMap map;
+  detail::BinnedTriangles bins;
+  detail::render_shadow_map_into(scene, light, resolution, map, bins);
   return map;
 }
 
-ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal) {
+ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal,
+                               const std::array<glm::vec3, 3>& corners) {
   ShadowReceiver r;
   const glm::vec3 n = map.light_rotation * normal;  // light view: +z towards the light
   r.faces_light = n.z > 0.f;
@@ -96,32 +111,93 @@ ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal) {
   r.grad_u = -n.x * map.texel_x / (cos_t * map.depth_range);
   r.grad_v = n.y * map.texel_y / (cos_t * map.depth_range);
   r.bias = map.texel_size() * (0.05f + 0.1f * tan_t) / map.depth_range;
+  std::array<glm::vec3, 3> texel;
+  const float size = static_cast<float>(map.depth.width);
+  for (int c = 0; c < 3; ++c) {
+    const glm::vec4 p = map.light_view_projection * glm::vec4(corners[c], 1.f);
+    texel[c] = {(p.x + 1.f) * 0.5f * size, (1.f - p.y) * 0.5f * size, p.z};
+  }
+  r.corner0 = texel[0];
+  r.to_corner1 = texel[1] - texel[0];
+  r.to_corner2 = texel[2] - texel[0];
   return r;
 }
 
-float shadow_amount(const ShadowMap& map, const ShadowReceiver& receiver, const glm::vec3& world,
-                    ShadowFilter filter) {
-  if (filter == ShadowFilter::off || map.texel_x == 0.f) return 0.f;
-  if (!receiver.faces_light) return 1.f;
-  const glm::vec4 p = map.light_view_projection * glm::vec4(world, 1.f);
-  const int size = map.depth.width;
-  const float u = (p.x + 1.f) * 0.5f * size, v = (1.f - p.y) * 0.5f * size;
-  const float grad_u = receiver.grad_u, grad_v = receiver.grad_v, bias = receiver.bias;
-  const int iu = static_cast<int>(std::floor(u)), iv = static_cast<int>(std::floor(v));
-  // The receiver's biased depth at the centre of texel (iu, iv); neighbours add the gradient.
-  const float base = p.z + grad_u * (iu + 0.5f - u) + grad_v * (iv + 0.5f - v) + bias;
-  const int reach = filter == ShadowFilter::pcf ? 1 : 0;
-  const bool inside = iu - reach >= 0 && iv - reach >= 0 && iu + reach < size && iv + reach < size;
-  int shadowed = 0;
-  for (int dv = -reach; dv <= reach; ++dv) {
-    if (!inside && (iv + dv < 0 || iv + dv >= size)) continue;  // outside the map: lit
-    const float* row = &map.depth.values[static_cast<std::size_t>(iv + dv) * size];
-    for (int du = -reach; du <= reach; ++du) {
-      if (!inside && (iu + du < 0 || iu + du >= size)) continue;
-      shadowed += row[iu + du] > base + grad_u * du + grad_v * dv;
+namespace {
+
+/// floor(x) for map coordinates (|x| < 2^31), inline: std::floor is a library call on SSE2.
+int floor_to_int(float x) {
+  const int i = static_cast<int>(x);
+  return i - (static_cast<float>(i) > x);
+}
+
+/// Samples whose map positions shadow_amounts computes at once.
+constexpr int kMaxShadowBatch = 64;
+
+/// 1 if texel (iu, iv) lies nearer the light than `depth`, else 0 (also outside the map: lit).
+float is_occluded(const ShadowMap& map, int iu, int iv, float depth) {
+  const auto size = static_cast<unsigned>(map.depth.width);
+  if (static_cast<unsigned>(iu) >= size || static_cast<unsigned>(iv) >= size) return 0.f;
+  return map.depth.values[static_cast<std::size_t>(iv) * size + iu] > depth ? 1.f : 0.f;
+}
+
+/// Hard: whether the texel under map point (u, v) occludes the receiver's biased plane
+/// through depth z there. PCF: the same test for the four texels around the point, weighted
+/// bilinearly (as graphics hardware filters shadow maps), so the penumbra is one texel wide
+/// and changes smoothly.
+float filtered_lookup(const ShadowMap& map, const ShadowReceiver& r, float u, float v, float z,
+                      ShadowFilter filter) {
+  // The receiver's biased depth at the centre of texel (iu, iv).
+  const auto depth_at = [&](int iu, int iv) {
+    return z + r.grad_u * (iu + 0.5f - u) + r.grad_v * (iv + 0.5f - v) + r.bias;
+  };
+  if (filter == ShadowFilter::hard) {
+    const int iu = floor_to_int(u), iv = floor_to_int(v);
+    return is_occluded(map, iu, iv, depth_at(iu, iv));
+  }
+  const int iu = floor_to_int(u - 0.5f), iv = floor_to_int(v - 0.5f);
+  const float fu = u - 0.5f - static_cast<float>(iu), fv = v - 0.5f - static_cast<float>(iv);
+  const float d00 = depth_at(iu, iv), d10 = d00 + r.grad_u, d01 = d00 + r.grad_v;
+  const float d11 = d01 + r.grad_u;
+  const auto size = static_cast<unsigned>(map.depth.width);
+  std::array<float, 4> s;  // occluded: (iu, iv), (iu + 1, iv), (iu, iv + 1), (iu + 1, iv + 1)
+  if (static_cast<unsigned>(iu) < size - 1u && static_cast<unsigned>(iv) < size - 1u) {
+    const float* row = &map.depth.values[static_cast<std::size_t>(iv) * size + iu];  // all in
+    s = {row[0] > d00 ? 1.f : 0.f, row[1] > d10 ? 1.f : 0.f, row[size] > d01 ? 1.f : 0.f,
+         row[size + 1] > d11 ? 1.f : 0.f};
+  } else {
+    s = {is_occluded(map, iu, iv, d00), is_occluded(map, iu + 1, iv, d10),
+         is_occluded(map, iu, iv + 1, d01), is_occluded(map, iu + 1, iv + 1, d11)};
+  }
+  return (1.f - fv) * ((1.f - fu) * s[0] + fu * s[1]) + fv * ((1.f - fu) * s[2] + fu * s[3]);
+}
+
+}  // namespace
+
+void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, ShadowFilter filter,
+                    const float* w1, const float* w2, int count, float* out) {
+  const bool lit = filter == ShadowFilter::off || map.texel_x == 0.f;
+  if (lit || !receiver.faces_light) {
+    std::fill(out, out + count, lit ? 0.f : 1.f);
+    return;
+  }
+  // The outside of the map is lit, so coordinates far outside it (up to the float -> int
+  // limit) must stay finite: clamp them to just outside.
+  const float limit = static_cast<float>(map.depth.width) + 2.f;
+  const glm::vec3 c0 = receiver.corner0, e1 = receiver.to_corner1, e2 = receiver.to_corner2;
+  std::array<float, kMaxShadowBatch> u, v, z;
+  for (int first = 0; first < count; first += kMaxShadowBatch) {
+    const int n = std::min(count - first, kMaxShadowBatch);
+    for (int i = 0; i < n; ++i) {  // branch-free: vectorised
+      const float a = w1[first + i], b = w2[first + i];
+      u[i] = std::clamp(c0.x + a * e1.x + b * e2.x, -2.f, limit);
+      v[i] = std::clamp(c0.y + a * e1.y + b * e2.y, -2.f, limit);
+      z[i] = c0.z + a * e1.z + b * e2.z;
+    }
+    for (int i = 0; i < n; ++i) {
+      out[first + i] = filtered_lookup(map, receiver, u[i], v[i], z[i], filter);
     }
   }
-  return static_cast<float>(shadowed) / static_cast<float>((2 * reach + 1) * (2 * reach + 1));
 }
 
 }  // namespace roomcad

@@ -2,6 +2,8 @@
 // frustum fitted to the scene's bounds, looked up with a slope-scaled bias (hard or PCF).
 #pragma once
 
+#include <array>
+
 #include <glm/glm.hpp>
 
 #include "modeling/plan.h"
@@ -36,28 +38,36 @@ struct ShadowMap {
 ///         parallel over tiles, identical at any thread count.
 [[nodiscard]] ShadowMap render_shadow_map(const Scene& scene, const Light& light, int resolution);
 
-/// What the lookup needs of a surface, the same at all its points (a plane): whether it faces
-/// the light, the receiver plane's depth change per texel across (u) and down (v) the map,
-/// and the depth bias: a twentieth of a texel plus a slope-scaled tenth of a texel times
-/// tan(angle to the light).
+/// What the lookup needs of a surface (a triangle), the same at all its points: whether it
+/// faces the light, where its corners fall in the map (texel units and depth, so a sample's
+/// position is a weighted sum of corners), the receiver plane's depth change per texel across
+/// (u) and down (v) the map, and the depth bias: a twentieth of a texel plus a slope-scaled
+/// tenth of a texel times tan(angle to the light).
 struct ShadowReceiver {
   bool faces_light = false;
   float grad_u = 0.f;
   float grad_v = 0.f;
   float bias = 0.f;
+  glm::vec3 corner0{0.f};  ///< (u, v, depth) of corner 0
+  glm::vec3 to_corner1{0.f};  ///< corner 1 minus corner 0
+  glm::vec3 to_corner2{0.f};  ///< corner 2 minus corner 0
 };
 
-/// @param[in] normal  the surface's unit normal (facing the viewer). O(1).
-[[nodiscard]] ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal);
+/// @param[in] normal   the surface's unit normal (facing the viewer)
+/// @param[in] corners  the triangle's corners, metres. O(1).
+[[nodiscard]] ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal,
+                                             const std::array<glm::vec3, 3>& corners);
 
-/// How much of the light a point of a surface does not get. Each texel is compared with the
+/// How much of the light samples of a surface do not get. Each texel is compared with the
 /// receiver's plane extended to the texel's centre (so PCF's neighbours do not shadow their own
 /// surface) plus the receiver's bias.
-/// @param[in] world  the point, metres
-/// @return 0 lit ... 1 shadowed: hard is 0 or 1, pcf the share of the 3 x 3 texels around the
-///         point that shadow it. Points outside the map are lit; surfaces facing away from the
-///         light are shadowed. O(1).
-[[nodiscard]] float shadow_amount(const ShadowMap& map, const ShadowReceiver& receiver,
-                                  const glm::vec3& world, ShadowFilter filter);
+/// @param[in]  w1, w2  the samples' barycentric weights of corners 1 and 2, `count` of each
+/// @param[out] out     `count` amounts, 0 lit ... 1 shadowed: hard is 0 or 1, pcf the
+///                     bilinearly weighted share of the 2 x 2 texels around the point that
+///                     shadow it. Points outside the map are lit; surfaces facing away from
+///                     the light are shadowed; with `off` (or an empty scene's map) every
+///                     sample is lit. O(count).
+void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, ShadowFilter filter,
+                    const float* w1, const float* w2, int count, float* out);
 
 }  // namespace roomcad

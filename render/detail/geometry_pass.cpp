@@ -23,27 +23,44 @@ bool is_outside_frustum(const Bounds& b, const glm::mat4& view_projection) {
   return all != 0;  // every corner outside one same plane
 }
 
+/// Keeps a set-up triangle unless it was culled or covers no sample (most triangles of a
+/// large scene seen whole are such slivers: binning them would cost more than drawing).
+void keep_if_visible(const std::optional<ScreenTriangle>& t, std::vector<ScreenTriangle>& out) {
+  if (t && !covers_no_sample(*t)) out.push_back(*t);
+}
+
+/// Whether one-sided triangle i clearly faces away from the viewer: its normal turned from
+/// the viewer by more than about 0.06 degrees past edge-on (nearly edge-on triangles are left
+/// to set_up_triangle's exact screen-space test). O(1), no transform.
+bool is_clearly_back_facing(const Scene& scene, std::uint32_t i, const glm::vec4& viewer) {
+  const glm::vec3 to_viewer =
+      glm::vec3(viewer) - viewer.w * scene.corners[3 * static_cast<std::size_t>(i)];
+  const float facing = glm::dot(scene.normals[i], to_viewer);
+  return facing < 0.f && facing * facing > 1e-6f * glm::dot(to_viewer, to_viewer);
+}
+
 void process_triangle(const Scene& scene, std::uint32_t i, const GeometryPass& pass,
                       std::vector<ScreenTriangle>& out) {
+  const bool one_sided = pass.cull_back_faces && !scene.two_sided[i];
+  if (one_sided && is_clearly_back_facing(scene, i, pass.uniform_viewer)) return;
   const glm::vec3* c = &scene.corners[3 * static_cast<std::size_t>(i)];
   const std::array<ClipVertex, 3> v{{
       {pass.uniform_view_projection * glm::vec4(c[0], 1.f), {0.f, 0.f}},
       {pass.uniform_view_projection * glm::vec4(c[1], 1.f), {1.f, 0.f}},
       {pass.uniform_view_projection * glm::vec4(c[2], 1.f), {0.f, 1.f}},
   }};
-  const Culling culling =
-      pass.cull_back_faces && !scene.two_sided[i] ? Culling::back_faces : Culling::none;
+  const Culling culling = one_sided ? Culling::back_faces : Culling::none;
   const std::uint32_t c0 = outcode(v[0].position), c1 = outcode(v[1].position),
                       c2 = outcode(v[2].position);
   if (c0 & c1 & c2) return;  // wholly outside one plane
   if (!(c0 | c1 | c2)) {
-    if (auto t = set_up_triangle(v, pass.width, pass.height, i, culling)) out.push_back(*t);
+    keep_if_visible(set_up_triangle(v, pass.width, pass.height, i, culling), out);
     return;
   }
   const ClipPolygon poly = clip_triangle(v);
   for (int k = 1; k + 1 < poly.count; ++k) {  // a fan keeps the polygon's orientation
     const std::array<ClipVertex, 3> piece{poly.vertices[0], poly.vertices[k], poly.vertices[k + 1]};
-    if (auto t = set_up_triangle(piece, pass.width, pass.height, i, culling)) out.push_back(*t);
+    keep_if_visible(set_up_triangle(piece, pass.width, pass.height, i, culling), out);
   }
 }
 
@@ -78,7 +95,8 @@ void for_each_binned(const BinnedTriangles& bins, std::size_t c, Visit&& visit) 
 /// then every chunk fills its own slots; the order is scene order within each tile.
 void bin_triangles(BinnedTriangles& bins) {
   const std::size_t chunks = bins.chunks.size(), tiles = bins.tile_count();
-  std::vector<std::uint32_t> slot(chunks * tiles, 0);
+  std::vector<std::uint32_t>& slot = bins.slots;
+  slot.assign(chunks * tiles, 0);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
     for_each_binned(bins, c, [&](int tile, std::uint32_t) { ++slot[c * tiles + tile]; });
   });
@@ -110,8 +128,7 @@ std::size_t BinnedTriangles::triangle_count() const {
   return n;
 }
 
-BinnedTriangles run_geometry_pass(const Scene& scene, const GeometryPass& pass) {
-  BinnedTriangles bins;
+void run_geometry_pass(const Scene& scene, const GeometryPass& pass, BinnedTriangles& bins) {
   bins.width = pass.width;
   bins.height = pass.height;
   bins.tile_size = pass.tile_size;
@@ -121,6 +138,7 @@ BinnedTriangles run_geometry_pass(const Scene& scene, const GeometryPass& pass) 
       (scene.clusters.size() + kClustersPerChunk - 1) / kClustersPerChunk;
   bins.chunks.resize(chunk_count);
   tbb::parallel_for(std::size_t{0}, chunk_count, [&](std::size_t c) {
+    bins.chunks[c].clear();
     const std::size_t end = std::min(scene.clusters.size(), (c + 1) * kClustersPerChunk);
     for (std::size_t k = c * kClustersPerChunk; k < end; ++k) {
       const Cluster& cluster = scene.clusters[k];
@@ -132,7 +150,6 @@ BinnedTriangles run_geometry_pass(const Scene& scene, const GeometryPass& pass) 
     }
   });
   bin_triangles(bins);
-  return bins;
 }
 
 RasterTarget tile_rectangle(const BinnedTriangles& bins, int tile) {

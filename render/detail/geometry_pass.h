@@ -23,6 +23,7 @@ struct BinnedTriangles {
   std::vector<std::vector<ScreenTriangle>> chunks;
   std::vector<std::uint32_t> tile_offsets;  ///< tile t's ids: [offsets[t], offsets[t + 1])
   std::vector<std::uint32_t> ids;
+  std::vector<std::uint32_t> slots;  ///< binning's scratch (per chunk and tile)
   int width = 0, height = 0, tile_size = 0, tiles_x = 0, tiles_y = 0;
 
   [[nodiscard]] int tile_count() const { return tiles_x * tiles_y; }
@@ -40,12 +41,18 @@ struct GeometryPass {
   int tile_size = 64;
   bool cull_back_faces = true;  ///< one-sided scene triangles only; two-sided are never culled
   const std::uint8_t* uniform_draw = nullptr;  ///< per scene triangle, 0: skip; nullptr: all
+  /// Where the viewer is, homogeneous: (eye, 1) for a perspective view, (unit direction
+  /// towards the viewer, 0) for an orthographic one; (0, 0, 0, 0) leaves back faces to the
+  /// screen-space test alone. With it, triangles clearly facing away (by their scene normal)
+  /// are culled before they are transformed.
+  glm::vec4 uniform_viewer{0.f};
 };
 
 /// Runs the pass over the whole scene, in parallel over fixed chunks of clusters (the caller's
 /// TBB arena decides the thread count). The output does not depend on the thread count.
-/// O(triangles + covered tiles).
-[[nodiscard]] BinnedTriangles run_geometry_pass(const Scene& scene, const GeometryPass& pass);
+/// @param[out] bins  contents replaced; its memory is reused (a frame's passes allocate
+///                   nothing once the buffers have grown). O(triangles + covered tiles).
+void run_geometry_pass(const Scene& scene, const GeometryPass& pass, BinnedTriangles& bins);
 
 /// Rasterises the triangles binned to `tile` into a target covering exactly that tile, in
 /// scene order, writing screen-triangle ids (BinnedTriangles::at). O(pixels drawn).

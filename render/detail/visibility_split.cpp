@@ -146,6 +146,51 @@ bool sees_one_face(const Region& r) {
   return true;
 }
 
+/// @return the coplanar group every run of the contour sees, or -1 if runs see none or several.
+std::int64_t contour_group(const Context& cx, const Region& r) {
+  std::int64_t group = -2;
+  for (const Side* s : {&r.top, &r.bottom, &r.left, &r.right})
+    for (const Run& run : *s) {
+      const std::int64_t g = run.face < 0 ? -1 : cx.triangles[run.face].group;
+      if (g < 0 || (group != -2 && g != group)) return -1;
+      group = g;
+    }
+  return group < 0 ? -1 : group;
+}
+
+/// @return whether a segment meets the rectangle's interior (shrunk by 1e-6: an edge lying on
+/// the contour is seen by the contour's sweeps). Liang-Barsky.
+bool meets_interior(Point2 a, Point2 b, double x0, double y0, double x1, double y1) {
+  constexpr double kIn = 1e-6;
+  double t0 = 0.0, t1 = 1.0;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {a.x - (x0 + kIn), (x1 - kIn) - a.x, a.y - (y0 + kIn), (y1 - kIn) - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+    } else if (p[i] < 0.0) {
+      t0 = std::max(t0, q[i] / p[i]);
+    } else {
+      t1 = std::min(t1, q[i] / p[i]);
+    }
+  }
+  return t0 < t1;
+}
+
+/// Whether an edge that bounds its plane's group crosses the region: only then can what is
+/// seen inside differ from what the contour sees.
+bool has_boundary_inside(const Context& cx, const Region& r) {
+  return std::any_of(r.candidates.begin(), r.candidates.end(), [&](std::uint32_t i) {
+    const FlatTriangle& t = cx.triangles[i];
+    for (int e = 0; e < 3; ++e) {
+      if (t.boundary[e] && meets_interior(t.p[e], t.p[(e + 1) % 3], r.x0, r.y0, r.x1, r.y1))
+        return true;
+    }
+    return false;
+  });
+}
+
 bool has_triangle_inside(const Context& cx, const Region& r) {
   return std::any_of(r.candidates.begin(), r.candidates.end(), [&](std::uint32_t i) {
     const Box2& b = cx.triangles[i].box;
@@ -223,7 +268,15 @@ void split_horizontally(const Context& cx, Region& r, double c) {
 /// may cover no sample there).
 void split_region(const Context& cx, Region r) {
   cx.counters.regions.fetch_add(1, std::memory_order_relaxed);
-  if (r.candidates.empty() || (sees_one_face(r) && !has_triangle_inside(cx, r))) return;
+  if (r.candidates.empty()) return;
+  // One face (a triangle is convex) or one plane with no boundary of any face crossing the
+  // region: the covering planes and their order are the same all over it.
+  const bool one_face = sees_one_face(r);
+  const bool one_plane = !one_face && contour_group(cx, r) >= 0;
+  if ((one_face || one_plane) && !has_triangle_inside(cx, r) &&
+      (one_face || !has_boundary_inside(cx, r))) {
+    return;
+  }
   if (r.candidates.size() == 1) {  // nothing can hide it here: seen if it covers a sample
     cx.visible[cx.triangles[r.candidates.front()].id].store(1, std::memory_order_relaxed);
     return;

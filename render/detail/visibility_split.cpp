@@ -236,30 +236,34 @@ double split_at(double lo, double hi) {
 
 void split_region(const Context& cx, Region r);
 
-void split_vertically(const Context& cx, Region& r, double c) {
-  const Side line = sweep(cx, r.candidates, false, c, r.y0, r.y1);
-  Region a{r.x0, r.y0, c, r.y1, clip_side(r.top, r.x0, c), clip_side(r.bottom, r.x0, c),
-           std::move(r.left), line, overlapping(cx, r.candidates, r.x0, r.y0, c, r.y1)};
-  Region b{c, r.y0, r.x1, r.y1, clip_side(r.top, c, r.x1), clip_side(r.bottom, c, r.x1), line,
-           std::move(r.right), overlapping(cx, r.candidates, c, r.y0, r.x1, r.y1)};
+/// Splits the region by the line x = c (`vertical`) or y = c: sweeps the line once, gives
+/// each half its part of the contour and of the candidates, and recurses into both.
+void split_in_two(const Context& cx, Region& r, bool vertical, double c) {
+  Region a, b;  // the low and the high half
+  if (vertical) {
+    const Side line = sweep(cx, r.candidates, false, c, r.y0, r.y1);
+    a = {r.x0, r.y0, c, r.y1, clip_side(r.top, r.x0, c), clip_side(r.bottom, r.x0, c),
+         std::move(r.left), line, {}};
+    b = {c, r.y0, r.x1, r.y1, clip_side(r.top, c, r.x1), clip_side(r.bottom, c, r.x1), line,
+         std::move(r.right), {}};
+  } else {
+    const Side line = sweep(cx, r.candidates, true, c, r.x0, r.x1);
+    a = {r.x0, r.y0, r.x1, c, std::move(r.top), line, clip_side(r.left, r.y0, c),
+         clip_side(r.right, r.y0, c), {}};
+    b = {r.x0, c, r.x1, r.y1, line, std::move(r.bottom), clip_side(r.left, c, r.y1),
+         clip_side(r.right, c, r.y1), {}};
+  }
+  a.candidates = overlapping(cx, r.candidates, a.x0, a.y0, a.x1, a.y1);
+  b.candidates = overlapping(cx, r.candidates, b.x0, b.y0, b.x1, b.y1);
   const bool parallel = r.candidates.size() >= kParallelGrain;
   r.candidates = {};
-  if (parallel) tbb::parallel_invoke([&] { split_region(cx, std::move(a)); },
-                                     [&] { split_region(cx, std::move(b)); });
-  else split_region(cx, std::move(a)), split_region(cx, std::move(b));
-}
-
-void split_horizontally(const Context& cx, Region& r, double c) {
-  const Side line = sweep(cx, r.candidates, true, c, r.x0, r.x1);
-  Region a{r.x0, r.y0, r.x1, c, std::move(r.top), line, clip_side(r.left, r.y0, c),
-           clip_side(r.right, r.y0, c), overlapping(cx, r.candidates, r.x0, r.y0, r.x1, c)};
-  Region b{r.x0, c, r.x1, r.y1, line, std::move(r.bottom), clip_side(r.left, c, r.y1),
-           clip_side(r.right, c, r.y1), overlapping(cx, r.candidates, r.x0, c, r.x1, r.y1)};
-  const bool parallel = r.candidates.size() >= kParallelGrain;
-  r.candidates = {};
-  if (parallel) tbb::parallel_invoke([&] { split_region(cx, std::move(a)); },
-                                     [&] { split_region(cx, std::move(b)); });
-  else split_region(cx, std::move(a)), split_region(cx, std::move(b));
+  if (parallel) {
+    tbb::parallel_invoke([&] { split_region(cx, std::move(a)); },
+                         [&] { split_region(cx, std::move(b)); });
+  } else {
+    split_region(cx, std::move(a));
+    split_region(cx, std::move(b));
+  }
 }
 
 /// The recursion: stop when the contour sees one face and nothing lies wholly inside, or when
@@ -281,10 +285,10 @@ void split_region(const Context& cx, Region r) {
     cx.visible[cx.triangles[r.candidates.front()].id].store(1, std::memory_order_relaxed);
     return;
   }
-  const double cx_ = split_at(r.x0, r.x1), cy = split_at(r.y0, r.y1);
-  const bool vertical = !std::isnan(cx_) && (std::isnan(cy) || r.x1 - r.x0 >= r.y1 - r.y0);
-  if (vertical) split_vertically(cx, r, cx_);
-  else if (!std::isnan(cy)) split_horizontally(cx, r, cy);
+  const double sx = split_at(r.x0, r.x1), sy = split_at(r.y0, r.y1);
+  const bool vertical = !std::isnan(sx) && (std::isnan(sy) || r.x1 - r.x0 >= r.y1 - r.y0);
+  if (vertical) split_in_two(cx, r, true, sx);
+  else if (!std::isnan(sy)) split_in_two(cx, r, false, sy);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
@@ -79,10 +80,13 @@ void append_colored_faces(std::string& out, const MeshParts& parts) {
   });
 }
 
+// An OBJ group name is one word: white space in an id becomes '_'.
 std::string group_name(const MeshParts& parts, int object) {
   if (object < 0 || parts.objects == nullptr || std::size_t(object) >= parts.objects->size())
     return "floor";
-  return (*parts.objects)[std::size_t(object)];
+  std::string name = (*parts.objects)[std::size_t(object)];
+  std::replace_if(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) != 0; }, '_');
+  return name.empty() ? "_" : name;
 }
 
 struct FaceRef {

@@ -1,6 +1,6 @@
 #include "modeling/detail/cgal_booleans.h"
 
-#include <algorithm>
+#include <array>
 #include <vector>
 
 #include <CGAL/Nef_polyhedron_3.h>
@@ -12,6 +12,7 @@
 #include "modeling/build_model.h"
 #include "modeling/detail/classify_face.h"
 #include "modeling/detail/exact_wall.h"
+#include "modeling/detail/snap_soup.h"
 
 namespace roomcad::detail {
 namespace {
@@ -47,30 +48,45 @@ Nef unite_balanced(std::vector<Nef> parts) {
   return std::move(parts.front());
 }
 
-// Rounding the exact corners to doubles can merge two corners of a sliver face (where two
-// nearly collinear walls end side by side, their end faces are ~1e-9 m apart): drop the
-// repeats so that the sliver collapses to an edge and its neighbours meet across it.
-// @return false when fewer than 3 corners remain (the face collapsed; leave it out). O(n).
-bool drop_repeated_corners(std::vector<OpenMesh::Vec3d>& points) {
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  while (points.size() > 1 && points.back() == points.front()) points.pop_back();
-  return points.size() >= 3;
+// Names the walls of a cluster for messages.
+std::string wall_list(std::span<const WallFrame* const> walls) {
+  std::string ids;
+  for (std::size_t k = 0; k < walls.size() && k < 6; ++k) ids += fmt::format("{}#{}", k ? ", " : "", walls[k]->wall);
+  return walls.size() > 6 ? ids + ", ..." : ids;
+}
+
+// The result's points rounded to doubles, snapped where they round to within a few ulps of
+// each other (snap_soup), and its polygons over them.
+IndexedSoup round_soup(const std::vector<EK::Point_3>& exact, std::vector<std::vector<std::size_t>> polygons) {
+  IndexedSoup out;
+  out.points.reserve(exact.size());
+  for (const EK::Point_3& p : exact)
+    out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
+                            round_to_nearest(p.z()) + 0.0);
+  out.polygons = std::move(polygons);
+  const double tolerance = snap_tolerance(out.points);
+  return snap_soup(std::move(out), tolerance);
 }
 
 FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int first_opening_object) {
-  std::vector<EK::Point_3> points;
+  std::vector<EK::Point_3> exact;
   std::vector<std::vector<std::size_t>> polygons;
-  CGAL::convert_nef_polyhedron_to_polygon_soup(solid, points, polygons, false);
-  std::vector<OpenMesh::Vec3d> rounded;
-  rounded.reserve(points.size());
-  for (const EK::Point_3& p : points)
-    rounded.emplace_back(round_to_nearest(p.x()), round_to_nearest(p.y()), round_to_nearest(p.z()));
+  CGAL::convert_nef_polyhedron_to_polygon_soup(solid, exact, polygons, false);
+  const IndexedSoup r = round_soup(exact, std::move(polygons));
+  std::pair<std::size_t, std::size_t> bad;
+  const auto copies = split_fans(r.polygons, r.points.size(), bad);
+  if (copies.empty() && !r.polygons.empty())
+    throw PreconditionError(fmt::format(
+        "build_model: the solid of walls {} is not 2-manifold: more than two of its faces meet at "
+        "the edge from ({}, {}, {}) to ({}, {}, {}) (walls touching along an edge)", wall_list(walls),
+        r.points[bad.first][0], r.points[bad.first][1], r.points[bad.first][2],
+        r.points[bad.second][0], r.points[bad.second][1], r.points[bad.second][2]));
   FaceSoup soup;
-  soup.reserve(polygons.size());
-  for (const auto& polygon : polygons) {
+  soup.reserve(r.polygons.size());
+  for (std::size_t k = 0; k < r.polygons.size(); ++k) {
     SoupFace f;
-    for (std::size_t i : polygon) f.points.push_back(rounded[i]);
-    if (!drop_repeated_corners(f.points)) continue;
+    for (std::size_t i : r.polygons[k]) f.points.push_back(r.points[i]);
+    f.copies = copies[k];
     const FaceLabel label = classify_face(f.points, walls, first_opening_object);
     f.kind = label.kind;
     f.object = label.object;

@@ -1,7 +1,9 @@
 #include "modeling/detail/clusters.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <set>
 
 #include "modeling/broad_phase.h"
 #include "modeling/detail/fast_wall.h"
@@ -34,21 +36,45 @@ Box2 box_of(const WallFrame& f) {
   return b;
 }
 
+// Whether two footprints are certainly apart: some edge normal of either separates them by
+// more than a small margin (so shapes that touch, or nearly, count as meeting). O(1).
+bool are_apart(const WallFrame& a, const WallFrame& b) {
+  double scale = 1.0;
+  for (const WallFrame* f : {&a, &b})
+    for (const Point2& p : f->footprint) scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
+  const double margin = 1e-9 * scale;
+  for (const WallFrame* f : {&a, &b})
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Point2 p = f->footprint[k], q = f->footprint[(k + 1) % 4];
+      const double nx = q.y - p.y, ny = p.x - q.x, len = std::hypot(nx, ny);
+      if (len == 0.0) continue;
+      auto range = [&](const WallFrame& g) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (const Point2& r : g.footprint) {
+          const double d = ((r.x - p.x) * nx + (r.y - p.y) * ny) / len;
+          lo = std::min(lo, d), hi = std::max(hi, d);
+        }
+        return std::pair{lo, hi};
+      };
+      const auto [alo, ahi] = range(a);
+      const auto [blo, bhi] = range(b);
+      if (ahi < blo - margin || bhi < alo - margin) return true;
+    }
+  return false;
+}
+
 bool is_same_height(const WallFrame& a, const WallFrame& b) { return a.base == b.base && a.top == b.top; }
 
+using PairSet = std::set<std::pair<std::size_t, std::size_t>>;
+
 // Marks walls that need the general path and links the walls that must be built together.
-void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const std::vector<int>& hub_of,
+// A unite join is plain when a hub or a tee builds it (`explained`, pairs a < b).
+void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const PairSet& explained,
                 std::vector<char>& general, DisjointSets& sets) {
-  auto explained = [&](std::size_t a, std::size_t b) {
-    // A unite join is explained when both walls are arms of one hub (one end of each).
-    for (int ha : {hub_of[2 * a], hub_of[2 * a + 1]})
-      if (ha >= 0 && (ha == hub_of[2 * b] || ha == hub_of[2 * b + 1])) return true;
-    return false;
-  };
   for (const Join& j : joins.pairs) {
     sets.unite(j.a, j.b);
     const bool plain = j.kind == JoinKind::mitre ? is_same_height(frames[j.a], frames[j.b])
-                                                 : explained(j.a, j.b);
+                                                 : explained.count({j.a, j.b}) > 0;
     if (!plain) general[j.a] = general[j.b] = 1;
   }
   std::vector<Box2> boxes;
@@ -57,17 +83,21 @@ void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const 
   for (const auto& [a, b] : find_meeting_boxes(boxes)) {
     if (joins.are_joined(a, b)) continue;
     if (frames[a].top < frames[b].base || frames[b].top < frames[a].base) continue;
+    if (are_apart(frames[a], frames[b])) continue;
     sets.unite(a, b);
     general[a] = general[b] = 1;
   }
 }
 
-// hub_of[2 * wall + end]: the hub that wall end is an arm of, or -1.
-std::vector<int> index_hubs(const std::vector<Hub>& hubs, std::size_t walls) {
-  std::vector<int> hub_of(2 * walls, -1);
-  for (std::size_t h = 0; h < hubs.size(); ++h)
-    for (const auto& [wall, end] : hubs[h].arms) hub_of[2 * wall + std::size_t(end)] = int(h);
-  return hub_of;
+// The pairs of walls whose unite join a hub (any two of its arms) or a tee builds.
+PairSet explained_pairs(const std::vector<Hub>& hubs, const std::vector<Tee>& tees) {
+  PairSet pairs;
+  auto add = [&](std::size_t a, std::size_t b) { pairs.emplace(std::min(a, b), std::max(a, b)); };
+  for (const Hub& h : hubs)
+    for (std::size_t i = 0; i < h.arms.size(); ++i)
+      for (std::size_t j = i + 1; j < h.arms.size(); ++j) add(h.arms[i].first, h.arms[j].first);
+  for (const Tee& t : tees) add(t.stem, t.through);
+  return pairs;
 }
 
 // root_general[root]: the component of that root holds a wall that needs the general path.
@@ -105,12 +135,15 @@ Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, Boolean
   work.fast_frames = frames;
   if (path != BooleanPath::cgal) work.hubs = find_hubs(frames, joins);
   for (const Hub& hub : work.hubs) attach_hub(hub, work.fast_frames);
-  const std::vector<int> hub_of = index_hubs(work.hubs, n);
+  if (path != BooleanPath::cgal) work.tees = find_tees(work.fast_frames, joins);
+  attach_tees(work.tees, work.fast_frames);
   std::vector<char> general(n, path == BooleanPath::cgal ? 1 : 0);
   DisjointSets sets(n);
-  link_walls(frames, joins, hub_of, general, sets);
+  // Touching is judged on the fast-path shapes: a stem clipped at its through-wall's face no
+  // longer reaches the walls on the other side (all of them are joined to that wall anyway).
+  link_walls(work.fast_frames, joins, explained_pairs(work.hubs, work.tees), general, sets);
   for (std::size_t i = 0; i < n; ++i)
-    if (!has_holes_clear_of_mitres(work.fast_frames[i])) general[i] = 1;
+    if (!has_holes_clear_of_joins(work.fast_frames[i])) general[i] = 1;
   const std::vector<char> root_general = find_general_components(general, sets);
   work.items = group_walls(root_general, sets);
   // A hub among fast walls adds its top and bottom; a cluster's hubs are CGAL's business.

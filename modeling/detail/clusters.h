@@ -1,7 +1,7 @@
 // Which walls take the fast path and which go to CGAL together (clusters).
 //
-// A wall needs the general path if it takes part in a unite join that no hub explains
-// (detail/hubs.h), is mitred to a wall of another base or height, has a hole not clear of a
+// A wall needs the general path if it takes part in a unite join that no hub or tee builds
+// (detail/hubs.h, detail/tees.h), is mitred to a wall of another base or height, has a hole not clear of a
 // capless end, or meets a wall it is not joined to (their boxes touch). A cluster is a
 // connected group of walls (joined or touching) holding such a wall; every other wall is built
 // alone on the fast path, and every hub among fast walls adds its top and bottom. So fast
@@ -13,6 +13,7 @@
 
 #include "modeling/build_model.h"
 #include "modeling/detail/hubs.h"
+#include "modeling/detail/tees.h"
 #include "modeling/detail/wall_frame.h"
 
 namespace roomcad::detail {
@@ -28,6 +29,7 @@ struct Work {
   std::vector<WorkItem> items;         ///< ordered by first wall; hubs after the walls
   std::vector<WallFrame> fast_frames;  ///< the frames with every used hub attached
   std::vector<Hub> hubs;
+  std::vector<Tee> tees;
 };
 
 /// Splits the walls into work items.

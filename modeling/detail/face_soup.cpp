@@ -15,28 +15,42 @@ namespace {
 
 struct PointKey {
   std::uint64_t x, y, z;
+  std::uint32_t copy;
   friend bool operator==(const PointKey&, const PointKey&) = default;
 };
 
 struct PointKeyHash {
+  // splitmix64's finaliser on each coordinate: doubles of a grid differ in few bits.
+  static std::uint64_t mix(std::uint64_t x) {
+    x ^= x >> 30, x *= 0xBF58476D1CE4E5B9ull;
+    x ^= x >> 27, x *= 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+  }
   std::size_t operator()(const PointKey& k) const {
-    std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
-    h ^= k.y + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
-    h ^= k.z + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
-    return static_cast<std::size_t>(h);
+    return static_cast<std::size_t>(mix(k.x) ^ mix(k.y + 0x9E3779B97F4A7C15ull) ^ mix(k.z * 3 + 1) ^
+                                    k.copy);
   }
 };
 
 // Adding 0.0 turns -0.0 into +0.0, so that the two zeros share a vertex.
-PointKey key_of(const OpenMesh::Vec3d& p) {
+PointKey key_of(const OpenMesh::Vec3d& p, std::uint32_t copy) {
   return {std::bit_cast<std::uint64_t>(p[0] + 0.0), std::bit_cast<std::uint64_t>(p[1] + 0.0),
-          std::bit_cast<std::uint64_t>(p[2] + 0.0)};
+          std::bit_cast<std::uint64_t>(p[2] + 0.0), copy};
 }
 
 std::string object_name(const std::vector<std::string>& objects, int object) {
   if (object < 0 || static_cast<std::size_t>(object) >= objects.size()) return "(none)";
   return objects[static_cast<std::size_t>(object)];
 }
+
+struct Corners {
+  std::vector<std::size_t> vertex, next;  // per corner, in polygon order
+  std::vector<std::size_t> parent;        // union-find over corners
+  std::size_t find(std::size_t c) {
+    while (parent[c] != c) c = parent[c] = parent[parent[c]];
+    return c;
+  }
+};
 
 using ObjectNamer = std::function<std::string(SolidMesh::FaceHandle)>;
 
@@ -66,6 +80,40 @@ std::optional<std::string> find_add_face_problem(const SolidMesh& mesh,
 
 }  // namespace
 
+std::vector<std::vector<std::uint32_t>> split_fans(const std::vector<std::vector<std::size_t>>& polygons,
+                                                   std::size_t points,
+                                                   std::pair<std::size_t, std::size_t>& bad_edge) {
+  Corners c;
+  std::unordered_map<std::uint64_t, std::size_t> corner_after;  // edge a->b: the corner at b
+  for (const auto& poly : polygons)
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const std::size_t prev = poly[(k + poly.size() - 1) % poly.size()];
+      const std::size_t id = c.vertex.size();
+      c.vertex.push_back(poly[k]);
+      c.next.push_back(poly[(k + 1) % poly.size()]);
+      c.parent.push_back(id);
+      if (!corner_after.emplace(std::uint64_t(prev) * points + poly[k], id).second) {
+        bad_edge = {prev, poly[k]};
+        return {};
+      }
+    }
+  // A corner joins the corner of the neighbouring face across its outgoing edge.
+  for (std::size_t id = 0; id < c.vertex.size(); ++id) {
+    const auto it = corner_after.find(std::uint64_t(c.next[id]) * points + c.vertex[id]);
+    if (it != corner_after.end()) c.parent[c.find(id)] = c.find(it->second);
+  }
+  std::vector<std::uint32_t> copy_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0);
+  std::vector<std::vector<std::uint32_t>> copies(polygons.size());
+  std::size_t id = 0;
+  for (std::size_t p = 0; p < polygons.size(); ++p)
+    for (std::size_t k = 0; k < polygons[p].size(); ++k, ++id) {
+      std::uint32_t& copy = copy_of_root[c.find(id)];
+      if (copy == UINT32_MAX) copy = copies_used[c.vertex[id]]++;
+      copies[p].push_back(copy);
+    }
+  return copies;
+}
+
 OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points) {
   OpenMesh::Vec3d n(0.0, 0.0, 0.0);
   if (points.empty()) return n;
@@ -81,7 +129,13 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
   SolidMesh mesh;
   add_face_properties(mesh);
   const FacePropertyHandles props = face_property_handles(mesh);
+  std::size_t faces = 0, corners = 0;
+  for (const FaceSoup& soup : soups)
+    for (const SoupFace& f : soup) ++faces, corners += f.points.size();
+  // Each corner is shared by about three faces; reserving avoids rehashing and regrowing.
+  mesh.reserve(corners / 3 + 1, corners / 2 + faces, faces);
   std::unordered_map<PointKey, SolidMesh::VertexHandle, PointKeyHash> vertices;
+  vertices.reserve(corners / 3 + 1);
   std::vector<SolidMesh::VertexHandle> face;
   const ObjectNamer name_face = [&](SolidMesh::FaceHandle fh) {
     return object_name(objects, mesh.property(props.object, fh));
@@ -90,8 +144,9 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
     if (!share) vertices.clear();
     for (const SoupFace& f : soup) {
       face.clear();
-      for (const OpenMesh::Vec3d& p : f.points) {
-        auto [it, added] = vertices.try_emplace(key_of(p));
+      for (std::size_t k = 0; k < f.points.size(); ++k) {
+        const OpenMesh::Vec3d& p = f.points[k];
+        auto [it, added] = vertices.try_emplace(key_of(p, f.copies.empty() ? 0 : f.copies[k]));
         if (added) it->second = mesh.add_vertex(p);
         face.push_back(it->second);
       }

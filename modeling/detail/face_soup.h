@@ -3,6 +3,7 @@
 // mesh is assembled once, in plan order, whatever the thread count.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,6 +18,10 @@ struct SoupFace {
   FaceKind kind = FaceKind::wall_face;
   int object = -1;  ///< index into Model::objects, -1 for none
   Color color;
+  /// Per point, which copy of it this face uses (empty: copy 0 everywhere). Where a solid
+  /// touches itself at a point, the faces around it form separate fans, and each fan gets
+  /// its own copy of the vertex so that the mesh stays 2-manifold.
+  std::vector<std::uint32_t> copies;
 };
 using FaceSoup = std::vector<SoupFace>;
 
@@ -33,6 +38,16 @@ using FaceSoup = std::vector<SoupFace>;
 ///         Checked before OpenMesh's add_face, which would assert on some of these.
 [[nodiscard]] SolidMesh assemble_mesh(std::span<const FaceSoup> soups,
                                       const std::vector<std::string>& objects, bool share = true);
+
+/// Splits the vertices of an indexed polygon soup into fans: corners around a vertex that
+/// are linked through shared edges use one copy of it, separate fans separate copies.
+/// @param[in] polygons  vertex indices, each polygon counter-clockwise from outside
+/// @param[out] bad_edge on failure, the two vertices of an edge used twice in one direction
+///                      (shared by more than two faces, or by faces of clashing orientation)
+/// @return per polygon, per corner, the copy to use; empty on failure. O(corners) expected.
+[[nodiscard]] std::vector<std::vector<std::uint32_t>> split_fans(
+    const std::vector<std::vector<std::size_t>>& polygons, std::size_t points,
+    std::pair<std::size_t, std::size_t>& bad_edge);
 
 /// @return the Newell normal of a polygon (length = twice its area). O(n).
 [[nodiscard]] OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points);

@@ -1,6 +1,8 @@
 #include "modeling/detail/fast_wall.h"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 
 namespace roomcad::detail {
 namespace {
@@ -14,7 +16,7 @@ struct GridPoint {
 };
 
 struct GridFace {
-  std::array<GridPoint, 4> corners;
+  std::vector<GridPoint> corners;  // in order; edges run along grid lines or across the thickness
   FaceKind kind;
   int object;
 };
@@ -28,10 +30,19 @@ class WallGrid {
       u_.insert(u_.end(), {h.u0, h.u1});
       z_.insert(z_.end(), {h.z0, h.z1});
     }
+    for (const Attachment& a : f.attachments) u_.insert(u_.end(), {a.u0, a.u1});
     sort_unique(u_);
     sort_unique(z_);
     cells_.assign((u_.size() - 1) * (z_.size() - 1), kSolid);
     for (std::size_t k = 0; k < f.holes.size(); ++k) mark_hole(k);
+    attached_.assign(2 * (u_.size() - 1), 0);
+    for (const Attachment& a : f.attachments)
+      for (std::size_t c = index_of(u_, a.u0); c < index_of(u_, a.u1); ++c) attached_[2 * c + (a.side > 0)] = 1;
+  }
+  /// Whether the side face s (0 right, 1 left) is solid at cell (c, r): wall material not
+  /// covered by an attached stem.
+  bool is_side_solid(int s, std::ptrdiff_t c, std::ptrdiff_t r) const {
+    return cell(c, r) == kSolid && !attached_[2 * std::size_t(c) + std::size_t(s)];
   }
   std::size_t nu() const { return u_.size(); }
   std::size_t nz() const { return z_.size(); }
@@ -45,8 +56,22 @@ class WallGrid {
     Point2 xy;
     if (p.i == 0) xy = f_.footprint[p.s == 0 ? 0 : 3];
     else if (p.i == nu() - 1) xy = f_.footprint[p.s == 0 ? 1 : 2];
-    else xy = side_point(f_, u_[p.i], p.s == 0 ? -1 : 1);
+    else xy = attached_point(p).value_or(side_point(f_, u_[p.i], p.s == 0 ? -1 : 1));
     return {xy.x, xy.y, z_[p.j]};
+  }
+  /// A stem's corner, where one lies at this grid point: shared exactly with the stem.
+  std::optional<Point2> attached_point(const GridPoint& p) const {
+    for (const Attachment& a : f_.attachments) {
+      if ((a.side > 0) != (p.s == 1)) continue;
+      if (a.u0 == u_[p.i]) return a.p0;
+      if (a.u1 == u_[p.i]) return a.p1;
+    }
+    return std::nullopt;
+  }
+  /// The cells of hole k: columns [c0, c1) and rows [r0, r1).
+  std::array<std::size_t, 4> cells_of(std::size_t k) const {
+    const Hole& h = f_.holes[k];
+    return {index_of(u_, h.u0), index_of(u_, h.u1), index_of(z_, h.z0), index_of(z_, h.z1)};
   }
 
  private:
@@ -54,18 +79,18 @@ class WallGrid {
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
   }
-  std::size_t index_of(const std::vector<double>& v, double x) const {
+  static std::size_t index_of(const std::vector<double>& v, double x) {
     return std::size_t(std::lower_bound(v.begin(), v.end(), x) - v.begin());
   }
   void mark_hole(std::size_t k) {
-    const Hole& h = f_.holes[k];
-    for (std::size_t c = index_of(u_, h.u0); c < index_of(u_, h.u1); ++c)
-      for (std::size_t r = index_of(z_, h.z0); r < index_of(z_, h.z1); ++r)
-        cells_[c * (nz() - 1) + r] = int(k);
+    const auto [c0, c1, r0, r1] = cells_of(k);
+    for (std::size_t c = c0; c < c1; ++c)
+      for (std::size_t r = r0; r < r1; ++r) cells_[c * (nz() - 1) + r] = int(k);
   }
   const WallFrame& f_;
   std::vector<double> u_, z_;
   std::vector<int> cells_;
+  std::vector<char> attached_;  // [2 * column + side]
 };
 
 struct Context {
@@ -79,18 +104,130 @@ struct Context {
   }
 };
 
+
+// Vertical cuts that leave no side-face piece around a hole: from each hole enclosed by wall
+// material, down and up along its first column line, through solid cells, to the next empty
+// cell or the border. cut[i * rows + r]: the edge on column line i at row r is cut.
+std::vector<char> find_cuts(const Context& cx, int s) {
+  const WallGrid& g = cx.grid;
+  const std::size_t nc = g.nu() - 1, nr = g.nz() - 1;
+  std::vector<char> cut(g.nu() * nr, 0);
+  for (std::size_t k = 0; k < cx.frame.holes.size(); ++k) {
+    const auto [c0, c1, r0, r1] = g.cells_of(k);
+    if (c0 == 0 || c1 == nc || r0 == 0 || r1 == nr) continue;  // a notch: nothing to cut
+    auto both_solid = [&](std::size_t r) {
+      return g.is_side_solid(s, std::ptrdiff_t(c0) - 1, std::ptrdiff_t(r)) && g.is_side_solid(s, std::ptrdiff_t(c0), std::ptrdiff_t(r));
+    };
+    for (std::size_t r = r0; r-- > 0 && both_solid(r);) cut[c0 * nr + r] = 1;
+    for (std::size_t r = r1; r < nr && both_solid(r); ++r) cut[c0 * nr + r] = 1;
+  }
+  return cut;
+}
+
+struct Edge {
+  std::size_t i, j;  // start
+  int dir;           // 0: +u, 1: +z, 2: -u, 3: -z
+};
+
+std::pair<std::size_t, std::size_t> end_of(const Edge& e) {
+  const std::size_t i = e.dir == 0 ? e.i + 1 : e.dir == 2 ? e.i - 1 : e.i;
+  const std::size_t j = e.dir == 1 ? e.j + 1 : e.dir == 3 ? e.j - 1 : e.j;
+  return {i, j};
+}
+
+// The boundary edges of the solid cells (and both sides of each cut), counter-clockwise
+// around the solid in the (u, z) plane.
+std::vector<Edge> side_edges(const WallGrid& g, const std::vector<char>& cut, int s) {
+  const std::size_t nr = g.nz() - 1;
+  auto is_solid = [&](std::ptrdiff_t c, std::ptrdiff_t r) { return g.is_side_solid(s, c, r); };
+  auto apart_u = [&](std::size_t c, std::size_t r) {  // on column line c, row r
+    return !(is_solid(std::ptrdiff_t(c) - 1, std::ptrdiff_t(r)) && is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r))) ||
+           cut[c * nr + r];
+  };
+  auto apart_z = [&](std::size_t c, std::size_t r) {  // on row line r, column c
+    return !(is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r) - 1) && is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r)));
+  };
+  std::vector<Edge> edges;
+  for (std::size_t c = 0; c + 1 < g.nu(); ++c)
+    for (std::size_t r = 0; r < nr; ++r) {
+      if (!is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r))) continue;
+      if (apart_z(c, r)) edges.push_back({c, r, 0});
+      if (apart_u(c + 1, r)) edges.push_back({c + 1, r, 1});
+      if (apart_z(c, r + 1)) edges.push_back({c + 1, r + 1, 2});
+      if (apart_u(c, r)) edges.push_back({c, r + 1, 3});
+    }
+  return edges;
+}
+
+// Links the edges into loops; where two loops touch at a point, each turns left, so every
+// loop stays a simple polygon. @return the loops' corners (where the direction changes).
+std::vector<std::vector<GridPoint>> trace_loops(const WallGrid& g, const std::vector<Edge>& edges) {
+  std::vector<std::vector<std::size_t>> leaving(g.nu() * g.nz());
+  for (std::size_t e = 0; e < edges.size(); ++e) leaving[edges[e].i * g.nz() + edges[e].j].push_back(e);
+  std::vector<char> used(edges.size(), 0);
+  std::vector<std::vector<GridPoint>> loops;
+  for (std::size_t first = 0; first < edges.size(); ++first) {
+    if (used[first]) continue;
+    std::vector<GridPoint> corners;
+    std::size_t e = first;
+    do {
+      used[e] = 1;
+      const auto [i, j] = end_of(edges[e]);
+      std::size_t next = first;
+      bool found = false;
+      for (const int turn : {1, 0, 3})  // left, straight, right
+        for (std::size_t n : leaving[i * g.nz() + j])
+          if (!found && (!used[n] || n == first) && edges[n].dir == (edges[e].dir + turn) % 4)
+            next = n, found = true;
+      if (edges[next].dir != edges[e].dir) corners.push_back({i, j, 0});
+      e = next;
+    } while (e != first);
+    loops.push_back(std::move(corners));
+  }
+  return loops;
+}
+
+// Where every hole lies inside the side face (touching no border) and the holes follow one
+// another along u without sharing a column, the face splits in two along a chain through
+// existing corners: wall start, each hole's bottom edge, wall end. Below the chain: one
+// polygon; above: one polygon running round each hole. No new vertex, so the triangles are
+// as few as for the face with holes (V + 2H - 2). @return the two loops, counter-clockwise
+// in (u, z) (for s = 0), or nothing where the chain does not apply. O(holes).
+std::optional<std::array<std::vector<GridPoint>, 2>> find_chain_split(const Context& cx, int s) {
+  const WallGrid& g = cx.grid;
+  const std::size_t nc = g.nu() - 1, nr = g.nz() - 1;
+  if (cx.frame.holes.empty()) return std::nullopt;
+  for (const Attachment& a : cx.frame.attachments)
+    if ((a.side > 0) == (s == 1)) return std::nullopt;
+  std::vector<GridPoint> below{{0, 0, 0}, {nc, 0, 0}}, above{{0, 0, 0}};
+  std::size_t last_column = 0;
+  for (std::size_t k = 0; k < cx.frame.holes.size(); ++k) {
+    const auto [c0, c1, r0, r1] = g.cells_of(k);
+    if (c0 <= last_column || c1 >= nc || r0 == 0 || r1 >= nr) return std::nullopt;
+    last_column = c1;
+    above.insert(above.end(), {{c0, r0, 0}, {c0, r1, 0}, {c1, r1, 0}, {c1, r0, 0}});
+  }
+  for (std::size_t k = cx.frame.holes.size(); k-- > 0;) {  // hole bottoms, right to left
+    const auto [c0, c1, r0, r1] = g.cells_of(k);
+    below.insert(below.end(), {{c1, r0, 0}, {c0, r0, 0}});
+  }
+  above.insert(above.end(), {{nc, 0, 0}, {nc, nr, 0}, {0, nr, 0}});
+  return std::array<std::vector<GridPoint>, 2>{std::move(below), std::move(above)};
+}
+
+// The side faces: the solid part of the (u, z) grid, cut into pieces without holes. The left
+// face is traced on its own (stems may be glued to one side only), then turned to face +w.
 void add_side_faces(const Context& cx, std::vector<GridFace>& out) {
-  const std::size_t nr = cx.grid.nz() - 1;
-  for (std::size_t c = 0; c + 1 < cx.grid.nu(); ++c) {
-    for (std::size_t r0 = 0; r0 < nr;) {
-      if (cx.grid.cell(std::ptrdiff_t(c), std::ptrdiff_t(r0)) != kSolid) { ++r0; continue; }
-      std::size_t r1 = r0 + 1;
-      while (r1 < nr && cx.grid.cell(std::ptrdiff_t(c), std::ptrdiff_t(r1)) == kSolid) ++r1;
-      out.push_back({{{{c, r0, 0}, {c + 1, r0, 0}, {c + 1, r1, 0}, {c, r1, 0}}},
-                     FaceKind::wall_face, cx.wall_object});
-      out.push_back({{{{c, r0, 1}, {c, r1, 1}, {c + 1, r1, 1}, {c + 1, r0, 1}}},
-                     FaceKind::wall_face, cx.wall_object});
-      r0 = r1;
+  for (const int s : {0, 1}) {
+    std::vector<std::vector<GridPoint>> loops;
+    if (auto chain = find_chain_split(cx, s)) loops = {std::move((*chain)[0]), std::move((*chain)[1])};
+    else loops = trace_loops(cx.grid, side_edges(cx.grid, find_cuts(cx, s), s));
+    for (std::vector<GridPoint> loop : loops) {
+      if (s == 1) {
+        std::reverse(loop.begin(), loop.end());
+        for (GridPoint& p : loop) p.s = 1;
+      }
+      out.push_back({std::move(loop), FaceKind::wall_face, cx.wall_object});
     }
   }
 }
@@ -120,9 +257,9 @@ void add_u_faces(const Context& cx, std::size_t i, std::vector<GridFace>& out) {
       const FaceKind kind = s.second == kOutside ? FaceKind::wall_end : FaceKind::jamb;
       const int obj = cx.object_of(s.second);
       if (s.first > 0)
-        out.push_back({{{{i, r0, 0}, {i, r0, 1}, {i, r1, 1}, {i, r1, 0}}}, kind, obj});
+        out.push_back({{{i, r0, 0}, {i, r0, 1}, {i, r1, 1}, {i, r1, 0}}, kind, obj});
       else
-        out.push_back({{{{i, r0, 0}, {i, r1, 0}, {i, r1, 1}, {i, r0, 1}}}, kind, obj});
+        out.push_back({{{i, r0, 0}, {i, r1, 0}, {i, r1, 1}, {i, r0, 1}}, kind, obj});
     }
     r0 = r1;
   }
@@ -150,9 +287,9 @@ void add_z_faces(const Context& cx, std::size_t j, std::vector<GridFace>& out) {
       const FaceKind kind = z_face_kind(s.first, s.second);
       const int obj = cx.object_of(s.second);
       if (s.first > 0)
-        out.push_back({{{{c0, j, 0}, {c1, j, 0}, {c1, j, 1}, {c0, j, 1}}}, kind, obj});
+        out.push_back({{{c0, j, 0}, {c1, j, 0}, {c1, j, 1}, {c0, j, 1}}, kind, obj});
       else
-        out.push_back({{{{c0, j, 0}, {c0, j, 1}, {c1, j, 1}, {c1, j, 0}}}, kind, obj});
+        out.push_back({{{c0, j, 0}, {c0, j, 1}, {c1, j, 1}, {c1, j, 0}}, kind, obj});
     }
     c0 = c1;
   }
@@ -168,11 +305,13 @@ FaceSoup emit_faces(const Context& cx, const std::vector<GridFace>& faces) {
   FaceSoup soup;
   soup.reserve(faces.size());
   for (const GridFace& f : faces) {
-    SoupFace out{{}, f.kind, f.object, cx.frame.color};
-    for (std::size_t k = 0; k < 4; ++k) {
-      const GridPoint a = f.corners[k], b = f.corners[(k + 1) % 4];
+    SoupFace out{{}, f.kind, f.object, cx.frame.color, {}};
+    const std::size_t n = f.corners.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const GridPoint a = f.corners[k], b = f.corners[(k + 1) % n];
       out.points.push_back(cx.grid.point(a));
-      if (a.s != b.s) continue;  // an edge across the thickness has no inner vertices
+      // Edges across the thickness and chain cuts through a side's inside have no inner vertices.
+      if (a.s != b.s || (a.i != b.i && a.j != b.j)) continue;
       const bool along_u = a.j == b.j;
       const std::size_t from = along_u ? a.i : a.j, to = along_u ? b.i : b.j;
       const int step = to > from ? 1 : -1;
@@ -192,7 +331,7 @@ double u_of(const WallFrame& f, const Point2& p) {
 
 }  // namespace
 
-bool has_holes_clear_of_mitres(const WallFrame& f) {
+bool has_holes_clear_of_joins(const WallFrame& f) {
   if (f.holes.empty()) return true;
   const double lo = f.capless[0] ? std::max(u_of(f, f.footprint[0]), u_of(f, f.footprint[3])) : 0.0;
   const double hi = f.capless[1] ? std::min(u_of(f, f.footprint[1]), u_of(f, f.footprint[2])) : f.length;

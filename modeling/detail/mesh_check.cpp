@@ -91,8 +91,9 @@ SolidCheck check_solid(const SolidMesh& mesh) {
   check.faces = mesh.n_faces();
   TriMesh tri = triangulate_copy(mesh, check);
   for (const auto h : tri.halfedges()) check.border_edges += tri.is_border(h);
-  for (const auto v : tri.vertices())
-    if (!tri.is_isolated(v) && PMP::is_non_manifold_vertex(v, tri)) ++check.non_manifold_vertices;
+  std::vector<TriMesh::Halfedge_index> pinched;  // one halfedge per extra umbrella, O(n) in all
+  PMP::non_manifold_vertices(tri, std::back_inserter(pinched));
+  check.non_manifold_vertices = pinched.size();
   for (const auto f : tri.faces()) check.degenerate_triangles += PMP::is_degenerate_triangle_face(f, tri);
   if (PMP::does_self_intersect(tri)) {
     std::vector<std::pair<TriMesh::Face_index, TriMesh::Face_index>> pairs;

@@ -1,7 +1,10 @@
 #include "modeling/detail/wall_frame.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <string_view>
 #include <unordered_map>
 
@@ -34,8 +37,8 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   f.half = w.thickness / 2.0;
   f.base = w.base;
   f.top = w.base + w.height;
-  f.footprint = wall_footprint(plan, joins, index);
   f.capless = {joins.mitre[index][0].has_value(), joins.mitre[index][1].has_value()};
+  f.footprint = wall_footprint(plan, joins, index);
   f.color = w.color;
   return f;
 }
@@ -56,9 +59,51 @@ Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
   return {index, o.offset, o.offset + o.width, w.base + o.sill, w.base + (o.sill + o.height)};
 }
 
+// Ends meeting at one point, keyed by its bits (as find_hubs does).
+using NodeKey = std::pair<std::uint64_t, std::uint64_t>;
+
+// Outward directions of two wall ends at one node that run on from each other within
+// kHairline radians (but not exactly: then the square ends coincide).
+bool is_hairline_pair(const Wall& a, WallEnd ea, const Wall& b, WallEnd eb) {
+  constexpr double kHairline = 1e-6;
+  auto outward = [](const Wall& w, WallEnd e) {
+    const double dx = w.to.x - w.from.x, dy = w.to.y - w.from.y, len = std::hypot(dx, dy);
+    return e == WallEnd::from ? Point2{dx / len, dy / len} : Point2{-dx / len, -dy / len};
+  };
+  const Point2 da = outward(a, ea), db = outward(b, eb);
+  const double cross = da.x * db.y - da.y * db.x, dot = da.x * db.x + da.y * db.y;
+  return a.thickness == b.thickness && dot < 0.0 && cross != 0.0 && std::abs(cross) <= kHairline;
+}
+
+// Where three or more walls meet at a node (a unite join), two of equal thickness that run
+// on from each other within a hairline angle would leave a wedge between their square ends,
+// about half * angle wide: far below a millimetre, yet no mesh in doubles can hold it. Such
+// a pair is mitred instead (its ends move by at most half * angle), which closes the wedge
+// exactly: both take the same rounded corners. @return the joins with those mitres.
+Joins with_hairline_mitres(const Plan& plan, Joins joins) {
+  std::map<NodeKey, std::vector<std::pair<std::size_t, WallEnd>>> nodes;
+  for (std::size_t i = 0; i < plan.walls.size(); ++i)
+    for (const WallEnd e : {WallEnd::from, WallEnd::to}) {
+      const Point2& p = e == WallEnd::from ? plan.walls[i].from : plan.walls[i].to;
+      nodes[{std::bit_cast<std::uint64_t>(p.x + 0.0), std::bit_cast<std::uint64_t>(p.y + 0.0)}].emplace_back(i, e);
+    }
+  for (const auto& [key, ends] : nodes) {
+    if (ends.size() < 3) continue;
+    for (const auto& [i, ei] : ends)
+      for (const auto& [j, ej] : ends) {
+        auto& mi = joins.mitre[i][static_cast<std::size_t>(ei)];
+        auto& mj = joins.mitre[j][static_cast<std::size_t>(ej)];
+        if (i >= j || mi || mj || !is_hairline_pair(plan.walls[i], ei, plan.walls[j], ej)) continue;
+        mi = j, mj = i;
+      }
+  }
+  return joins;
+}
+
 }  // namespace
 
-std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& joins) {
+std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_joins) {
+  const Joins joins = with_hairline_mitres(plan, plan_joins);
   std::vector<WallFrame> frames;
   frames.reserve(plan.walls.size());
   std::unordered_map<std::string_view, std::size_t> by_id;

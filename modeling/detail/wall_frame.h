@@ -18,6 +18,14 @@ struct Hole {
   double u0 = 0.0, u1 = 0.0, z0 = 0.0, z1 = 0.0;
 };
 
+/// Where the end of another wall (a stem) is glued to one side face of this wall: that side
+/// has no face over u in [u0, u1] (full height), and its corners there are p0 and p1 exactly.
+struct Attachment {
+  double u0 = 0.0, u1 = 0.0;
+  int side = 1;  ///< -1 right face, +1 left face
+  Point2 p0, p1;
+};
+
 struct WallFrame {
   std::size_t wall = 0;  ///< index into Plan::walls
   Point2 from;
@@ -32,9 +40,12 @@ struct WallFrame {
   std::array<bool, 2> capless{false, false};  ///< per WallEnd: no end cap (mitred, or on a hub)
   Color color;
   std::vector<Hole> holes;  ///< sorted by u0
+  std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
 
-/// Frames for every wall, with the holes of every opening.
+/// Frames for every wall, with the holes of every opening. Ends are mitred per `joins`, and
+/// also where two walls of equal thickness among three or more at one node run on from each
+/// other within 1e-6 rad (a hairline wedge between square ends; see wall_frame.cpp).
 /// @pre validate(plan).ok() for the checks below (validation/validate.h).
 /// @return one frame per wall, in plan order. O(n log n).
 /// @throws PreconditionError naming the wall or opening if a wall is degenerate (length,

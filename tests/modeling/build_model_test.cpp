@@ -19,6 +19,16 @@ using test::expect_valid_walls;
 constexpr auto kDoor = OpeningType::door;
 constexpr auto kWindow = OpeningType::window;
 
+// Expects build_model to throw PreconditionError with `text` in its message.
+void expect_build_error(const Plan& plan, const std::string& text) {
+  try {
+    (void)build_model(plan);
+    FAIL() << "expected PreconditionError";
+  } catch (const PreconditionError& e) {
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
+}
+
 // Wall 4 x 0.2 x 2.5 = 2 m^3.
 Plan single_wall() {
   Plan plan = empty_plan();
@@ -42,8 +52,9 @@ TEST(Modeling, PlainWallWithOneWindowHasAHandfulOfFaces) {
   Plan plan = single_wall();
   add_opening(plan, "win", kWindow, "w", 1.0, 1.5, 0.9, 1.0);
   const Model model = build_model(plan);
-  // 4 polygons per side, top, bottom, 2 ends, 2 jambs, sill, lintel.
-  EXPECT_EQ(model.walls.n_faces(), 16u);
+  // 2 polygons per side (cut at the window's first jamb), top, bottom, 2 ends, 2 jambs,
+  // sill, lintel.
+  EXPECT_EQ(model.walls.n_faces(), 12u);
   EXPECT_LE(build_model(plan, test::options_for(BooleanPath::cgal)).walls.n_faces(), 24u);
 }
 
@@ -111,6 +122,24 @@ TEST(Modeling, TJoin) {
   add_opening(plan, "door", kDoor, "through", 0.5, 0.9, 0.0, 2.0);
   const double volume = 0.2 * 2.5 * (6 + 3.9) - 0.2 * (1.0 + 0.9 * 2.0);
   expect_paths_agree(plan, 1, volume);
+  BuildStats stats;
+  (void)build_model(plan, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 2u);  // the stem is clipped at the through-wall's face
+}
+
+TEST(Modeling, SlantedStemsOnBothSidesOfAWallFarAway) {
+  Plan plan = empty_plan();
+  add_wall(plan, "through", {0, 0}, {8, 0});
+  add_wall(plan, "north", {2, 0}, {4, 3});  // 56 degrees
+  add_wall(plan, "south", {6, 0}, {4, -3});
+  add_wall(plan, "south2", {2.5, 0}, {2.5, -2});
+  add_opening(plan, "win", kWindow, "through", 4.5, 1.0, 1.0, 1.0);
+  add_opening(plan, "door", kDoor, "north", 1.5, 0.8, 0.0, 2.0);
+  const Plan moved = test::transformed(plan, 23.9, 1e6, 1e6);
+  BuildStats stats;
+  (void)build_model(moved, {}, &stats);
+  EXPECT_EQ(stats.fast_path_walls, 4u);
+  expect_paths_agree(moved, 1);
 }
 
 TEST(Modeling, XJoin) {
@@ -187,12 +216,29 @@ TEST(Modeling, SameMeshAtAnyThreadCount) {
 TEST(Modeling, OpeningOutsideItsWallIsAnErrorNamingIt) {
   Plan plan = single_wall();
   add_opening(plan, "too-wide", kWindow, "w", 3.5, 1.0, 1.0, 1.0);
-  try {
-    (void)build_model(plan);
-    FAIL() << "expected PreconditionError";
-  } catch (const PreconditionError& e) {
-    EXPECT_NE(std::string(e.what()).find("too-wide"), std::string::npos) << e.what();
-  }
+  expect_build_error(plan, "too-wide");
+}
+
+TEST(Modeling, WallsTouchingAlongAnEdgeAreAnErrorNotACrash) {
+  Plan plan = empty_plan();
+  // Thickness 0.25 keeps the side faces exact: a touches b only along the edge x=2, y=0.25.
+  add_wall(plan, "a", {0, 0.125}, {2, 0.125}).thickness = 0.25;
+  add_wall(plan, "b", {2, 0.375}, {4, 0.375}).thickness = 0.25;
+  expect_build_error(plan, "not 2-manifold");
+}
+
+TEST(Modeling, WallsTouchingAtAPointGetSeparateVertices) {
+  Plan plan = empty_plan();
+  add_wall(plan, "low", {0, 0.125}, {2, 0.125}).thickness = 0.25;
+  Wall& high = add_wall(plan, "high", {2, 0.375}, {4, 0.375});
+  high.thickness = 0.25;
+  high.base = 2.5;  // touches "low" only at the point (2, 0.25, 2.5)
+  const Model model = build_model(plan);
+  const SolidCheck c = check_solid(model.walls);
+  EXPECT_TRUE(c.is_closed());
+  EXPECT_TRUE(c.is_manifold());
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_NEAR(c.volume, 2 * 2 * 0.25 * 2.5, 1e-12);
 }
 
 TEST(Modeling, FloorAndFixtures) {

@@ -1,0 +1,141 @@
+#include "modeling/detail/snap_soup.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+namespace roomcad::detail {
+namespace {
+
+using Polygon = std::vector<std::size_t>;
+
+struct CellHash {
+  std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
+    return std::size_t(std::uint64_t(c[0]) * 73856093u ^ std::uint64_t(c[1]) * 19349663u ^
+                       std::uint64_t(c[2]) * 83492791u);
+  }
+};
+
+// For each point, the lowest index of the points within `tolerance` of it (transitively).
+// Points hash into cubes of side 2 * tolerance, so near points are in adjacent cubes.
+std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points, double tolerance) {
+  std::vector<std::size_t> parent(points.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  auto find = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  const double cell = tolerance > 0.0 ? 2.0 * tolerance : 1.0;
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::size_t>, CellHash> cells;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::array<std::int64_t, 3> c;
+    for (int k = 0; k < 3; ++k) c[std::size_t(k)] = std::int64_t(std::floor(points[i][k] / cell));
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == cells.end()) continue;
+          for (std::size_t j : it->second) {
+            const OpenMesh::Vec3d d = points[i] - points[j];
+            if (std::abs(d[0]) > tolerance || std::abs(d[1]) > tolerance || std::abs(d[2]) > tolerance) continue;
+            const std::size_t a = find(i), b = find(j);
+            parent[std::max(a, b)] = std::min(a, b);
+          }
+        }
+    cells[c].push_back(i);
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) parent[i] = find(i);
+  return parent;
+}
+
+// Drops repeated neighbours (cyclically) and spikes a, b, a, until neither is left. O(n^2).
+void drop_repeats_and_spikes(Polygon& p) {
+  for (bool changed = true; changed && !p.empty();) {
+    changed = false;
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    while (p.size() > 1 && p.back() == p.front()) p.pop_back();
+    const std::size_t n = p.size();
+    for (std::size_t k = 0; n >= 3 && k < n; ++k)
+      if (p[(k + n - 1) % n] == p[(k + 1) % n]) {
+        // Remove the spike's tip and one copy of its base; the other copy stays.
+        const std::size_t tip = k, base = (k + 1) % n;
+        p.erase(p.begin() + std::ptrdiff_t(std::max(tip, base)));
+        p.erase(p.begin() + std::ptrdiff_t(std::min(tip, base)));
+        changed = true;
+        break;
+      }
+  }
+}
+
+// Appends the polygon, cleaned, to `out`: split where it touches itself at a corner.
+void append_clean(Polygon p, std::vector<Polygon>& out) {
+  drop_repeats_and_spikes(p);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      if (p[i] != p[j]) continue;
+      Polygon first(p.begin() + std::ptrdiff_t(i), p.begin() + std::ptrdiff_t(j));
+      Polygon second(p.begin() + std::ptrdiff_t(j), p.end());
+      second.insert(second.end(), p.begin(), p.begin() + std::ptrdiff_t(i));
+      append_clean(std::move(first), out);
+      append_clean(std::move(second), out);
+      return;
+    }
+  if (p.size() >= 3) out.push_back(std::move(p));
+}
+
+// The polygon's cycle starting at its lowest index (same orientation).
+Polygon canonical(const Polygon& p) {
+  Polygon c(p);
+  std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+  return c;
+}
+
+// Removes both polygons of every pair that are one another's reverse. O(n log n).
+std::vector<Polygon> drop_fins(std::vector<Polygon> polygons) {
+  std::map<Polygon, std::vector<std::size_t>> open;  // cycle -> unmatched polygons with it
+  std::vector<char> gone(polygons.size(), 0);
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    const Polygon reversed = canonical(Polygon(polygons[k].rbegin(), polygons[k].rend()));
+    const auto match = open.find(reversed);
+    if (match != open.end() && !match->second.empty()) {
+      gone[k] = gone[match->second.back()] = 1;
+      match->second.pop_back();
+      continue;
+    }
+    open[canonical(polygons[k])].push_back(k);
+  }
+  std::vector<Polygon> kept;
+  kept.reserve(polygons.size());
+  for (std::size_t k = 0; k < polygons.size(); ++k)
+    if (!gone[k]) kept.push_back(std::move(polygons[k]));
+  return kept;
+}
+
+}  // namespace
+
+IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
+  const std::vector<std::size_t> target = find_snap_targets(soup.points, tolerance);
+  std::vector<Polygon> cleaned;
+  cleaned.reserve(soup.polygons.size());
+  for (Polygon& p : soup.polygons) {
+    for (std::size_t& i : p) i = target[i];
+    append_clean(std::move(p), cleaned);
+  }
+  soup.polygons = drop_fins(std::move(cleaned));
+  return soup;
+}
+
+double snap_tolerance(const std::vector<OpenMesh::Vec3d>& points) {
+  double largest = 0.0;
+  for (const OpenMesh::Vec3d& p : points)
+    largest = std::max({largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+  if (largest == 0.0) return 0.0;
+  return 4.0 * (std::nextafter(largest, std::numeric_limits<double>::infinity()) - largest);
+}
+
+}  // namespace roomcad::detail

@@ -17,7 +17,7 @@ using Triangle3 = std::array<glm::dvec3, 3>;
 
 /// Whether the edge p-q, shared by a face with the off-edge vertex r0 and a face with r1, is a
 /// crease a drawing shows: false when r0, r1 lie on opposite sides of the line pq and the four
-/// points are coplanar: exactly, or r1 within 1e-9 m of the plane p, q, r0 (faces of one plane
+/// points are coplanar: exactly, or with the faces less than 1e-9 rad apart (faces of one plane
 /// whose corners the modeller rounded to doubles). A zero-angle fin (same side) and a
 /// collinear r0 or r1 count as creases. O(1); exact unless within the rounding tolerance.
 [[nodiscard]] bool is_crease(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r0,

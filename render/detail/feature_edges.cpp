@@ -10,14 +10,19 @@ namespace {
 
 glm::dvec3 to_glm(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 
-/// @return a vertex of the face not on the line p-q, or nullopt (a degenerate face).
+/// @return the vertex of the face farthest from the line p-q, or nullopt if every vertex is on
+/// it (a degenerate face). The farthest, not the first off the line: the modeller's rounding
+/// leaves vertices of the same line a few ulps off it, and those would tilt the plane.
 std::optional<glm::dvec3> off_edge_vertex(const SolidMesh& mesh, SolidMesh::FaceHandle f,
                                           const glm::dvec3& p, const glm::dvec3& q) {
+  std::optional<glm::dvec3> best;
+  double best_distance = -1.0;
   for (const auto vh : mesh.fv_range(f)) {
     const glm::dvec3 r = to_glm(mesh.point(vh));
-    if (!is_collinear(p, q, r)) return r;
+    const double d = glm::length(glm::cross(q - p, r - p));
+    if (d > best_distance && !is_collinear(p, q, r)) best = r, best_distance = d;
   }
-  return std::nullopt;
+  return best;
 }
 
 bool is_feature_edge(const SolidMesh& mesh, SolidMesh::EdgeHandle e, const glm::dvec3& p,

@@ -32,7 +32,8 @@ bool is_feature_edge(const SolidMesh& mesh, SolidMesh::EdgeHandle e, const glm::
   const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
   const auto r0 = off_edge_vertex(mesh, f0, p, q);
   const auto r1 = off_edge_vertex(mesh, f1, p, q);
-  return !r0 || !r1 || is_crease(p, q, *r0, *r1);
+  const bool same_facing = (mesh.calc_face_normal(f0) | mesh.calc_face_normal(f1)) > 0.0;
+  return !r0 || !r1 || is_crease(p, q, *r0, *r1, same_facing);
 }
 
 }  // namespace

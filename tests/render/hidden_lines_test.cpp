@@ -108,6 +108,18 @@ TEST(HiddenLines, NoEdgeBetweenCoplanarFaces) {
   edges.clear();
   detail::append_feature_edges(mesh, edges);
   EXPECT_EQ(edges.size(), 7u);
+  // A non-convex face wrapped round a square one in its notch: the farthest corner of the
+  // first from their shared edge (y = 1) lies on the second's side; still one plane, no crease.
+  SolidMesh notch;
+  std::vector<SolidMesh::VertexHandle> n;
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+           {0, 0}, {3, 0}, {3, 5}, {2, 5}, {2, 1}, {1, 1}, {1, 5}, {0, 5}})
+    n.push_back(notch.add_vertex({x, y, 0.0}));
+  notch.add_face(n);
+  notch.add_face(std::vector{n[5], n[4], n[3], n[6]});
+  edges.clear();
+  detail::append_feature_edges(notch, edges);
+  EXPECT_EQ(edges.size(), 6u);  // the 3 x 5 outline (its top in three pieces)
   Model model;
   add_face_properties(model.walls);
   add_box(model.walls, {0, 0, 0}, {1, 1, 1}, 0);

@@ -41,5 +41,6 @@ void add_rm_command(CLI::App& root, Commands& commands);
 void add_transform_commands(CLI::App& root, Commands& commands);  ///< move, rotate, scale
 void add_set_command(CLI::App& root, Commands& commands);
 void add_render_command(CLI::App& root, Commands& commands);
+void add_view_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -2,9 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cstdio>
-#include <map>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -15,36 +13,12 @@
 #include "io/plan_json.h"
 #include "modeling/build_model.h"
 #include "modeling/value_text.h"
+#include "validation/report_diff.h"
 #include "validation/report_format.h"
 #include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
-
-/// An error's identity across an edit: its code and the ids it involves (messages and places
-/// change when objects move, the problem does not).
-using ErrorKey = std::pair<std::string, std::vector<std::string>>;
-
-ErrorKey key_of(const Diagnostic& d) {
-  std::vector<std::string> ids = d.objects;
-  std::sort(ids.begin(), ids.end());
-  return {d.code, std::move(ids)};
-}
-
-/// @return the errors of `after` beyond those `before` had, counted per ErrorKey.
-Report introduced_errors(const Report& before, const Report& after) {
-  std::map<ErrorKey, int> budget;
-  for (const Diagnostic& d : before.items)
-    if (d.severity == Severity::error) ++budget[key_of(d)];
-  Report fresh;
-  for (const Diagnostic& d : after.items) {
-    if (d.severity != Severity::error) continue;
-    int& left = budget[key_of(d)];
-    if (left > 0) --left;
-    else fresh.add(d);
-  }
-  return fresh;
-}
 
 void print_report(const Report& report) {
   std::fputs(format_report_text(report, use_colour(stderr)).c_str(), stderr);

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   add_transform_commands(app, commands);
   add_set_command(app, commands);
   add_render_command(app, commands);
+  add_view_command(app, commands);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,158 @@
+// The viewer without a window: its frames are roomcad's renderer's pictures, keys move the
+// camera and toggle the display, clicks select through the id buffer, errors are drawn red.
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "io/plan_json.h"
+#include "support/run_command.h"
+#include "view/input.h"
+#include "view/viewer.h"
+
+namespace roomcad {
+namespace {
+
+constexpr int kWidth = 192, kHeight = 108;
+
+std::filesystem::path studio() { return test::source_dir() / "examples" / "studio.json"; }
+
+Viewer open_viewer(const std::filesystem::path& path, bool overlay = false) {
+  Result<ViewSession> s = ViewSession::open(path);
+  EXPECT_TRUE(s.ok()) << s.error();
+  return Viewer(std::move(s).value(),
+                ViewerOptions{.width = kWidth, .height = kHeight, .overlay = overlay});
+}
+
+/// What `roomcad render` draws of the plan with these options (grid on, the plan's lights).
+RgbImage rendered(const std::filesystem::path& path, RenderOptions o) {
+  const Plan plan = read_plan_file(path).plan.value();
+  o.width = kWidth, o.height = kHeight, o.lights = plan.lights;
+  o.grid = GridLines{.enabled = true, .origin = {plan.site.origin.x, plan.site.origin.y},
+                     .cell_size = plan.site.cell_size, .cells = plan.site.cells};
+  FrameBuffers out;
+  render_model(build_model(plan), o, out);
+  return out.color;
+}
+
+InputEvent key(std::string name, bool ctrl = false) {
+  InputEvent e;
+  e.key = std::move(name), e.ctrl = ctrl;
+  return e;
+}
+
+TEST(Viewer, FramesAreTheRenderersPictures) {
+  Viewer v = open_viewer(studio());
+  EXPECT_EQ(v.frame().pixels, rendered(studio(), {}).pixels);
+  v.handle(key("1"));
+  EXPECT_EQ(v.frame().pixels, rendered(studio(), {.view = ViewPreset::top}).pixels);
+  v.handle(key("3"));
+  EXPECT_EQ(v.frame().pixels, rendered(studio(), {.view = ViewPreset::right}).pixels);
+}
+
+TEST(Viewer, EveryCameraAndDisplayKeyChangesTheFrame) {
+  Viewer v = open_viewer(studio());
+  for (const char* name : {"a", "d", "w", "s", "x", "y", "z", "plus", "minus", "1", "2", "4", "p",
+                           "h", "g", "e", "o", "left"}) {
+    const std::vector<std::uint8_t> before = v.frame().pixels;
+    EXPECT_TRUE(v.handle(key(name)));
+    EXPECT_NE(v.frame().pixels, before) << "key " << name;
+  }
+  EXPECT_FALSE(v.handle(key("q")));
+}
+
+TEST(Viewer, ShadingKeyCyclesTheModes) {
+  Viewer v = open_viewer(studio());
+  const std::vector<std::uint8_t> phong = v.frame().pixels;
+  std::vector<ShadingMode> modes;
+  for (int i = 0; i < 4; ++i) {
+    v.handle(key("m"));
+    modes.push_back(v.render_options().shading);
+  }
+  EXPECT_EQ(modes, (std::vector<ShadingMode>{ShadingMode::flat, ShadingMode::gouraud,
+                                             ShadingMode::unlit, ShadingMode::phong}));
+  v.handle(key("m"));
+  v.handle(key("m"));
+  v.handle(key("m"));  // unlit: no light on the faces
+  EXPECT_NE(v.frame().pixels, phong);
+}
+
+TEST(Viewer, ClickSelectsWhatThePixelShowsAndTintsIt) {
+  Viewer v = open_viewer(studio());
+  v.handle(key("1"));
+  const RgbImage plain = v.frame();
+  const RenderOptions& o = v.render_options();
+  FrameBuffers ids;
+  const Plan plan = v.session().plan();
+  const Model model = build_model(plan);
+  render_model(model, o, ids);
+  int x = -1, y = -1;
+  for (int py = 0; py < kHeight && x < 0; ++py)
+    for (int px = 0; px < kWidth && x < 0; ++px)
+      if (ids.objects.at(px, py) >= 0 && model.objects[ids.objects.at(px, py)] == "east") x = px, y = py;
+  ASSERT_GE(x, 0) << "the east wall is in the top view";
+  InputEvent click;
+  click.type = InputEvent::Type::click, click.x = x, click.y = y;
+  v.handle(click);
+  EXPECT_EQ(v.session().selected(), "east");
+  EXPECT_NE(v.frame().pixels, plain.pixels);
+  click.x = 0, click.y = 0;  // the background
+  v.handle(click);
+  EXPECT_FALSE(v.session().selected());
+  EXPECT_EQ(v.frame().pixels, plain.pixels);
+}
+
+TEST(Viewer, ErrorsAreDrawnRedLiveAndListed) {
+  test::TempDir dir;
+  Plan plan = read_plan_file(studio()).plan.value();
+  ASSERT_TRUE(test::write_bytes(dir / "p.json", write_plan_text(plan)));
+  Viewer v = open_viewer(dir / "p.json");
+  v.handle(key("1"));
+  auto red_pixels = [&] {
+    int n = 0;
+    const RgbImage& f = v.frame();
+    for (std::size_t i = 0; i < f.pixels.size(); i += 3)
+      n += f.pixels[i] > 150 && f.pixels[i + 1] < 60 && f.pixels[i + 2] < 60;
+    return n;
+  };
+  EXPECT_EQ(red_pixels(), 0);
+  v.handle(key("tab"));  // the first wall, "south"
+  ASSERT_EQ(v.session().selected(), "south");
+  for (int i = 0; i < 6; ++i) v.handle(key("up"));  // 3 m north: onto the bathroom's wall
+  ASSERT_FALSE(v.session().report().ok()) << v.session().message();
+  EXPECT_GT(red_pixels(), 50);
+  v.handle(key("s", true));
+  EXPECT_NE(v.session().message().find("not saved"), std::string::npos);
+  for (int i = 0; i < 6; ++i) v.handle(key("z", true));
+  EXPECT_TRUE(v.session().report().ok());
+  EXPECT_EQ(red_pixels(), 0);
+}
+
+TEST(Viewer, RedrawsWhenTheFileChangesOnDisk) {
+  test::TempDir dir;
+  Plan plan = read_plan_file(studio()).plan.value();
+  const auto path = dir / "p.json";
+  ASSERT_TRUE(test::write_bytes(path, write_plan_text(plan)));
+  Viewer v = open_viewer(path);
+  const std::vector<std::uint8_t> before = v.frame().pixels;
+  EXPECT_FALSE(v.poll_file());
+  EXPECT_FALSE(v.needs_redraw());
+  for (Wall& w : plan.walls) w.color = {0x20, 0x60, 0x20};
+  const auto later = std::filesystem::last_write_time(path) + std::chrono::seconds(2);
+  ASSERT_TRUE(test::write_bytes(path, write_plan_text(plan)));
+  std::filesystem::last_write_time(path, later);
+  EXPECT_TRUE(v.poll_file());
+  EXPECT_TRUE(v.needs_redraw());
+  EXPECT_NE(v.frame().pixels, before);
+  EXPECT_EQ(v.session().plan(), plan);
+}
+
+TEST(Viewer, OverlayWritesOnTheFrame) {
+  Viewer with = open_viewer(studio(), true);
+  Viewer without = open_viewer(studio(), false);
+  EXPECT_NE(with.frame().pixels, without.frame().pixels);
+  with.handle(key("o"));
+  EXPECT_EQ(with.frame().pixels, without.frame().pixels);
+}
+
+}  // namespace
+}  // namespace roomcad

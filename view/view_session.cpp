@@ -1,0 +1,219 @@
+#include "view/view_session.h"
+
+#include <algorithm>
+#include <system_error>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "io/plan_json.h"
+#include "modeling/build_model.h"
+#include "validation/report_diff.h"
+#include "validation/report_format.h"
+#include "validation/validate.h"
+#include "view/object_properties.h"
+
+namespace roomcad {
+namespace {
+
+/// The file's modification time, or the epoch when it cannot be read (a missing file then
+/// counts as changed once it reappears).
+std::filesystem::file_time_type modification_time(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto time = std::filesystem::last_write_time(path, ec);
+  return ec ? std::filesystem::file_time_type{} : time;
+}
+
+/// Every object id of a plan in plan order: walls, openings, lights, cameras.
+std::vector<std::string> object_ids(const Plan& plan) {
+  std::vector<std::string> ids;
+  for (const Wall& w : plan.walls) ids.push_back(w.id);
+  for (const Opening& o : plan.openings) ids.push_back(o.id);
+  for (const Light& l : plan.lights) ids.push_back(l.id);
+  for (const Camera& c : plan.cameras) ids.push_back(c.id);
+  return ids;
+}
+
+/// The first error of a report as one line, e.g. "wall_overlap: walls a and b overlap".
+std::string first_error(const Report& report) {
+  for (const Diagnostic& d : report.items)
+    if (d.severity == Severity::error) return fmt::format("{}: {}", d.code, d.message);
+  return "";
+}
+
+/// "1 error" or "N errors".
+std::string error_count(const Report& report) {
+  const std::size_t n = report.error_count();
+  return fmt::format("{} error{}", n, n == 1 ? "" : "s");
+}
+
+/// "the plan has errors" as text: the reading report of a file that is not a plan.
+std::string reading_failure(const std::filesystem::path& path, const Report& report) {
+  return fmt::format("{}: {}\n{}", path.string(), format_report_summary(report),
+                     format_report_text(report, false));
+}
+
+}  // namespace
+
+Result<ViewSession> ViewSession::open(const std::filesystem::path& path) {
+  PlanReadResult read = read_plan_file(path);
+  if (!read.plan) return Result<ViewSession>::failure(reading_failure(path, read.report));
+  ViewSession session;
+  session.path_ = path;
+  session.plan_ = std::move(*read.plan);
+  session.report_ = validate(session.plan_);
+  session.file_time_ = modification_time(path);
+  return session;
+}
+
+std::vector<std::string> ViewSession::error_objects() const {
+  std::vector<std::string> ids;
+  for (const Diagnostic& d : report_.items)
+    if (d.severity == Severity::error) ids.insert(ids.end(), d.objects.begin(), d.objects.end());
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+std::vector<std::string> ViewSession::selection_properties() const {
+  return selected_ ? describe_object(plan_, *selected_) : std::vector<std::string>{};
+}
+
+void ViewSession::select(std::optional<std::string> id) {
+  pending_cascade_.reset();
+  if (id && !object_kind(plan_, *id)) id.reset();
+  selected_ = std::move(id);
+}
+
+void ViewSession::select_next() {
+  const std::vector<std::string> ids = object_ids(plan_);
+  if (ids.empty()) return select(std::nullopt);
+  auto it = selected_ ? std::find(ids.begin(), ids.end(), *selected_) : ids.end();
+  select(it == ids.end() || it + 1 == ids.end() ? ids.front() : *(it + 1));
+}
+
+void ViewSession::set_message(std::string text) { message_ = std::move(text); }
+
+void ViewSession::replace_plan(Plan next) {
+  undo_.push_back(std::move(plan_));
+  if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
+  plan_ = std::move(next);
+  report_ = validate(plan_);
+  modified_ = true;
+  ++revision_;
+  if (selected_ && !object_kind(plan_, *selected_)) selected_.reset();
+}
+
+bool ViewSession::apply(std::string_view what, const Edit& edit) {
+  Plan next = plan_;
+  try {
+    edit(next);
+  } catch (const PreconditionError& e) {
+    set_message(fmt::format("{}: not done: {}", what, e.what()));
+    return false;
+  }
+  if (next == plan_) {
+    set_message(fmt::format("{}: nothing changed", what));
+    return false;
+  }
+  const Report before = report_;
+  replace_plan(std::move(next));
+  const Report fresh = introduced_errors(before, report_);
+  set_message(fresh.ok() ? std::string(what)
+                         : fmt::format("{}: introduces {} (in red); Ctrl+Z undoes", what,
+                                       error_count(fresh)));
+  return true;
+}
+
+bool ViewSession::move_selection(int dx_cells, int dy_cells) {
+  pending_cascade_.reset();
+  if (!selected_) return false;
+  const std::string id = *selected_;
+  const double cell = plan_.site.cell_size;
+  if (object_kind(plan_, id) == std::optional<std::string_view>("door") ||
+      object_kind(plan_, id) == std::optional<std::string_view>("window")) {
+    const double du = (dx_cells != 0 ? dx_cells : dy_cells) * cell;
+    return apply(fmt::format("slid {} by {} m along its wall", id, du),
+                 [&](Plan& p) { return slide_opening(p, id, du); });
+  }
+  const Point2 by{dx_cells * cell, dy_cells * cell};
+  return apply(fmt::format("moved {} by {}, {} m", id, by.x, by.y),
+               [&](Plan& p) { return move_object(p, id, by); });
+}
+
+bool ViewSession::rotate_selection(double degrees) {
+  pending_cascade_.reset();
+  if (!selected_) return false;
+  const std::string id = *selected_;
+  return apply(fmt::format("turned {} by {} degrees", id, degrees),
+               [&](Plan& p) { return rotate_object(p, id, degrees); });
+}
+
+bool ViewSession::delete_selection() {
+  if (!selected_) return false;
+  const std::string id = *selected_;
+  const std::vector<std::string> hosted = hosted_openings(plan_, id);
+  const bool confirmed = pending_cascade_ == id;
+  pending_cascade_.reset();
+  if (!hosted.empty() && !confirmed) {
+    pending_cascade_ = id;
+    set_message(fmt::format("wall {} holds {}: press Delete again to delete them with it", id,
+                            fmt::join(hosted, ", ")));
+    return false;
+  }
+  return apply(fmt::format("deleted {}", hosted.empty() ? id : fmt::format("{} and {}", id, fmt::join(hosted, ", "))),
+               [&](Plan& p) { return remove_object(p, id, RemoveOptions{.cascade = confirmed}); });
+}
+
+bool ViewSession::undo() {
+  pending_cascade_.reset();
+  if (undo_.empty()) {
+    set_message("nothing to undo");
+    return false;
+  }
+  plan_ = std::move(undo_.back());
+  undo_.pop_back();
+  report_ = validate(plan_);
+  modified_ = true;
+  ++revision_;
+  if (selected_ && !object_kind(plan_, *selected_)) selected_.reset();
+  set_message("undone");
+  return true;
+}
+
+bool ViewSession::save() {
+  pending_cascade_.reset();
+  report_ = validate(plan_);
+  if (!report_.ok()) {
+    set_message(fmt::format("not saved: the plan has {} (in red); fix or undo (Ctrl+Z) first",
+                            error_count(report_)));
+    return false;
+  }
+  if (const Status written = write_plan_file(plan_, path_); !written) {
+    set_message(fmt::format("not saved: {}", written.error));
+    return false;
+  }
+  file_time_ = modification_time(path_);
+  modified_ = false;
+  set_message(fmt::format("saved {}", path_.string()));
+  return true;
+}
+
+bool ViewSession::reload_if_changed() {
+  const auto time = modification_time(path_);
+  if (time == file_time_) return false;
+  file_time_ = time;  // a bad file is reported once, not every frame
+  PlanReadResult read = read_plan_file(path_);
+  if (!read.plan) {
+    set_message(fmt::format("{} changed on disk but is not a valid plan ({}); the plan shown is kept",
+                            path_.string(), first_error(read.report)));
+    return false;
+  }
+  if (*read.plan == plan_) return false;
+  replace_plan(std::move(*read.plan));
+  modified_ = false;
+  set_message(fmt::format("reloaded {} (changed on disk; Ctrl+Z goes back)", path_.string()));
+  return true;
+}
+
+}  // namespace roomcad

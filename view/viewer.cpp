@@ -1,0 +1,147 @@
+#include "view/viewer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "view/frame_overlay.h"
+#include "view/orbit_camera.h"
+#include "view/wireframe.h"
+
+namespace roomcad {
+namespace {
+
+/// Degrees of orbit per pixel dragged, and the zoom factor per wheel notch.
+constexpr double kDragDegreesPerPixel = 0.3;
+constexpr double kWheelZoom = 0.9;
+
+Bounds framing_bounds(const Scene& scene) {
+  Bounds b = scene.bounds;
+  if (b.is_empty()) b.add(glm::dvec3(0.0));  // nothing to frame: look at the origin, as render does
+  return b;
+}
+
+}  // namespace
+
+Viewer::Viewer(ViewSession session, const ViewerOptions& options)
+    : session_(std::move(session)), viewer_options_(options) {
+  options_ = RenderOptions{.width = options.width, .height = options.height, .threads = options.threads};
+  options_.grid.enabled = true;  // as `roomcad render --grid on`
+  rebuild_model();
+  if (options.camera) camera_ = *options.camera;
+  else frame_preset(options.view);
+}
+
+void Viewer::rebuild_model() {
+  if (built_revision_ == session_.revision()) return;
+  built_revision_ = session_.revision();
+  const Plan& plan = session_.plan();
+  options_.lights = plan.lights;
+  options_.grid = GridLines{.enabled = options_.grid.enabled,
+                            .origin = {plan.site.origin.x, plan.site.origin.y},
+                            .cell_size = plan.site.cell_size, .cells = plan.site.cells};
+  try {
+    BuildOptions build;
+    build.threads = viewer_options_.threads;
+    const Model model = build_model(plan, build);
+    scene_ = flatten_model(model);
+    objects_ = model.objects;
+    base_colors_ = scene_.colors;
+    model_problem_.clear();
+  } catch (const std::exception& e) {  // keep drawing the last model that could be built
+    model_problem_ = fmt::format("model not rebuilt: {}", e.what());
+  }
+  dirty_ = true;
+}
+
+void Viewer::frame_preset(ViewPreset preset) {
+  const double aspect = static_cast<double>(options_.width) / options_.height;
+  camera_ = frame_view(framing_bounds(scene_), preset, camera_.projection, camera_.fov_deg, aspect);
+  dirty_ = true;
+}
+
+bool Viewer::handle(const InputEvent& input) {
+  switch (input.type) {
+    case InputEvent::Type::click: pick(input.x, input.y); break;
+    case InputEvent::Type::wheel:
+      camera_ = zoom_camera(camera_, std::pow(kWheelZoom, input.x));
+      break;
+    case InputEvent::Type::drag:
+      camera_ = input.right_button
+                    ? pan_camera(camera_, -input.x / double(options_.height), input.y / double(options_.height))
+                    : orbit_camera(camera_, -input.x * kDragDegreesPerPixel, input.y * kDragDegreesPerPixel);
+      break;
+    case InputEvent::Type::key: {
+      const std::optional<Action> action = action_for(input);
+      if (!action) return true;
+      if (*action == Action::quit) return false;
+      apply(*action);
+      break;
+    }
+  }
+  dirty_ = true;
+  return true;
+}
+
+bool Viewer::poll_file() {
+  if (!session_.reload_if_changed()) return false;
+  dirty_ = true;
+  return true;
+}
+
+void Viewer::pick(int x, int y) {
+  frame();  // the id buffer of what is on screen now
+  const ObjectIdImage& ids = buffers_.objects;
+  if (x < 0 || y < 0 || x >= ids.width || y >= ids.height) return;
+  const std::int32_t index = ids.at(x, y);
+  session_.select(index >= 0 && static_cast<std::size_t>(index) < objects_.size()
+                      ? std::optional<std::string>(objects_[index])
+                      : std::nullopt);
+}
+
+void Viewer::highlight() {
+  std::vector<std::uint8_t> state(objects_.size(), 0);  // 1 error, 2 selected
+  const std::vector<std::string> errors = session_.error_objects();
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    if (std::binary_search(errors.begin(), errors.end(), objects_[i])) state[i] = 1;
+    if (session_.selected() == objects_[i]) state[i] = 2;
+  }
+  scene_.colors = base_colors_;
+  for (std::size_t t = 0; t < scene_.objects.size(); ++t) {
+    const std::int32_t o = scene_.objects[t];
+    if (o < 0 || static_cast<std::size_t>(o) >= state.size() || state[o] == 0) continue;
+    Color& c = scene_.colors[t];
+    c = state[o] == 1 ? kErrorColor
+                      : Color{static_cast<std::uint8_t>((c.r + kSelectionTint.r) / 2),
+                              static_cast<std::uint8_t>((c.g + kSelectionTint.g) / 2),
+                              static_cast<std::uint8_t>((c.b + kSelectionTint.b) / 2)};
+  }
+}
+
+void Viewer::draw() {
+  const auto rebuild_start = std::chrono::steady_clock::now();
+  const bool rebuilt = built_revision_ != session_.revision();
+  rebuild_model();
+  const auto start = std::chrono::steady_clock::now();
+  build_ms_ = rebuilt ? std::chrono::duration<double, std::milli>(start - rebuild_start).count() : 0.0;
+  highlight();
+  options_.camera = camera_;
+  render_scene(scene_, options_, buffers_);
+  shown_ = buffers_.color;
+  if (wireframe_) draw_wireframe(shown_, scene_, frame_camera(scene_, options_));
+  // Measured before the overlay, which shows it (the text itself costs well under 1%).
+  frame_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (viewer_options_.overlay) draw_overlay(shown_, overlay_text());
+}
+
+const RgbImage& Viewer::frame() {
+  if (dirty_ || built_revision_ != session_.revision()) draw();
+  dirty_ = false;
+  return shown_;
+}
+
+}  // namespace roomcad

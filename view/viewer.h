@@ -1,0 +1,95 @@
+// The window's state and behaviour without the window: a session (the plan being edited), a
+// camera, display toggles and the frame they give. The SDL glue (view/sdl_window.h) only feeds
+// it inputs and shows its frames, so everything the window does is tested headless here.
+//
+// A frame is roomcad's own renderer (render/renderer.h) drawing the plan's model with the
+// objects named by validation errors in red and the selection tinted blue, then the wireframe
+// and the text overlay when they are on. Without a selection, errors, wireframe and overlay, a
+// frame is pixel for pixel what `roomcad render` draws with the same camera and options.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "modeling/build_model.h"
+#include "render/renderer.h"
+#include "render/scene.h"
+#include "view/frame_overlay.h"
+#include "view/input.h"
+#include "view/key_bindings.h"
+#include "view/view_session.h"
+
+namespace roomcad {
+
+struct ViewerOptions {
+  int width = 1280;   ///< frame pixels, as RenderOptions
+  int height = 720;
+  std::optional<Camera> camera{};     ///< nullopt: frame the model from `view`
+  ViewPreset view = ViewPreset::iso;  ///< perspective, 50 degrees, as `roomcad render --view`
+  bool overlay = true;                ///< text on the frame (toggled with 'o')
+  int threads = 0;                    ///< render threads, 0: all cores
+};
+
+/// Colours of the highlights.
+inline constexpr Color kErrorColor{0xdc, 0x1e, 0x1e};
+inline constexpr Color kSelectionTint{0x3c, 0x8c, 0xff};
+
+class Viewer {
+ public:
+  /// Builds the model of the session's plan and frames it.
+  /// @pre options.width and height in 1 .. kMaxImageSide (check_render_options).
+  Viewer(ViewSession session, const ViewerOptions& options);
+
+  /// Applies one input: a bound key's action, a click (selects what the pixel shows, or
+  /// nothing), a drag (orbit; right button: pan) or wheel notches (zoom).
+  /// @return false when the input asks to quit.
+  bool handle(const InputEvent& input);
+  /// Reloads the plan if its file changed on disk. @return true if it did.
+  bool poll_file();
+  /// @return the current frame, drawn again only if something changed since the last call.
+  /// Cost: one render_scene (see render/renderer.h) when anything changed, else O(1).
+  const RgbImage& frame();
+  /// @return true when the next frame() will draw.
+  [[nodiscard]] bool needs_redraw() const { return dirty_; }
+
+  [[nodiscard]] const Camera& camera() const { return camera_; }
+  [[nodiscard]] const RenderOptions& render_options() const { return options_; }
+  [[nodiscard]] const ViewSession& session() const { return session_; }
+  /// Milliseconds the last drawn frame took: highlight, render and wireframe (not the
+  /// overlay, which shows this number, nor the model rebuild).
+  [[nodiscard]] double last_frame_ms() const { return frame_ms_; }
+  /// Milliseconds the model rebuild before the last frame took (0 if the plan had not changed).
+  [[nodiscard]] double last_build_ms() const { return build_ms_; }
+
+ private:
+  void rebuild_model();
+  void apply(Action action);
+  void apply_camera(Action action);
+  void apply_display(Action action);
+  void apply_edit(Action action);
+  void step(int dx, int dy);
+  void frame_preset(ViewPreset preset);
+  void pick(int x, int y);
+  void draw();
+  void highlight();
+  [[nodiscard]] OverlayText overlay_text() const;
+
+  ViewSession session_;
+  ViewerOptions viewer_options_;
+  RenderOptions options_;
+  Camera camera_;
+  Scene scene_;
+  std::vector<Color> base_colors_;        ///< scene_ colours before highlighting
+  std::vector<std::string> objects_;      ///< Model::objects of the model drawn
+  std::uint64_t built_revision_ = ~std::uint64_t{0};
+  std::string model_problem_;             ///< why the last rebuild failed, or ""
+  FrameBuffers buffers_;
+  RgbImage shown_;                        ///< the colour buffer with wireframe and overlay
+  bool wireframe_ = false;
+  bool dirty_ = true;
+  double frame_ms_ = 0.0;
+  double build_ms_ = 0.0;
+};
+
+}  // namespace roomcad

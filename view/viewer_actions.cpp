@@ -1,0 +1,138 @@
+// What each key's action does to the viewer: camera moves, display toggles and edits.
+#include <fmt/format.h>
+
+#include "validation/report_format.h"
+#include "view/orbit_camera.h"
+#include "view/viewer.h"
+
+namespace roomcad {
+namespace {
+
+constexpr double kKeyDegrees = 15.0;  ///< one orbit or turn key press
+constexpr double kPanStep = 0.1;      ///< one pan key press, of the visible height
+constexpr double kZoomStep = 0.8;     ///< one zoom key press
+
+ShadingMode next_mode(ShadingMode m) {
+  switch (m) {
+    case ShadingMode::phong: return ShadingMode::flat;
+    case ShadingMode::flat: return ShadingMode::gouraud;
+    case ShadingMode::gouraud: return ShadingMode::unlit;
+    case ShadingMode::unlit: return ShadingMode::phong;
+  }
+  return ShadingMode::phong;
+}
+
+std::string_view to_text(ShadingMode m) {
+  switch (m) {
+    case ShadingMode::phong: return "phong";
+    case ShadingMode::flat: return "flat";
+    case ShadingMode::gouraud: return "gouraud";
+    case ShadingMode::unlit: return "unlit";
+  }
+  return "";
+}
+
+/// The world axis (and sign) an axis-turn action turns about, or a zero vector.
+glm::dvec3 turn_axis(Action a) {
+  switch (a) {
+    case Action::turn_x: return {1, 0, 0};
+    case Action::turn_x_back: return {-1, 0, 0};
+    case Action::turn_y: return {0, 1, 0};
+    case Action::turn_y_back: return {0, -1, 0};
+    case Action::turn_z: return {0, 0, 1};
+    case Action::turn_z_back: return {0, 0, -1};
+    default: return {0, 0, 0};
+  }
+}
+
+}  // namespace
+
+void Viewer::apply(Action action) {
+  if (action >= Action::orbit_left && action <= Action::toggle_projection) apply_camera(action);
+  else if (action >= Action::toggle_shadows && action <= Action::toggle_overlay) apply_display(action);
+  else apply_edit(action);
+}
+
+void Viewer::apply_camera(Action a) {
+  const glm::dvec3 axis = turn_axis(a);
+  if (glm::length(axis) > 0.0) camera_ = rotate_camera(camera_, axis, kKeyDegrees);
+  switch (a) {
+    case Action::orbit_left: camera_ = orbit_camera(camera_, -kKeyDegrees, 0.0); break;
+    case Action::orbit_right: camera_ = orbit_camera(camera_, kKeyDegrees, 0.0); break;
+    case Action::orbit_up: camera_ = orbit_camera(camera_, 0.0, kKeyDegrees); break;
+    case Action::orbit_down: camera_ = orbit_camera(camera_, 0.0, -kKeyDegrees); break;
+    case Action::pan_left: camera_ = pan_camera(camera_, -kPanStep, 0.0); break;
+    case Action::pan_right: camera_ = pan_camera(camera_, kPanStep, 0.0); break;
+    case Action::pan_up: camera_ = pan_camera(camera_, 0.0, kPanStep); break;
+    case Action::pan_down: camera_ = pan_camera(camera_, 0.0, -kPanStep); break;
+    case Action::zoom_in: camera_ = zoom_camera(camera_, kZoomStep); break;
+    case Action::zoom_out: camera_ = zoom_camera(camera_, 1.0 / kZoomStep); break;
+    case Action::view_top: frame_preset(ViewPreset::top); break;
+    case Action::view_front: frame_preset(ViewPreset::front); break;
+    case Action::view_side: frame_preset(ViewPreset::right); break;
+    case Action::view_iso: frame_preset(ViewPreset::iso); break;
+    case Action::toggle_projection: camera_ = toggle_projection(camera_); break;
+    default: break;
+  }
+}
+
+void Viewer::apply_display(Action a) {
+  switch (a) {
+    case Action::toggle_shadows:
+      options_.shadows = options_.shadows == ShadowFilter::off ? ShadowFilter::pcf : ShadowFilter::off;
+      break;
+    case Action::next_shading: options_.shading = next_mode(options_.shading); break;
+    case Action::toggle_grid: options_.grid.enabled = !options_.grid.enabled; break;
+    case Action::toggle_wireframe: wireframe_ = !wireframe_; break;
+    case Action::toggle_overlay: viewer_options_.overlay = !viewer_options_.overlay; break;
+    default: break;
+  }
+}
+
+void Viewer::step(int dx, int dy) {
+  if (session_.selected()) session_.move_selection(dx, dy);
+  else camera_ = pan_camera(camera_, dx * kPanStep, dy * kPanStep);
+}
+
+void Viewer::apply_edit(Action a) {
+  switch (a) {
+    case Action::step_west: step(-1, 0); break;
+    case Action::step_east: step(1, 0); break;
+    case Action::step_north: step(0, 1); break;
+    case Action::step_south: step(0, -1); break;
+    case Action::select_next: session_.select_next(); break;
+    case Action::deselect: session_.select(std::nullopt); break;
+    case Action::turn_selection: session_.rotate_selection(90.0); break;
+    case Action::turn_selection_back: session_.rotate_selection(-90.0); break;
+    case Action::delete_selection: session_.delete_selection(); break;
+    case Action::save: session_.save(); break;
+    case Action::undo: session_.undo(); break;
+    default: break;
+  }
+}
+
+OverlayText Viewer::overlay_text() const {
+  OverlayText t;
+  const ViewSession& s = session_;
+  t.status.push_back(fmt::format("{}{}  {}", s.path().filename().string(),
+                                 s.is_modified() ? " (modified)" : "",
+                                 format_report_summary(s.report())));
+  t.status.push_back(fmt::format("{}  {} shading  shadows {}  frame {:.1f} ms{}",
+                                 to_string(camera_.projection), to_text(options_.shading),
+                                 options_.shadows == ShadowFilter::off ? "off" : "on", frame_ms_,
+                                 build_ms_ > 0.0 ? fmt::format(" (model rebuilt in {:.0f} ms)", build_ms_)
+                                                 : std::string()));
+  if (!model_problem_.empty()) t.status.push_back(model_problem_);
+  t.message = s.message();
+  t.selection = s.selection_properties();
+  for (const Diagnostic& d : s.report().items)
+    if (d.severity == Severity::error)
+      t.errors.push_back(fmt::format("error[{}] {}: {}", d.code, fmt::join(d.objects, ", "), d.message));
+  t.help =
+      "a/d/w/s orbit  x/y/z turn  shift+arrows pan  +/- zoom  1-4 views  p proj  h shadows  "
+      "m shading  g grid  e wire  o text  click select  arrows move  r turn  del delete  "
+      "ctrl+s save  ctrl+z undo  q quit";
+  return t;
+}
+
+}  // namespace roomcad

@@ -76,6 +76,7 @@ VisibilityResult find_visible_faces(const Scene& scene, const VisibilityView& vi
     }
   }
   detail::SplitCounters counters;
+  detail::group_coplanar(flat);
   detail::split_picture(flat, view.width, view.height, visible, counters);
   result.visible.resize(n);
   for (std::size_t t = 0; t < n; ++t) {

@@ -14,8 +14,8 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using E = CGAL::Exact_predicates_exact_constructions_kernel;
 using P3 = K::Point_3;
 
-/// Metres off a face's plane below which a neighbour counts as the same plane (rounding).
-constexpr double kFlatTolerance = 1e-9;
+/// The sine of the angle between two faces below which they count as one plane (rounding).
+constexpr double kFlatSine = 1e-9;
 
 P3 to_point(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
 
@@ -34,18 +34,19 @@ bool segment_meets_triangle(const glm::dvec3& a, const glm::dvec3& b, const Tria
 }
 
 bool is_crease(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r0,
-               const glm::dvec3& r1) {
+               const glm::dvec3& r1, bool same_facing) {
   const P3 a = to_point(p), b = to_point(q), c = to_point(r0), d = to_point(r1);
   if (CGAL::collinear(a, b, c) || CGAL::collinear(a, b, d)) return true;
-  if (CGAL::orientation(a, b, c, d) == CGAL::COPLANAR) {
-    return CGAL::coplanar_orientation(a, b, c, d) != CGAL::NEGATIVE;
-  }
+  if (!same_facing) return true;
+  if (CGAL::orientation(a, b, c, d) == CGAL::COPLANAR) return false;
   // Not exactly one plane: a plane the model's exact constructions rounded to doubles (a
-  // rotated wall's face split around an opening) is off by ~1e-15 m, a real crease by far more.
-  const glm::dvec3 n = glm::cross(q - p, r0 - p);
+  // turned wall's face split in several) bends by ~1e-15 rad, a real crease by far more. The
+  // angle, not the distance, decides: a sliver face along a crease is near both planes.
+  const glm::dvec3 e = q - p;
+  const glm::dvec3 n = glm::cross(e, r0 - p);
   const double off_plane = std::abs(glm::dot(n, r1 - p)) / glm::length(n);
-  const bool opposite = glm::dot(n, glm::cross(q - p, r1 - p)) < 0.0;
-  return !(off_plane <= kFlatTolerance && opposite);
+  const double off_line = glm::length(glm::cross(e, r1 - p)) / glm::length(e);
+  return off_plane > kFlatSine * off_line;
 }
 
 bool is_edge_on(const Triangle3& t, const glm::dvec3& eye, const glm::dvec3& forward,

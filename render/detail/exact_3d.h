@@ -15,13 +15,15 @@ using Triangle3 = std::array<glm::dvec3, 3>;
 [[nodiscard]] bool segment_meets_triangle(const glm::dvec3& a, const glm::dvec3& b,
                                           const Triangle3& t);
 
-/// Whether the edge p-q, shared by a face with the off-edge vertex r0 and a face with r1, is a
-/// crease a drawing shows: false when r0, r1 lie on opposite sides of the line pq and the four
-/// points are coplanar: exactly, or r1 within 1e-9 m of the plane p, q, r0 (faces of one plane
-/// whose corners the modeller rounded to doubles). A zero-angle fin (same side) and a
-/// collinear r0 or r1 count as creases. O(1); exact unless within the rounding tolerance.
+/// Whether the edge p-q, shared by a face with the vertex r0 and a face with the vertex r1
+/// (each off the line pq, in its face's plane), is a crease a drawing shows: false when the
+/// faces face the same way (`same_facing`: their normals agree, as two pieces of one plane in a
+/// consistently oriented mesh do) and the four points are coplanar: exactly, or with the faces
+/// less than 1e-9 rad apart (faces of one plane whose corners the modeller rounded to
+/// doubles). Faces may be non-convex. A zero-angle fin (facing apart) and a collinear r0 or r1
+/// count as creases. O(1); exact unless within the rounding tolerance.
 [[nodiscard]] bool is_crease(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r0,
-                             const glm::dvec3& r1);
+                             const glm::dvec3& r1, bool same_facing);
 
 /// @return true if the triangle is seen edge-on: its plane contains the eye (`perspective`) or
 ///         the view direction `forward` (orthographic; exact for the direction as given). Such a

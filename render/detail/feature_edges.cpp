@@ -10,17 +10,17 @@ namespace {
 
 glm::dvec3 to_glm(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 
-/// @return the vertex of the face farthest from the line p-q (so that the plane through p, q
-///         and it is well conditioned: a face split by a diagonal has corners close to that
-///         line), or nullopt if every vertex is on the line (a degenerate face).
+/// @return the vertex of the face farthest from the line p-q, or nullopt if every vertex is on
+/// it (a degenerate face). The farthest, not the first off the line: the modeller's rounding
+/// leaves vertices of the same line a few ulps off it, and those would tilt the plane.
 std::optional<glm::dvec3> off_edge_vertex(const SolidMesh& mesh, SolidMesh::FaceHandle f,
                                           const glm::dvec3& p, const glm::dvec3& q) {
   std::optional<glm::dvec3> best;
   double best_distance = -1.0;
   for (const auto vh : mesh.fv_range(f)) {
     const glm::dvec3 r = to_glm(mesh.point(vh));
-    const double distance = glm::length(glm::cross(q - p, r - p));
-    if (distance > best_distance && !is_collinear(p, q, r)) best = r, best_distance = distance;
+    const double d = glm::length(glm::cross(q - p, r - p));
+    if (d > best_distance && !is_collinear(p, q, r)) best = r, best_distance = d;
   }
   return best;
 }
@@ -32,7 +32,8 @@ bool is_feature_edge(const SolidMesh& mesh, SolidMesh::EdgeHandle e, const glm::
   const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
   const auto r0 = off_edge_vertex(mesh, f0, p, q);
   const auto r1 = off_edge_vertex(mesh, f1, p, q);
-  return !r0 || !r1 || is_crease(p, q, *r0, *r1);
+  const bool same_facing = (mesh.calc_face_normal(f0) | mesh.calc_face_normal(f1)) > 0.0;
+  return !r0 || !r1 || is_crease(p, q, *r0, *r1, same_facing);
 }
 
 }  // namespace

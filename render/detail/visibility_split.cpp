@@ -146,6 +146,51 @@ bool sees_one_face(const Region& r) {
   return true;
 }
 
+/// @return the coplanar group every run of the contour sees, or -1 if runs see none or several.
+std::int64_t contour_group(const Context& cx, const Region& r) {
+  std::int64_t group = -2;
+  for (const Side* s : {&r.top, &r.bottom, &r.left, &r.right})
+    for (const Run& run : *s) {
+      const std::int64_t g = run.face < 0 ? -1 : cx.triangles[run.face].group;
+      if (g < 0 || (group != -2 && g != group)) return -1;
+      group = g;
+    }
+  return group < 0 ? -1 : group;
+}
+
+/// @return whether a segment meets the rectangle's interior (shrunk by 1e-6: an edge lying on
+/// the contour is seen by the contour's sweeps). Liang-Barsky.
+bool meets_interior(Point2 a, Point2 b, double x0, double y0, double x1, double y1) {
+  constexpr double kIn = 1e-6;
+  double t0 = 0.0, t1 = 1.0;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {a.x - (x0 + kIn), (x1 - kIn) - a.x, a.y - (y0 + kIn), (y1 - kIn) - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+    } else if (p[i] < 0.0) {
+      t0 = std::max(t0, q[i] / p[i]);
+    } else {
+      t1 = std::min(t1, q[i] / p[i]);
+    }
+  }
+  return t0 < t1;
+}
+
+/// Whether an edge that bounds its plane's group crosses the region: only then can what is
+/// seen inside differ from what the contour sees.
+bool has_boundary_inside(const Context& cx, const Region& r) {
+  return std::any_of(r.candidates.begin(), r.candidates.end(), [&](std::uint32_t i) {
+    const FlatTriangle& t = cx.triangles[i];
+    for (int e = 0; e < 3; ++e) {
+      if (t.boundary[e] && meets_interior(t.p[e], t.p[(e + 1) % 3], r.x0, r.y0, r.x1, r.y1))
+        return true;
+    }
+    return false;
+  });
+}
+
 bool has_triangle_inside(const Context& cx, const Region& r) {
   return std::any_of(r.candidates.begin(), r.candidates.end(), [&](std::uint32_t i) {
     const Box2& b = cx.triangles[i].box;
@@ -191,30 +236,34 @@ double split_at(double lo, double hi) {
 
 void split_region(const Context& cx, Region r);
 
-void split_vertically(const Context& cx, Region& r, double c) {
-  const Side line = sweep(cx, r.candidates, false, c, r.y0, r.y1);
-  Region a{r.x0, r.y0, c, r.y1, clip_side(r.top, r.x0, c), clip_side(r.bottom, r.x0, c),
-           std::move(r.left), line, overlapping(cx, r.candidates, r.x0, r.y0, c, r.y1)};
-  Region b{c, r.y0, r.x1, r.y1, clip_side(r.top, c, r.x1), clip_side(r.bottom, c, r.x1), line,
-           std::move(r.right), overlapping(cx, r.candidates, c, r.y0, r.x1, r.y1)};
+/// Splits the region by the line x = c (`vertical`) or y = c: sweeps the line once, gives
+/// each half its part of the contour and of the candidates, and recurses into both.
+void split_in_two(const Context& cx, Region& r, bool vertical, double c) {
+  Region a, b;  // the low and the high half
+  if (vertical) {
+    const Side line = sweep(cx, r.candidates, false, c, r.y0, r.y1);
+    a = {r.x0, r.y0, c, r.y1, clip_side(r.top, r.x0, c), clip_side(r.bottom, r.x0, c),
+         std::move(r.left), line, {}};
+    b = {c, r.y0, r.x1, r.y1, clip_side(r.top, c, r.x1), clip_side(r.bottom, c, r.x1), line,
+         std::move(r.right), {}};
+  } else {
+    const Side line = sweep(cx, r.candidates, true, c, r.x0, r.x1);
+    a = {r.x0, r.y0, r.x1, c, std::move(r.top), line, clip_side(r.left, r.y0, c),
+         clip_side(r.right, r.y0, c), {}};
+    b = {r.x0, c, r.x1, r.y1, line, std::move(r.bottom), clip_side(r.left, c, r.y1),
+         clip_side(r.right, c, r.y1), {}};
+  }
+  a.candidates = overlapping(cx, r.candidates, a.x0, a.y0, a.x1, a.y1);
+  b.candidates = overlapping(cx, r.candidates, b.x0, b.y0, b.x1, b.y1);
   const bool parallel = r.candidates.size() >= kParallelGrain;
   r.candidates = {};
-  if (parallel) tbb::parallel_invoke([&] { split_region(cx, std::move(a)); },
-                                     [&] { split_region(cx, std::move(b)); });
-  else split_region(cx, std::move(a)), split_region(cx, std::move(b));
-}
-
-void split_horizontally(const Context& cx, Region& r, double c) {
-  const Side line = sweep(cx, r.candidates, true, c, r.x0, r.x1);
-  Region a{r.x0, r.y0, r.x1, c, std::move(r.top), line, clip_side(r.left, r.y0, c),
-           clip_side(r.right, r.y0, c), overlapping(cx, r.candidates, r.x0, r.y0, r.x1, c)};
-  Region b{r.x0, c, r.x1, r.y1, line, std::move(r.bottom), clip_side(r.left, c, r.y1),
-           clip_side(r.right, c, r.y1), overlapping(cx, r.candidates, r.x0, c, r.x1, r.y1)};
-  const bool parallel = r.candidates.size() >= kParallelGrain;
-  r.candidates = {};
-  if (parallel) tbb::parallel_invoke([&] { split_region(cx, std::move(a)); },
-                                     [&] { split_region(cx, std::move(b)); });
-  else split_region(cx, std::move(a)), split_region(cx, std::move(b));
+  if (parallel) {
+    tbb::parallel_invoke([&] { split_region(cx, std::move(a)); },
+                         [&] { split_region(cx, std::move(b)); });
+  } else {
+    split_region(cx, std::move(a));
+    split_region(cx, std::move(b));
+  }
 }
 
 /// The recursion: stop when the contour sees one face and nothing lies wholly inside, or when
@@ -223,15 +272,23 @@ void split_horizontally(const Context& cx, Region& r, double c) {
 /// may cover no sample there).
 void split_region(const Context& cx, Region r) {
   cx.counters.regions.fetch_add(1, std::memory_order_relaxed);
-  if (r.candidates.empty() || (sees_one_face(r) && !has_triangle_inside(cx, r))) return;
+  if (r.candidates.empty()) return;
+  // One face (a triangle is convex) or one plane with no boundary of any face crossing the
+  // region: the covering planes and their order are the same all over it.
+  const bool one_face = sees_one_face(r);
+  const bool one_plane = !one_face && contour_group(cx, r) >= 0;
+  if ((one_face || one_plane) && !has_triangle_inside(cx, r) &&
+      (one_face || !has_boundary_inside(cx, r))) {
+    return;
+  }
   if (r.candidates.size() == 1) {  // nothing can hide it here: seen if it covers a sample
     cx.visible[cx.triangles[r.candidates.front()].id].store(1, std::memory_order_relaxed);
     return;
   }
-  const double cx_ = split_at(r.x0, r.x1), cy = split_at(r.y0, r.y1);
-  const bool vertical = !std::isnan(cx_) && (std::isnan(cy) || r.x1 - r.x0 >= r.y1 - r.y0);
-  if (vertical) split_vertically(cx, r, cx_);
-  else if (!std::isnan(cy)) split_horizontally(cx, r, cy);
+  const double sx = split_at(r.x0, r.x1), sy = split_at(r.y0, r.y1);
+  const bool vertical = !std::isnan(sx) && (std::isnan(sy) || r.x1 - r.x0 >= r.y1 - r.y0);
+  if (vertical) split_in_two(cx, r, true, sx);
+  else if (!std::isnan(sy)) split_in_two(cx, r, false, sy);
 }
 
 }  // namespace

@@ -20,10 +20,19 @@ struct FlatTriangle {
   glm::dvec3 depth{0.0};  ///< depth(x, y) = depth.x * x + depth.y * y + depth.z
   Box2 box;
   std::uint32_t id = 0;  ///< scene triangle
+  std::uint32_t group = 0;  ///< triangles joined by shared edges in one plane (group_coplanar)
+  std::array<bool, 3> boundary{true, true, true};  ///< edge p[i] -> p[i + 1] is not shared
+                                                   ///< with a triangle of its plane
   [[nodiscard]] double depth_at(double x, double y) const {
     return depth.x * x + depth.y * y + depth.z;
   }
 };
+
+/// Sets FlatTriangle::group and ::boundary: two triangles with an edge of the same two
+/// projected corners (bit for bit: the scene's shared vertices) and the same depth plane
+/// (within 1e-6 relative) are one group and that edge is not a boundary. Deterministic.
+/// O(n log n).
+void group_coplanar(std::vector<FlatTriangle>& triangles);
 
 /// Counters of one run (atomic: regions run in parallel).
 struct SplitCounters {

@@ -22,9 +22,12 @@ namespace {
 /// The scene triangles the rasteriser's id buffer shows at width x height samples.
 std::set<std::uint32_t> z_buffer_ids(const Scene& scene, const CameraMatrices& cam, int width,
                                      int height) {
-  const detail::BinnedTriangles bins = detail::run_geometry_pass(
-      scene, {.uniform_view_projection = glm::mat4(cam.view_projection), .width = width,
-              .height = height, .tile_size = 64, .cull_back_faces = true});
+  detail::BinnedTriangles bins;
+  detail::run_geometry_pass(scene,
+                            {.uniform_view_projection = glm::mat4(cam.view_projection),
+                             .width = width, .height = height, .tile_size = 64,
+                             .cull_back_faces = true},
+                            bins);
   std::set<std::uint32_t> ids;
   for (int tile = 0; tile < bins.tile_count(); ++tile) {
     RasterTarget t = detail::tile_rectangle(bins, tile);

@@ -11,8 +11,8 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenmesh-dev libglm-dev libeigen3-dev
   # formats, command line, threads, images, windows, archives
   nlohmann-json3-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libsdl2-dev libzip-dev libpugixml-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  # tests and benchmarks (gnuplot draws bench/report.sh's plots)
+  libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
 )
 
 missing=()

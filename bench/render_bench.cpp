@@ -126,13 +126,14 @@ const std::vector<int>& reference_classes(const Model& m, const CameraMatrices& 
   return classes;
 }
 
-/// Arg: shadow-map resolution. Counters: the share of floor pixels whose hard shadow differs
-/// from the ray-traced one, and the shadow pass time.
+/// Args: shadow-map resolution, filter (0 hard, 1 PCF). Counters: the share of floor pixels
+/// whose shadow (darker than half the floor colour) differs from the ray-traced one, and the
+/// shadow pass time.
 void BM_ShadowResolutionError(benchmark::State& state) {
   static const Model model = bench::make_room_grid(3);
   const Scene scene = flatten_model(model);
   RenderOptions options{.width = 800, .height = 800, .shading = ShadingMode::unlit,
-                        .shadows = ShadowFilter::hard,
+                        .shadows = state.range(1) ? ShadowFilter::pcf : ShadowFilter::hard,
                         .shadow_resolution = static_cast<int>(state.range(0))};
   options.camera = frame_view(scene.bounds, ViewPreset::top, Projection::orthographic, 50.0, 1.0);
   FrameBuffers out;
@@ -156,7 +157,7 @@ void BM_ShadowResolutionError(benchmark::State& state) {
   state.counters["shadow_ms"] = shadow_ms / static_cast<double>(state.iterations());
 }
 BENCHMARK(BM_ShadowResolutionError)
-    ->Arg(256)->Arg(512)->Arg(1024)->Arg(2048)->Arg(4096)
+    ->ArgsProduct({{256, 512, 1024, 2048, 4096}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

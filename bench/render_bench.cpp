@@ -4,6 +4,8 @@
 // once (as a GPU uploads its mesh once), so a frame is what render_scene does.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <memory>
 
@@ -45,6 +47,59 @@ BENCHMARK(BM_Frame1080p)
     ->UseRealTime()
     ->MinTime(0.3);
 
+/// The 3 x 3 grid from the default camera at 400 x 300, Phong, PCF shadows.
+RenderOptions aa_options(int scale, int ssaa) {
+  return RenderOptions{.width = 400 * scale, .height = 300 * scale, .ssaa = ssaa};
+}
+
+/// The reference for anti-aliasing: 1600 x 1200 at ssaa 4, box-filtered to 400 x 300 (64
+/// samples a pixel, where ssaa 4 has 16).
+const RgbImage& aa_reference(const Scene& scene) {
+  static RgbImage reference;
+  if (!reference.pixels.empty()) return reference;
+  FrameBuffers big;
+  render_scene(scene, aa_options(4, 4), big);
+  reference = RgbImage(400, 300);
+  for (int y = 0; y < 300; ++y)
+    for (int x = 0; x < 400; ++x)
+      for (int c = 0; c < 3; ++c) {
+        int sum = 0;
+        for (int k = 0; k < 16; ++k) sum += big.color.at(4 * x + k % 4, 4 * y + k / 4)[c];
+        reference.at(x, y)[c] = static_cast<std::uint8_t>((sum + 8) / 16);
+      }
+  return reference;
+}
+
+/// Arg: ssaa (samples per pixel side). Counters: mean absolute difference from the reference
+/// (0-255 levels, all pixels and channels), share of pixels off by more than 8 levels in some
+/// channel (edges), and the frame time.
+void BM_AntiAliasingError(benchmark::State& state) {
+  static const Scene scene = flatten_model(bench::make_room_grid(3));
+  const RenderOptions options = aa_options(1, static_cast<int>(state.range(0)));
+  FrameBuffers out;
+  RenderStats stats;
+  double frame_ms = 0.0;
+  for (auto _ : state) {
+    render_scene(scene, options, out, &stats);
+    frame_ms += stats.frame_ms;
+  }
+  const RgbImage& ref = aa_reference(scene);
+  double sum = 0.0, off = 0.0;
+  for (std::size_t i = 0; i < ref.pixels.size(); i += 3) {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c) {
+      const int d = std::abs(int{ref.pixels[i + c]} - int{out.color.pixels[i + c]});
+      sum += d;
+      worst = std::max(worst, d);
+    }
+    off += worst > 8;
+  }
+  state.counters["mean_error_levels"] = sum / static_cast<double>(ref.pixels.size());
+  state.counters["pixels_off_pct"] = 300.0 * off / static_cast<double>(ref.pixels.size());
+  state.counters["frame_ms"] = frame_ms / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_AntiAliasingError)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 /// Shadowed floor pixels of a hard-shadow frame (unlit: a shadowed floor pixel is darker).
 std::vector<int> shadow_classes(const FrameBuffers& out) {
   std::vector<int> classes(out.objects.ids.size(), -1);
@@ -72,13 +127,14 @@ const std::vector<int>& reference_classes(const Model& m, const CameraMatrices& 
   return classes;
 }
 
-/// Arg: shadow-map resolution. Counters: the share of floor pixels whose hard shadow differs
-/// from the ray-traced one, and the shadow pass time.
+/// Args: shadow-map resolution, filter (0 hard, 1 PCF). Counters: the share of floor pixels
+/// whose shadow (darker than half the floor colour) differs from the ray-traced one, and the
+/// shadow pass time.
 void BM_ShadowResolutionError(benchmark::State& state) {
   static const Model model = bench::make_room_grid(3);
   const Scene scene = flatten_model(model);
   RenderOptions options{.width = 800, .height = 800, .shading = ShadingMode::unlit,
-                        .shadows = ShadowFilter::hard,
+                        .shadows = state.range(1) ? ShadowFilter::pcf : ShadowFilter::hard,
                         .shadow_resolution = static_cast<int>(state.range(0))};
   options.camera = frame_view(scene.bounds, ViewPreset::top, Projection::orthographic, 50.0, 1.0);
   FrameBuffers out;
@@ -102,7 +158,7 @@ void BM_ShadowResolutionError(benchmark::State& state) {
   state.counters["shadow_ms"] = shadow_ms / static_cast<double>(state.iterations());
 }
 BENCHMARK(BM_ShadowResolutionError)
-    ->Arg(256)->Arg(512)->Arg(1024)->Arg(2048)->Arg(4096)
+    ->ArgsProduct({{256, 512, 1024, 2048, 4096}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

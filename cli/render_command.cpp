@@ -80,7 +80,25 @@ T parse_choice(const std::string& flag, const std::string& text, std::optional<T
   return *parsed;
 }
 
+/// The frame limits of render/renderer.h that no single flag's range can hold (each flag's own
+/// range is checked as it is parsed), worded with the flags that set them.
+/// @throws BadFlag naming the flags, their values and the limit.
+void check_frame_size(const RenderArgs& a) {
+  const long long pixels = static_cast<long long>(a.width) * a.height;
+  if (pixels > kMaxImagePixels) {
+    throw BadFlag{fmt::format("--width {} x --height {} is {} pixels; at most {} are rendered",
+                              a.width, a.height, pixels, kMaxImagePixels)};
+  }
+  const long long samples = pixels * a.ssaa * a.ssaa;
+  if (samples > kMaxImageSamples) {
+    throw BadFlag{fmt::format("--width {} x --height {} at --ssaa {} is {} samples; at most {} are "
+                              "rendered (lower --ssaa or the size)",
+                              a.width, a.height, a.ssaa, samples, kMaxImageSamples)};
+  }
+}
+
 RenderOptions make_options(const RenderArgs& a, const Plan& plan) {
+  check_frame_size(a);
   const Projection projection = parse_choice<Projection>(
       "--projection", a.projection,
       a.projection == "perspective"    ? std::optional(Projection::perspective)
@@ -177,7 +195,7 @@ void add_render_command(CLI::App& root, Commands& commands) {
   CLI::App* app = root.add_subcommand("render", "Render a picture of the plan's 3D model (PNG)");
   app->add_option("plan", args->plan, "The plan file (JSON)")->required();
   app->add_option("-o,--output", args->output, "The picture to write (PNG)")->required();
-  const auto pixels = CLI::Range(1, 16384);
+  const auto pixels = CLI::Range(1, kMaxImageSide);
   app->add_option("--width", args->width, "Picture width in pixels")->check(pixels)->capture_default_str();
   app->add_option("--height", args->height, "Picture height in pixels")->check(pixels)->capture_default_str();
   app->add_option("--camera", args->camera, "Use the plan's camera with this id");
@@ -193,7 +211,7 @@ void add_render_command(CLI::App& root, Commands& commands) {
   app->add_option("--shading", args->shading, "unlit, flat, gouraud or phong")->capture_default_str();
   app->add_option("--shadows", args->shadows, "off, hard or pcf")->capture_default_str();
   app->add_option("--shadow-res", args->shadow_res, "Shadow-map texels per side")
-      ->check(pixels)->capture_default_str();
+      ->check(CLI::Range(1, kMaxShadowResolution))->capture_default_str();
   app->add_option("--ssaa", args->ssaa, "Supersampling per pixel side: 1, 2 or 4")
       ->check(CLI::IsMember({1, 2, 4}))->capture_default_str();
   app->add_option("--background", args->background, "Background colour #rrggbb")->capture_default_str();
@@ -207,7 +225,7 @@ void add_render_command(CLI::App& root, Commands& commands) {
   app->add_option("--depth", args->depth, "Also write the depth (metres along the view) as PFM");
   app->add_option("--ids", args->ids, "Also write object ids as PNG, with a JSON legend beside it");
   app->add_option("--threads", args->threads, "Threads, 0 = all cores (same picture at any count)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, kMaxThreads));
   app->add_flag("--force", args->force, "Render even if the plan has validation errors");
   app->add_flag("--stats", args->stats, "Print triangles and timings as one JSON line on stderr");
   commands.push_back({app, [args] { return run_render(*args); }});

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "io/detail/plan_reader.h"
 #include "io/detail/sh3d_archive.h"
 #include "io/detail/sh3d_home.h"
 #include "io/detail/sh3d_openings.h"
@@ -96,6 +97,13 @@ std::vector<Camera> make_cameras(const sh3d::Home& home, const Box& box, double 
   return cameras;
 }
 
+/// The error for a home that would make a plan of more objects than the plan reader reads back.
+std::string too_many_objects(std::string_view file, std::size_t walls, std::size_t items,
+                             std::string_view walls_are, std::string_view items_are) {
+  return fmt::format("{}: {} {} {} {}; a plan may hold at most {} of each kind", file, walls,
+                     walls_are, items, items_are, io_detail::kMaxPlanObjects);
+}
+
 /// The level id selected by name, "" for all levels.
 Result<std::string> select_level(const sh3d::Home& home, const Sh3dImportOptions& options,
                                  std::string_view file) {
@@ -124,6 +132,9 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   std::erase_if(home.items, [&](const sh3d::ItemRecord& i) { return !on_level(i.level); });
   if (home.walls.empty())
     return Result<Sh3dImport>::failure(fmt::format("{}: no <wall> to import", file));
+  if (home.walls.size() > io_detail::kMaxPlanObjects || home.items.size() > io_detail::kMaxPlanObjects)
+    return Result<Sh3dImport>::failure(too_many_objects(file, home.walls.size(), home.items.size(),
+                                                        "<wall> and", "<doorOrWindow> elements"));
   // Matching is O(walls x (items + levels)): bounded, so that no file can make it hang.
   const double pairs = static_cast<double>(home.walls.size()) *
                        static_cast<double>(home.items.size() + home.levels.size());
@@ -146,6 +157,12 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
       sh3d::convert_walls(home, home.walls, home.items, wall_options, out.warnings);
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
   out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
+  // Arcs become up to 256 chords each: the plan itself must stay readable.
+  if (out.plan.walls.size() > io_detail::kMaxPlanObjects)
+    return Result<Sh3dImport>::failure(too_many_objects(file, out.plan.walls.size(),
+                                                        out.plan.openings.size(),
+                                                        "straight walls (arcs cut into chords) and",
+                                                        "openings"));
   const Box box = bounds_of(out.plan.walls);
   // The site's cell counts are integers: a home spread over more cells than any plan could
   // use (coordinates like 1e115 cm) is refused rather than overflowing them.

@@ -59,8 +59,9 @@ inline constexpr double kMaxSiteCellsPerSide = 1e9;
 /// @return the plan and its warnings, or an error naming the file, element, attribute and
 ///   value (malformed XML, a missing or non-numeric attribute, an unknown `--level` name, a
 ///   home with no walls to import, more than kMaxImportPairs pairs of walls and items or
-///   levels, walls spread over more than kMaxSiteCellsPerSide cells). The plan is not
-///   validated. O(walls x items).
+///   levels, walls spread over more than kMaxSiteCellsPerSide cells, more walls (arcs counted
+///   by their chords) or doors and windows than a plan may hold, 1,000,000 of each). The plan
+///   is not validated. O(walls x items).
 [[nodiscard]] Result<Sh3dImport> import_sweethome3d_text(std::string_view xml,
                                                          std::string_view file,
                                                          const Sh3dImportOptions& options = {});

@@ -11,8 +11,9 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenmesh-dev libglm-dev libeigen3-dev
   # formats, command line, threads, images, windows, archives
   nlohmann-json3-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libsdl2-dev libzip-dev libpugixml-dev
-  # tests and benchmarks (Xvfb: a screen for the window tests of `roomcad view`)
-  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
+  # tests and benchmarks (Xvfb: a screen for the window tests of `roomcad view`; gnuplot draws
+  # bench/report.sh's plots)
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth gnuplot-nox
 )
 
 missing=()

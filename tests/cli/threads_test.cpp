@@ -58,10 +58,13 @@ TEST(Threads, RenderRefusesFramesThreadsAndShadowMapsPastTheLimits) {
   const std::string plan = (test::source_dir() / "examples/studio.json").string();
   const std::string out = (dir / "p.png").string();
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{"--threads", "257"}, "threads is 257; it must be 0 (all cores) to 256"},
-      {{"--width", "16384", "--height", "16384"}, "= 268435456 pixels; at most 67108864"},
-      {{"--width", "8192", "--height", "8192", "--ssaa", "4"}, "= 1073741824 samples"},
-      {{"--shadow-res", "8193"}, "shadow resolution is 8193; it must be 1 to 8192"}};
+      {{"--threads", "257"}, "--threads: Value 257 not in range 0 to 256"},
+      {{"--width", "16385"}, "--width: Value 16385 not in range 1 to 16384"},
+      {{"--width", "16384", "--height", "16384"},
+       "--width 16384 x --height 16384 is 268435456 pixels; at most 67108864"},
+      {{"--width", "8192", "--height", "8192", "--ssaa", "4"},
+       "--width 8192 x --height 8192 at --ssaa 4 is 1073741824 samples; at most 268435456"},
+      {{"--shadow-res", "8193"}, "--shadow-res: Value 8193 not in range 1 to 8192"}};
   for (const auto& [flags, message] : cases) {
     std::vector<std::string> args = {"render", plan, "-o", out};
     args.insert(args.end(), flags.begin(), flags.end());

@@ -88,6 +88,22 @@ TEST(HostileInput, Sh3dHomeWithTooManyWallItemPairsIsRefusedBeforeMatching) {
       << imported.error();
 }
 
+TEST(HostileInput, Sh3dHomeWithMoreWallsThanAPlanHoldsIsRefused) {
+  // A plan the reader refuses (io_detail::kMaxPlanObjects) must not be written by import.
+  std::string xml = "<home version='6500'>";
+  xml.reserve(100 * (io_detail::kMaxPlanObjects + 1));
+  for (std::size_t i = 0; i <= io_detail::kMaxPlanObjects; ++i)
+    xml += "<wall id='w" + std::to_string(i) +
+           "' xStart='0' yStart='0' xEnd='100' yEnd='0' thickness='10' height='250'/>";
+  xml += "</home>";
+  const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "huge.Home.xml");
+  ASSERT_FALSE(imported.ok());
+  EXPECT_NE(imported.error().find("huge.Home.xml: 1000001 <wall> and 0 <doorOrWindow> elements; "
+                                  "a plan may hold at most 1000000 of each kind"),
+            std::string::npos)
+      << imported.error();
+}
+
 TEST(HostileInput, Sh3dHomeSpreadBeyondAnySiteIsRefused) {
   // Found by fuzz_sh3d_xml (fuzz/corpus/sh3d_xml/crash-site-cells.Home.xml): the cell count of
   // a site 3.5e115 m wide overflowed its integer.

@@ -7,6 +7,7 @@
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
 #include "modeling/plan.h"
+#include "support/solid_tolerance.h"
 
 namespace roomcad::test {
 
@@ -25,16 +26,15 @@ Plan transformed(const Plan& plan, double degrees, double dx, double dy);
 /// Build options for one path and thread count.
 BuildOptions options_for(BooleanPath path, int threads = 0);
 
-/// Area of the faces of each kind.
-std::map<FaceKind, double> area_by_kind(const SolidMesh& mesh);
-
 /// Builds the walls on one path and checks them: closed, 2-manifold, no self-intersection,
-/// no degenerate face, outward; volume equal to the analytic volume within 1e-9 relative
-/// and to `expected_volume` (if positive) too; genus as given. @return the check.
+/// no degenerate face, outward; volume equal to the analytic volume within volume_tolerance
+/// (1e-9 relative away from huge coordinates) and to `expected_volume` (if positive) within
+/// 1e-9 relative; genus as given. @return the check.
 SolidCheck expect_valid_walls(const Plan& plan, BooleanPath path, long genus,
                               double expected_volume = 0.0);
 
-/// Builds both paths, checks both, and expects the same volume and area of each face kind.
+/// Builds both paths, checks both, and expects the same volume and area of each face kind
+/// (within 1e-9 relative plus what vertex_rounding allows).
 void expect_paths_agree(const Plan& plan, long genus, double expected_volume = 0.0);
 
 }  // namespace roomcad::test

@@ -1,6 +1,8 @@
 // Test meshes and the CGAL AABB-tree ray caster used as the exact reference.
 #include "scene_support.h"
 
+#include <cmath>
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -130,6 +132,12 @@ bool is_uniform_around(const std::vector<int>& values, int width, int height, in
     for (int xx = std::max(0, x - radius); xx <= std::min(width - 1, x + radius); ++xx)
       if (values[static_cast<std::size_t>(yy) * width + xx] != v) return false;
   return true;
+}
+
+int count_bad_depths(const FloatImage& depth) {
+  int bad = 0;
+  for (const float d : depth.values) bad += !(std::isfinite(d) && d >= 0.0f);
+  return bad;
 }
 
 }  // namespace roomcad::test

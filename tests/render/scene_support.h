@@ -10,6 +10,7 @@
 
 #include "modeling/solid_mesh.h"
 #include "render/camera.h"
+#include "render/image.h"
 
 namespace roomcad::test {
 
@@ -64,5 +65,8 @@ struct PixelRay {
 /// @return true when every pixel within `radius` (Chebyshev) of (x, y) has the same value.
 [[nodiscard]] bool is_uniform_around(const std::vector<int>& values, int width, int height, int x,
                                      int y, int radius);
+
+/// @return how many depth values are NaN, infinite or negative (0 means nothing drawn there).
+[[nodiscard]] int count_bad_depths(const FloatImage& depth);
 
 }  // namespace roomcad::test

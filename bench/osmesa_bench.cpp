@@ -74,7 +74,9 @@ void load_camera(const Scene& scene) {
                                                                  cam.target.z);
   const double far = glm::length(eye - target) + glm::length(scene.bounds.max - scene.bounds.min);
   const glm::mat4 projection = glm::perspective(glm::radians(cam.fov_deg), aspect, 0.05, far);
-  const glm::mat4 view = glm::lookAt(eye, target, glm::dvec3(0, 0, 1));
+  // The scene's corners are relative to its origin (scene.h).
+  const glm::mat4 view =
+      glm::translate(glm::lookAt(eye, target, glm::dvec3(0, 0, 1)), scene.origin);
   glMatrixMode(GL_PROJECTION);
   glLoadMatrixf(glm::value_ptr(projection));
   glMatrixMode(GL_MODELVIEW);

@@ -78,7 +78,8 @@ void render_frames(benchmark::State& state, const BenchScene* s, FaceCull cull) 
 /// The pre-pass alone, with its work counts (independent of the machine's load).
 void run_pre_pass(benchmark::State& state, const BenchScene* s) {
   const RenderOptions options = frame_options(*s, FaceCull::visibility);
-  const VisibilityView view{frame_camera(s->scene, options), options.width, options.height};
+  const VisibilityView view{rebase_camera(frame_camera(s->scene, options), s->scene.origin),
+                            options.width, options.height};
   VisibilityResult r;
   for (auto _ : state) r = find_visible_faces(s->scene, view);
   state.counters["visible"] = static_cast<double>(r.visible_count);

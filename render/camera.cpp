@@ -109,6 +109,14 @@ CameraMatrices make_camera_matrices(const Camera& camera, const Bounds& scene, d
   return m;
 }
 
+CameraMatrices rebase_camera(const CameraMatrices& camera, const glm::dvec3& origin) {
+  CameraMatrices m = camera;
+  m.view = camera.view * glm::translate(glm::dmat4(1.0), origin);
+  m.view_projection = m.projection * m.view;
+  m.eye = camera.eye - origin;
+  return m;
+}
+
 namespace {
 
 /// The view basis of a preset and the perspective half-angle tangents (with a 5% margin).

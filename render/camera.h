@@ -51,6 +51,13 @@ struct CameraMatrices {
 [[nodiscard]] CameraMatrices make_camera_matrices(const Camera& camera, const Bounds& scene,
                                                   double aspect);
 
+/// The same camera for points given relative to `origin` (a scene's frame, scene.h): the view
+/// is moved by `origin` in double, before the pipeline turns it into float, so that float
+/// positions near the scene stay precise however far the scene is from (0, 0, 0). O(1).
+/// @return matrices taking (point - origin); eye relative to origin; forward and projection
+///         unchanged
+[[nodiscard]] CameraMatrices rebase_camera(const CameraMatrices& camera, const glm::dvec3& origin);
+
 /// Frames `scene` from a preset direction: the whole box is in view with a 5% margin.
 /// front looks north (from -y), back south, left east (from -x), right west, top down (north
 /// up), iso from the south-west and above. Keeps `projection` and, for perspective, `fov_deg`.

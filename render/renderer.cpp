@@ -56,8 +56,10 @@ struct FrameContext {
   int ssaa = 1;
 };
 
+/// @param[in] cam     in the scene's frame (rebase_camera)
+/// @param[in] origin  the scene's origin: the grid moves into its frame too
 ShadingUniforms make_uniforms(const RenderOptions& options, const CameraMatrices& cam,
-                              const std::vector<Light>& lights) {
+                              const std::vector<Light>& lights, const glm::dvec3& origin) {
   ShadingUniforms u;
   u.mode = options.shading;
   u.light_count = static_cast<int>(std::min<std::size_t>(lights.size(), kMaxLights));
@@ -66,6 +68,7 @@ ShadingUniforms make_uniforms(const RenderOptions& options, const CameraMatrices
   u.forward = glm::vec3(cam.forward);
   u.orthographic = cam.orthographic;
   u.grid = options.grid;
+  u.grid.origin -= glm::dvec2(origin);
   return u;
 }
 
@@ -166,8 +169,9 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   }
   stats.shadow_ms = ms_since(shadow_start);
   const auto raster_start = Clock::now();
-  const CameraMatrices cam = frame_camera(scene, options);
-  f.shade.shading = make_uniforms(options, cam, lights);
+  // Everything from here on works in the scene's frame, where float keeps its precision.
+  const CameraMatrices cam = rebase_camera(frame_camera(scene, options), scene.origin);
+  f.shade.shading = make_uniforms(options, cam, lights, scene.origin);
   f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
   std::vector<std::uint8_t> seen;
   if (options.cull == FaceCull::visibility) {

@@ -112,7 +112,8 @@ void render_model(const Model& model, const RenderOptions& options, FrameBuffers
 void render_scene(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
                   RenderStats* stats = nullptr);
 
-/// The camera matrices a frame with these options uses (tests cast rays through them).
+/// The camera matrices a frame with these options uses, in world metres (tests cast rays
+/// through them); the renderer draws with rebase_camera(frame_camera(...), scene.origin).
 [[nodiscard]] CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options);
 
 }  // namespace roomcad

@@ -2,6 +2,9 @@
 #include "render/scene.h"
 
 #include <algorithm>
+#include <array>
+#include <utility>
+#include <vector>
 
 #include "modeling/triangulate_face.h"
 
@@ -40,6 +43,17 @@ glm::vec3 to_vec3f(const OpenMesh::Vec3d& p) {
   return {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
 }
 
+/// The centre of the bounding box of the meshes' vertices, or 0 when they have none.
+glm::dvec3 centre_of(const std::vector<std::pair<const SolidMesh*, bool>>& meshes) {
+  Bounds box;
+  for (const auto& entry : meshes)
+    for (const auto vh : entry.first->vertices()) {
+      const OpenMesh::Vec3d& p = entry.first->point(vh);
+      box.add({p[0], p[1], p[2]});
+    }
+  return box.is_empty() ? glm::dvec3(0.0) : (box.min + box.max) / 2.0;
+}
+
 /// Opens a new cluster when the current one is full (or there is none).
 void start_cluster_if_full(Scene& scene) {
   const auto first = static_cast<std::uint32_t>(scene.triangle_count());
@@ -48,13 +62,18 @@ void start_cluster_if_full(Scene& scene) {
   }
 }
 
-void push_triangle(Scene& scene, const std::array<glm::vec3, 3>& corners, const glm::vec3& normal) {
+/// Adds a triangle of world points, stored relative to the scene's origin: the difference is
+/// taken in double, so only the (small) result is rounded to float.
+void push_triangle(Scene& scene, const std::array<OpenMesh::Vec3d, 3>& corners,
+                   const glm::vec3& normal) {
   start_cluster_if_full(scene);
   Cluster& cluster = scene.clusters.back();
-  for (const glm::vec3& c : corners) {
-    scene.corners.push_back(c);
-    cluster.bounds.add(glm::dvec3(c));
-    scene.bounds.add(glm::dvec3(c));
+  for (const OpenMesh::Vec3d& c : corners) {
+    const glm::dvec3 world(c[0], c[1], c[2]);
+    const glm::vec3 local(world - scene.origin);
+    scene.corners.push_back(local);
+    cluster.bounds.add(glm::dvec3(local));
+    scene.bounds.add(world);
   }
   scene.normals.push_back(normal);
   ++cluster.count;
@@ -76,8 +95,7 @@ void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene) {
     const auto triangles = triangulate_face(points, normal);
     const std::size_t before = scene.triangle_count();
     for (const auto& t : triangles) {
-      push_triangle(scene, {to_vec3f(points[t[0]]), to_vec3f(points[t[1]]), to_vec3f(points[t[2]])},
-                    unit);
+      push_triangle(scene, {points[t[0]], points[t[1]], points[t[2]]}, unit);
     }
     const std::size_t added = scene.triangle_count() - before;
     scene.objects.insert(scene.objects.end(), added, props.has_object ? mesh.property(props.object, fh) : -1);
@@ -90,10 +108,13 @@ void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene) {
 }
 
 Scene flatten_model(const Model& model, const Parts& parts) {
+  std::vector<std::pair<const SolidMesh*, bool>> meshes;  // and whether two-sided
+  if (parts.walls) meshes.emplace_back(&model.walls, false);
+  if (parts.floor) meshes.emplace_back(&model.floor, false);
+  if (parts.fixtures) meshes.emplace_back(&model.fixtures, true);
   Scene scene;
-  if (parts.walls) append_mesh(model.walls, false, scene);
-  if (parts.floor) append_mesh(model.floor, false, scene);
-  if (parts.fixtures) append_mesh(model.fixtures, true, scene);
+  scene.origin = centre_of(meshes);
+  for (const auto& [mesh, two_sided] : meshes) append_mesh(*mesh, two_sided, scene);
   return scene;
 }
 

@@ -22,19 +22,24 @@ namespace roomcad {
 struct Cluster {
   std::uint32_t first = 0;
   std::uint32_t count = 0;
-  Bounds bounds;
+  Bounds bounds;  ///< relative to the scene's origin
 };
 
-/// Triangles in world metres (float: positions of rooms within a few km keep ~0.1 mm).
+/// Triangles in metres relative to `origin`, the centre of the model (float: positions within
+/// a few km of it keep ~0.1 mm). Float world coordinates would lose that far from (0, 0): 1e6 m
+/// away a float step is 6 cm, and shadow depths compared in it make acne (stress finding S3).
+/// The renderer moves its cameras and lights' maps into this frame (rebase_camera).
 struct Scene {
-  std::vector<glm::vec3> corners;         ///< 3 per triangle, counter-clockwise from outside
+  std::vector<glm::vec3> corners;         ///< 3 per triangle, counter-clockwise from outside,
+                                          ///< relative to origin
   std::vector<glm::vec3> normals;         ///< 1 per triangle, unit
   std::vector<Color> colors;              ///< 1 per triangle
   std::vector<std::int32_t> objects;      ///< 1 per triangle: index into Model::objects or -1
   std::vector<FaceKind> kinds;            ///< 1 per triangle
   std::vector<std::uint8_t> two_sided;    ///< 1 per triangle: 1 = never back-face culled
   std::vector<Cluster> clusters;          ///< cover all triangles, in order
-  Bounds bounds;                          ///< of all triangles; empty if there are none
+  Bounds bounds;                          ///< of all triangles, world metres; empty if none
+  glm::dvec3 origin{0.0};                 ///< world position of the corners' (0, 0, 0)
 
   [[nodiscard]] std::size_t triangle_count() const { return normals.size(); }
 };
@@ -46,12 +51,14 @@ inline constexpr std::uint32_t kClusterSize = 256;
 /// triangulate_face), triangles keep the face's rc:object, rc:kind and rc:color (defaults when
 /// a property is missing: -1, wall_face, grey). Walls and floor are one-sided (closed solid,
 /// floor seen from above); fixtures are two-sided (thin leaves and panes).
-/// Degenerate faces (zero area, fewer than 3 vertices) are skipped.
+/// Degenerate faces (zero area, fewer than 3 vertices) are skipped. The origin is the centre
+/// of the bounding box of the parts' vertices (0 when there are none).
 /// @return the scene; clusters follow face order, one part after the other. O(n) in corners.
 [[nodiscard]] Scene flatten_model(const Model& model, const Parts& parts = {});
 
 /// Appends one mesh to a scene (what flatten_model does for each part).
-/// @param[in,out] scene   grows; its clusters and bounds are updated
+/// @param[in,out] scene   grows, its corners relative to its origin (set before the first
+///                        append); its clusters and bounds are updated
 void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene);
 
 }  // namespace roomcad

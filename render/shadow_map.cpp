@@ -84,7 +84,10 @@ void detail::render_shadow_map_into(const Scene& scene, const Light& light, int 
   map.to_light = to_shading_light(light).to_light;
   const glm::dvec3 to_light(map.to_light);
   if (scene.bounds.is_empty()) return;
-  const LightFrame frame = fit_light_frame(scene.bounds, to_light);
+  Bounds local = scene.bounds;  // the map looks at the scene's corners, in the scene's frame
+  local.min -= scene.origin;
+  local.max -= scene.origin;
+  const LightFrame frame = fit_light_frame(local, to_light);
   map.light_view_projection = glm::mat4(light_projection(frame) * frame.view);
   map.light_rotation = glm::mat3(glm::dmat3(frame.view));
   map.texel_x = static_cast<float>(2.0 * frame.half_x / resolution);

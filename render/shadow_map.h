@@ -17,7 +17,7 @@ enum class ShadowFilter { off, hard, pcf };
 /// The depth the scene shows a directional light. Depth is reversed (1 nearest the light), as
 /// in the colour pass, so both share the rasteriser.
 struct ShadowMap {
-  glm::mat4 light_view_projection{1.f};  ///< world -> light clip space
+  glm::mat4 light_view_projection{1.f};  ///< scene frame (world - Scene::origin) -> light clip
   FloatImage depth;                      ///< resolution x resolution, 0 where nothing is
   glm::mat3 light_rotation{1.f};         ///< world -> light view directions (z to the light)
   glm::vec3 to_light{0.f, 0.f, 1.f};     ///< unit, from the scene towards the light
@@ -54,7 +54,7 @@ struct ShadowReceiver {
 };
 
 /// @param[in] normal   the surface's unit normal (facing the viewer)
-/// @param[in] corners  the triangle's corners, metres. O(1).
+/// @param[in] corners  the triangle's corners, metres in the scene's frame (Scene::corners). O(1).
 [[nodiscard]] ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal,
                                              const std::array<glm::vec3, 3>& corners);
 

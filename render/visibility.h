@@ -35,7 +35,7 @@ struct VisibilityResult {
 
 /// The picture the pre-pass looks at: the camera and the sample grid.
 struct VisibilityView {
-  CameraMatrices camera;  ///< as the colour pass uses it
+  CameraMatrices camera;  ///< as the colour pass uses it: in the scene's frame (rebase_camera)
   int width = 1;          ///< samples across (output pixels * ssaa), >= 1
   int height = 1;
 };

@@ -10,7 +10,7 @@ namespace {
 
 constexpr Rgb kWireColor{0x18, 0x28, 0x60};
 
-/// The pixel a world point projects to, or nullopt when it is behind the near plane.
+/// The pixel a point projects to, or nullopt when it is behind the near plane.
 std::optional<ScreenPoint> project(const glm::dmat4& view_projection, const glm::vec3& p,
                                    int width, int height) {
   const glm::dvec4 clip = view_projection * glm::dvec4(glm::dvec3(p), 1.0);
@@ -24,10 +24,11 @@ std::optional<ScreenPoint> project(const glm::dmat4& view_projection, const glm:
 }  // namespace
 
 void draw_wireframe(RgbImage& image, const Scene& scene, const CameraMatrices& camera) {
+  const glm::dmat4 view_projection = rebase_camera(camera, scene.origin).view_projection;
   for (std::size_t t = 0; t < scene.triangle_count(); ++t) {
     std::array<std::optional<ScreenPoint>, 3> p;
     for (int i = 0; i < 3; ++i)
-      p[i] = project(camera.view_projection, scene.corners[3 * t + i], image.width, image.height);
+      p[i] = project(view_projection, scene.corners[3 * t + i], image.width, image.height);
     for (int i = 0; i < 3; ++i) {
       const auto& a = p[i];
       const auto& b = p[(i + 1) % 3];

@@ -144,7 +144,7 @@ TEST(Render, PresetsFrameTheWholeScene) {
       const Camera cam = frame_view(scene.bounds, preset, projection, 50.0, 4.0 / 3.0);
       const CameraMatrices m = make_camera_matrices(cam, scene.bounds, 4.0 / 3.0);
       for (const glm::vec3& c : scene.corners) {
-        const glm::dvec4 p = m.view_projection * glm::dvec4(glm::dvec3(c), 1.0);
+        const glm::dvec4 p = m.view_projection * glm::dvec4(scene.origin + glm::dvec3(c), 1.0);
         EXPECT_GT(p.w, 0.0);
         EXPECT_LE(std::abs(p.x / p.w), 1.0);
         EXPECT_LE(std::abs(p.y / p.w), 1.0);

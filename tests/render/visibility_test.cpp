@@ -45,8 +45,9 @@ std::set<std::uint32_t> z_buffer_ids(const Scene& scene, const CameraMatrices& c
 
 /// Checks the pre-pass against the z-buffer. @return visible / shown (1 = equal sets).
 double expect_superset(const Scene& scene, const Camera& camera, int width, int height) {
-  const CameraMatrices cam =
-      make_camera_matrices(camera, scene.bounds, static_cast<double>(width) / height);
+  const CameraMatrices cam = rebase_camera(
+      make_camera_matrices(camera, scene.bounds, static_cast<double>(width) / height),
+      scene.origin);
   const std::set<std::uint32_t> shown = z_buffer_ids(scene, cam, width, height);
   const VisibilityResult v = find_visible_faces(scene, {cam, width, height});
   std::size_t missing = 0;
@@ -149,7 +150,7 @@ TEST(Visibility, LightFindsFacesWhollyInShadow) {
 TEST(Visibility, SameSetAtAnyThreadCount) {
   const Scene grid = grid_scene(3);
   const Camera cam = frame_view(grid.bounds, ViewPreset::iso, Projection::perspective, 50.0, 1.5);
-  const CameraMatrices m = make_camera_matrices(cam, grid.bounds, 1.5);
+  const CameraMatrices m = rebase_camera(make_camera_matrices(cam, grid.bounds, 1.5), grid.origin);
   std::vector<std::uint8_t> one, two;
   tbb::task_arena(1).execute([&] { one = find_visible_faces(grid, {m, 300, 200}).visible; });
   tbb::task_arena(2).execute([&] { two = find_visible_faces(grid, {m, 300, 200}).visible; });

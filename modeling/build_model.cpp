@@ -10,6 +10,7 @@
 #include "modeling/detail/face_soup.h"
 #include "modeling/detail/fast_wall.h"
 #include "modeling/detail/floor_fixtures.h"
+#include "modeling/detail/fuse_seams.h"
 #include "modeling/detail/wall_frame.h"
 #include "modeling/joins.h"
 
@@ -53,6 +54,17 @@ std::vector<FaceSoup> build_items(const Plan& plan, const std::vector<WallFrame>
   return soups;
 }
 
+// Builds the wall items, then fuses the fast path's faces across the seams of its hubs.
+std::vector<FaceSoup> build_walls(const Plan& plan, const std::vector<WallFrame>& frames,
+                                  const detail::Work& work) {
+  std::vector<FaceSoup> soups = build_items(plan, frames, work);
+  std::vector<detail::Hub> hubs;
+  for (const WorkItem& item : work.items)
+    if (item.kind == WorkItem::Kind::hub) hubs.push_back(work.hubs[item.hub]);
+  detail::fuse_seams(soups, detail::find_seam_points(hubs, work.fast_frames));
+  return soups;
+}
+
 void count_paths(const std::vector<WorkItem>& items, BuildStats& stats) {
   for (const WorkItem& item : items)
     (item.kind == WorkItem::Kind::cluster ? stats.cgal_path_walls : stats.fast_path_walls) +=
@@ -74,7 +86,7 @@ Model build_model(const Plan& plan, const BuildOptions& options, BuildStats* sta
   if (options.parts.walls) {
     const detail::Work work = detail::plan_work(frames, joins, options.boolean);
     count_paths(work.items, local);
-    model.walls = detail::assemble_mesh(build_items(plan, frames, work), model.objects);
+    model.walls = detail::assemble_mesh(build_walls(plan, frames, work), model.objects);
   } else {
     add_face_properties(model.walls);
   }

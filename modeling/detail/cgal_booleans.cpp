@@ -12,6 +12,7 @@
 #include "modeling/build_model.h"
 #include "modeling/detail/classify_face.h"
 #include "modeling/detail/exact_wall.h"
+#include "modeling/detail/facet_labels.h"
 #include "modeling/detail/snap_soup.h"
 
 namespace roomcad::detail {
@@ -93,6 +94,7 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
     f.color = label.color;
     soup.push_back(std::move(f));
   }
+  unify_facet_labels(r, soup);
   return soup;
 }
 

@@ -1,0 +1,48 @@
+// The fast path fuses faces across the seams where two collinear walls meet a stem at a hub.
+#include <gtest/gtest.h>
+
+#include "../../bench/grid_plan.h"
+#include "model_support.h"
+
+namespace roomcad {
+namespace {
+
+// Walls a and b collinear along y = 0, meeting stem c at (4, 0): a three-arm hub.
+Plan collinear_tee(Color a_colour, Color b_colour) {
+  Plan plan = test::empty_plan();
+  test::add_wall(plan, "a", {0, 0}, {4, 0}).color = a_colour;
+  test::add_wall(plan, "b", {4, 0}, {8, 0}).color = b_colour;
+  test::add_wall(plan, "c", {4, 0}, {4, 3});
+  test::add_opening(plan, "win", OpeningType::window, "b", 1.0, 1.5, 0.9, 1.0);
+  return plan;
+}
+
+bool has_vertex_at(const SolidMesh& mesh, double x, double y) {
+  for (const auto v : mesh.vertices())
+    if (mesh.point(v)[0] == x && mesh.point(v)[1] == y) return true;
+  return false;
+}
+
+TEST(Modeling, SeamOfCollinearWallsOfOneColourHasNoVertex) {
+  const Color grey{0x80, 0x80, 0x80};
+  const Plan plan = collinear_tee(grey, grey);
+  test::expect_paths_agree(plan, 1, 0.2 * 2.5 * (8 + 2.9) - 0.2 * 1.5 * 1.0);
+  EXPECT_FALSE(has_vertex_at(build_model(plan).walls, 4.0, -0.1));
+}
+
+TEST(Modeling, SeamOfWallsOfTwoColoursKeepsItsVertex) {
+  const Plan plan = collinear_tee({0xe0, 0x80, 0x20}, {0x80, 0x80, 0x80});
+  test::expect_paths_agree(plan, 1, 0.2 * 2.5 * (8 + 2.9) - 0.2 * 1.5 * 1.0);
+  EXPECT_TRUE(has_vertex_at(build_model(plan).walls, 4.0, -0.1));
+}
+
+// The target: no more triangles than CGAL's Nef polyhedra (7,292 for 10 x 10).
+TEST(Modeling, TenByTenGridHasNoMoreTrianglesThanNef) {
+  const Plan plan = bench::make_grid_plan(bench::GridSpec{});
+  const SolidCheck check = check_solid(build_model(plan).walls);
+  EXPECT_TRUE(check.is_valid());
+  EXPECT_LE(check.triangles, 7292u);
+}
+
+}  // namespace
+}  // namespace roomcad

@@ -111,8 +111,8 @@ CGAL::Interval_nt<false> enclose(const mpq_class& q) {
 
 }  // namespace
 
-Radical::Scope::Scope() { radicands().clear(); }
-Radical::Scope::~Scope() { radicands().clear(); }
+Radical::Scope::Scope() : entry_size_(radicands().size()) {}
+Radical::Scope::~Scope() { radicands().resize(entry_size_); }
 
 Radical::Radical(double x) {
   if (x != 0.0) terms_.emplace_back(0, mpq_class(x));

@@ -10,14 +10,15 @@
 // rational arithmetic (at most 3^k sign evaluations for k distinct roots, k <= 6 or so in a
 // plan predicate), with no refinement at all.
 //
-// Radicands are registered per thread in a table that a Radical::Scope clears: values from
-// different scopes must not be mixed. A new radicand whose root is a rational multiple of a
+// Radicands are registered per thread in a table that a Radical::Scope trims on exit: values
+// must not outlive their scope. A new radicand whose root is a rational multiple of a
 // product of earlier roots is written as that product, so the representation is canonical
 // (zero has no terms) and every non-zero value can be inverted.
 #pragma once
 
 #include <gmpxx.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -26,13 +27,17 @@ namespace roomcad::exact {
 
 class Radical {
  public:
-  /// Clears the thread's radicand table on entry and exit; values live inside one scope.
+  /// Drops on exit the radicands registered since entry: values made inside a scope must
+  /// not outlive it. Scopes nest.
   class Scope {
    public:
     Scope();
     ~Scope();
     Scope(const Scope&) = delete;
     Scope& operator=(const Scope&) = delete;
+
+   private:
+    std::size_t entry_size_;
   };
 
   Radical() = default;

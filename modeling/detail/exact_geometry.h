@@ -2,9 +2,11 @@
 //
 // A predicate is written once as a generic lambda over a number type NT and evaluated first
 // in interval arithmetic; only when the intervals cannot decide (the shapes touch or nearly
-// touch) is it evaluated again in CORE::Expr, which is exact for + - * / and sqrt. So wall
-// corners, which involve the square root of a wall's squared length, are compared exactly
-// for the coordinates as read at the cost of double arithmetic in all but touching cases.
+// touch) is it evaluated again in Radical (radical.h), which is exact for + - * / and the
+// square roots of rationals and decides signs in a bounded number of rational operations.
+// So wall corners, which involve the square root of a wall's squared length, are compared
+// exactly for the coordinates as read at the cost of double arithmetic in all but touching
+// cases, and never for long (CORE::Expr, used before, took minutes near degenerate shapes).
 // This header includes CGAL: include it only from the few detail/*.cpp files that need it.
 #pragma once
 
@@ -12,16 +14,16 @@
 #include <cmath>
 #include <cstddef>
 
-#include <CGAL/CORE_Expr.h>
 #include <CGAL/Interval_nt.h>
 
+#include "modeling/detail/radical.h"
 #include "modeling/joins.h"
 #include "modeling/plan.h"
 
 namespace roomcad::exact {
 
 using Approx = CGAL::Interval_nt<false>;  ///< needs upward rounding: see decide()
-using Exact = CORE::Expr;
+using Exact = Radical;
 
 template <class NT>
 struct Pt {
@@ -54,18 +56,18 @@ NT cross(const Pt<NT>& a, const Pt<NT>& b) {
   return a.x * b.y - a.y * b.x;
 }
 
-/// Turns off CORE's own floating-point filter, once: it only runs after our interval filter
-/// has failed (so it would fail too), and on a divisor whose double value is 0 it writes a
-/// warning to a file "Core_Diagnostics" in the working directory.
-inline void prepare_exact() {
-  static const bool prepared = (CORE::setFpFilterFlag(false), true);
-  (void)prepared;
+/// @return sqrt(x) in any of the number types here (CGAL's for doubles and intervals).
+template <class NT>
+NT root(const NT& x) {
+  using CGAL::sqrt;
+  return sqrt(x);
 }
 
-/// Evaluates `predicate(NT{})` exactly: in intervals first, in CORE::Expr if they cannot decide.
+/// Evaluates `predicate(NT{})` exactly: in intervals first, in Radical if they cannot decide.
 /// @param predicate  generic callable taking a number-type tag and returning a truth value
 ///                   (bool, or CGAL::Uncertain<bool> for intervals).
-/// @return the exact verdict. Cost: a few double operations unless the case is degenerate.
+/// @return the exact verdict. Cost: a few double operations unless the case is degenerate;
+///         then rational arithmetic bounded by the number of distinct roots (see radical.h).
 template <class Predicate>
 bool decide(Predicate&& predicate) {
   {
@@ -76,7 +78,7 @@ bool decide(Predicate&& predicate) {
       // The intervals straddle the decision: fall through to exact arithmetic.
     }
   }
-  prepare_exact();
+  const Exact::Scope scope;
   return static_cast<bool>(predicate(Exact{}));
 }
 
@@ -85,7 +87,7 @@ bool decide(Predicate&& predicate) {
 template <class NT>
 Pt<NT> scaled_left_normal(const Pt<NT>& a, const Pt<NT>& b, const NT& half) {
   const Pt<NT> d = b - a;
-  const NT scale = half / CGAL::sqrt(dot(d, d));
+  const NT scale = half / root(dot(d, d));
   return {-d.y * scale, d.x * scale};
 }
 
@@ -134,7 +136,7 @@ Pt<NT> wall_corner(const Plan& plan, const Joins& joins, std::size_t w, WallEnd 
   // cross product of the two directions evaluated in doubles: when it rounds to 0 the walls
   // are within an ulp of collinear, the true mitre lies within ~1e-16 of the thickness of
   // the square end, and constructing it would divide by a number whose double value is 0
-  // (CORE then writes warnings to a file in the working directory). Every number type
+  // (an interval holding 0, or an exact 0). Every number type
   // takes the same branch, so the footprint is one well-defined shape.
   const Wall& a = plan.walls[w];
   const Wall& b = plan.walls[*partner];
@@ -152,8 +154,5 @@ std::array<Pt<NT>, 4> wall_corners(const Plan& plan, const Joins& joins, std::si
           wall_corner<NT>(plan, joins, w, WallEnd::to, 1),
           wall_corner<NT>(plan, joins, w, WallEnd::from, 1)};
 }
-
-/// @return the double nearest to x (ties to the lower). Exact comparisons with CORE.
-double round_to_nearest(const Exact& x);
 
 }  // namespace roomcad::exact

@@ -1,4 +1,4 @@
-// wall_footprint: mitred corners constructed exactly (CORE::Expr), then rounded to nearest.
+// wall_footprint: mitred corners constructed exactly (exact::Radical), then rounded to nearest.
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -7,25 +7,6 @@
 #include "modeling/joins.h"
 
 namespace roomcad {
-namespace exact {
-
-double round_to_nearest(const Exact& x) {
-  const std::pair<double, double> bounds = CGAL::to_interval(x);
-  if (bounds.first == bounds.second) return bounds.first;
-  // The enclosing interval is a few ulps wide: walk its doubles upward and keep the last
-  // one whose midpoint with its predecessor lies below x. Every comparison is exact.
-  double best = bounds.first;
-  for (int step = 0; step < 64 && best < bounds.second; ++step) {
-    const double next = std::nextafter(best, std::numeric_limits<double>::infinity());
-    const Exact midpoint = (Exact(best) + Exact(next)) / Exact(2);
-    if (!(x > midpoint)) return best;
-    best = next;
-  }
-  return best;
-}
-
-}  // namespace exact
-
 namespace {
 
 /// Corners that interval arithmetic pins to single doubles (axis-aligned walls, mostly) are
@@ -50,7 +31,7 @@ std::optional<std::array<Point2, 4>> find_exact_corners_fast(const Plan& plan, c
 
 std::array<Point2, 4> wall_footprint(const Plan& plan, const Joins& joins, std::size_t wall) {
   if (const auto fast = find_exact_corners_fast(plan, joins, wall)) return *fast;
-  exact::prepare_exact();
+  const exact::Exact::Scope scope;
   const std::array<exact::Pt<exact::Exact>, 4> corners =
       exact::wall_corners<exact::Exact>(plan, joins, wall);
   std::array<Point2, 4> out;

@@ -6,6 +6,7 @@
 // point is off by a few of those, so the margin is about 50 times the motion's error (see
 // Frame in plan_cases.h). Touching is exact only where the motion is (dyadic offsets, no turn).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
 #include "margin_cases.h"
@@ -49,6 +50,37 @@ TEST(NumericalStress, TouchingIsExactUpToSeventeenThousandKilometres) {
         SCOPED_TRACE(describe(c, thickness, f));
         EXPECT_EQ(error_codes(validate(f.apply(c.build(0)), no_rooms())), Codes{});
       }
+}
+
+/// The room of tests/modeling/numerical_stress_test.cpp's flush_openings_plan, walls 0.2 m
+/// thick: a 5 x 4 m mitred ring whose window "corner" ends `e` metres past the inner face of
+/// the mitred corner at (0, 4) (e = 0: flush), and a free wall with openings at its ends.
+Plan flush_corner_plan(double e) {
+  const double t = 0.2;
+  const Point2 c[4] = {{0, 0}, {5, 0}, {5, 4}, {0, 4}};
+  std::vector<Wall> walls;
+  for (int k = 0; k < 4; ++k) walls.push_back(make_wall(fmt::format("r{}", k), c[k], c[(k + 1) % 4], t));
+  walls.push_back(make_wall("free", {7, 0}, {10, 0}, t));
+  const auto window = OpeningType::window;
+  return plan_with(walls, {make_opening("door", OpeningType::door, "r0", 1.0, 0.9, 2.1, 0.0),
+                           make_opening("inside", window, "r1", 1.0, 1.2, 1.2, 0.9),
+                           make_opening("corner", window, "r2", 5 - t / 2 - 1.0 + e, 1.0, 1.0, 0.9),
+                           make_opening("top", window, "r3", 1.0, 1.0, 1.0, 1.5),
+                           make_opening("end-door", OpeningType::door, "free", 0.0, 0.9, 2.1, 0.0),
+                           make_opening("end-top", window, "free", 2.0, 1.0, 1.0, 1.5)});
+}
+
+TEST(NumericalStress, WindowFlushWithAMitredCornerTurnedFarAwayIsDecided) {
+  // Finding S2 (docs/stress-findings.md): with exact square roots refined to their
+  // separation bound, this validate() ran for more than 8 minutes. Flush, turned by 1e-9
+  // degrees, the window ends within an ulp of the corner: either verdict is exact for the
+  // coordinates as rounded, but it must come. 1e-7 m either side decides as expected.
+  const Frame f{1e-9, {1e6, -1e6}};
+  const Codes flush = error_codes(validate(f.apply(flush_corner_plan(0)), no_rooms()));
+  EXPECT_TRUE(flush.empty() || flush == Codes{"opening_blocked"}) << fmt::format("{}", fmt::join(flush, ", "));
+  EXPECT_EQ(error_codes(validate(f.apply(flush_corner_plan(kMargin)), no_rooms())),
+            Codes{"opening_blocked"});
+  EXPECT_EQ(error_codes(validate(f.apply(flush_corner_plan(-kMargin)), no_rooms())), Codes{});
 }
 
 /// A wall of thickness `t` whose footprint's south side lies `e` metres south of the site's

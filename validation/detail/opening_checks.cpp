@@ -52,7 +52,7 @@ std::vector<Misfit> find_misfits(const Wall& w, const Opening& o) {
   const bool ends_in = exact::decide([&](auto tag) {
     using NT = decltype(tag);
     const exact::Pt<NT> d = exact::to_pt<NT>(w.to) - exact::to_pt<NT>(w.from);
-    return NT(o.offset) + NT(o.width) <= CGAL::sqrt(exact::dot(d, d));
+    return NT(o.offset) + NT(o.width) <= exact::root(exact::dot(d, d));
   });
   const bool top_in = exact::decide([&](auto tag) {
     using NT = decltype(tag);

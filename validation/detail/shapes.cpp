@@ -10,7 +10,7 @@ namespace {
 Quad<exact::Approx> enclose(const Quad<exact::Exact>& q) {
   Quad<exact::Approx> out;
   for (std::size_t i = 0; i < 4; ++i)
-    out[i] = {exact::Approx(CGAL::to_interval(q[i].x)), exact::Approx(CGAL::to_interval(q[i].y))};
+    out[i] = {exact::Approx(to_interval(q[i].x)), exact::Approx(to_interval(q[i].y))};
   return out;
 }
 
@@ -39,8 +39,12 @@ Footprints::Footprints(const Plan& plan, const Joins& joins, const std::vector<b
         // A mitre whose walls are nearly parallel: the box comes from exact corners below.
       }
     }
-    boxes_.push_back(approx_[w] ? box_of(*approx_[w], w)
-                                : box_of(enclose(exact::wall_corners<exact::Exact>(plan, joins, w)), w));
+    if (approx_[w]) {
+      boxes_.push_back(box_of(*approx_[w], w));
+    } else {
+      const exact::Exact::Scope scope;
+      boxes_.push_back(box_of(enclose(exact::wall_corners<exact::Exact>(plan, joins, w)), w));
+    }
   }
 }
 

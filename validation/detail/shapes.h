@@ -53,7 +53,7 @@ template <class NT>
 Quad<NT> hole_corners(const Wall& w, const Opening& o) {
   const exact::WallLine<NT> line = exact::wall_line<NT>(w);
   const exact::Pt<NT> d = line.to - line.from;
-  const NT length = CGAL::sqrt(exact::dot(d, d));
+  const NT length = exact::root(exact::dot(d, d));
   const exact::Pt<NT> start = line.from + (NT(o.offset) / length) * d;
   const exact::Pt<NT> end = line.from + ((NT(o.offset) + NT(o.width)) / length) * d;
   return {start - line.half_normal, end - line.half_normal, end + line.half_normal,

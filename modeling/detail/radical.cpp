@@ -1,0 +1,204 @@
+// Radical: exact sums of rational multiples of products of square roots (see radical.h).
+#include "modeling/detail/radical.h"
+
+#include <CGAL/Interval_nt.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+namespace roomcad::exact {
+namespace {
+
+using Terms = std::vector<std::pair<std::uint64_t, mpq_class>>;
+
+/// The radicands of the current scope; bit i of a mask stands for sqrt(radicands()[i]).
+std::vector<mpq_class>& radicands() {
+  thread_local std::vector<mpq_class> table;
+  return table;
+}
+
+/// More roots than any plan predicate uses (at most two footprints of three walls each):
+/// the subset search in register_root is 2^k.
+constexpr std::size_t kMaxRoots = 16;
+
+/// @return c * prod_{i in common} s_i: what sqrt factors shared by two multiplied terms give.
+mpq_class with_squares(mpq_class c, std::uint64_t common) {
+  for (std::size_t i = 0; common != 0; ++i, common >>= 1)
+    if (common & 1) c *= radicands()[i];
+  return c;
+}
+
+Terms combine(const Terms& a, const Terms& b, int b_sign) {
+  std::map<std::uint64_t, mpq_class> sum;
+  for (const auto& [m, c] : a) sum[m] += c;
+  for (const auto& [m, c] : b) sum[m] += b_sign * c;
+  Terms out;
+  for (auto& [m, c] : sum)
+    if (sgn(c) != 0) out.emplace_back(m, std::move(c));
+  return out;
+}
+
+Terms multiply(const Terms& a, const Terms& b) {
+  std::map<std::uint64_t, mpq_class> product;
+  for (const auto& [ma, ca] : a)
+    for (const auto& [mb, cb] : b) product[ma ^ mb] += with_squares(ca * cb, ma & mb);
+  Terms out;
+  for (auto& [m, c] : product)
+    if (sgn(c) != 0) out.emplace_back(m, std::move(c));
+  return out;
+}
+
+/// Splits x = low + high * sqrt(s_k) on its highest root k. @return k, or -1 if x is rational.
+int split(const Terms& x, Terms& low, Terms& high) {
+  std::uint64_t all = 0;
+  for (const auto& term : x) all |= term.first;
+  if (all == 0) return -1;
+  const int k = 63 - std::countl_zero(all);
+  const std::uint64_t bit = std::uint64_t{1} << k;
+  for (const auto& [m, c] : x) (m & bit ? high : low).emplace_back(m & ~bit, c);
+  return k;
+}
+
+/// sign(a + b sqrt(s)) from sign(a), sign(b) and, when they differ, sign(a^2 - b^2 s).
+int sign_of(const Terms& x) {
+  Terms low, high;
+  const int k = split(x, low, high);
+  if (k < 0) return x.empty() ? 0 : sgn(x.front().second);
+  const int sa = sign_of(low), sb = sign_of(high);
+  if (sb == 0 || sa == sb) return sa == 0 ? sb : sa;
+  if (sa == 0) return sb;
+  const Terms s{{0, radicands()[static_cast<std::size_t>(k)]}};
+  return sa * sign_of(combine(multiply(low, low), multiply(multiply(high, high), s), -1));
+}
+
+/// @return 1 / x. @pre x != 0. Multiplies by the conjugate over the highest root, whose norm
+/// a^2 - b^2 s is non-zero because the roots are independent (see register_root).
+Terms invert(const Terms& x) {
+  Terms low, high;
+  const int k = split(x, low, high);
+  if (k < 0) {
+    if (x.empty()) throw std::domain_error("Radical: division by zero");
+    return {{0, 1 / x.front().second}};
+  }
+  const std::uint64_t bit = std::uint64_t{1} << k;
+  const Terms s{{0, radicands()[static_cast<std::size_t>(k)]}};
+  Terms conjugate = low;
+  for (const auto& [m, c] : high) conjugate.emplace_back(m | bit, -c);
+  const Terms norm = combine(multiply(low, low), multiply(multiply(high, high), s), -1);
+  return multiply(combine(conjugate, {}, 1), invert(norm));
+}
+
+bool is_square(const mpq_class& q) {
+  return sgn(q) >= 0 && mpz_perfect_square_p(q.get_num_mpz_t()) != 0 &&
+         mpz_perfect_square_p(q.get_den_mpz_t()) != 0;
+}
+
+mpq_class square_root(const mpq_class& q) {
+  mpz_class n, d;
+  mpz_sqrt(n.get_mpz_t(), q.get_num_mpz_t());
+  mpz_sqrt(d.get_mpz_t(), q.get_den_mpz_t());
+  return mpq_class(n, d);
+}
+
+/// Interval holding q: its double truncated toward zero, widened by an ulp each way.
+CGAL::Interval_nt<false> enclose(const mpq_class& q) {
+  const double d = q.get_d();
+  return {std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL)};
+}
+
+}  // namespace
+
+Radical::Scope::Scope() : entry_size_(radicands().size()) {}
+Radical::Scope::~Scope() { radicands().resize(entry_size_); }
+
+Radical::Radical(double x) {
+  if (x != 0.0) terms_.emplace_back(0, mpq_class(x));
+}
+
+Radical Radical::from_terms(Terms terms) {
+  Radical r;
+  r.terms_ = std::move(terms);
+  return r;
+}
+
+Radical scaled_root(const mpq_class& c, Radical::Mask m) { return Radical::from_terms({{m, c}}); }
+
+Radical operator+(const Radical& a, const Radical& b) {
+  return Radical::from_terms(combine(a.terms_, b.terms_, 1));
+}
+Radical operator-(const Radical& a, const Radical& b) {
+  return Radical::from_terms(combine(a.terms_, b.terms_, -1));
+}
+Radical operator*(const Radical& a, const Radical& b) {
+  return Radical::from_terms(multiply(a.terms_, b.terms_));
+}
+Radical operator/(const Radical& a, const Radical& b) {
+  return Radical::from_terms(multiply(a.terms_, invert(b.terms_)));
+}
+Radical Radical::operator-() const { return from_terms(combine({}, terms_, -1)); }
+
+int sign(const Radical& x) { return sign_of(x.terms_); }
+
+/// sqrt(s) = q / sqrt(prod P) = (q / prod P) * prod_{i in P} sqrt(s_i) when s * prod P = q^2
+/// for a subset P of the registered radicands (P empty: s is a square); otherwise s is new.
+Radical sqrt(const Radical& x) {
+  if (x.terms_.empty()) return {};
+  if (x.terms_.size() != 1 || x.terms_.front().first != 0 || sgn(x.terms_.front().second) < 0)
+    throw std::domain_error("Radical: square root of a negative or irrational number");
+  const mpq_class& s = x.terms_.front().second;
+  std::vector<mpq_class>& table = radicands();
+  for (Radical::Mask p = 0; p < (Radical::Mask{1} << table.size()); ++p) {
+    const mpq_class product = with_squares(s, p);
+    if (is_square(product)) return scaled_root(square_root(product) / with_squares(1, p), p);
+  }
+  if (table.size() == kMaxRoots) throw std::length_error("Radical: too many distinct roots");
+  table.push_back(s);
+  return scaled_root(1, Radical::Mask{1} << (table.size() - 1));
+}
+
+std::pair<double, double> to_interval(const Radical& x) {
+  using I = CGAL::Interval_nt<false>;
+  CGAL::Protect_FPU_rounding<true> upward;
+  I sum(0);
+  for (const auto& [m, c] : x.terms_) {
+    I term = enclose(c);
+    for (std::size_t i = 0; (m >> i) != 0; ++i)
+      if ((m >> i) & 1) term *= CGAL::sqrt(enclose(radicands()[i]));
+    sum += term;
+  }
+  return {sum.inf(), sum.sup()};
+}
+
+namespace {
+
+/// Doubles in order as integers (negative ones mirrored), so that a bisection can walk them.
+std::int64_t order_key(double d) {
+  const auto bits = std::bit_cast<std::int64_t>(d);
+  return bits >= 0 ? bits : -(bits & std::numeric_limits<std::int64_t>::max());
+}
+double from_order_key(std::int64_t k) {
+  return k >= 0 ? std::bit_cast<double>(k)
+                : std::bit_cast<double>((-k) | std::numeric_limits<std::int64_t>::min());
+}
+
+}  // namespace
+
+double round_to_nearest(const Radical& x) {
+  const auto [inf, sup] = to_interval(x);
+  // Bisect for the largest double <= x between the bounds: at most 64 exact comparisons.
+  std::int64_t lo = order_key(inf), hi = order_key(sup);
+  while (lo < hi) {
+    const std::int64_t mid = lo + (hi - lo + 1) / 2;
+    if (Radical(from_order_key(mid)) <= x) lo = mid;
+    else hi = mid - 1;
+  }
+  const double below = from_order_key(lo);
+  if (Radical(below) == x) return below;
+  const double above = from_order_key(lo + 1);
+  return x > (Radical(below) + Radical(above)) / Radical(2) ? above : below;
+}
+
+}  // namespace roomcad::exact

@@ -33,11 +33,19 @@ inline EK::Point_2 exact_side_point(const WallFrame& f, const Point2& a, const P
 }
 
 /// @return the footprint of a hole through the full thickness, counter-clockwise: its
-///         corners lie exactly on the wall's side lines, at u0 and u1.
+///         corners lie exactly on the wall's side lines, at u0 and u1. A hole that reaches a
+///         capped end (u0 = 0 or u1 = length: a notch) takes that end's cap corners instead:
+///         the cap's rounded corners lie at u = 0 (or length) only within rounding, so the
+///         point at u0 could fall a hair inside the wall and leave a sliver that no mesh in
+///         doubles can hold (random-plan finding S4). Cost: O(1) exact operations.
 inline std::array<EK::Point_2, 4> exact_hole_footprint(const WallFrame& f, const Hole& h) {
   const auto& q = f.footprint;
-  return {exact_side_point(f, q[0], q[1], h.u0), exact_side_point(f, q[0], q[1], h.u1),
-          exact_side_point(f, q[3], q[2], h.u1), exact_side_point(f, q[3], q[2], h.u0)};
+  const bool from_cap = !f.capless[0] && h.u0 <= 0.0, to_cap = !f.capless[1] && h.u1 >= f.length;
+  auto exact = [](const Point2& p) { return EK::Point_2(p.x, p.y); };
+  return {from_cap ? exact(q[0]) : exact_side_point(f, q[0], q[1], h.u0),
+          to_cap ? exact(q[1]) : exact_side_point(f, q[0], q[1], h.u1),
+          to_cap ? exact(q[2]) : exact_side_point(f, q[3], q[2], h.u1),
+          from_cap ? exact(q[3]) : exact_side_point(f, q[3], q[2], h.u0)};
 }
 
 /// @return x rounded to the nearest double (ties to even), so exact points are written as

@@ -85,13 +85,7 @@ TEST(NumericalStress, FlushOpeningsTurnedAndFarAwayAreClosedWithTheAnalyticVolum
       // Flush with a far end is not exact once turned (the length is a square root).
       Plan plan = flush_openings_plan(t);
       std::erase_if(plan.openings, [](const Opening& o) { return o.id == "corner" || o.id == "end-top"; });
-      plan = test::transformed(plan, p.degrees, p.dx, p.dy);
-      // Known failure S1 (docs/stress-findings.md): turned a hair off an axis (1e-9 degrees
-      // at the origin, 89.9999999 degrees anywhere) the CGAL path's solid, rounded to
-      // doubles, self-intersects. The fast path is checked in every placement.
-      const bool s1 = p.degrees == 89.9999999 || (p.degrees == 1e-9 && p.dx == 0.0);
-      if (s1) test::expect_valid_walls(plan, BooleanPath::automatic, 2);
-      else test::expect_paths_agree(plan, 2);
+      test::expect_paths_agree(test::transformed(plan, p.degrees, p.dx, p.dy), 2);
     }
 }
 

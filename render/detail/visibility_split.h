@@ -33,7 +33,7 @@ struct FlatTriangle {
 
 /// Sets FlatTriangle::group and ::boundary: two triangles with an edge of the same two
 /// projected corners (bit for bit: the scene's shared vertices) and the same depth plane
-/// (within 1e-6 relative) are one group and that edge is not a boundary. Deterministic.
+/// (within 1e-5 relative) are one group and that edge is not a boundary. Deterministic.
 /// O(n log n).
 void group_coplanar(std::vector<FlatTriangle>& triangles);
 

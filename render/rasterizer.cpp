@@ -205,6 +205,26 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
   }
 }
 
+std::optional<float> depth_at_pixel(const ScreenTriangle& t, int px, int py, int x0, int y0) {
+  const auto min_x = std::min({t.x[0], t.x[1], t.x[2]});
+  const auto min_y = std::min({t.y[0], t.y[1], t.y[2]});
+  // rasterize_triangle's box start and edge walks from it, so the depth rounds the same way
+  const std::int64_t x_begin = std::max<std::int64_t>(x0, first_centre(min_x));
+  const std::int64_t y_begin = std::max<std::int64_t>(y0, first_centre(min_y));
+  if (px < x_begin || py < y_begin) return std::nullopt;
+  const std::int64_t sx = x_begin * kSubpixelScale + kHalfPixel;
+  const std::int64_t sy = y_begin * kSubpixelScale + kHalfPixel;
+  const std::array<EdgeWalk, 3> e{walk_edge(t, 0, sx, sy), walk_edge(t, 1, sx, sy),
+                                  walk_edge(t, 2, sx, sy)};
+  const std::int64_t i = px - x_begin, j = py - y_begin;
+  for (const EdgeWalk& w : e) {
+    if (w.at_start + i * w.step_x + j * w.step_y < 0) return std::nullopt;
+  }
+  const DepthPlane plane = depth_plane(t, e);
+  const float row_z = static_cast<float>(plane.start + static_cast<double>(j) * plane.dy);
+  return row_z + static_cast<float>(i) * static_cast<float>(plane.dx);
+}
+
 BarycentricPlanes barycentric_planes(const ScreenTriangle& t) {
   BarycentricPlanes p;
   for (int k = 0; k < 3; ++k) {  // edge function k over pixels, divided by corner k's w

@@ -66,6 +66,14 @@ struct RasterTarget {
 /// the first triangle drawn stays). O(pixels of the triangle's box within the target).
 void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target);
 
+/// The depth rasterize_triangle writes at one pixel, bit for bit: the same coverage (top-left
+/// rule) and the same float rounding, which depends on where the rasterised box starts, that
+/// is on the target's corner (x0, y0) (a tile's). Used to decide visibility exactly as the
+/// z-buffer does without drawing.
+/// @return the depth, or nullopt if the triangle does not cover the pixel's centre. O(1).
+[[nodiscard]] std::optional<float> depth_at_pixel(const ScreenTriangle& t, int px, int py,
+                                                  int x0, int y0);
+
 /// The perspective-correct weights of a screen triangle's scene triangle as planes over the
 /// screen: each sample then costs six multiply-adds and a division. Double precision.
 struct BarycentricPlanes {

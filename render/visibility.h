@@ -8,8 +8,9 @@
 // crossing to crossing (a triangle enters at one crossing and leaves at the other) and take its
 // nearest as the face seen there; stop splitting when the whole contour sees one face (or
 // none) and no triangle lies wholly inside, or when no pixel centre is left inside the region.
-// Every pixel centre lies on some line, so every face the z-buffer shows is found (ties in
-// depth and the rasteriser's rounding are covered by small tolerances: the set is a superset).
+// Every sample centre lies on some line or inside a region where splitting stopped, and each
+// is decided as the z-buffer decides it (the rasteriser's own screen triangles, coverage and
+// float depth), so the set is exactly the triangles the z-buffer shows.
 #pragma once
 
 #include <cstddef>
@@ -28,7 +29,6 @@ struct VisibilityResult {
   std::vector<std::uint8_t> visible;  ///< per scene triangle: 1 seen somewhere, 0 never
   std::size_t visible_count = 0;
   std::size_t front_facing = 0;  ///< triangles left after back-face culling
-  std::size_t near_clipped = 0;  ///< crossing the near plane: kept as visible, not split
   std::size_t regions = 0;       ///< regions examined
   std::size_t crossings = 0;     ///< line-triangle crossings computed
 };
@@ -38,12 +38,13 @@ struct VisibilityView {
   CameraMatrices camera;  ///< as the colour pass uses it: in the scene's frame (rebase_camera)
   int width = 1;          ///< samples across (output pixels * ssaa), >= 1
   int height = 1;
+  int tile_size = 128;  ///< the rasteriser's tiles (the renderer's): float depth rounds per tile
 };
 
 /// Finds the triangles visible in a view.
 /// @pre view.width, view.height in 1 .. 2^20
-/// @return per triangle whether it is seen; a superset of the triangle ids the rasteriser's id
-///         buffer shows at the same sample grid. Deterministic; parallel over regions.
+/// @return per triangle whether it is seen: the triangle ids the rasteriser's id buffer shows
+///         at the same sample grid and tile size. Deterministic; parallel over regions.
 /// Cost: O(T log T) per splitting line for the T triangles overlapping its region; regions
 ///       stop early where one face covers them, so the total follows the length of the
 ///       projected edges in pixels rather than the pixel count.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <tbb/parallel_invoke.h>
 
@@ -13,8 +14,6 @@ namespace {
 /// Triangles reach this far beyond their edges (samples): covers the rasteriser's float
 /// vertices and fixed-point rounding, so that no sample it draws is missed.
 constexpr double kCoverSlack = 1e-3;
-/// Depths this close (relative) are a tie: both faces count as seen.
-constexpr double kDepthTie = 1e-5;
 /// Regions with fewer candidates than this are split on one thread.
 constexpr std::size_t kParallelGrain = 256;
 
@@ -33,6 +32,7 @@ struct Region {
 
 struct Context {
   const std::vector<FlatTriangle>& triangles;
+  SampleGrid grid;
   std::vector<std::atomic<std::uint8_t>>& visible;
   SplitCounters& counters;
 };
@@ -67,9 +67,9 @@ bool line_interval(const FlatTriangle& t, bool horizontal, double c, double& lo,
   return lo <= hi;
 }
 
-/// Marks the nearest of the active triangles at the point (and those tied with it).
-/// @return the face seen, or -1.
-std::int64_t mark_front(const Context& cx, const std::vector<std::uint32_t>& active, double x,
+/// The nearest of the active triangles at a point by their depth planes: the face a contour
+/// sees there (used to decide where splitting stops, never to mark). @return it, or -1.
+std::int64_t front_face(const Context& cx, const std::vector<std::uint32_t>& active, double x,
                         double y) {
   double best = -1e300;
   std::int64_t face = -1;
@@ -77,13 +77,35 @@ std::int64_t mark_front(const Context& cx, const std::vector<std::uint32_t>& act
     const double d = cx.triangles[i].depth_at(x, y);
     if (d > best) best = d, face = i;
   }
-  if (face < 0) return -1;
-  for (const std::uint32_t i : active) {
-    if (cx.triangles[i].depth_at(x, y) >= best - kDepthTie * std::abs(best)) {
-      cx.visible[cx.triangles[i].id].store(1, std::memory_order_relaxed);
-    }
-  }
   return face;
+}
+
+/// Decides sample (px, py) as the z-buffer does and marks the triangle it shows: the nearest
+/// depth_at_pixel above the far plane, ties to the first drawn (the lowest index).
+/// @param[in] covering  a superset of the triangles covering the sample
+/// @return the index of the triangle shown, or -1. O(|covering|).
+std::int64_t mark_sample(const Context& cx, const std::vector<std::uint32_t>& covering, int px,
+                         int py) {
+  const int ts = cx.grid.tile_size;
+  const int x0 = px / ts * ts, y0 = py / ts * ts;
+  float best = 0.f;  // the cleared depth buffer: far
+  std::int64_t face = -1;
+  for (const std::uint32_t i : covering) {
+    const std::optional<float> d = depth_at_pixel(cx.triangles[i].screen, px, py, x0, y0);
+    if (d && (*d > best || (*d == best && face >= 0 && i < face))) best = *d, face = i;
+  }
+  if (face >= 0) cx.visible[cx.triangles[face].id].store(1, std::memory_order_relaxed);
+  return face;
+}
+
+/// Marks what the z-buffer shows at the sample centres k + 0.5 in [from, to) of a line.
+void mark_line_samples(const Context& cx, const std::vector<std::uint32_t>& active,
+                       bool horizontal, double across, double from, double to) {
+  const int c = static_cast<int>(std::floor(across));
+  for (int k = static_cast<int>(std::ceil(from - 0.5)); k + 0.5 < to; ++k) {
+    if (horizontal) mark_sample(cx, active, k, c);
+    else mark_sample(cx, active, c, k);
+  }
 }
 
 /// Sweeps a splitting line from `from` to `to` at `across`: crossings sorted, the covering set
@@ -111,21 +133,21 @@ Side sweep(const Context& cx, const std::vector<std::uint32_t>& candidates, bool
   std::sort(events.begin(), events.end());
   Side side;
   double start = from;
-  const auto close = [&](double end) {
+  const auto close = [&](double end, bool last) {
+    mark_line_samples(cx, active, horizontal, across, start, last ? end + 0.5 : end);
     const double mid = 0.5 * (start + end);
     const std::int64_t face =
-        horizontal ? mark_front(cx, active, mid, across) : mark_front(cx, active, across, mid);
+        horizontal ? front_face(cx, active, mid, across) : front_face(cx, active, across, mid);
     if (!side.empty() && side.back().face == face) side.back().to = end;
     else side.push_back({start, end, face});
     start = end;
   };
   for (const Event& e : events) {
-    if (e.at > start) close(e.at);
+    if (e.at > start) close(e.at, false);
     if (e.enter) active.push_back(e.tri);
     else std::erase(active, e.tri);
   }
-  close(to);
-  // The stretch endpoints themselves (sample centres on corners) are points of both stretches.
+  close(to, true);  // the line's last sample centre, `to`, too
   return side;
 }
 
@@ -266,26 +288,56 @@ void split_in_two(const Context& cx, Region& r, bool vertical, double c) {
   }
 }
 
+/// Decides the sample centres of the region (`inside`: only those strictly inside) that
+/// candidate i's box holds, until i's scene triangle is seen. O(samples scanned * candidates).
+void scan_for(const Context& cx, const Region& r, std::uint32_t i, bool inside) {
+  const FlatTriangle& t = cx.triangles[i];
+  const int in = inside ? 1 : 0;
+  const auto first = [](double lo) { return static_cast<int>(std::ceil(lo - 0.5)); };
+  const auto last = [](double hi) { return static_cast<int>(std::floor(hi - 0.5)); };
+  const int px0 = std::max(static_cast<int>(r.x0) + in, first(t.box.min.x));
+  const int px1 = std::min(static_cast<int>(r.x1) - in, last(t.box.max.x));
+  const int py0 = std::max(static_cast<int>(r.y0) + in, first(t.box.min.y));
+  const int py1 = std::min(static_cast<int>(r.y1) - in, last(t.box.max.y));
+  for (int py = py0; py <= py1; ++py)
+    for (int px = px0; px <= px1; ++px) {
+      if (cx.visible[t.id].load(std::memory_order_relaxed)) return;
+      mark_sample(cx, r.candidates, px, py);
+    }
+}
+
+/// Where splitting stops with one plane seen all round, any triangle of that plane may show at
+/// the centres inside: decide those of the triangles not yet seen.
+void mark_plane_inside(const Context& cx, const Region& r, std::int64_t group) {
+  for (const std::uint32_t i : r.candidates) {
+    if (cx.triangles[i].group == group) scan_for(cx, r, i, true);
+  }
+}
+
 /// The recursion: stop when the contour sees one face and nothing lies wholly inside, or when
 /// no sample centre is left strictly inside; else split the longer side at a sample centre.
-/// A region meeting a single triangle also stops, the triangle marked seen (conservative: it
-/// may cover no sample there).
+/// Every sample centre is on a swept line or decided where splitting stops.
 void split_region(const Context& cx, Region r) {
   cx.counters.regions.fetch_add(1, std::memory_order_relaxed);
   if (r.candidates.empty()) return;
   // One face (a triangle is convex) or one plane with no boundary of any face crossing the
   // region: the covering planes and their order are the same all over it.
   const bool one_face = sees_one_face(r);
-  const bool one_plane = !one_face && contour_group(cx, r) >= 0;
-  if ((one_face || one_plane) && !has_triangle_inside(cx, r) &&
+  const std::int64_t group = one_face ? -1 : contour_group(cx, r);
+  const double sx = split_at(r.x0, r.x1), sy = split_at(r.y0, r.y1);
+  if ((one_face || group >= 0) && !has_triangle_inside(cx, r) &&
       (one_face || !has_boundary_inside(cx, r))) {
+    // the face seen all round shows inside too: decide one centre inside, so it is marked
+    // only if the z-buffer shows it in this region
+    if (one_face && !std::isnan(sx) && !std::isnan(sy))
+      mark_sample(cx, r.candidates, static_cast<int>(sx), static_cast<int>(sy));
+    if (group >= 0) mark_plane_inside(cx, r, group);
     return;
   }
   if (r.candidates.size() == 1) {  // nothing can hide it here: seen if it covers a sample
-    cx.visible[cx.triangles[r.candidates.front()].id].store(1, std::memory_order_relaxed);
+    scan_for(cx, r, r.candidates.front(), false);
     return;
   }
-  const double sx = split_at(r.x0, r.x1), sy = split_at(r.y0, r.y1);
   const bool vertical = !std::isnan(sx) && (std::isnan(sy) || r.x1 - r.x0 >= r.y1 - r.y0);
   if (vertical) split_in_two(cx, r, true, sx);
   else if (!std::isnan(sy)) split_in_two(cx, r, false, sy);
@@ -293,9 +345,10 @@ void split_region(const Context& cx, Region r) {
 
 }  // namespace
 
-void split_picture(const std::vector<FlatTriangle>& triangles, int width, int height,
+void split_picture(const std::vector<FlatTriangle>& triangles, const SampleGrid& grid,
                    std::vector<std::atomic<std::uint8_t>>& visible, SplitCounters& counters) {
-  const Context cx{triangles, visible, counters};
+  const Context cx{triangles, grid, visible, counters};
+  const int width = grid.width, height = grid.height;
   Region r{0.5, 0.5, width - 0.5, height - 0.5, {}, {}, {}, {}, {}};
   std::vector<std::uint32_t> all(triangles.size());
   for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;

@@ -10,12 +10,15 @@
 #include <glm/glm.hpp>
 
 #include "render/detail/box_grid.h"
+#include "render/rasterizer.h"
 
 namespace roomcad::detail {
 
 /// A front-facing triangle on the sample grid (x right, y down, samples; centre of sample
 /// (i, j) at (i + 0.5, j + 0.5)) with its depth as a plane: larger is nearer (reversed-Z).
+/// The plane orders faces along contours; `screen` decides each sample exactly.
 struct FlatTriangle {
+  ScreenTriangle screen;  ///< as the rasteriser draws it (depth_at_pixel)
   std::array<Point2, 3> p{};
   glm::dvec3 depth{0.0};  ///< depth(x, y) = depth.x * x + depth.y * y + depth.z
   Box2 box;
@@ -30,7 +33,7 @@ struct FlatTriangle {
 
 /// Sets FlatTriangle::group and ::boundary: two triangles with an edge of the same two
 /// projected corners (bit for bit: the scene's shared vertices) and the same depth plane
-/// (within 1e-6 relative) are one group and that edge is not a boundary. Deterministic.
+/// (within 1e-5 relative) are one group and that edge is not a boundary. Deterministic.
 /// O(n log n).
 void group_coplanar(std::vector<FlatTriangle>& triangles);
 
@@ -40,10 +43,19 @@ struct SplitCounters {
   std::atomic<std::size_t> crossings{0};
 };
 
+/// The sample grid and the rasteriser's tiles (depth rounding depends on the tile corner).
+struct SampleGrid {
+  int width = 1, height = 1, tile_size = 128;
+};
+
 /// Splits the picture [0, width] x [0, height] recursively and marks in `visible` (indexed by
-/// FlatTriangle::id) every triangle seen along a splitting line or the picture's sides.
+/// FlatTriangle::id) every triangle the z-buffer shows at some sample centre: each centre on a
+/// splitting line or the picture's sides, and inside a region where splitting stops, is
+/// decided as the rasteriser decides it (nearest depth_at_pixel, ties to the triangle drawn
+/// first).
+/// @pre triangles in the rasteriser's draw order
 /// @param[in,out] visible  entries are only ever set to 1
-void split_picture(const std::vector<FlatTriangle>& triangles, int width, int height,
+void split_picture(const std::vector<FlatTriangle>& triangles, const SampleGrid& grid,
                    std::vector<std::atomic<std::uint8_t>>& visible, SplitCounters& counters);
 
 }  // namespace roomcad::detail

@@ -179,7 +179,7 @@ section_skipping() {
     "$out/skipping.csv" >"$out/skipping_by_view.csv"
   gnuplot <<GNUPLOT
 $(bar_plot_preamble "$out/skipping.png" 1000)
-set key outside right
+set key outside below maxrows 2
 set logscale y
 set format y '%g'
 set yrange [10:*]

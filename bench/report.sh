@@ -10,7 +10,7 @@ quick=${1:-}
 bash scripts/setup.sh >/dev/null
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target validate_bench build_bench render_bench depth_format_bench kernel_bench \
-  >/dev/null
+  skipping_bench >/dev/null
 out=bench/report
 mkdir -p "$out"
 
@@ -54,6 +54,20 @@ plot $joined
 GNUPLOT
 }
 
+# The gnuplot lines every clustered bar chart starts with: bar_plot_preamble PNG WIDTH.
+bar_plot_preamble() {
+  cat <<GNUPLOT
+set terminal pngcairo size $2,500 noenhanced
+set output '$1'
+set datafile separator ','
+set style data histograms
+set style histogram clustered gap 1
+set style fill solid 0.8 border -1
+set grid ytics
+set key top left
+GNUPLOT
+}
+
 section_validate() {
   # validate_bench: | grid | walls | openings | wall ms | cpu ms | critical | no rooms wall | cpu | errors |
   build/bench/validate_bench $quick |
@@ -64,44 +78,16 @@ section_validate() {
     walls ms xy 3:"wall-clock ms" 5:"no room warnings ms"
 }
 
-# The face count an OFF file declares ("OFF v f e" on one line, or "OFF" then "v f e").
-off_face_count() {
-  awk 'NR == 1 && NF >= 3 { print $3; exit } NR == 2 { print $2; exit }' "$1"
-}
-
 section_build() {
-  local max_n=20 cgal_max_n=5
-  [[ $quick == --quick ]] && max_n=10 && cgal_max_n=2
-  # build_bench: | grid | walls | openings | fast ms | faces | triangles | OFF bytes | CGAL ms |
-  #              CGAL triangles | CGAL / fast | valid |
-  build/bench/build_bench --max-n "$max_n" --cgal-max-n "$cgal_max_n" --runs 3 |
-    awk -F'|' 'NR == 1 { print "walls,fast_ms,fast_triangles,fast_off_bytes,cgal_ms,cgal_triangles,valid"; next }
-      NR > 2 { for (i = 2; i <= 12; i++) gsub(/ /, "", $i); c = $9 == "-" ? "" : $9; t = $10 == "-" ? "" : $10
-               print $3 "," $5 "," $7 "," $8 "," c "," t "," $12 }' >"$out/build_paths.csv"
-  # OpenSCAD on the small grids only (its CGAL Nef union grows fast): time, triangles, bytes.
-  local tmp
-  tmp=$(mktemp -d)
-  echo "walls,openscad_ms,openscad_faces,openscad_off_bytes" >"$tmp/openscad.csv"
-  if command -v openscad >/dev/null; then
-    for n in 1 2; do
-      build/bench/build_bench --scad "$n" "$tmp/grid.scad"
-      local t0 t1
-      t0=$(date +%s%N)
-      if timeout 120 openscad -o "$tmp/out.off" "$tmp/grid.scad" >/dev/null 2>&1; then
-        t1=$(date +%s%N)
-        echo "$((2 * n * (n + 1))),$(((t1 - t0) / 1000000)),$(off_face_count "$tmp/out.off"),$(stat -c %s "$tmp/out.off")" \
-          >>"$tmp/openscad.csv"
-      fi
-    done
-  fi
-  awk -F, 'FNR == NR { if (FNR > 1) o[$1] = $2 "," $3 "," $4; next }
-           FNR == 1 { print $0 ",openscad_ms,openscad_faces,openscad_off_bytes"; next }
-           { print $0 "," ($1 in o ? o[$1] : ",,") }' "$tmp/openscad.csv" "$out/build_paths.csv" \
-    >"$tmp/joined.csv"
-  mv "$tmp/joined.csv" "$out/build_paths.csv"
-  rm -rf "$tmp"
-  plot "$out/build_paths.csv" "$out/build_paths.png" "build: fast path, CGAL path and OpenSCAD against walls" \
-    walls ms xy 2:"fast path ms" 5:"CGAL path ms" 8:"OpenSCAD ms"
+  # The per-wall fast path on and off: roomcad's fast path against its CGAL path, plain Nef and
+  # OpenSCAD on small grids (bench/modeling_report.sh's CSV and table; volume errors included).
+  bash bench/modeling_report.sh build "$out/build_paths" --max-n 10 --cgal-max-n 5 --openscad-max-n 5 \
+    >/dev/null 2>&1
+  # Column 2 is walls: the x axis.
+  cut -d, -f2- "$out/build_paths.csv" >"$out/build_paths_by_walls.csv"
+  plot "$out/build_paths_by_walls.csv" "$out/build_paths.png" \
+    "build: fast path, CGAL path, plain Nef and OpenSCAD against walls" walls ms xy \
+    3:"fast path ms" 4:"CGAL path ms" 5:"plain Nef ms" 6:"OpenSCAD ms"
 }
 
 section_render() {
@@ -165,21 +151,41 @@ section_kernels() {
                  for (i = 1; i <= n; i++) print k[i] "," easy[k[i]] "," hard[k[i]] "," wrong[k[i]] }' \
     "$out/kernels.csv" >"$out/kernels_by_kernel.csv"
   gnuplot <<GNUPLOT
-set terminal pngcairo size 800,500 noenhanced
-set output '$out/kernels.png'
-set datafile separator ','
-set style data histograms
-set style histogram clustered gap 1
-set style fill solid 0.8 border -1
+$(bar_plot_preamble "$out/kernels.png" 800)
 set logscale y
 set format y '%g'
 set yrange [0.1:*]
-set grid ytics
-set key top left
 set title 'orientation predicate: ns per test (bars) and % wrong signs on nearly collinear points'
 set ylabel 'ns per test / % wrong'
 plot '$out/kernels_by_kernel.csv' using 2:xtic(1) title 'ns, random at 1e6 m', \
      '' using 3 title 'ns, nearly collinear', '' using 4 title '% wrong, nearly collinear'
+GNUPLOT
+}
+
+section_skipping() {
+  build/bench/skipping_bench --benchmark_format=csv 2>/dev/null >"$out/skipping_raw.csv"
+  # A row per view and switch setting (name BM_Skipping/view/cull/frustum, label the view).
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { gsub(/"/, "", $i); c[$i] = i }
+                     print "view,cull,frustum_cull,frame_ms,triangles,screen_triangles,prepass_skipped"; next }
+           { split($1, a, "/"); gsub(/"/, "", $c["label"])
+             printf "%s,%s,%s,%.2f,%d,%d,%d\n", $c["label"], (a[3] == 0 ? "none" : a[3] == 1 ? "back" : "visibility"),
+                    (a[4] == 1 ? "on" : "off"), $c["real_time"], $c["triangles"], $c["screen_triangles"], $c["prepass_skipped"] }' \
+    "$out/skipping_raw.csv" >"$out/skipping.csv"
+  # Pivoted for the bars: a row per view, a column per setting.
+  awk -F, 'NR > 1 { if (!($1 in seen)) { seen[$1] = 1; v[++n] = $1 } ms[$1, $2 "/" $3] = $4 }
+           END { split("none/off none/on back/off back/on visibility/off visibility/on", k, " ")
+                 row = "view"; for (j = 1; j <= 6; j++) { split(k[j], f, "/"); row = row ",faces " f[1] " + frustum " f[2] }; print row
+                 for (i = 1; i <= n; i++) { row = v[i]; for (j = 1; j <= 6; j++) row = row "," ms[v[i], k[j]]; print row } }' \
+    "$out/skipping.csv" >"$out/skipping_by_view.csv"
+  gnuplot <<GNUPLOT
+$(bar_plot_preamble "$out/skipping.png" 1000)
+set key outside below maxrows 2
+set logscale y
+set format y '%g'
+set yrange [10:*]
+set title 'what skipping saves: frame ms at 1920x1080, 2 threads, no shadows, per culling setting'
+set ylabel 'frame ms (log scale)'
+plot for [i=2:7] '$out/skipping_by_view.csv' using i:xtic(1) title columnhead(i)
 GNUPLOT
 }
 
@@ -189,6 +195,7 @@ section_render
 section_antialiasing
 section_depth
 section_kernels
+section_skipping
 seconds=$((SECONDS - start))
 
 {
@@ -207,15 +214,14 @@ seconds=$((SECONDS - start))
   echo
   echo "![validate scaling](report/validate_scaling.png)"
   echo
-  echo "## Build: fast path against CGAL path"
-  echo "The same grids built and written as OFF: the per-wall exact fast path, and CGAL's Nef"
-  echo "polyhedra (\`--boolean cgal\`); \`valid\`: both solids closed, manifold, without self-intersection,"
-  echo "with the analytic volume to 1e-9 (so the volume error of both is below 1e-9 relative)."
-  echo "Growth exponent of the fast path: k = $(fit_exponent "$out/build_paths.csv" 1 2); of the CGAL path: k = $(fit_exponent "$out/build_paths.csv" 1 5)."
-  echo "OpenSCAD (Debian's, on the same grids written as .scad, openings a hair wider than the wall as"
-  echo "OpenSCAD models are written) runs on the two smallest grids only (faces: the polygons of its OFF)."
+  echo "## Build: fast path against CGAL path and OpenSCAD"
+  echo "The per-wall fast path on and off: N x N grids of rooms built and written as OFF by the fast"
+  echo "path and, with it off, by the CGAL path (\`--boolean cgal\`); beside them plain CGAL Nef and"
+  echo "Debian's OpenSCAD (grids up to 5 x 5), with each solid's volume error against the analytic"
+  echo "volume and the fast path's OFF size (\`bench/modeling_report.sh\`, columns described there)."
+  echo "Growth exponent of the fast path: k = $(fit_exponent "$out/build_paths.csv" 2 4); of the CGAL path: k = $(fit_exponent "$out/build_paths.csv" 2 5)."
   echo
-  csv_to_markdown "$out/build_paths.csv"
+  cat "$out/build_paths.md"
   echo
   echo "![build paths](report/build_paths.png)"
   echo
@@ -265,9 +271,20 @@ seconds=$((SECONDS - start))
   echo
   echo "![kernels](report/kernels.png)"
   echo
-  echo "## Not measured yet"
-  echo "Culling on/off (back-face, frustum,"
-  echo "visibility) and OpenSCAD's volume error are not in this report yet; the per-wall fast path on/off is the"
-  echo "fast path against CGAL path table above."
+  echo "## What skipping saves"
+  echo "Each culling switch on and off (\`roomcad render --cull none|back|visibility --frustum-cull on|off\`),"
+  echo "1920 x 1080, 2 threads, shadows off (the switches touch only the colour pass): the 10 x 10 grid"
+  echo "of rooms and examples/house.json, from outside (grid: default iso view; house: its first camera)"
+  echo "and from inside a room at eye height. The pictures are byte-identical whatever the switches"
+  echo "(tests/cli/cull_test.cpp). \`screen_triangles\`: triangles left after culling and clipping"
+  echo "(frustum culling only skips work clipping would discard, so it changes the time, not this count);"
+  echo "\`prepass_skipped\`: triangles the visibility pre-pass found hidden."
+  echo
+  csv_to_markdown "$out/skipping.csv"
+  echo
+  echo "![what skipping saves](report/skipping.png)"
+  echo
+  echo "The per-wall fast path on and off is the fast path against the CGAL path in the build section."
+  echo
 } >bench/report.md
 echo "bench/report.sh: wrote bench/report.md and bench/report/ in ${seconds} s"

@@ -27,7 +27,7 @@ struct RenderArgs {
   std::string camera, eye, target, up = "0,0,1", projection = "perspective", view;
   double fov = 50.0, view_height = 10.0;
   std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";
-  std::string parts = "walls,floor,fixtures", cull = "back";
+  std::string parts = "walls,floor,fixtures", cull = "back", frustum_cull = "on";
   bool stats = false, force = false;
 };
 
@@ -131,7 +131,10 @@ RenderOptions make_options(const RenderArgs& a, const Plan& plan) {
     throw BadFlag{fmt::format("--parts '{}': '{}' is not walls, floor or fixtures", a.parts, bad)};
   }
   o.threads = a.threads;
-  o.cull = a.cull == "visibility" ? FaceCull::visibility : FaceCull::back_faces;
+  o.cull = a.cull == "visibility" ? FaceCull::visibility
+           : a.cull == "none"       ? FaceCull::none
+                                    : FaceCull::back_faces;
+  o.cull_frustum = a.frustum_cull == "on";
   if (const std::string problem = check_render_options(o); !problem.empty()) throw BadFlag{problem};
   return o;
 }
@@ -218,9 +221,13 @@ void add_render_command(CLI::App& root, Commands& commands) {
   app->add_option("--grid", args->grid, "Draw the site's tiles on the floor: on or off")->capture_default_str();
   app->add_option("--parts", args->parts, "Parts to draw: walls,floor,fixtures")->capture_default_str();
   app->add_option("--cull", args->cull,
-                  "back: skip faces turned away; visibility: also faces the seed-004 pre-pass "
-                  "finds hidden (same picture)")
-      ->check(CLI::IsMember({"back", "visibility"}))
+                  "none: draw every face; back: skip faces turned away; visibility: also faces "
+                  "the seed-004 pre-pass finds hidden (same picture)")
+      ->check(CLI::IsMember({"none", "back", "visibility"}))
+      ->capture_default_str();
+  app->add_option("--frustum-cull", args->frustum_cull,
+                  "on: skip clusters outside the view; off: clip them all (same picture)")
+      ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   app->add_option("--depth", args->depth, "Also write the depth (metres along the view) as PFM");
   app->add_option("--ids", args->ids, "Also write object ids as PNG, with a JSON legend beside it");

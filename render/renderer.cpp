@@ -187,7 +187,8 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
                                   .width = options.width * options.ssaa,
                                   .height = options.height * options.ssaa,
                                   .tile_size = 128,
-                                  .cull_back_faces = true,
+                                  .cull_back_faces = options.cull != FaceCull::none,
+                                  .cull_frustum = options.cull_frustum,
                                   .uniform_draw = seen.empty() ? nullptr : seen.data(),
                                   .uniform_viewer = cam.orthographic
                                                         ? glm::vec4(-glm::vec3(cam.forward), 0.f)

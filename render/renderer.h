@@ -56,6 +56,7 @@ inline constexpr int kMaxThreads = 256;
 
 /// Which faces the colour pass skips before rasterising.
 enum class FaceCull {
+  none,        ///< nothing: every face is rasterised (to measure what culling saves)
   back_faces,  ///< one-sided faces turned away from the camera
   visibility,  ///< also every face the seed-004 pre-pass (render/visibility.h) finds unseen
 };
@@ -77,6 +78,7 @@ struct RenderOptions {
   GridLines grid{};                      ///< tile lines on floor faces
   Parts parts{};                         ///< which parts of the model to draw
   FaceCull cull = FaceCull::back_faces;  ///< the image is the same either way
+  bool cull_frustum = true;              ///< skip clusters outside the view; same image either way
   int threads = 0;                       ///< 0: all cores; the image does not depend on it
 };
 

@@ -142,7 +142,9 @@ void run_geometry_pass(const Scene& scene, const GeometryPass& pass, BinnedTrian
     const std::size_t end = std::min(scene.clusters.size(), (c + 1) * kClustersPerChunk);
     for (std::size_t k = c * kClustersPerChunk; k < end; ++k) {
       const Cluster& cluster = scene.clusters[k];
-      if (is_outside_frustum(cluster.bounds, pass.uniform_view_projection)) continue;
+      if (pass.cull_frustum && is_outside_frustum(cluster.bounds, pass.uniform_view_projection)) {
+        continue;
+      }
       for (std::uint32_t i = cluster.first; i < cluster.first + cluster.count; ++i) {
         if (pass.uniform_draw && !pass.uniform_draw[i]) continue;
         process_triangle(scene, i, pass, bins.chunks[c]);

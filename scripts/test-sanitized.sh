@@ -16,5 +16,6 @@ cmake --build build-asan -j"$(nproc)"
 built=$SECONDS
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$PWD/scripts/ubsan.supp
+export LSAN_OPTIONS=suppressions=$PWD/scripts/lsan.supp
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)" --timeout 1500 ${1:+-R "$1"}
 echo "test-sanitized: built in $((built - start)) s, tested in $((SECONDS - built)) s"

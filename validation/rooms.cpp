@@ -118,7 +118,7 @@ std::vector<Room> find_rooms(const Plan& plan, const Joins& joins) {
   const OpeningsByWall by_wall = openings_by_wall(plan);
   const CentreLines lines = build_centre_lines(plan, joins);
   std::vector<Room> rooms;
-  for (Face& face : find_bounded_faces(lines.segments, lines.interior_disjoint)) {
+  for (Face& face : find_bounded_faces(lines.segments)) {
     for (FaceEdge& e : face.boundary) e.wall = lines.walls[e.wall];
     rooms.push_back(room_of(plan, by_wall, face));
   }

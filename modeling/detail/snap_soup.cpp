@@ -30,7 +30,12 @@ std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& p
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  const double cell = tolerance > 0.0 ? 2.0 * tolerance : 1.0;
+  // Cells no smaller than an ulp of the largest coordinate, so that every cell index fits an
+  // int64 whatever the tolerance (a larger cell only adds candidates, never loses one).
+  double largest = 0.0;
+  for (const OpenMesh::Vec3d& p : points)
+    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(p[k]));
+  const double cell = std::max({2.0 * tolerance, largest * 0x1p-52, 1e-300});
   std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::size_t>, CellHash> cells;
   for (std::size_t i = 0; i < points.size(); ++i) {
     std::array<std::int64_t, 3> c;

@@ -4,23 +4,19 @@
 #include <cmath>
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
-#include <CGAL/Arr_non_caching_segment_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 namespace roomcad::detail {
 namespace {
 
-/// General case: crossings are constructed exactly (Epeck).
+/// Crossings and overlaps are constructed exactly (Epeck). Pieces that only meet at their
+/// ends would need predicates alone, but a plan with errors (a wall drawn back over another)
+/// has overlapping pieces, and inserting those as non-intersecting broke CGAL's preconditions
+/// (found by the sanitizer build, which keeps CGAL's checks on).
 using ExactTraits = CGAL::Arr_consolidated_curve_data_traits_2<
     CGAL::Arr_segment_traits_2<CGAL::Exact_predicates_exact_constructions_kernel>, std::size_t>;
-/// Interior-disjoint pieces: only predicates on the input points are evaluated, which Epick
-/// does exactly; the non-caching traits keep no rounded supporting lines.
-using FastTraits = CGAL::Arr_consolidated_curve_data_traits_2<
-    CGAL::Arr_non_caching_segment_traits_2<CGAL::Exact_predicates_inexact_constructions_kernel>,
-    std::size_t>;
 
 template <class P>
 Point2 to_point(const P& p) {
@@ -54,43 +50,24 @@ Face face_of(const FaceHandle& f) {
   return face;
 }
 
-template <class Traits>
-std::vector<Face> bounded_faces(const std::vector<std::pair<Point2, Point2>>& segments,
-                                bool interior_disjoint) {
+}  // namespace
+
+std::vector<Face> find_bounded_faces(const std::vector<std::pair<Point2, Point2>>& segments) {
+  using Traits = ExactTraits;
   using Arrangement = CGAL::Arrangement_2<Traits>;
   using Kernel_point = typename Traits::Point_2;
   Arrangement arrangement;
-  if (interior_disjoint) {
-    // Already x-monotone pieces: built as such, each with its one-element data list.
-    std::vector<typename Traits::X_monotone_curve_2> pieces;
-    pieces.reserve(segments.size());
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      const auto& [a, b] = segments[i];
-      pieces.emplace_back(typename Traits::Base_x_monotone_curve_2(Kernel_point(a.x, a.y), Kernel_point(b.x, b.y)),
-                          typename Traits::Data_container(i));
-    }
-    CGAL::insert_non_intersecting_curves(arrangement, pieces.begin(), pieces.end());
-  } else {
-    std::vector<typename Traits::Curve_2> curves;
-    curves.reserve(segments.size());
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      const auto& [a, b] = segments[i];
-      curves.emplace_back(typename Traits::Base_curve_2(Kernel_point(a.x, a.y), Kernel_point(b.x, b.y)), i);
-    }
-    CGAL::insert(arrangement, curves.begin(), curves.end());
+  std::vector<typename Traits::Curve_2> curves;
+  curves.reserve(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const auto& [a, b] = segments[i];
+    curves.emplace_back(typename Traits::Base_curve_2(Kernel_point(a.x, a.y), Kernel_point(b.x, b.y)), i);
   }
+  CGAL::insert(arrangement, curves.begin(), curves.end());
   std::vector<Face> faces;
   for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f)
     if (!f->is_unbounded()) faces.push_back(face_of(f));
   return faces;
-}
-
-}  // namespace
-
-std::vector<Face> find_bounded_faces(const std::vector<std::pair<Point2, Point2>>& segments,
-                                     bool interior_disjoint) {
-  return interior_disjoint ? bounded_faces<FastTraits>(segments, true)
-                           : bounded_faces<ExactTraits>(segments, false);
 }
 
 }  // namespace roomcad::detail

@@ -23,12 +23,10 @@ struct Face {
 
 /// @param segments  centre-line pieces (from, to); none of zero length. FaceEdge::wall is an
 ///                  index into this list.
-/// @param interior_disjoint  the pieces meet only at their end points: the arrangement is
-///                  then built from predicates alone (Epick, exact); otherwise crossings are
-///                  constructed exactly (Epeck).
+///                  Crossings and overlaps are constructed exactly (Epeck).
 /// @return the bounded faces of their arrangement. O((n + k) log n) for n pieces and k
 ///         crossings.
 [[nodiscard]] std::vector<Face> find_bounded_faces(
-    const std::vector<std::pair<Point2, Point2>>& segments, bool interior_disjoint);
+    const std::vector<std::pair<Point2, Point2>>& segments);
 
 }  // namespace roomcad::detail

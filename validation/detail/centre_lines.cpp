@@ -91,7 +91,6 @@ CentreLines build_centre_lines(const Plan& plan, const Joins& joins) {
   std::optional<std::vector<std::vector<Point2>>> splits = find_splits(plan, joins);
   if (!splits) return snapped_centre_lines(plan, joins);
   CentreLines out;
-  out.interior_disjoint = true;
   for (std::size_t w = 0; w < plan.walls.size(); ++w)
     if (is_drawable(plan.walls[w])) add_pieces(plan.walls[w], w, (*splits)[w], out);
   return out;

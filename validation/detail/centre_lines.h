@@ -13,15 +13,11 @@ namespace roomcad::detail {
 struct CentreLines {
   std::vector<std::pair<Point2, Point2>> segments;
   std::vector<std::size_t> walls;  ///< segment index -> wall index
-  /// true when the pieces meet only at their end points: every join is exactly end to end
-  /// or an end exactly on the other wall (which is then split there). The arrangement can
-  /// then be built without constructing a single point, in double precision exactly.
-  bool interior_disjoint = false;
 };
 
 /// @return the centre lines of the walls with finite ends, positive length and thickness.
 /// When every join is exact end-to-end or end-on-wall, walls are split at the ends that
-/// stand on them and `interior_disjoint` is set; otherwise the whole centre lines are given,
+/// stand on them; otherwise the whole centre lines are given,
 /// with mitred ends (closer than the tolerance) snapped to the lower-indexed wall's end.
 /// O(n log n + k).
 [[nodiscard]] CentreLines build_centre_lines(const Plan& plan, const Joins& joins);

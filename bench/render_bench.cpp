@@ -22,13 +22,17 @@ const Scene& grid_scene(int n) {
   return *slot;
 }
 
+/// What `roomcad render` fills without --depth and --ids.
+constexpr FrameOutputs kColourOnly{.depth = false, .object_ids = false};
+
 /// Args: rooms per side, shadows (0 off, 1 pcf, 2 hard), threads.
 void BM_Frame1080p(benchmark::State& state) {
   const Scene& scene = grid_scene(static_cast<int>(state.range(0)));
   constexpr ShadowFilter filters[] = {ShadowFilter::off, ShadowFilter::pcf, ShadowFilter::hard};
   const RenderOptions options{.width = 1920, .height = 1080,
                               .shadows = filters[state.range(1)],
-                              .threads = static_cast<int>(state.range(2))};
+                              .threads = static_cast<int>(state.range(2)),
+                              .outputs = kColourOnly};
   FrameBuffers out;
   RenderStats stats, sum;
   for (auto _ : state) {

@@ -131,6 +131,7 @@ RenderOptions make_options(const RenderArgs& a, const Plan& plan) {
     throw BadFlag{fmt::format("--parts '{}': '{}' is not walls, floor or fixtures", a.parts, bad)};
   }
   o.threads = a.threads;
+  o.outputs = FrameOutputs{.depth = !a.depth.empty(), .object_ids = !a.ids.empty()};
   o.cull = a.cull == "visibility" ? FaceCull::visibility
            : a.cull == "none"       ? FaceCull::none
                                     : FaceCull::back_faces;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "render/detail/wide_loops.h"
+
 namespace roomcad {
 namespace {
 
@@ -36,7 +38,6 @@ struct EdgeWalk {
   std::int64_t step_x = 0;
   std::int64_t step_y = 0;
   std::int64_t bias = 0;
-  double inv_step = 0.0;  ///< 1 / step_x (0 when step_x is)
 };
 
 EdgeWalk walk_edge(const ScreenTriangle& t, int k, std::int64_t sx, std::int64_t sy) {
@@ -48,7 +49,6 @@ EdgeWalk walk_edge(const ScreenTriangle& t, int k, std::int64_t sx, std::int64_t
   w.at_start = edge(t.x[a], t.y[a], t.x[b], t.y[b], sx, sy) - w.bias;
   w.step_x = -static_cast<std::int64_t>(t.y[b] - t.y[a]) * kSubpixelScale;
   w.step_y = static_cast<std::int64_t>(t.x[b] - t.x[a]) * kSubpixelScale;
-  w.inv_step = w.step_x != 0 ? 1.0 / static_cast<double>(w.step_x) : 0.0;
   return w;
 }
 
@@ -72,35 +72,59 @@ DepthPlane depth_plane(const ScreenTriangle& t, const std::array<EdgeWalk, 3>& e
   return {p.start * inv_area, p.dx * inv_area, p.dy * inv_area};
 }
 
-/// min(ceil(n / d), cap) for n >= 0, d > 0, given inv_d ~ 1 / d: a double estimate corrected
-/// exactly (a division costs tens of cycles, and this runs for every edge of every row).
-std::int64_t ceil_div_capped(std::int64_t n, std::int64_t d, double inv_d, std::int64_t cap) {
-  const double estimate = static_cast<double>(n) * inv_d;
-  if (estimate > static_cast<double>(cap) + 1.0) return cap;
-  // The estimate is within 2^-40 of n / d, so its truncation is the ceiling, or one less
-  // (n / d an integer or just above one), or one more (just below one): one exact step up
-  // or down, without branches (their outcome is data-dependent, so they would mispredict).
-  std::int64_t q = static_cast<std::int64_t>(estimate);
-  q += static_cast<std::int64_t>(q * d < n);
-  q -= static_cast<std::int64_t>(q > 0 && (q - 1) * d >= n);
-  return std::min(q, cap);
-}
-
-/// Narrows the pixel offsets [lo, hi) of a row to where `w + i * e.step_x >= 0`.
-void narrow_span(std::int64_t w, const EdgeWalk& e, int& lo, int& hi) {
-  const std::int64_t step = e.step_x;
-  if (step == 0) {
-    if (w < 0) hi = lo;  // the whole row is outside this edge
-  } else if (step > 0) {  // i >= ceil(-w / step)
-    if (w < 0) {
-      lo = static_cast<int>(std::max<std::int64_t>(lo, ceil_div_capped(-w, step, e.inv_step, hi)));
+/// The bound one edge puts on the pixels of each row of the box, kept exact from row to row
+/// by integer steps (a DDA) rather than a division per row. Pixel i of a row is inside the
+/// edge when w + i * step_x >= 0 (w: the edge at the row's first pixel centre), that is
+/// i >= ceil(-w / step_x) for step_x > 0 (a left bound), i < ceil((w + 1) / -step_x) for
+/// step_x < 0 (a right bound), and any i (w >= 0) or none for step_x == 0. The bound is
+/// q = ceil(n / d) for a numerator n that moves by a constant each row; with its remainder
+/// r = q d - n in [0, d) it follows in two additions and a compare.
+class EdgeSpan {
+ public:
+  explicit EdgeSpan(const EdgeWalk& e) {
+    if (e.step_x == 0) {  // flat: the row is all in or all out
+      w_ = e.at_start;
+      step_ = e.step_y;
+      return;
     }
-  } else {  // i <= floor(w / -step), that is i < ceil((w + 1) / -step)
-    hi = w < 0 ? lo
-               : static_cast<int>(std::min<std::int64_t>(
-                     hi, ceil_div_capped(w + 1, -step, -e.inv_step, hi)));
+    kind_ = e.step_x > 0 ? Kind::left : Kind::right;
+    d_ = e.step_x > 0 ? e.step_x : -e.step_x;
+    const std::int64_t n = kind_ == Kind::left ? -e.at_start : e.at_start + 1;
+    const std::int64_t n_step = kind_ == Kind::left ? -e.step_y : e.step_y;
+    q_ = -floor_div(-n, d_);  // ceil(n / d)
+    r_ = q_ * d_ - n;
+    q_step_ = floor_div(n_step, d_);  // n_step = q_step d + r_step, 0 <= r_step < d
+    r_step_ = n_step - q_step_ * d_;
   }
-}
+
+  /// Narrows the row's pixels [lo, hi) to those inside the edge.
+  void narrow(std::int64_t& lo, std::int64_t& hi) const {
+    switch (kind_) {
+      case Kind::left: lo = std::max(lo, q_); break;
+      case Kind::right: hi = std::min(hi, q_); break;
+      case Kind::flat: if (w_ < 0) hi = lo; break;
+    }
+  }
+
+  /// Moves to the next row.
+  void step() {
+    if (kind_ == Kind::flat) {
+      w_ += step_;
+      return;
+    }
+    q_ += q_step_;
+    r_ -= r_step_;
+    const bool under = r_ < 0;  // one more step of the quotient puts r back in [0, d)
+    q_ += under;
+    r_ += under ? d_ : 0;
+  }
+
+ private:
+  enum class Kind { left, right, flat };
+  Kind kind_ = Kind::flat;
+  std::int64_t q_ = 0, r_ = 0, d_ = 1, q_step_ = 0, r_step_ = 0;  // left and right
+  std::int64_t w_ = 0, step_ = 0;                                  // flat
+};
 
 /// Depth-tests pixels [lo, hi) of a row whose depth is z0 + i * dz at pixel i (reversed-Z: a
 /// greater depth is nearer) and keeps the nearer. Every pixel is stored, changed or not, and
@@ -169,7 +193,7 @@ std::optional<ScreenTriangle> set_up_triangle(const std::array<ClipVertex, 3>& v
   return t;
 }
 
-void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
+ROOMCAD_WIDE_LOOPS void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
   const auto [min_x, max_x] = std::minmax({t.x[0], t.x[1], t.x[2]});
   const auto [min_y, max_y] = std::minmax({t.y[0], t.y[1], t.y[2]});
   // Pixels whose centre px * 256 + 128 lies inside the box, within the target.
@@ -185,11 +209,15 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
                                   walk_edge(t, 2, sx, sy)};
   const DepthPlane plane = depth_plane(t, e);
   const int stride = target.stride > 0 ? target.stride : target.x1 - target.x0;
-  std::array<std::int64_t, 3> w{e[0].at_start, e[1].at_start, e[2].at_start};
+  std::array<EdgeSpan, 3> spans{EdgeSpan(e[0]), EdgeSpan(e[1]), EdgeSpan(e[2])};
   for (int y = y_begin; y < y_end; ++y) {
     // The row's span: the pixels where all three (biased) edge functions are >= 0.
-    int lo = 0, hi = x_end - x_begin;
-    for (int k = 0; k < 3; ++k) narrow_span(w[k], e[k], lo, hi);
+    std::int64_t lo_edge = 0, hi_edge = x_end - x_begin;
+    for (EdgeSpan& span : spans) {
+      span.narrow(lo_edge, hi_edge);
+      span.step();
+    }
+    const int lo = static_cast<int>(lo_edge), hi = static_cast<int>(std::max(lo_edge, hi_edge));
     const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride +
                                (x_begin - target.x0);
     // The row's depth in double, then float across the span (four pixels per SSE2 step):
@@ -201,7 +229,6 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target) {
     } else {
       test_span_depth_only(row_z, dx, lo, hi, target.depth + row);
     }
-    for (int k = 0; k < 3; ++k) w[k] += e[k].step_y;
   }
 }
 

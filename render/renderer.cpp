@@ -13,6 +13,7 @@
 #include "render/detail/geometry_pass.h"
 #include "render/detail/sample_shading.h"
 #include "render/detail/shadow_pass.h"
+#include "render/detail/wide_loops.h"
 #include "render/visibility.h"
 
 namespace roomcad {
@@ -54,6 +55,7 @@ struct FrameContext {
   detail::ShadeUniforms shade;
   DepthToDistance depth_to_distance;
   int ssaa = 1;
+  FrameOutputs outputs;
 };
 
 /// @param[in] cam     in the scene's frame (rebase_camera)
@@ -94,9 +96,12 @@ void resolve_row(const FrameContext& f, const RasterTarget& t, const glm::vec3* 
   }
   const std::ptrdiff_t centre_row =
       static_cast<std::ptrdiff_t>(oy * K + centre - t.y0) * w + centre;
-  const float* depth = t.depth + centre_row;
-  float* distance = &out.depth.at(ox0, oy);
-  for (int j = 0; j < n; ++j) distance[j] = f.depth_to_distance(depth[j * K]);
+  if (f.outputs.depth) {
+    const float* depth = t.depth + centre_row;
+    float* distance = &out.depth.at(ox0, oy);
+    for (int j = 0; j < n; ++j) distance[j] = f.depth_to_distance(depth[j * K]);
+  }
+  if (!f.outputs.object_ids) return;
   const std::uint32_t* ids = t.ids + centre_row;
   std::int32_t* objects = &out.objects.ids[static_cast<std::size_t>(oy) * out.objects.width + ox0];
   std::uint32_t last_id = kNoTriangle;
@@ -118,7 +123,7 @@ void resolve_tile(const FrameContext& f, const RasterTarget& t, const std::vecto
   for (int oy = t.y0 / K; oy < t.y1 / K; ++oy) resolve_row<K>(f, t, rgb.data(), oy, out);
 }
 
-void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
+ROOMCAD_WIDE_LOOPS void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
   RasterTarget t = detail::tile_rectangle(f.bins, tile);
   const std::size_t n = static_cast<std::size_t>(t.x1 - t.x0) * (t.y1 - t.y0);
   thread_local std::vector<float> depth;  // reused: tiles are many and small
@@ -138,12 +143,17 @@ void render_tile(const FrameContext& f, int tile, FrameBuffers& out) {
   }
 }
 
-void size_buffers(int width, int height, FrameBuffers& out) {
+/// Sizes the images the frame fills and empties the others (see FrameOutputs).
+void size_buffers(int width, int height, FrameOutputs outputs, FrameBuffers& out) {
   if (out.color.width != width || out.color.height != height) out.color = RgbImage(width, height);
-  if (out.depth.width != width || out.depth.height != height) out.depth = FloatImage(width, height);
-  out.objects.width = width;
-  out.objects.height = height;
-  out.objects.ids.resize(static_cast<std::size_t>(width) * height);
+  if (!outputs.depth) {
+    out.depth = FloatImage();
+  } else if (out.depth.width != width || out.depth.height != height) {
+    out.depth = FloatImage(width, height);
+  }
+  out.objects.width = outputs.object_ids ? width : 0;
+  out.objects.height = outputs.object_ids ? height : 0;
+  out.objects.ids.resize(static_cast<std::size_t>(out.objects.width) * out.objects.height);
 }
 
 void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
@@ -156,6 +166,7 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   f.shade.bins = &f.bins;
   f.shade.shadow_maps = &f.shadow_maps;
   f.ssaa = options.ssaa;
+  f.outputs = options.outputs;
   f.shade.filter = options.shadows;
   f.shade.background = to_unit_rgb(options.background);
   const auto shadow_start = Clock::now();
@@ -194,7 +205,7 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
                                                         ? glm::vec4(-glm::vec3(cam.forward), 0.f)
                                                         : glm::vec4(glm::vec3(cam.eye), 1.f)},
       f.bins);
-  size_buffers(options.width, options.height, out);
+  size_buffers(options.width, options.height, options.outputs, out);
   tbb::parallel_for(0, f.bins.tile_count(), [&](int tile) { render_tile(f, tile, out); });
   stats.raster_ms = ms_since(raster_start);
   stats.triangles = scene.triangle_count();

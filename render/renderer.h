@@ -44,6 +44,13 @@ struct FrameBuffers {
   ObjectIdImage objects;  ///< what each pixel shows
 };
 
+/// Which of FrameBuffers' images a frame fills besides the colour. One left out is emptied
+/// (0 x 0) and costs nothing: converting every depth to metres costs more than the resolve.
+struct FrameOutputs {
+  bool depth = true;
+  bool object_ids = true;
+};
+
 /// Limits of check_render_options, so that no options can exhaust memory or run for days:
 /// the frame buffers take 11 bytes a pixel (704 MiB at kMaxImagePixels), the colour pass's
 /// time grows with the samples, and each of up to kMaxLights shadow maps takes 4 bytes a texel
@@ -80,6 +87,7 @@ struct RenderOptions {
   FaceCull cull = FaceCull::back_faces;  ///< the image is the same either way
   bool cull_frustum = true;              ///< skip clusters outside the view; same image either way
   int threads = 0;                       ///< 0: all cores; the image does not depend on it
+  FrameOutputs outputs{};                ///< depth and object ids, or colour alone
 };
 
 /// What a frame cost, for --stats and benchmarks.
@@ -99,7 +107,8 @@ struct RenderStats {
 /// Renders a model.
 /// @param[in]  model    the meshes (their rc:object, rc:kind and rc:color face properties)
 /// @param[in]  options  check_render_options(options).empty()
-/// @param[out] out      resized and overwritten: colour, depth and object ids
+/// @param[out] out      resized and overwritten: colour, and depth and object ids as
+///                      options.outputs asks (the others emptied)
 /// @param[out] stats    timings and counts, or nullptr
 /// @throws std::invalid_argument naming the option when check_render_options fails.
 /// Cost: O(triangles + pixels * ssaa^2 * lights) plus O(triangles + resolution^2) per shadow map.

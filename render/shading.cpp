@@ -5,24 +5,31 @@
 #include <cmath>
 #include <utility>
 
+#include "render/detail/wide_loops.h"
+
 namespace roomcad {
 namespace {
 
 constexpr float kSpecular = 0.2f;    // white highlights, a matte finish
 constexpr float kGridDarkening = 0.6f;
-constexpr double kGridHalfWidth = 0.015;  // of a cell
+constexpr float kGridHalfWidth = 0.015f;  // of a cell
+constexpr float kLastLine = 0x1p24f;       // the last line paint_grid tells from the next
 
-/// The Blinn-Phong highlight (exponent 32, by repeated squaring: std::pow is slow) of light
-/// direction l on a surface of normal n (both unit) that faces the light, seen from the
-/// direction e (any length). Branch-free, so that loops over samples calling it vectorise.
+/// The Blinn-Phong highlight (exponent 32) of light direction l on a surface of normal n
+/// (both unit) that faces the light, seen from the direction e (any length). With s = |e|,
+/// the half vector l + e / s has n . h = (s n.l + n.e) / s and |h|^2 = 2 (s + l.e) / s, so
+/// (n . h / |h|)^2 = (s n.l + n.e)^2 / (2 s (s + l.e)): one square root and one division a
+/// sample, and the power by squaring (std::pow is slow). Branch-free, so that loops over
+/// samples calling it vectorise.
 inline float highlight_at(const glm::vec3& l, const glm::vec3& n, float ex, float ey, float ez) {
-  constexpr float kTiny = 1e-30f;  // keeps a zero vector's inverse length finite
-  const float inv_e = 1.f / std::sqrt(std::max(ex * ex + ey * ey + ez * ez, kTiny));
-  const float hx = l.x + ex * inv_e, hy = l.y + ey * inv_e, hz = l.z + ez * inv_e;
-  const float inv_h = 1.f / std::sqrt(std::max(hx * hx + hy * hy + hz * hz, kTiny));
-  const float h1 = std::max((n.x * hx + n.y * hy + n.z * hz) * inv_h, 0.f);
-  const float h2 = h1 * h1, h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8;  // written out: a
-  return kSpecular * (h16 * h16);  // loop here would keep the caller's loop from vectorising
+  constexpr float kTiny = 1e-30f;  // keeps the division finite where e is 0 or opposes l
+  const float s = std::sqrt(ex * ex + ey * ey + ez * ez);
+  const float cos_half = std::max(s * (n.x * l.x + n.y * l.y + n.z * l.z) +
+                                      (n.x * ex + n.y * ey + n.z * ez), 0.f);  // times s |h|
+  const float h2 = cos_half * cos_half /
+                   std::max(2.f * s * (s + l.x * ex + l.y * ey + l.z * ez), kTiny);
+  const float h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8;  // written out: a loop here would
+  return kSpecular * (h16 * h16);                          // keep the caller's from vectorising
 }
 
 /// The viewer, homogeneous: (eye, 1) in perspective, (-forward, 0) orthographic, so that the
@@ -100,7 +107,7 @@ SurfaceLighting light_surface(const ShadingUniforms& u, const glm::vec3& normal,
   return s;
 }
 
-void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
+ROOMCAD_WIDE_LOOPS void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
                glm::vec3* out) {
   if (u.mode == ShadingMode::unlit) return shade_unlit(u, run, out);
   std::array<float, kMaxRunSamples> brightness, highlight, specular;
@@ -119,22 +126,33 @@ void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const S
   }
 }
 
-glm::vec3 apply_grid(const GridLines& grid, const glm::vec3& world, const glm::vec3& color) {
-  if (!grid.enabled || !(grid.cell_size > 0.0)) return color;
-  const double fx = (world.x - grid.origin.x) / grid.cell_size;
-  const double fy = (world.y - grid.origin.y) / grid.cell_size;
-  const double margin = kGridHalfWidth;
-  if (fx < -margin || fy < -margin || fx > static_cast<double>(grid.cells[0]) + margin ||
-      fy > static_cast<double>(grid.cells[1]) + margin) {
-    return color;
+void paint_grid(const GridLines& grid, const glm::vec3& color, SampleRun& run) {
+  const int n = run.count;
+  if (!grid.enabled || !(grid.cell_size > 0.0)) {
+    std::fill_n(run.color.begin(), n, color);
+    return;
   }
-  // fx, fy >= -margin > -0.5 here, so truncating f + 0.5 rounds f to the nearest line
-  // (inline, where std::round is a library call on SSE2, and this runs per floor sample).
-  const auto to_line = [](double f) {
-    return std::abs(f - static_cast<double>(static_cast<std::int64_t>(f + 0.5)));
+  // In float: the positions are in the scene's frame (metres from the model's centre), where
+  // a float resolves 0.1 mm up to a few km, far finer than a line (1.5% of a cell). Line
+  // numbers past 2^24 are not resolved (a site of 16 million cells a side).
+  const float ox = static_cast<float>(grid.origin.x), oy = static_cast<float>(grid.origin.y);
+  const float per_metre = static_cast<float>(1.0 / grid.cell_size);
+  const float end_x = std::min(static_cast<float>(grid.cells[0]), kLastLine) + kGridHalfWidth;
+  const float end_y = std::min(static_cast<float>(grid.cells[1]), kLastLine) + kGridHalfWidth;
+  // fx >= -half width > -0.5 where it counts, so truncating f + 0.5 rounds f to the nearest
+  // line (inline and branch-free, so that the loop vectorises; std::round is a library call)
+  const auto to_line = [](float f) {
+    const float clamped = std::clamp(f, -1.f, kLastLine);
+    return std::abs(clamped - static_cast<float>(static_cast<int>(clamped + 0.5f)));
   };
-  const double dx = to_line(fx), dy = to_line(fy);
-  return std::min(dx, dy) < kGridHalfWidth ? color * kGridDarkening : color;
+  std::array<float, kMaxRunSamples> shade;
+  for (int i = 0; i < n; ++i) {
+    const float fx = (run.x[i] - ox) * per_metre, fy = (run.y[i] - oy) * per_metre;
+    const bool inside = fx >= -kGridHalfWidth && fy >= -kGridHalfWidth && fx <= end_x && fy <= end_y;
+    const bool on_line = std::min(to_line(fx), to_line(fy)) < kGridHalfWidth;
+    shade[i] = inside && on_line ? kGridDarkening : 1.f;
+  }
+  for (int i = 0; i < n; ++i) run.color[i] = color * shade[i];
 }
 
 ShadingLight to_shading_light(const Light& light) {

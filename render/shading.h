@@ -85,10 +85,10 @@ struct SampleRun {
 void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
                glm::vec3* out);
 
-/// @return `color` darkened where `world` lies on a tile line of the site (half-width 1.5% of
-///         a cell) and inside the site; unchanged elsewhere or when the grid is off. O(1).
-[[nodiscard]] glm::vec3 apply_grid(const GridLines& grid, const glm::vec3& world,
-                                   const glm::vec3& color);
+/// Sets the run's colours: `color`, darkened where a sample lies on a tile line of the site
+/// (half-width 1.5% of a cell) and inside the site; plain elsewhere or when the grid is off.
+/// @pre run.x, run.y set for run.count samples. O(count).
+void paint_grid(const GridLines& grid, const glm::vec3& color, SampleRun& run);
 
 /// @return an 8-bit colour as sRGB in [0, 1]. O(1).
 [[nodiscard]] inline glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "render/detail/shadow_pass.h"
+#include "render/detail/wide_loops.h"
 #include "render/shading.h"
 
 namespace roomcad {
@@ -128,7 +129,8 @@ ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal,
 
 namespace {
 
-/// floor(x) for map coordinates (|x| < 2^31), inline: std::floor is a library call on SSE2.
+/// floor(x) for map coordinates (|x| < 2^31), inline and branch-free: std::floor is a
+/// library call on SSE2, and the loops calling this vectorise.
 int floor_to_int(float x) {
   const int i = static_cast<int>(x);
   return i - (static_cast<float>(i) > x);
@@ -136,48 +138,64 @@ int floor_to_int(float x) {
 
 /// Samples whose map positions shadow_amounts computes at once.
 constexpr int kMaxShadowBatch = 64;
+template <typename T>
+using Batch = std::array<T, kMaxShadowBatch>;
 
-/// 1 if texel (iu, iv) lies nearer the light than `depth`, else 0 (also outside the map: lit).
-float is_occluded(const ShadowMap& map, int iu, int iv, float depth) {
-  const auto size = static_cast<unsigned>(map.depth.width);
-  if (static_cast<unsigned>(iu) >= size || static_cast<unsigned>(iv) >= size) return 0.f;
-  return map.depth.values[static_cast<std::size_t>(iv) * size + iu] > depth ? 1.f : 0.f;
+/// The texels one lookup reads: corner k of the 2 x 2 block from (iu, iv) is (iu + (k & 1),
+/// iv + (k >> 1)); hard lookups read corner 0 alone. Texels outside the map are read at an
+/// index inside it and then count as lit (`inside` 0), so no loop needs a branch.
+struct TexelBatch {
+  std::array<Batch<int>, 4> index;      ///< into ShadowMap::depth.values
+  std::array<Batch<float>, 4> inside;   ///< 1 or 0
+  std::array<Batch<float>, 4> biased;   ///< the receiver's biased depth at the texel centre
+  Batch<float> fu, fv;                  ///< PCF: the point's offset from texel (iu, iv)
+};
+
+/// Fills the texels of samples [0, n) at map points (u, v) and receiver depths z. `offset` is
+/// 0 for hard lookups (the texel under the point), 0.5 for PCF (the four around it). O(n).
+void find_texels(const ShadowMap& map, const ShadowReceiver& r, const float* u, const float* v,
+                 const float* z, int n, int corners, float offset, TexelBatch& t) {
+  const int size = map.depth.width;
+  Batch<int> iu, iv;
+  Batch<float> d00;
+  for (int i = 0; i < n; ++i) {  // branch-free: vectorised
+    iu[i] = floor_to_int(u[i] - offset);
+    iv[i] = floor_to_int(v[i] - offset);
+    t.fu[i] = u[i] - offset - static_cast<float>(iu[i]);
+    t.fv[i] = v[i] - offset - static_cast<float>(iv[i]);
+    // the receiver's plane extended to the centre of texel (iu, iv)
+    d00[i] = z[i] + r.grad_u * (iu[i] + 0.5f - u[i]) + r.grad_v * (iv[i] + 0.5f - v[i]) + r.bias;
+  }
+  for (int k = 0; k < corners; ++k) {
+    const int du = k & 1, dv = k >> 1;
+    const float step_u = du ? r.grad_u : 0.f, step_v = dv ? r.grad_v : 0.f;
+    for (int i = 0; i < n; ++i) {  // vectorised
+      const int cu = iu[i] + du, cv = iv[i] + dv;
+      const bool in = (cu >= 0) & (cu < size) & (cv >= 0) & (cv < size);  // no branches
+      t.index[k][i] = in ? cv * size + cu : 0;
+      t.inside[k][i] = in ? 1.f : 0.f;
+      t.biased[k][i] = (d00[i] + step_v) + step_u;
+    }
+  }
 }
 
-/// Hard: whether the texel under map point (u, v) occludes the receiver's biased plane
-/// through depth z there. PCF: the same test for the four texels around the point, weighted
-/// bilinearly (as graphics hardware filters shadow maps), so the penumbra is one texel wide
-/// and changes smoothly.
-float filtered_lookup(const ShadowMap& map, const ShadowReceiver& r, float u, float v, float z,
-                      ShadowFilter filter) {
-  // The receiver's biased depth at the centre of texel (iu, iv).
-  const auto depth_at = [&](int iu, int iv) {
-    return z + r.grad_u * (iu + 0.5f - u) + r.grad_v * (iv + 0.5f - v) + r.bias;
-  };
-  if (filter == ShadowFilter::hard) {
-    const int iu = floor_to_int(u), iv = floor_to_int(v);
-    return is_occluded(map, iu, iv, depth_at(iu, iv));
+/// Whether each texel read occludes its receiver depth: 1 or 0 in `occluded`. The one loop
+/// that cannot vectorise on SSE2 (a gather) does nothing but load. O(n * corners).
+void test_texels(const ShadowMap& map, const TexelBatch& t, int n, int corners,
+                 std::array<Batch<float>, 4>& occluded) {
+  const float* depth = map.depth.values.data();
+  for (int k = 0; k < corners; ++k) {
+    Batch<float> texel;
+    for (int i = 0; i < n; ++i) texel[i] = depth[t.index[k][i]];
+    for (int i = 0; i < n; ++i) {  // vectorised
+      occluded[k][i] = texel[i] > t.biased[k][i] ? t.inside[k][i] : 0.f;
+    }
   }
-  const int iu = floor_to_int(u - 0.5f), iv = floor_to_int(v - 0.5f);
-  const float fu = u - 0.5f - static_cast<float>(iu), fv = v - 0.5f - static_cast<float>(iv);
-  const float d00 = depth_at(iu, iv), d10 = d00 + r.grad_u, d01 = d00 + r.grad_v;
-  const float d11 = d01 + r.grad_u;
-  const auto size = static_cast<unsigned>(map.depth.width);
-  std::array<float, 4> s;  // occluded: (iu, iv), (iu + 1, iv), (iu, iv + 1), (iu + 1, iv + 1)
-  if (static_cast<unsigned>(iu) < size - 1u && static_cast<unsigned>(iv) < size - 1u) {
-    const float* row = &map.depth.values[static_cast<std::size_t>(iv) * size + iu];  // all in
-    s = {row[0] > d00 ? 1.f : 0.f, row[1] > d10 ? 1.f : 0.f, row[size] > d01 ? 1.f : 0.f,
-         row[size + 1] > d11 ? 1.f : 0.f};
-  } else {
-    s = {is_occluded(map, iu, iv, d00), is_occluded(map, iu + 1, iv, d10),
-         is_occluded(map, iu, iv + 1, d01), is_occluded(map, iu + 1, iv + 1, d11)};
-  }
-  return (1.f - fv) * ((1.f - fu) * s[0] + fu * s[1]) + fv * ((1.f - fu) * s[2] + fu * s[3]);
 }
 
 }  // namespace
 
-void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, ShadowFilter filter,
+ROOMCAD_WIDE_LOOPS void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, ShadowFilter filter,
                     const float* w1, const float* w2, int count, float* out) {
   const bool lit = filter == ShadowFilter::off || map.texel_x == 0.f;
   if (lit || !receiver.faces_light) {
@@ -188,7 +206,15 @@ void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, Shadow
   // limit) must stay finite: clamp them to just outside.
   const float limit = static_cast<float>(map.depth.width) + 2.f;
   const glm::vec3 c0 = receiver.corner0, e1 = receiver.to_corner1, e2 = receiver.to_corner2;
-  std::array<float, kMaxShadowBatch> u, v, z;
+  // Hard: whether the texel under map point (u, v) occludes the receiver's biased plane
+  // through depth z there. PCF: the same test for the four texels around the point, weighted
+  // bilinearly (as graphics hardware filters shadow maps), so the penumbra is one texel wide
+  // and changes smoothly.
+  const bool pcf = filter == ShadowFilter::pcf;
+  const int corners = pcf ? 4 : 1;
+  Batch<float> u, v, z;
+  TexelBatch texels;
+  std::array<Batch<float>, 4> s;
   for (int first = 0; first < count; first += kMaxShadowBatch) {
     const int n = std::min(count - first, kMaxShadowBatch);
     for (int i = 0; i < n; ++i) {  // branch-free: vectorised
@@ -197,8 +223,18 @@ void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, Shadow
       v[i] = std::clamp(c0.y + a * e1.y + b * e2.y, -2.f, limit);
       z[i] = c0.z + a * e1.z + b * e2.z;
     }
-    for (int i = 0; i < n; ++i) {
-      out[first + i] = filtered_lookup(map, receiver, u[i], v[i], z[i], filter);
+    find_texels(map, receiver, u.data(), v.data(), z.data(), n, corners, pcf ? 0.5f : 0.f,
+                texels);
+    test_texels(map, texels, n, corners, s);
+    float* amount = out + first;
+    if (!pcf) {
+      std::copy_n(s[0].begin(), n, amount);
+      continue;
+    }
+    for (int i = 0; i < n; ++i) {  // vectorised
+      const float fu = texels.fu[i], fv = texels.fv[i];
+      amount[i] = (1.f - fv) * ((1.f - fu) * s[0][i] + fu * s[1][i]) +
+                  fv * ((1.f - fu) * s[2][i] + fu * s[3][i]);
     }
   }
 }

@@ -31,6 +31,7 @@ Viewer::Viewer(ViewSession session, const ViewerOptions& options)
     : session_(std::move(session)), viewer_options_(options) {
   options_ = RenderOptions{.width = options.width, .height = options.height, .threads = options.threads};
   options_.grid.enabled = true;  // as `roomcad render --grid on`
+  options_.outputs.depth = false;  // the window picks by object id, never by depth
   rebuild_model();
   if (options.camera) camera_ = *options.camera;
   else frame_preset(options.view);

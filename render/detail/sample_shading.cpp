@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 
+#include "render/detail/wide_loops.h"
+
 namespace roomcad::detail {
 namespace {
 
@@ -50,18 +52,18 @@ void interpolate_run(const ShadeUniforms& u, const TriangleVarying& v, int x0, i
   const glm::vec3 e1 = v.corners[1] - v.corners[0], e2 = v.corners[2] - v.corners[0];
   for (int i = 0; i < run.count; ++i) {  // branch-free: vectorised
     const double px = x0 + i + 0.5;
-    const double inv = 1.0 / (d.x * px + d_row);  // perspective-correct: one division
-    run.w1[i] = static_cast<float>((a.x * px + a_row) * inv);
-    run.w2[i] = static_cast<float>((b.x * px + b_row) * inv);
+    // Perspective-correct: one division, in float (twice as many lanes as double): the
+    // planes stay in double, where their sums cancel; the quotients are floats either way.
+    const float inv = 1.f / static_cast<float>(d.x * px + d_row);
+    run.w1[i] = static_cast<float>(a.x * px + a_row) * inv;
+    run.w2[i] = static_cast<float>(b.x * px + b_row) * inv;
     const glm::vec3 world = v.corners[0] + run.w1[i] * e1 + run.w2[i] * e2;
     run.x[i] = world.x;
     run.y[i] = world.y;
     run.z[i] = world.z;
   }
-  if (v.is_floor && u.shading.grid.enabled) {
-    for (int i = 0; i < run.count; ++i) {
-      run.color[i] = apply_grid(u.shading.grid, {run.x[i], run.y[i], run.z[i]}, v.color);
-    }
+  if (v.is_floor) {
+    paint_grid(u.shading.grid, v.color, run);
   } else {
     std::fill_n(run.color.begin(), run.count, v.color);
   }
@@ -89,7 +91,7 @@ class TriangleCache {
 
 }  // namespace
 
-void shade_tile(const ShadeUniforms& u, const RasterTarget& t, glm::vec3* rgb) {
+ROOMCAD_WIDE_LOOPS void shade_tile(const ShadeUniforms& u, const RasterTarget& t, glm::vec3* rgb) {
   const int w = t.x1 - t.x0;
   TriangleCache cache;
   SampleRun run;

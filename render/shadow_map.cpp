@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
@@ -66,8 +67,8 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map,
       bins);
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
-    target.depth = &map.depth.at(target.x0, target.y0);
-    target.stride = resolution;
+    target.depth = &map.depth.at(target.x0 + kShadowBorder, target.y0 + kShadowBorder);
+    target.stride = map.depth.width;
     detail::rasterize_tile(bins, tile, target);
   });
 }
@@ -77,11 +78,17 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map,
 void detail::render_shadow_map_into(const Scene& scene, const Light& light, int resolution,
                                     ShadowMap& map, BinnedTriangles& bins) {
   resolution = std::max(resolution, 1);
+  const int side = resolution + 2 * kShadowBorder;
   std::vector<float> depth = std::move(map.depth.values);  // keeps its memory
-  depth.assign(static_cast<std::size_t>(resolution) * resolution, 0.f);
+  depth.assign(static_cast<std::size_t>(side) * side, -std::numeric_limits<float>::infinity());
   map = ShadowMap{};
-  map.depth.width = map.depth.height = resolution;
+  map.resolution = resolution;
+  map.depth.width = map.depth.height = side;
   map.depth.values = std::move(depth);
+  for (int y = 0; y < resolution; ++y) {  // the map itself: nothing there yet
+    float* row = &map.depth.at(kShadowBorder, y + kShadowBorder);
+    std::fill_n(row, resolution, 0.f);
+  }
   map.to_light = to_shading_light(light).to_light;
   const glm::dvec3 to_light(map.to_light);
   if (scene.bounds.is_empty()) return;
@@ -116,7 +123,7 @@ ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal,
   r.grad_v = n.y * map.texel_y / (cos_t * map.depth_range);
   r.bias = map.texel_size() * (0.05f + 0.1f * tan_t) / map.depth_range;
   std::array<glm::vec3, 3> texel;
-  const float size = static_cast<float>(map.depth.width);
+  const float size = static_cast<float>(map.resolution);
   for (int c = 0; c < 3; ++c) {
     const glm::vec4 p = map.light_view_projection * glm::vec4(corners[c], 1.f);
     texel[c] = {(p.x + 1.f) * 0.5f * size, (1.f - p.y) * 0.5f * size, p.z};
@@ -141,100 +148,64 @@ constexpr int kMaxShadowBatch = 64;
 template <typename T>
 using Batch = std::array<T, kMaxShadowBatch>;
 
-/// The texels one lookup reads: corner k of the 2 x 2 block from (iu, iv) is (iu + (k & 1),
-/// iv + (k >> 1)); hard lookups read corner 0 alone. Texels outside the map are read at an
-/// index inside it and then count as lit (`inside` 0), so no loop needs a branch.
-struct TexelBatch {
-  std::array<Batch<int>, 4> index;      ///< into ShadowMap::depth.values
-  std::array<Batch<float>, 4> inside;   ///< 1 or 0
-  std::array<Batch<float>, 4> biased;   ///< the receiver's biased depth at the texel centre
-  Batch<float> fu, fv;                  ///< PCF: the point's offset from texel (iu, iv)
-};
-
-/// Fills the texels of samples [0, n) at map points (u, v) and receiver depths z. `offset` is
-/// 0 for hard lookups (the texel under the point), 0.5 for PCF (the four around it). O(n).
-void find_texels(const ShadowMap& map, const ShadowReceiver& r, const float* u, const float* v,
-                 const float* z, int n, int corners, float offset, TexelBatch& t) {
-  const int size = map.depth.width;
-  Batch<int> iu, iv;
-  Batch<float> d00;
-  for (int i = 0; i < n; ++i) {  // branch-free: vectorised
-    iu[i] = floor_to_int(u[i] - offset);
-    iv[i] = floor_to_int(v[i] - offset);
-    t.fu[i] = u[i] - offset - static_cast<float>(iu[i]);
-    t.fv[i] = v[i] - offset - static_cast<float>(iv[i]);
-    // the receiver's plane extended to the centre of texel (iu, iv)
-    d00[i] = z[i] + r.grad_u * (iu[i] + 0.5f - u[i]) + r.grad_v * (iv[i] + 0.5f - v[i]) + r.bias;
-  }
-  for (int k = 0; k < corners; ++k) {
-    const int du = k & 1, dv = k >> 1;
-    const float step_u = du ? r.grad_u : 0.f, step_v = dv ? r.grad_v : 0.f;
-    for (int i = 0; i < n; ++i) {  // vectorised
-      const int cu = iu[i] + du, cv = iv[i] + dv;
-      const bool in = (cu >= 0) & (cu < size) & (cv >= 0) & (cv < size);  // no branches
-      t.index[k][i] = in ? cv * size + cu : 0;
-      t.inside[k][i] = in ? 1.f : 0.f;
-      t.biased[k][i] = (d00[i] + step_v) + step_u;
-    }
-  }
-}
-
-/// Whether each texel read occludes its receiver depth: 1 or 0 in `occluded`. The one loop
-/// that cannot vectorise on SSE2 (a gather) does nothing but load. O(n * corners).
-void test_texels(const ShadowMap& map, const TexelBatch& t, int n, int corners,
-                 std::array<Batch<float>, 4>& occluded) {
-  const float* depth = map.depth.values.data();
-  for (int k = 0; k < corners; ++k) {
-    Batch<float> texel;
-    for (int i = 0; i < n; ++i) texel[i] = depth[t.index[k][i]];
-    for (int i = 0; i < n; ++i) {  // vectorised
-      occluded[k][i] = texel[i] > t.biased[k][i] ? t.inside[k][i] : 0.f;
-    }
-  }
-}
-
 }  // namespace
 
-ROOMCAD_WIDE_LOOPS void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver, ShadowFilter filter,
-                    const float* w1, const float* w2, int count, float* out) {
+ROOMCAD_WIDE_LOOPS void shadow_amounts(const ShadowMap& map, const ShadowReceiver& receiver,
+                                       ShadowFilter filter, const float* w1, const float* w2,
+                                       int count, float* out) {
   const bool lit = filter == ShadowFilter::off || map.texel_x == 0.f;
   if (lit || !receiver.faces_light) {
     std::fill(out, out + count, lit ? 0.f : 1.f);
     return;
   }
-  // The outside of the map is lit, so coordinates far outside it (up to the float -> int
-  // limit) must stay finite: clamp them to just outside.
-  const float limit = static_cast<float>(map.depth.width) + 2.f;
-  const glm::vec3 c0 = receiver.corner0, e1 = receiver.to_corner1, e2 = receiver.to_corner2;
   // Hard: whether the texel under map point (u, v) occludes the receiver's biased plane
   // through depth z there. PCF: the same test for the four texels around the point, weighted
   // bilinearly (as graphics hardware filters shadow maps), so the penumbra is one texel wide
-  // and changes smoothly.
+  // and changes smoothly. Points are clamped to one texel outside the map, where every texel
+  // read lies in its frame (which never occludes), so no lookup tests bounds.
   const bool pcf = filter == ShadowFilter::pcf;
-  const int corners = pcf ? 4 : 1;
-  Batch<float> u, v, z;
-  TexelBatch texels;
-  std::array<Batch<float>, 4> s;
+  const float offset = pcf ? 0.5f : 0.f;
+  const float lo = -1.f, hi = static_cast<float>(map.resolution) + 1.f;
+  const int stride = map.depth.width;
+  const float* texels = map.depth.values.data() + kShadowBorder * stride + kShadowBorder;  // (0, 0)
+  const glm::vec3 c0 = receiver.corner0, e1 = receiver.to_corner1, e2 = receiver.to_corner2;
+  const float grad_u = receiver.grad_u, grad_v = receiver.grad_v;
+  Batch<int> index;
+  Batch<float> fu, fv, d00;
+  std::array<Batch<float>, 4> t;  // texels (iu, iv), (iu + 1, iv), (iu, iv + 1), (iu + 1, iv + 1)
   for (int first = 0; first < count; first += kMaxShadowBatch) {
     const int n = std::min(count - first, kMaxShadowBatch);
     for (int i = 0; i < n; ++i) {  // branch-free: vectorised
       const float a = w1[first + i], b = w2[first + i];
-      u[i] = std::clamp(c0.x + a * e1.x + b * e2.x, -2.f, limit);
-      v[i] = std::clamp(c0.y + a * e1.y + b * e2.y, -2.f, limit);
-      z[i] = c0.z + a * e1.z + b * e2.z;
+      const float u = std::clamp(c0.x + a * e1.x + b * e2.x, lo, hi);
+      const float v = std::clamp(c0.y + a * e1.y + b * e2.y, lo, hi);
+      const float z = c0.z + a * e1.z + b * e2.z;
+      const int iu = floor_to_int(u - offset), iv = floor_to_int(v - offset);
+      fu[i] = u - offset - static_cast<float>(iu);
+      fv[i] = v - offset - static_cast<float>(iv);
+      index[i] = iv * stride + iu;
+      // the receiver's plane extended to the centre of texel (iu, iv)
+      d00[i] = z + grad_u * (iu + 0.5f - u) + grad_v * (iv + 0.5f - v) + receiver.bias;
     }
-    find_texels(map, receiver, u.data(), v.data(), z.data(), n, corners, pcf ? 0.5f : 0.f,
-                texels);
-    test_texels(map, texels, n, corners, s);
     float* amount = out + first;
     if (!pcf) {
-      std::copy_n(s[0].begin(), n, amount);
+      for (int i = 0; i < n; ++i) t[0][i] = texels[index[i]];  // a gather: loads alone
+      for (int i = 0; i < n; ++i) amount[i] = t[0][i] > d00[i] ? 1.f : 0.f;
       continue;
     }
+    for (int i = 0; i < n; ++i) {  // a gather: loads alone
+      const float* texel = texels + index[i];
+      t[0][i] = texel[0];
+      t[1][i] = texel[1];
+      t[2][i] = texel[stride];
+      t[3][i] = texel[stride + 1];
+    }
     for (int i = 0; i < n; ++i) {  // vectorised
-      const float fu = texels.fu[i], fv = texels.fv[i];
-      amount[i] = (1.f - fv) * ((1.f - fu) * s[0][i] + fu * s[1][i]) +
-                  fv * ((1.f - fu) * s[2][i] + fu * s[3][i]);
+      const float d10 = d00[i] + grad_u, d01 = d00[i] + grad_v, d11 = d01 + grad_u;
+      const float s0 = t[0][i] > d00[i] ? 1.f : 0.f, s1 = t[1][i] > d10 ? 1.f : 0.f;
+      const float s2 = t[2][i] > d01 ? 1.f : 0.f, s3 = t[3][i] > d11 ? 1.f : 0.f;
+      amount[i] = (1.f - fv[i]) * ((1.f - fu[i]) * s0 + fu[i] * s1) +
+                  fv[i] * ((1.f - fu[i]) * s2 + fu[i] * s3);
     }
   }
 }

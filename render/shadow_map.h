@@ -14,11 +14,19 @@ namespace roomcad {
 
 enum class ShadowFilter { off, hard, pcf };
 
+/// Texels around a shadow map that never occlude (see ShadowMap::depth).
+inline constexpr int kShadowBorder = 2;
+
 /// The depth the scene shows a directional light. Depth is reversed (1 nearest the light), as
 /// in the colour pass, so both share the rasteriser.
 struct ShadowMap {
   glm::mat4 light_view_projection{1.f};  ///< scene frame (world - Scene::origin) -> light clip
-  FloatImage depth;                      ///< resolution x resolution, 0 where nothing is
+  int resolution = 0;                    ///< texels per side
+  /// The map, resolution x resolution texels (0 where nothing is), inside a frame of
+  /// kShadowBorder texels a side that never occlude (-infinity): lookups at the map's edge
+  /// read the frame instead of testing bounds. Map texel (x, y) is depth.at(x + kShadowBorder,
+  /// y + kShadowBorder).
+  FloatImage depth;
   glm::mat3 light_rotation{1.f};         ///< world -> light view directions (z to the light)
   glm::vec3 to_light{0.f, 0.f, 1.f};     ///< unit, from the scene towards the light
   float texel_x = 0.f;                   ///< metres covered by one texel, across

@@ -1,5 +1,5 @@
 // The renderer as a whole: determinism across thread counts, shading modes, anti-aliasing,
-// grid lines, caller-owned buffers and option errors.
+// grid lines, caller-owned buffers, the images asked for and option errors.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -49,6 +49,26 @@ TEST(Render, OutputIsIdenticalAtAnyThreadCount) {
   EXPECT_EQ(one.color.pixels, four.color.pixels);
   EXPECT_EQ(one.depth.values, two.depth.values);
   EXPECT_EQ(one.objects.ids, four.objects.ids);
+}
+
+TEST(Render, ImagesLeftOutAreEmptiedAndTheColourIsTheSame) {
+  const Model m = make_room();
+  FrameBuffers all, colour_only, ids_only;
+  RenderOptions options{.width = 120, .height = 90};
+  render_model(m, options, all);
+  ASSERT_EQ(all.depth.values.size(), 120u * 90u);
+  colour_only = all;  // filled buffers must be emptied, not left stale
+  options.outputs = FrameOutputs{.depth = false, .object_ids = false};
+  render_model(m, options, colour_only);
+  EXPECT_EQ(colour_only.color.pixels, all.color.pixels);
+  EXPECT_TRUE(colour_only.depth.values.empty());
+  EXPECT_EQ(colour_only.depth.width, 0);
+  EXPECT_TRUE(colour_only.objects.ids.empty());
+  EXPECT_EQ(colour_only.objects.width, 0);
+  options.outputs = FrameOutputs{.depth = false, .object_ids = true};
+  render_model(m, options, ids_only);
+  EXPECT_EQ(ids_only.objects.ids, all.objects.ids);
+  EXPECT_TRUE(ids_only.depth.values.empty());
 }
 
 TEST(Render, UnlitDrawsPlainColoursAndLitModesDiffer) {

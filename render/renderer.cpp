@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -86,12 +87,20 @@ void resolve_row(const FrameContext& f, const RasterTarget& t, const glm::vec3* 
   const int w = t.x1 - t.x0, ox0 = t.x0 / K, n = w / K;
   const glm::vec3* samples = rgb + static_cast<std::ptrdiff_t>(oy * K - t.y0) * w;
   std::uint8_t* color = out.color.at(ox0, oy);
-  for (int j = 0; j < n; ++j) {
-    glm::vec3 sum(0.f);
-    for (int sy = 0; sy < K; ++sy)
-      for (int sx = 0; sx < K; ++sx) sum += samples[sy * w + j * K + sx];
-    for (int ch = 0; ch < 3; ++ch) {
-      color[3 * j + ch] = static_cast<std::uint8_t>(sum[ch] * scale + 0.5f);
+  if constexpr (K == 1) {  // one sample a pixel: the row's floats in order, a loop that vectorises
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "glm::vec3 arrays are packed floats");
+    const float* channels = glm::value_ptr(samples[0]);
+    for (int c = 0; c < 3 * n; ++c) {
+      color[c] = static_cast<std::uint8_t>(channels[c] * scale + 0.5f);
+    }
+  } else {
+    for (int j = 0; j < n; ++j) {
+      glm::vec3 sum(0.f);
+      for (int sy = 0; sy < K; ++sy)
+        for (int sx = 0; sx < K; ++sx) sum += samples[sy * w + j * K + sx];
+      for (int ch = 0; ch < 3; ++ch) {
+        color[3 * j + ch] = static_cast<std::uint8_t>(sum[ch] * scale + 0.5f);
+      }
     }
   }
   const std::ptrdiff_t centre_row =

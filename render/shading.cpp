@@ -72,7 +72,7 @@ void shade_unlit(const ShadingUniforms& u, const SampleRun& run, glm::vec3* out)
     for (int k = 0; k < u.light_count; ++k) {
       dimming += run.shadow[k][i] * (1.f - u.lights[k].ambient);
     }
-    out[i] = run.color[i] * std::clamp(1.f - dimming, 0.f, 1.f);
+    out[i] = run.color * (run.tint[i] * std::clamp(1.f - dimming, 0.f, 1.f));
   }
 }
 
@@ -122,14 +122,15 @@ ROOMCAD_WIDE_LOOPS void shade_run(const ShadingUniforms& u, const SurfaceLightin
     }
   }
   for (int i = 0; i < run.count; ++i) {
-    out[i] = glm::clamp(run.color[i] * brightness[i] + glm::vec3(highlight[i]), 0.f, 1.f);
+    out[i] = glm::clamp(run.color * (run.tint[i] * brightness[i]) + glm::vec3(highlight[i]),
+                        0.f, 1.f);
   }
 }
 
-void paint_grid(const GridLines& grid, const glm::vec3& color, SampleRun& run) {
+void mark_grid_lines(const GridLines& grid, SampleRun& run) {
   const int n = run.count;
   if (!grid.enabled || !(grid.cell_size > 0.0)) {
-    std::fill_n(run.color.begin(), n, color);
+    std::fill_n(run.tint.begin(), n, 1.f);
     return;
   }
   // In float: the positions are in the scene's frame (metres from the model's centre), where
@@ -145,14 +146,12 @@ void paint_grid(const GridLines& grid, const glm::vec3& color, SampleRun& run) {
     const float clamped = std::clamp(f, -1.f, kLastLine);
     return std::abs(clamped - static_cast<float>(static_cast<int>(clamped + 0.5f)));
   };
-  std::array<float, kMaxRunSamples> shade;
   for (int i = 0; i < n; ++i) {
     const float fx = (run.x[i] - ox) * per_metre, fy = (run.y[i] - oy) * per_metre;
     const bool inside = fx >= -kGridHalfWidth && fy >= -kGridHalfWidth && fx <= end_x && fy <= end_y;
     const bool on_line = std::min(to_line(fx), to_line(fy)) < kGridHalfWidth;
-    shade[i] = inside && on_line ? kGridDarkening : 1.f;
+    run.tint[i] = inside && on_line ? kGridDarkening : 1.f;
   }
-  for (int i = 0; i < n; ++i) run.color[i] = color * shade[i];
 }
 
 ShadingLight to_shading_light(const Light& light) {

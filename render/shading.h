@@ -76,7 +76,8 @@ struct SampleRun {
   int count = 0;                                    ///< 0 .. kMaxRunSamples
   std::array<float, kMaxRunSamples> w1{}, w2{};     ///< barycentrics of corners 1 and 2
   std::array<float, kMaxRunSamples> x{}, y{}, z{};  ///< world positions, metres
-  std::array<glm::vec3, kMaxRunSamples> color{};    ///< sRGB in [0, 1], grid lines applied
+  glm::vec3 color{0.f};                             ///< the surface's plain colour, sRGB [0, 1]
+  std::array<float, kMaxRunSamples> tint{};         ///< 1, or darker on a floor's tile line
   std::array<std::array<float, kMaxRunSamples>, kMaxLights> shadow{};  ///< 0 lit ... 1 shadowed
 };
 
@@ -85,10 +86,10 @@ struct SampleRun {
 void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
                glm::vec3* out);
 
-/// Sets the run's colours: `color`, darkened where a sample lies on a tile line of the site
-/// (half-width 1.5% of a cell) and inside the site; plain elsewhere or when the grid is off.
+/// Sets the run's tints: darker where a sample lies on a tile line of the site (half-width
+/// 1.5% of a cell) and inside the site, 1 elsewhere or when the grid is off.
 /// @pre run.x, run.y set for run.count samples. O(count).
-void paint_grid(const GridLines& grid, const glm::vec3& color, SampleRun& run);
+void mark_grid_lines(const GridLines& grid, SampleRun& run);
 
 /// @return an 8-bit colour as sRGB in [0, 1]. O(1).
 [[nodiscard]] inline glm::vec3 to_unit_rgb(Color c) { return glm::vec3(c.r, c.g, c.b) / 255.f; }

@@ -62,10 +62,11 @@ void interpolate_run(const ShadeUniforms& u, const TriangleVarying& v, int x0, i
     run.y[i] = world.y;
     run.z[i] = world.z;
   }
+  run.color = v.color;
   if (v.is_floor) {
-    paint_grid(u.shading.grid, v.color, run);
+    mark_grid_lines(u.shading.grid, run);
   } else {
-    std::fill_n(run.color.begin(), run.count, v.color);
+    std::fill_n(run.tint.begin(), run.count, 1.f);
   }
   for (std::size_t k = 0; k < u.shadow_maps->size(); ++k) {
     shadow_amounts((*u.shadow_maps)[k], v.receivers[k], u.filter, run.w1.data(), run.w2.data(),

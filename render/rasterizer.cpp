@@ -212,15 +212,20 @@ ROOMCAD_WIDE_LOOPS void rasterize_triangle(const ScreenTriangle& t, const Raster
   std::array<EdgeSpan, 3> spans{EdgeSpan(e[0]), EdgeSpan(e[1]), EdgeSpan(e[2])};
   for (int y = y_begin; y < y_end; ++y) {
     // The row's span: the pixels where all three (biased) edge functions are >= 0.
-    std::int64_t lo_edge = 0, hi_edge = x_end - x_begin;
+    const std::int64_t box_width = x_end - x_begin;
+    std::int64_t lo_edge = 0, hi_edge = box_width;
     for (EdgeSpan& span : spans) {
       span.narrow(lo_edge, hi_edge);
       span.step();
     }
-    const int lo = static_cast<int>(lo_edge), hi = static_cast<int>(std::max(lo_edge, hi_edge));
+    // Every row of the box meets the triangle, so the bounds stay within a pixel of the box
+    // (a right bound of a nearly level edge lies far beyond it, but min() took care of that);
+    // the clamp only makes the narrowing to int safe by construction.
+    const int lo = static_cast<int>(std::min(lo_edge, box_width));
+    const int hi = static_cast<int>(std::max<std::int64_t>(lo, hi_edge));
     const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride +
                                (x_begin - target.x0);
-    // The row's depth in double, then float across the span (four pixels per SSE2 step):
+    // The row's depth in double, then float across the span (a vector of pixels per step):
     // at most a tile wide, that adds a few float ulps to the correctly rounded value.
     const float row_z = static_cast<float>(plane.start + (y - y_begin) * plane.dy);
     const float dx = static_cast<float>(plane.dx);

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "render/clip.h"
@@ -73,6 +75,59 @@ TEST(Render, SharedEdgesThroughPixelCentresAreDrawnExactlyOnce) {
   }
   EXPECT_EQ(total[2 * w + 12], 0);
   EXPECT_EQ(total[12 * w + 5], 0);  // the bottom edge is not a top edge: left out
+}
+
+/// Whether pixel (px, py)'s centre is inside t by the top-left rule, straight from the edge
+/// functions (the reference the rasteriser's stepped spans must agree with).
+bool covers_centre(const ScreenTriangle& t, std::int64_t px, std::int64_t py) {
+  const std::int64_t cx = px * kSubpixelScale + kSubpixelScale / 2;
+  const std::int64_t cy = py * kSubpixelScale + kSubpixelScale / 2;
+  for (int k = 0; k < 3; ++k) {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    const std::int64_t ax = t.x[a], ay = t.y[a], bx = t.x[b], by = t.y[b];
+    const bool top_left = ay > by || (ay == by && bx > ax);
+    const std::int64_t e = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+    if (e - (top_left ? 0 : 1) < 0) return false;
+  }
+  return true;
+}
+
+TEST(Render, SteppedSpansOfHugeTrianglesMatchTheEdgeFunctions) {
+  // The rasteriser steps each edge's bound from row to row (quotient and remainder); over a
+  // thousand rows of a triangle as wide as the largest image, with an edge one 256th of a
+  // pixel from level (its line meets a row 1000 pixels away 2^32 pixels off), any slip would
+  // show. Windows of 64 x 64 at both ends and the middle, in four mirror images, must cover
+  // exactly the centres the edge functions say.
+  constexpr std::int32_t kWide = 16384 * kSubpixelScale, kTall = 1000 * kSubpixelScale;
+  for (const bool flip_x : {false, true}) {
+    for (const bool flip_y : {false, true}) {
+      ScreenTriangle t;
+      t.x = {0, kWide, kWide / 2};
+      t.y = {1, 0, kTall};  // corners 0 and 1: one subpixel apart in y
+      t.depth = {0.5f, 0.5f, 0.5f};
+      for (auto& x : t.x) x = flip_x ? kWide - x : x;
+      for (auto& y : t.y) y = flip_y ? kTall - y : y;
+      const std::int64_t area = std::int64_t{t.x[1] - t.x[0]} * (t.y[2] - t.y[0]) -
+                                std::int64_t{t.y[1] - t.y[0]} * (t.x[2] - t.x[0]);
+      if (area < 0) std::swap(t.x[1], t.x[2]), std::swap(t.y[1], t.y[2]);
+      for (const int window_x : {0, 8160, 16320}) {
+        const int window_y = flip_y ? 936 : 0;  // next to the level edge, and far from it
+        for (const int window_y2 : {window_y, 468}) {
+          std::vector<float> depth(64 * 64, 0.f);
+          rasterize_triangle(t, RasterTarget{.x0 = window_x, .y0 = window_y2, .x1 = window_x + 64,
+                                             .y1 = window_y2 + 64, .depth = depth.data()});
+          int wrong = 0;
+          for (int y = 0; y < 64; ++y) {
+            for (int x = 0; x < 64; ++x) {
+              wrong += (depth[y * 64 + x] > 0.f) != covers_centre(t, window_x + x, window_y2 + y);
+            }
+          }
+          EXPECT_EQ(wrong, 0) << "flip " << flip_x << flip_y << " window " << window_x << ","
+                              << window_y2;
+        }
+      }
+    }
+  }
 }
 
 TEST(Render, BackFacesAreCulledAndFrontFacesKept) {

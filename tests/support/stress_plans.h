@@ -9,7 +9,7 @@ namespace roomcad::test {
 inline constexpr std::uint64_t kDefaultStressPlans = 1000;
 
 /// The number of random plans a stress test runs: ROOMCAD_STRESS_PLANS if set (the sanitized
-/// suite sets it lower, as every plan costs ~20x more under AddressSanitizer), otherwise
+/// suite sets it lower, as a plan's build costs ~35x more under AddressSanitizer), otherwise
 /// kDefaultStressPlans. Prints the count used, and where it came from, to stdout, so a
 /// shortened run is never mistaken for a full one.
 /// @return a count of at least 1.

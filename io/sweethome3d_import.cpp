@@ -156,6 +156,11 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   const std::vector<sh3d::PlacedWall> walls =
       sh3d::convert_walls(home, home.walls, home.items, wall_options, out.warnings);
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
+  // Found by fuzz_sh3d_archive: with every wall left out, the site's box stayed empty.
+  if (out.plan.walls.empty())
+    return Result<Sh3dImport>::failure(fmt::format(
+        "{}: no wall to import: each of its {} <wall> elements starts and ends at the same point",
+        file, home.walls.size()));
   out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
   // Arcs become up to 256 chords each: the plan itself must stay readable.
   if (out.plan.walls.size() > io_detail::kMaxPlanObjects)

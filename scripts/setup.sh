@@ -2,6 +2,7 @@
 # Installs, from Debian's packages, whatever roomcad needs that this machine lacks (toolchain
 # included). Idempotent and non-interactive: packages already installed are left alone, and
 # nothing is fetched when nothing is missing. Run as root, or as a user with sudo.
+# Usage: scripts/setup.sh [EXTRA_PACKAGE...]   (e.g. the sanitized build's clang)
 set -euo pipefail
 
 packages=(
@@ -14,6 +15,7 @@ packages=(
   # tests and benchmarks (Xvfb: a screen for the window tests of `roomcad view`; gnuplot draws
   # bench/report.sh's plots)
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth gnuplot-nox
+  "$@"
 )
 
 missing=()

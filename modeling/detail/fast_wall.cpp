@@ -119,8 +119,11 @@ std::vector<char> find_cuts(const Context& cx, int s) {
   for (std::size_t k = 0; k < cx.frame.holes.size(); ++k) {
     const auto [c0, c1, r0, r1] = g.cells_of(k);
     if (c0 == 0 || c1 == nc || r0 == 0 || r1 == nr) continue;  // a notch: nothing to cut
-    auto both_solid = [&](std::size_t r) {
-      return g.is_side_solid(s, std::ptrdiff_t(c0) - 1, std::ptrdiff_t(r)) && g.is_side_solid(s, std::ptrdiff_t(c0), std::ptrdiff_t(r));
+    // c0 copied into the capture: C++20 lets a lambda name a structured binding, clang 14
+    // (the sanitized build's compiler) does not yet.
+    auto both_solid = [&g, s, column = std::ptrdiff_t(c0)](std::size_t r) {
+      return g.is_side_solid(s, column - 1, std::ptrdiff_t(r)) &&
+             g.is_side_solid(s, column, std::ptrdiff_t(r));
     };
     for (std::size_t r = r0; r-- > 0 && both_solid(r);) cut[c0 * nr + r] = 1;
     for (std::size_t r = r1; r < nr && both_solid(r); ++r) cut[c0 * nr + r] = 1;

@@ -122,6 +122,23 @@ TEST(HostileInput, Sh3dHomeSpreadBeyondAnySiteIsRefused) {
   EXPECT_NE(again.error().find("more than 1e+09 cells"), std::string::npos) << again.error();
 }
 
+TEST(HostileInput, Sh3dHomeWhoseWallsAllHaveZeroLengthIsRefused) {
+  // Found by fuzz_sh3d_archive (fuzz/corpus/sh3d_archive/crash-zero-length-walls.sh3d): with
+  // every wall left out, the site was made from an empty box and its cell count overflowed.
+  const std::string xml =
+      "<home><wall id='a' xStart='400' yStart='0' xEnd='400' yEnd='0' thickness='10' "
+      "height='250'/><wall id='b' xStart='1' yStart='2' xEnd='1' yEnd='2' thickness='10' "
+      "height='250'/></home>";
+  const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "dots.Home.xml");
+  ASSERT_FALSE(imported.ok());
+  EXPECT_EQ(imported.error(), "dots.Home.xml: no wall to import: each of its 2 <wall> elements "
+                              "starts and ends at the same point");
+  const auto found = test::source_dir() / "fuzz/corpus/sh3d_archive/crash-zero-length-walls.sh3d";
+  const Result<Sh3dImport> again = import_sweethome3d_file(found);
+  ASSERT_FALSE(again.ok());
+  EXPECT_NE(again.error().find("no wall to import"), std::string::npos) << again.error();
+}
+
 TEST(HostileInput, ArcWithAToleranceBelowItsRoundingGetsBoundedChords) {
   // 1 - tolerance / radius rounds to 1: the chord angle is 0 and the chord count infinite.
   const std::vector<Point2> points = sh3d::split_arc({0, 0}, {1e9, 0}, 1.0, 1e-12);

@@ -1,5 +1,5 @@
-// A thousand plans from the seeded generator (tests/support/random_plan.h), through
-// validation, both build paths and the renderer:
+// A thousand plans (or ROOMCAD_STRESS_PLANS: support/stress_plans.h) from the seeded
+// generator (tests/support/random_plan.h), through validation, both build paths and the renderer:
 // - verdicts exact: a plan swapped in x and y, or scaled by 1024, gets the same codes on the
 //   same objects (both motions are exact on doubles, and verdicts are exact for the numbers
 //   as written);
@@ -7,7 +7,7 @@
 //   no error appears) builds on the fast path into a closed, manifold, outward solid with the
 //   analytic volume; its render (PCF shadows, the plan's lights) has no NaN depth;
 // - the same on the CGAL path, with the same volume;
-// for every seed on the automatic path, the first kCgalPlans on the CGAL path.
+// for every seed on the automatic path, the first 1 in 25 of them on the CGAL path.
 #include <algorithm>
 #include <cstdio>
 #include <set>
@@ -21,18 +21,17 @@
 #include "scene_support.h"
 #include "support/random_plan.h"
 #include "support/solid_tolerance.h"
+#include "support/stress_plans.h"
 #include "validation/validate.h"
 
 namespace roomcad {
 namespace {
 
-constexpr std::uint64_t kPlans = 1000;
 /// Building is slower than validating: measured on 2 shared cores, a plan's greedy valid part,
-/// fast build, checks and render take ~90 ms of CPU; all plans are built (~90 s), since
-/// failures are rare (finding S4: 11 seeds in 1000), and the CGAL path (Nef polyhedra,
-/// several times slower) on the first kCgalPlans of them.
-constexpr std::uint64_t kBuildPlans = kPlans;
-constexpr std::uint64_t kCgalPlans = 40;
+/// fast build, checks and render take ~90 ms of CPU; all plans are built (~90 s for the default
+/// 1000), since failures are rare (finding S4: 11 seeds in 1000), and the CGAL path (Nef
+/// polyhedra, several times slower) on the first 1 in 25 of them (40 of 1000).
+std::uint64_t cgal_plan_count(std::uint64_t plans) { return std::max<std::uint64_t>(1, plans / 25); }
 
 test::RandomPlanOptions plain_options() {
   test::RandomPlanOptions o;
@@ -72,8 +71,9 @@ Plan scaled(Plan p, double k) {
 }
 
 TEST(RandomPlans, VerdictsAreTheSameUnderExactMotions) {
+  const std::uint64_t plans = test::stress_plan_count();
   std::size_t errors = 0;
-  for (std::uint64_t seed = 1; seed <= kPlans; ++seed) {
+  for (std::uint64_t seed = 1; seed <= plans; ++seed) {
     SCOPED_TRACE(seed);
     const Plan plan = test::random_plan(seed, plain_options());
     const auto expected = verdicts(plan);
@@ -81,7 +81,7 @@ TEST(RandomPlans, VerdictsAreTheSameUnderExactMotions) {
     EXPECT_EQ(verdicts(swapped_xy(plan)), expected);
     EXPECT_EQ(verdicts(scaled(plan, 1024.0)), expected);
   }
-  EXPECT_GT(errors, kPlans) << "the generator should make plenty of findings";
+  EXPECT_GT(errors, plans) << "the generator should make plenty of findings";
 }
 
 /// Appends each item of `from` to `to` and keeps it only while the plan validates.
@@ -135,25 +135,28 @@ double expect_valid_build(const Plan& plan, BooleanPath path, BuildStats& total)
 }
 
 TEST(RandomPlans, ValidPartsBuildClosedWithTheirVolumeOnBothPaths) {
+  const std::uint64_t plans = test::stress_plan_count();
+  const std::uint64_t cgal_plans = cgal_plan_count(plans);
   BuildStats fast, cgal;
   std::size_t openings = 0;
-  for (std::uint64_t seed = 1; seed <= kBuildPlans; ++seed) {
+  for (std::uint64_t seed = 1; seed <= plans; ++seed) {
     SCOPED_TRACE(seed);
     const Plan plan = valid_part(test::random_plan(seed, plain_options()));
     openings += plan.openings.size();
     const double volume = expect_valid_build(plan, BooleanPath::automatic, fast);
-    if (seed > kCgalPlans) continue;
+    if (seed > cgal_plans) continue;
     const double exact = expect_valid_build(plan, BooleanPath::cgal, cgal);
     EXPECT_NEAR(volume, exact, 2e-9 * exact);
   }
   // Not vacuous: many walls, both paths of the automatic build, openings cut.
-  EXPECT_GT(fast.fast_path_walls + fast.cgal_path_walls, 2 * kBuildPlans);
-  EXPECT_GT(fast.fast_path_walls, kBuildPlans / 3);
-  EXPECT_GT(fast.cgal_path_walls, kBuildPlans);
-  EXPECT_GT(openings, kBuildPlans / 2);
-  std::printf("random plans: %zu walls on the fast path, %zu through CGAL joins, %zu openings; "
-              "CGAL path: %zu walls\n", fast.fast_path_walls, fast.cgal_path_walls, openings,
-              cgal.cgal_path_walls);
+  EXPECT_GT(fast.fast_path_walls + fast.cgal_path_walls, 2 * plans);
+  EXPECT_GT(fast.fast_path_walls, plans / 3);
+  EXPECT_GT(fast.cgal_path_walls, plans);
+  EXPECT_GT(openings, plans / 2);
+  std::printf("random plans: %llu (%llu on the CGAL path): %zu walls on the fast path, %zu "
+              "through CGAL joins, %zu openings; CGAL path: %zu walls\n",
+              static_cast<unsigned long long>(plans), static_cast<unsigned long long>(cgal_plans),
+              fast.fast_path_walls, fast.cgal_path_walls, openings, cgal.cgal_path_walls);
 }
 
 }  // namespace

@@ -101,8 +101,10 @@ bool check_site(const Site& s, Report& report) {
 bool check_wall(const Wall& w, std::size_t i, Report& report) {
   FieldChecker c(report, "wall", "walls", i, w.id);
   check_id(c, w.id);
-  const bool ends = (c.finite("from", w.from) && c.computable("from", w.from)) &
-                    (c.finite("to", w.to) && c.computable("to", w.to));
+  // Both ends checked (and reported) before either verdict is used: no short circuit.
+  const bool from_ok = c.finite("from", w.from) && c.computable("from", w.from);
+  const bool to_ok = c.finite("to", w.to) && c.computable("to", w.to);
+  const bool ends = from_ok && to_ok;
   if (ends && w.from == w.to)
     c.fail("its length", "0 (from equals to)", "positive",
            fmt::format("move `to` of wall '{}' away from `from`, or delete the wall", w.id));
@@ -135,7 +137,9 @@ void check_light(const Light& l, std::size_t i, Report& report) {
 void check_camera(const Camera& cam, std::size_t i, Report& report) {
   FieldChecker c(report, "camera", "cameras", i, cam.id);
   check_id(c, cam.id);
-  if ((c.finite("eye", cam.eye) & c.finite("target", cam.target)) && cam.eye == cam.target)
+  const bool eye_ok = c.finite("eye", cam.eye);  // both reported: no short circuit
+  const bool target_ok = c.finite("target", cam.target);
+  if (eye_ok && target_ok && cam.eye == cam.target)
     c.fail("target", "equal to eye", "a point other than the eye");
   if (c.finite("up", cam.up)) c.non_zero("up", cam.up);
   const bool fov_ok = std::isfinite(cam.fov_deg) && cam.fov_deg > 0 && cam.fov_deg < 180;

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Builds roomcad, its tests and its libFuzzer targets once, in build-san/, with clang and
+# AddressSanitizer + UndefinedBehaviorSanitizer; every library also carries libFuzzer's
+# coverage hooks, so scripts/test-sanitized.sh and scripts/fuzz.sh share one compile of the
+# modules (the CGAL translation units are most of the cost). No benchmarks.
+#
+# -O1 keeps ASan's checks exact and the build short; -gline-tables-only keeps file and line in
+# every report. clang rather than GCC because libFuzzer needs it, and it is the faster of the
+# two here (the README gives both measured times).
+# Usage: scripts/build-sanitized.sh [CMAKE_BUILD_ARGS...]   (e.g. --target fuzzers)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# clang and its runtime (libFuzzer, sanitizers) are needed here only, not by the normal build.
+bash scripts/setup.sh clang libclang-rt-14-dev
+cmake -S . -B build-san -DCMAKE_CXX_COMPILER=clang++ -DROOMCAD_FUZZ=ON -DCMAKE_BUILD_TYPE=None \
+  -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" -DROOMCAD_BENCH=OFF >/dev/null
+cmake --build build-san -j"$(nproc)" "$@"

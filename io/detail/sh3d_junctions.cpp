@@ -125,13 +125,13 @@ void join_t_ends(std::vector<WallRecord>& walls, double snap_distance, Report& w
       Point2& end = at_start ? w.start : w.end;
       const auto join = t_join_of(walls, i, at_start ? w.end : w.start, end);
       if (!join) continue;
-      moved.push_back(fmt::format("'{}' {} by {:.4f} m onto '{}'", w.id, at_start ? "start" : "end",
-                                  distance(end, join->first), walls[join->second].id));
       // A point moved next to another wall's end (a T at a corner) becomes that end.
       const Point2 old_end = end;
       const Point2 new_end =
           nearby_end(walls, walls.size(), i, join->first, snap_distance).value_or(join->first);
-      if (!keeps_lengths(walls, old_end, new_end)) continue;
+      if (!keeps_lengths(walls, old_end, new_end)) continue;  // not moved: not reported
+      moved.push_back(fmt::format("'{}' {} by {:.4f} m onto '{}'", w.id, at_start ? "start" : "end",
+                                  distance(old_end, join->first), walls[join->second].id));
       for (WallRecord& other : walls)
         for (Point2* p : {&other.start, &other.end})
           if (*p == old_end) *p = new_end;  // this end and the pieces in line sharing it

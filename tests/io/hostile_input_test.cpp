@@ -139,6 +139,29 @@ TEST(HostileInput, Sh3dHomeWhoseWallsAllHaveZeroLengthIsRefused) {
   EXPECT_NE(again.error().find("no wall to import"), std::string::npos) << again.error();
 }
 
+TEST(HostileInput, Sh3dTEndsThatCannotMoveAreNeitherMovedNorReported) {
+  // Found by fuzz_sh3d_archive (fuzz/corpus/sh3d_archive/crash-t-join-kept.sh3d): ends inside
+  // another wall whose move would change a wall's length stay put, but were listed as moved,
+  // and the warning then named its first object from an empty list (undefined behaviour).
+  const std::string xml =
+      "<home><level id='l0' name='Ground' elevation='0' height='250'/>"
+      "<wall id='w0' level='l0' xStart='199' yStart='0' xEnd='400' yEnd='0' height='249' "
+      "thickness='10'/><wall id='w2' level='l0' xStart='401' yStart='0' xEnd='400' yEnd='0' "
+      "height='250' thickness='10'/><wall id='w3' level='l0' xStart='401' yStart='0' "
+      "xEnd='400' yEnd='2' height='250' thickness='10'/></home>";
+  for (const Result<Sh3dImport>& imported :
+       {import_sweethome3d_text(xml, "kept.Home.xml"),
+        import_sweethome3d_file(test::source_dir() /
+                                "fuzz/corpus/sh3d_archive/crash-t-join-kept.sh3d")}) {
+    ASSERT_TRUE(imported.ok()) << imported.error();
+    for (const Diagnostic& d : imported.value().warnings.items) {
+      if (d.code == "import_t_junction") {
+        EXPECT_FALSE(d.objects.empty()) << d.message;
+      }
+    }
+  }
+}
+
 TEST(HostileInput, ArcWithAToleranceBelowItsRoundingGetsBoundedChords) {
   // 1 - tolerance / radius rounds to 1: the chord angle is 0 and the chord count infinite.
   const std::vector<Point2> points = sh3d::split_arc({0, 0}, {1e9, 0}, 1.0, 1e-12);

@@ -70,7 +70,7 @@ void run_roomcad(benchmark::State& state, int n, BooleanPath path) {
     model = build_model(s.plan, options);
     build_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (const Status written = write_mesh_file(file, MeshParts{{&model.walls}, &model.objects}); !written)
-      return state.SkipWithError(written.error.c_str());
+      return state.SkipWithError(written.message().c_str());
   }
   const SolidCheck check = check_solid(model.walls);
   if (!check.is_valid()) state.SkipWithError("the wall solid fails check_solid");

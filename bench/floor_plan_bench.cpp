@@ -11,13 +11,13 @@ namespace {
 using namespace roomcad;
 
 void BM_FloorPlanHouse(benchmark::State& state) {
-  const PlanReadResult read = read_plan_file(ROOMCAD_SOURCE_DIR "/examples/house.json");
-  if (!read.plan) {
+  const Result<Plan> read = read_plan_file(ROOMCAD_SOURCE_DIR "/examples/house.json");
+  if (!read) {
     state.SkipWithError("examples/house.json does not read");
     return;
   }
   for (auto _ : state) {
-    benchmark::DoNotOptimize(make_floor_plan_svg(draw_floor_plan(*read.plan, {}), "").to_string());
+    benchmark::DoNotOptimize(make_floor_plan_svg(draw_floor_plan(read.value(), {}), "").to_string());
   }
 }
 BENCHMARK(BM_FloorPlanHouse)->Unit(benchmark::kMillisecond);

@@ -123,7 +123,7 @@ inline std::string format_markdown(const std::vector<TableRow>& rows) {
 /// Writes the text atomically. @return false (with a message on stderr) on failure.
 inline bool write_text(const std::string& path, const std::string& text) {
   const Status s = write_file_atomically(path, text);
-  if (!s) std::fprintf(stderr, "build_bench: error: %s\n", s.error.c_str());
+  if (!s) std::fprintf(stderr, "build_bench: error: %s\n", s.message().c_str());
   return bool(s);
 }
 

@@ -40,13 +40,13 @@ Camera camera_at(Vec3 eye, Vec3 target) {
 const std::array<View, 4>& views() {
   static const std::array<View, 4> all = [] {
     const Scene grid = flatten_plan(bench::make_grid_plan({.n = 10}));
-    PlanReadResult read = read_plan_file(ROOMCAD_SOURCE_DIR "/examples/house.json");
-    if (!read.plan) throw std::runtime_error("skipping_bench: examples/house.json does not load");
-    const Scene house = flatten_plan(*read.plan);
+    Result<Plan> read = read_plan_file(ROOMCAD_SOURCE_DIR "/examples/house.json");
+    if (!read) throw std::runtime_error("skipping_bench: examples/house.json does not load");
+    const Scene house = flatten_plan(read.value());
     return std::array<View, 4>{{
         {"grid10_outside", grid, std::nullopt},
         {"grid10_inside", grid, camera_at({1.0, 1.0, 1.6}, {8.0, 2.6, 1.4})},
-        {"house_outside", house, read.plan->cameras.front()},
+        {"house_outside", house, read->cameras.front()},
         {"house_inside", house, camera_at({6.0, 2.0, 1.6}, {18.0, 5.0, 1.2})},
     }};
   }();

@@ -11,7 +11,7 @@ namespace {
 using namespace roomcad;
 
 SurfaceExpression compile(const char* text) {
-  return std::get<SurfaceExpression>(parse_surface_expression(text));
+  return parse_surface_expression(text).value();
 }
 
 void BM_EvaluateDampedWave(benchmark::State& state) {

@@ -26,7 +26,7 @@ void BM_ImportMezzanineHouse(benchmark::State& state) {
   const std::string xml = read_home();
   for (auto _ : state) {
     auto imported = roomcad::import_sweethome3d_text(xml, "mezzanine");
-    if (!imported.ok()) state.SkipWithError(imported.error().c_str());
+    if (!imported.ok()) state.SkipWithError(imported.message().c_str());
     benchmark::DoNotOptimize(imported);
   }
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * xml.size()));

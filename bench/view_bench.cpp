@@ -18,7 +18,7 @@ std::filesystem::path example(const std::string& name) {
 
 Viewer open_viewer(const std::string& name) {
   Result<ViewSession> session = ViewSession::open(example(name));
-  if (!session) throw std::runtime_error(session.error());
+  if (!session) throw std::runtime_error(session.message());
   return Viewer(std::move(session).value(), ViewerOptions{.width = 1280, .height = 720});
 }
 

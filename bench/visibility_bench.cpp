@@ -37,9 +37,9 @@ std::vector<BenchScene> load_scenes() {
   const std::string dir = ROOMCAD_SOURCE_DIR "/examples/";
   for (const char* file : {"studio.json", "flat.json", "house.json", "office.json",
                            "sweethome3d/Sample.json", "sweethome3d/4-BedroomHouse.json"}) {
-    PlanReadResult read = read_plan_file(dir + file);
-    if (!read.plan) continue;
-    out.push_back({std::filesystem::path(file).stem().string(), std::move(*read.plan), {}, {}});
+    Result<Plan> read = read_plan_file(dir + file);
+    if (!read) continue;
+    out.push_back({std::filesystem::path(file).stem().string(), std::move(read).value(), {}, {}});
   }
   for (const int n : {5, 10, 20}) {
     out.push_back({"grid" + std::to_string(n), bench::make_grid_plan({.n = n}), {}, {}});

@@ -57,13 +57,13 @@ std::vector<std::pair<std::string, std::string>> given_fields(const AddArgs& arg
     const auto& [key, option] = args.fields[i];
     if (option->count() == 0) continue;
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw std::invalid_argument(fmt::format("{} does not apply to a {} (it takes: {})",
+      throw_usage_error(fmt::format("{} does not apply to a {} (it takes: {})",
                                               option_name(key), args.kind, fmt::join(allowed, ", ")));
     given.emplace_back(key, args.values[i]);
   }
   for (const std::string_view key : required_fields(args.kind)) {
     if (std::none_of(given.begin(), given.end(), [&](const auto& g) { return g.first == key; }))
-      throw std::invalid_argument(fmt::format("add {} needs {}", args.kind, option_name(key)));
+      throw_usage_error(fmt::format("add {} needs {}", args.kind, option_name(key)));
   }
   return given;
 }

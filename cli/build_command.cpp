@@ -9,7 +9,6 @@
 #include <fmt/format.h>
 
 #include "cli/command.h"
-#include "cli/parts_option.h"
 #include "cli/plan_loading.h"
 #include "io/mesh_export.h"
 #include "modeling/build_model.h"
@@ -90,27 +89,14 @@ void print_stats(const Model& model, const BuildStats& stats) {
                model.floor.n_faces(), model.fixtures.n_faces());
 }
 
-int export_model(const BuildCommandOptions& options, const Model& model) {
-  MeshParts parts{{&model.walls, &model.floor, &model.fixtures}, &model.objects};
-  if (const Status s = write_mesh_file(options.out, parts); !s) {
-    std::fprintf(stderr, "roomcad build: error: %s\n", s.error.c_str());
-    return kCannotRun;
-  }
-  return kOk;
-}
-
 int run_build(const BuildCommandOptions& options) {
   BuildOptions build;
-  std::string bad;
-  if (!parse_parts(options.parts, build.parts, bad)) {
-    std::fprintf(stderr, "roomcad build: error: --parts: '%s' is not walls, floor or fixtures\n", bad.c_str());
-    return kCannotRun;
-  }
+  const Result<Parts> parts = parse_parts(options.parts);
+  if (!parts) return report_failure("build", parts.error());
+  build.parts = parts.value();
   if (!options.out.empty())
-    if (const auto format = mesh_format_of(options.out); !format) {
-      std::fprintf(stderr, "roomcad build: error: -o: %s\n", format.error().c_str());
-      return kCannotRun;
-    }
+    if (const auto format = mesh_format_of(options.out); !format)
+      return report_failure("build", format.error());
   // The validation gate: errors stop the build unless --force.
   const LoadedPlan loaded = load_valid_plan("build", options.plan, options.force);
   if (!loaded.plan) return loaded.exit_status;
@@ -118,23 +104,19 @@ int run_build(const BuildCommandOptions& options) {
   build.threads = options.threads;
   const bool export_walls = build.parts.walls;
   if (options.check) build.parts.walls = true;  // checked even when not written
-  Model model;
   BuildStats stats;
-  try {
-    model = build_model(*loaded.plan, build, &stats);
-  } catch (const PreconditionError& e) {
-    std::fprintf(stderr, "roomcad build: %s: error: %s\n", options.plan.c_str(), e.what());
-    return kPlanErrors;
-  }
+  Model model = build_model(*loaded.plan, build, &stats);  // PreconditionError: main reports it
   if (options.stats) print_stats(model, stats);
   if (!options.out.empty()) {
     if (!export_walls) model.walls = SolidMesh{}, add_face_properties(model.walls);
-    if (const int status = export_model(options, model); status != kOk) return status;
+    const MeshParts mesh{{&model.walls, &model.floor, &model.fixtures}, &model.objects};
+    if (const Status written = write_mesh_file(options.out, mesh); !written)
+      return report_failure("build", written.error());
   }
-  if (!options.check) return kOk;
+  if (!options.check) return kExitOk;
   const CheckVerdict verdict = check_walls(model, *loaded.plan);
   std::fputs((options.format == "json" ? check_json(verdict) : check_text(verdict)).c_str(), stdout);
-  return verdict.ok ? kOk : kPlanErrors;
+  return verdict.ok ? kExitOk : kExitPlanErrors;
 }
 
 }  // namespace

@@ -1,18 +1,32 @@
 // How subcommands plug into the `roomcad` command: each cli/<name>_command.cpp defines one
 // add_<name>_command that registers its options on the root app and returns what to run.
+//
+// Failing: a command's run function returns its exit status; a step that fails returns an
+// Error (Result/Status) which the command hands to report_failure, or throws
+// PreconditionError (a bad flag found deep in a helper), which main reports the same way.
 #pragma once
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "core/error.h"
+
 namespace roomcad::cli {
 
-/// Exit statuses of every command (../shared/spec/plan-format.md).
-enum ExitStatus : int { kOk = 0, kPlanErrors = 1, kCannotRun = 2 };
+/// Prints "roomcad <command>: error: <message>" on stderr.
+/// @return the exit status of the error's code (exit_status_of in core/code.h).
+int report_failure(std::string_view command, const Error& error);
+
+/// Throws PreconditionError(usage_error): a bad flag found inside a helper; main reports it
+/// and ends with exit status 2.
+[[noreturn]] inline void throw_usage_error(std::string message) {
+  throw PreconditionError(std::move(message), Code::usage_error);
+}
 
 /// A registered subcommand and the function that runs it once its options are parsed.
 struct Command {

@@ -16,7 +16,6 @@
 #include <fmt/ranges.h>
 
 #include "cli/command.h"
-#include "cli/parts_option.h"
 #include "cli/plan_loading.h"
 #include "io/floor_plan_svg.h"
 #include "render/floor_plan.h"
@@ -53,12 +52,10 @@ Result<SvgDocument> draw_model_view(const Plan& plan, const DrawOptions& o, doub
                                     const LineView& view) {
   LineDrawingOptions options{.scale = scale,
                              .hidden = o.hidden == "off" ? HiddenLines::off : HiddenLines::dashed};
-  std::string bad;
-  if (!parse_parts(o.parts, options.parts, bad)) {
-    return Result<SvgDocument>::failure(
-        fmt::format("--parts \"{}\": \"{}\" is not walls, floor or fixtures", o.parts, bad));
-  }
-  // A model that cannot be built throws PreconditionError: run_draw reports it as a plan error.
+  const Result<Parts> parts = parse_parts(o.parts);
+  if (!parts) return parts.error();
+  options.parts = parts.value();
+  // A model that cannot be built throws PreconditionError (not_buildable): main reports it.
   const Model model = build_model(plan, BuildOptions{.parts = options.parts});
   const std::string title = o.plan_file.filename().string();
   const LineDrawing drawing = draw_line_view(model, view, options, title);
@@ -92,14 +89,9 @@ Result<ViewDrawer> find_view(const std::string& name, const Plan& plan) {
     }
     known += (known.empty() ? "" : ", ") + c.id;
   }
-  return Result<ViewDrawer>::failure(
+  return Result<ViewDrawer>::failure(Code::usage_error,
       fmt::format("--view \"{}\": the plan has no camera \"{}\" (it has: {})", name, id,
                   known.empty() ? "none" : known));
-}
-
-int fail(const std::string& message) {
-  std::fprintf(stderr, "roomcad draw: error: %s\n", message.c_str());
-  return kCannotRun;
 }
 
 /// Parses "1:N" or "N" into N. @return NaN if the text is neither.
@@ -112,33 +104,25 @@ double parse_scale(const std::string& text) {
 
 int run_draw(const DrawOptions& o) {
   const double scale = parse_scale(o.scale);
-  if (std::isnan(scale)) {
-    return fail(fmt::format("--scale \"{}\": expected 1:N, e.g. 1:50", o.scale));
-  }
-  if (std::string problem = check_floor_plan_options({.scale = scale, .cut_height = o.cut_height});
-      !problem.empty()) {
-    return fail(problem);
-  }
-  if (o.output.extension() != ".svg") {
-    return fail(fmt::format("-o \"{}\": drawings are written as .svg", o.output.string()));
-  }
+  if (std::isnan(scale))
+    return report_failure("draw", {Code::usage_error,
+                                   fmt::format("--scale \"{}\": expected 1:N, e.g. 1:50", o.scale)});
+  if (const Status options = check_floor_plan_options({.scale = scale, .cut_height = o.cut_height});
+      !options)
+    return report_failure("draw", options.error());
+  if (o.output.extension() != ".svg")
+    return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are "
+                                                                  "written as .svg", o.output.string())});
   const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
   if (!loaded.plan) return loaded.exit_status;
   const Result<ViewDrawer> drawer = find_view(o.view, *loaded.plan);
-  if (!drawer.ok()) return fail(o.plan_file.string() + ": " + drawer.error());
-  std::optional<Result<SvgDocument>> document;
-  try {
-    document = drawer.value()(*loaded.plan, o, scale);
-  } catch (const PreconditionError& e) {
-    std::fprintf(stderr, "roomcad draw: %s: error: %s\n", o.plan_file.string().c_str(), e.what());
-    return kPlanErrors;
-  }
-  if (!document->ok()) return fail(document->error());
-  if (const Status written = write_svg(document->value(), o.output); !written.ok()) {
-    return fail(written.error);
-  }
+  if (!drawer) return report_failure("draw", drawer.error());
+  const Result<SvgDocument> document = drawer.value()(*loaded.plan, o, scale);
+  if (!document) return report_failure("draw", document.error());
+  if (const Status written = write_svg(document.value(), o.output); !written)
+    return report_failure("draw", written.error());
   std::printf("wrote %s\n", o.output.string().c_str());
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace

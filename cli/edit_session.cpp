@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cstdio>
-#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -65,44 +64,43 @@ int run_edit(std::string_view command, const std::string& path, const EditFlags&
   EditSummary summary;
   try {
     summary = edit(edited);
-  } catch (const EditRefused& e) {
-    fmt::print(stderr, "roomcad {}: refused: {}; '{}' is left as it was\n", command, e.what(), path);
-    return kPlanErrors;
   } catch (const PreconditionError& e) {
+    if (e.code() == Code::edit_refused) {
+      fmt::print(stderr, "roomcad {}: refused: {}; '{}' is left as it was\n", command, e.what(), path);
+      return kExitPlanErrors;
+    }
     std::string_view message = e.what();  // "<command>: ...", as modeling names its function
     if (message.starts_with(command) && message.substr(command.size()).starts_with(": "))
       message.remove_prefix(command.size() + 2);
     fmt::print(stderr, "roomcad {}: error: {}\n", command, message);
-    return kCannotRun;
+    return kExitCannotRun;
   }
   if (edited == *read.plan) {
     fmt::print("nothing to change: '{}' is left as it was\n", path);
-    return kOk;
+    return kExitOk;
   }
   if (!accept_new_errors(command, path, flags, introduced_errors(validate(*read.plan), validate(edited))))
-    return kPlanErrors;
+    return kExitPlanErrors;
   print_summary(summary);
   if (flags.dry_run) {
     std::fputs(diff_lines(read.text, write_plan_text(edited)).c_str(), stdout);  // the file as it is
     fmt::print("dry run: '{}' not written\n", path);
-    return kOk;
+    return kExitOk;
   }
-  if (const Status written = write_plan_file(edited, path); !written) {
-    fmt::print(stderr, "roomcad {}: error: {}\n", command, written.error);
-    return kCannotRun;
-  }
-  return kOk;
+  if (const Status written = write_plan_file(edited, path); !written)
+    return report_failure(command, written.error());
+  return kExitOk;
 }
 
 Point2 require_point(std::string_view option, const std::string& text) {
   if (const auto p = parse_point2(text)) return *p;
-  throw std::invalid_argument(
+  throw_usage_error(
       fmt::format("{} wants a point x,y in metres (e.g. 1.5,2), got '{}'", option, text));
 }
 
 double require_number(std::string_view option, const std::string& text) {
   if (const auto x = parse_number(text)) return *x;
-  throw std::invalid_argument(fmt::format("{} wants a finite number, got '{}'", option, text));
+  throw_usage_error(fmt::format("{} wants a finite number, got '{}'", option, text));
 }
 
 }  // namespace roomcad::cli

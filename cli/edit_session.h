@@ -30,8 +30,10 @@ struct EditFlags {
 /// Registers --force and --dry-run on an edit subcommand.
 void add_edit_flags(CLI::App& command, EditFlags& flags);
 
-/// An edit of an in-memory plan: returns what it changed, or throws PreconditionError when
-/// it cannot be made (printed as a usage error, exit 2) or EditRefused.
+/// An edit of an in-memory plan: returns what it changed, or throws PreconditionError: with
+/// Code::edit_refused to refuse it on the plan's grounds (a wall that still holds openings:
+/// run_edit prints "roomcad <command>: refused: <what>" and returns 1, the file untouched), with
+/// any other code when it cannot be made (a bad argument: exit 2).
 using Edit = std::function<EditSummary(Plan&)>;
 
 /// Runs one edit on the plan file `path` and reports on stdout/stderr.
@@ -41,18 +43,10 @@ using Edit = std::function<EditSummary(Plan&)>;
 [[nodiscard]] int run_edit(std::string_view command, const std::string& path,
                            const EditFlags& flags, const Edit& edit);
 
-/// @return `text` as a point x,y. @throws CLI::ValidationError naming `option` and the text.
+/// @return `text` as a point x,y. @throws PreconditionError (usage_error) naming `option`.
 [[nodiscard]] Point2 require_point(std::string_view option, const std::string& text);
 
-/// @return `text` as a finite number. @throws CLI::ValidationError naming `option`.
+/// @return `text` as a finite number. @throws PreconditionError (usage_error) naming `option`.
 [[nodiscard]] double require_number(std::string_view option, const std::string& text);
-
-/// Thrown by an Edit to refuse it on the plan's grounds (a wall that still holds openings):
-/// run_edit prints "roomcad <command>: refused: <what>" and returns 1, the file untouched.
-/// (PreconditionError, by contrast, is a bad argument: exit 2.)
-class EditRefused : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 }  // namespace roomcad::cli

@@ -24,30 +24,26 @@ int format_one(const FmtOptions& options, const std::string& plan) {
   const std::string canonical = write_plan_text(*loaded.plan);
 
   if (options.check) {
-    if (canonical == loaded.text) return kOk;
+    if (canonical == loaded.text) return kExitOk;
     std::fprintf(stderr, "%s: not in canonical form; run `roomcad fmt %s` to rewrite it\n",
                  plan.c_str(), plan.c_str());
-    return kPlanErrors;
+    return kExitPlanErrors;
   }
   if (options.out == "-") {
     std::fwrite(canonical.data(), 1, canonical.size(), stdout);
-    return std::fflush(stdout) == 0 ? kOk : kCannotRun;
+    return std::fflush(stdout) == 0 ? kExitOk : kExitCannotRun;
   }
   const std::string& target = options.out.empty() ? plan : options.out;
-  if (options.out.empty() && canonical == loaded.text) return kOk;  // already canonical
-  if (const Status written = write_plan_file(*loaded.plan, target); !written) {
-    std::fprintf(stderr, "roomcad fmt: error: %s\n", written.error.c_str());
-    return kCannotRun;
-  }
-  return kOk;
+  if (options.out.empty() && canonical == loaded.text) return kExitOk;  // already canonical
+  if (const Status written = write_plan_file(*loaded.plan, target); !written)
+    return report_failure("fmt", written.error());
+  return kExitOk;
 }
 
 int run_fmt(const FmtOptions& options) {
-  if (!options.out.empty() && options.plans.size() != 1) {
-    std::fprintf(stderr, "roomcad fmt: error: -o/--output takes exactly one PLAN\n");
-    return kCannotRun;
-  }
-  int status = kOk;
+  if (!options.out.empty() && options.plans.size() != 1)
+    return report_failure("fmt", {Code::usage_error, "-o/--output takes exactly one PLAN"});
+  int status = kExitOk;
   for (const std::string& plan : options.plans) status = std::max(status, format_one(options, plan));
   return status;
 }

@@ -24,19 +24,17 @@ int run_import(const ImportArgs& args) {
   options.chord_tolerance = args.chord_tolerance;
   const Result<Sh3dImport> imported = import_sweethome3d_file(args.home, options);
   if (!imported) {
-    fmt::print(stderr, "roomcad import: error: {}\n", imported.error());
-    return kCannotRun;
+    report_failure("import", imported.error());
+    return kExitCannotRun;  // a home that cannot be read is not a plan with errors: no plan yet
   }
   for (const Diagnostic& d : imported.value().warnings.items)
-    fmt::print(stderr, "roomcad import: warning [{}]: {}\n", d.code, d.message);
+    fmt::print(stderr, "roomcad import: warning [{}]: {}\n", to_string(d.code), d.message);
   const Plan& plan = imported.value().plan;
-  if (const Status written = write_plan_file(plan, args.output); !written) {
-    fmt::print(stderr, "roomcad import: error: {}\n", written.error);
-    return kCannotRun;
-  }
+  if (const Status written = write_plan_file(plan, args.output); !written)
+    return report_failure("import", written.error());
   fmt::print(stderr, "roomcad import: {} walls and {} openings from {} written to {}\n",
              plan.walls.size(), plan.openings.size(), args.home, args.output);
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace

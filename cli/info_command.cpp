@@ -236,7 +236,7 @@ int run_info(const InfoOptions& options) {
   } else {
     print_text(options.plan, *loaded.plan, info);
   }
-  return std::fflush(stdout) == 0 ? kOk : kCannotRun;
+  return std::fflush(stdout) == 0 ? kExitOk : kExitCannotRun;
 }
 
 }  // namespace

@@ -31,16 +31,27 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kOk : kCannotRun;
+    return app.exit(e) == 0 ? roomcad::kExitOk : roomcad::kExitCannotRun;
   }
   for (const Command& c : commands) {
     if (!c.app->parsed()) continue;
     try {
       return c.run();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "roomcad %s: error: %s\n", c.app->get_name().c_str(), e.what());
-      return kCannotRun;
+    } catch (const roomcad::PreconditionError& e) {
+      return report_failure(c.app->get_name(), e.error());
+    } catch (const std::exception& e) {  // out of memory, or a bug
+      return report_failure(c.app->get_name(), {roomcad::Code::internal, e.what()});
     }
   }
-  return kCannotRun;
+  return roomcad::kExitCannotRun;
 }
+
+namespace roomcad::cli {
+
+int report_failure(std::string_view command, const Error& error) {
+  std::fprintf(stderr, "roomcad %.*s: error: %s\n", static_cast<int>(command.size()),
+               command.data(), error.message.c_str());
+  return exit_status_of(error.code);
+}
+
+}  // namespace roomcad::cli

@@ -21,23 +21,20 @@ bool use_colour(std::FILE* stream) {
 LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path) {
   LoadedPlan loaded;
   Result<std::string> text = read_text_file(path);
-  if (!text.ok()) {
-    std::fprintf(stderr, "roomcad %.*s: error: %s\n", static_cast<int>(command.size()),
-                 command.data(), text.error().c_str());
-    loaded.exit_status = kCannotRun;
+  if (!text) {
+    loaded.exit_status = report_failure(command, text.error());
     return loaded;
   }
   loaded.text = std::move(text).value();
-  PlanReadResult read = read_plan_text(loaded.text, path.string());
-  const std::string problems = format_report_text(read.report, use_colour(stderr));
-  std::fputs(problems.c_str(), stderr);
-  if (!read.plan) {
+  Result<Plan> read = read_plan_text(loaded.text, path.string(), &loaded.report);
+  std::fputs(format_report_text(loaded.report, use_colour(stderr)).c_str(), stderr);
+  if (!read) {
     std::fprintf(stderr, "%s: %s\n", path.string().c_str(),
-                 format_report_summary(read.report).c_str());
-    loaded.exit_status = kPlanErrors;
+                 format_report_summary(loaded.report).c_str());
+    loaded.exit_status = kExitPlanErrors;
+    return loaded;
   }
-  loaded.plan = std::move(read.plan);
-  loaded.report = std::move(read.report);
+  loaded.plan = std::move(read).value();
   return loaded;
 }
 
@@ -55,7 +52,7 @@ LoadedPlan load_valid_plan(std::string_view command, const std::filesystem::path
                force ? " (going on: --force)" : "; fix them, or pass --force to go on anyway");
   if (!force) {
     loaded.plan.reset();
-    loaded.exit_status = kPlanErrors;
+    loaded.exit_status = kExitPlanErrors;
   }
   return loaded;
 }

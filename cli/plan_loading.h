@@ -16,18 +16,18 @@ struct LoadedPlan {
   std::optional<Plan> plan;  ///< set when the file was read and has no errors
   std::string text;          ///< the file's bytes, when it could be read
   Report report;             ///< what reading found (errors and warnings)
-  int exit_status = 0;       ///< when `plan` is empty: kCannotRun (unreadable) or kPlanErrors
+  int exit_status = 0;       ///< when `plan` is empty: kExitCannotRun (unreadable) or kExitPlanErrors
 };
 
 /// Reads the plan file `path` for subcommand `command`. Prints every problem, warnings too, to
 /// stderr as text (coloured when stderr is a terminal), then one summary line if there were
-/// errors. A file that cannot be read (missing, a directory, no permission) gives kCannotRun;
-/// a file that is read but is not a valid plan gives kPlanErrors.
+/// errors. A file that cannot be read (missing, a directory, no permission) gives kExitCannotRun;
+/// a file that is read but is not a valid plan gives kExitPlanErrors.
 [[nodiscard]] LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path);
 
 /// Reads and validates the plan for a command that needs a sound plan (build, render): the
 /// gate. Prints reading and validation problems to stderr as text, and a summary line when
-/// there are errors. With errors the plan is withheld (exit_status kPlanErrors) unless
+/// there are errors. With errors the plan is withheld (exit_status kExitPlanErrors) unless
 /// `force`, when it is returned anyway and the command goes on at its own risk.
 /// @return the plan and the combined report; `plan` empty means stop with `exit_status`.
 [[nodiscard]] LoadedPlan load_valid_plan(std::string_view command, const std::filesystem::path& path,

@@ -3,18 +3,17 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "cli/command.h"
-#include "cli/parts_option.h"
 #include "cli/plan_loading.h"
 #include "io/id_image.h"
 #include "io/image_io.h"
 #include "modeling/build_model.h"
+#include "modeling/value_text.h"
 #include "render/renderer.h"
 
 namespace roomcad::cli {
@@ -31,20 +30,10 @@ struct RenderArgs {
   bool stats = false, force = false;
 };
 
-/// A flag's value could not be used: what the user sees, exit status 2.
-struct BadFlag {
-  std::string message;
-};
-
-Vec3 parse_vec3(const std::string& flag, const std::string& text) {
-  Vec3 v;
-  char c1 = 0, c2 = 0;
-  std::istringstream in(text);
-  if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !in.eof() ||
-      !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-    throw BadFlag{fmt::format("{} '{}': expected three finite numbers x,y,z (metres)", flag, text)};
-  }
-  return v;
+/// @return the flag's value as x,y,z. @throws PreconditionError (usage_error) naming it.
+Vec3 require_vec3(const std::string& flag, const std::string& text) {
+  if (const std::optional<Vec3> v = parse_vec3(text)) return *v;
+  throw_usage_error(fmt::format("{} '{}': expected three finite numbers x,y,z (metres)", flag, text));
 }
 
 /// The camera the flags ask for, or nullopt to frame the model from a preset.
@@ -54,46 +43,46 @@ std::optional<Camera> chosen_camera(const RenderArgs& a, const Plan& plan, Proje
       if (c.id == a.camera) return c;
     std::string known;
     for (const Camera& c : plan.cameras) known += (known.empty() ? "" : ", ") + c.id;
-    throw BadFlag{fmt::format("--camera '{}': the plan has no such camera (it has: {})", a.camera,
-                              known.empty() ? "none" : known)};
+    throw_usage_error(fmt::format("--camera '{}': the plan has no such camera (it has: {})", a.camera,
+                              known.empty() ? "none" : known));
   }
   if (a.eye.empty() != a.target.empty()) {
-    throw BadFlag{"--eye and --target go together: give both or neither"};
+    throw_usage_error("--eye and --target go together: give both or neither");
   }
   if (a.eye.empty()) return std::nullopt;
   Camera c;
   c.id = "flags";
   c.projection = projection;
-  c.eye = parse_vec3("--eye", a.eye);
-  c.target = parse_vec3("--target", a.target);
-  c.up = parse_vec3("--up", a.up);
+  c.eye = require_vec3("--eye", a.eye);
+  c.target = require_vec3("--target", a.target);
+  c.up = require_vec3("--up", a.up);
   c.fov_deg = a.fov;
   c.view_height = a.view_height;
-  if (c.eye == c.target) throw BadFlag{fmt::format("--eye and --target are both '{}'", a.eye)};
+  if (c.eye == c.target) throw_usage_error(fmt::format("--eye and --target are both '{}'", a.eye));
   return c;
 }
 
 template <class T>
 T parse_choice(const std::string& flag, const std::string& text, std::optional<T> parsed,
                const char* choices) {
-  if (!parsed) throw BadFlag{fmt::format("{} '{}': expected one of {}", flag, text, choices)};
+  if (!parsed) throw_usage_error(fmt::format("{} '{}': expected one of {}", flag, text, choices));
   return *parsed;
 }
 
 /// The frame limits of render/renderer.h that no single flag's range can hold (each flag's own
 /// range is checked as it is parsed), worded with the flags that set them.
-/// @throws BadFlag naming the flags, their values and the limit.
+/// @throws PreconditionError (usage_error) naming the flags, their values and the limit.
 void check_frame_size(const RenderArgs& a) {
   const long long pixels = static_cast<long long>(a.width) * a.height;
   if (pixels > kMaxImagePixels) {
-    throw BadFlag{fmt::format("--width {} x --height {} is {} pixels; at most {} are rendered",
-                              a.width, a.height, pixels, kMaxImagePixels)};
+    throw_usage_error(fmt::format("--width {} x --height {} is {} pixels; at most {} are rendered",
+                              a.width, a.height, pixels, kMaxImagePixels));
   }
   const long long samples = pixels * a.ssaa * a.ssaa;
   if (samples > kMaxImageSamples) {
-    throw BadFlag{fmt::format("--width {} x --height {} at --ssaa {} is {} samples; at most {} are "
+    throw_usage_error(fmt::format("--width {} x --height {} at --ssaa {} is {} samples; at most {} are "
                               "rendered (lower --ssaa or the size)",
-                              a.width, a.height, a.ssaa, samples, kMaxImageSamples)};
+                              a.width, a.height, a.ssaa, samples, kMaxImageSamples));
   }
 }
 
@@ -122,36 +111,30 @@ RenderOptions make_options(const RenderArgs& a, const Plan& plan) {
   o.shadow_resolution = a.shadow_res;
   o.ssaa = a.ssaa;
   o.background = parse_choice("--background", a.background, parse_color(a.background), "#rrggbb");
-  if (a.grid != "on" && a.grid != "off") throw BadFlag{fmt::format("--grid '{}': expected on or off", a.grid)};
+  if (a.grid != "on" && a.grid != "off") throw_usage_error(fmt::format("--grid '{}': expected on or off", a.grid));
   o.grid = GridLines{.enabled = a.grid == "on", .origin = {plan.site.origin.x, plan.site.origin.y},
                      .cell_size = plan.site.cell_size, .cells = plan.site.cells};
   o.lights = plan.lights;
-  std::string bad;
-  if (!parse_parts(a.parts, o.parts, bad)) {
-    throw BadFlag{fmt::format("--parts '{}': '{}' is not walls, floor or fixtures", a.parts, bad)};
-  }
+  const Result<Parts> parts = parse_parts(a.parts);
+  if (!parts) throw PreconditionError(parts.error());
+  o.parts = parts.value();
   o.threads = a.threads;
   o.outputs = FrameOutputs{.depth = !a.depth.empty(), .object_ids = !a.ids.empty()};
   o.cull = a.cull == "visibility" ? FaceCull::visibility
            : a.cull == "none"       ? FaceCull::none
                                     : FaceCull::back_faces;
   o.cull_frustum = a.frustum_cull == "on";
-  if (const std::string problem = check_render_options(o); !problem.empty()) throw BadFlag{problem};
+  throw_if_failed(check_render_options(o), "render");
   return o;
 }
 
-/// Writes the requested files. @return false (after printing why) if one could not be written.
-bool write_outputs(const RenderArgs& a, const FrameBuffers& out, const Model& model) {
-  std::vector<Status> written{write_png(out.color, a.output)};
-  if (!a.depth.empty()) written.push_back(write_pfm(out.depth, a.depth));
-  if (!a.ids.empty()) written.push_back(write_object_ids(out.objects, model.objects, a.ids));
-  bool ok = true;
-  for (const Status& s : written) {
-    if (s.ok()) continue;
-    std::fprintf(stderr, "roomcad render: error: %s\n", s.error.c_str());
-    ok = false;
-  }
-  return ok;
+/// Writes the requested files. @return the first failure, if one could not be written.
+Status write_outputs(const RenderArgs& a, const FrameBuffers& out, const Model& model) {
+  if (Status s = write_png(out.color, a.output); !s) return s;
+  if (!a.depth.empty())
+    if (Status s = write_pfm(out.depth, a.depth); !s) return s;
+  if (!a.ids.empty()) return write_object_ids(out.objects, model.objects, a.ids);
+  return Status::success();
 }
 
 int run_render(const RenderArgs& a) {
@@ -159,24 +142,12 @@ int run_render(const RenderArgs& a) {
   const LoadedPlan loaded = load_valid_plan("render", a.plan, a.force);
   if (!loaded.plan) return loaded.exit_status;
   const Plan& plan = *loaded.plan;
-  RenderOptions options;
-  try {
-    options = make_options(a, plan);
-  } catch (const BadFlag& bad) {
-    std::fprintf(stderr, "roomcad render: error: %s\n", bad.message.c_str());
-    return kCannotRun;
-  }
+  const RenderOptions options = make_options(a, plan);  // PreconditionError: main reports it
   if (plan.lights.size() > static_cast<std::size_t>(kMaxLights)) {
     std::fprintf(stderr, "roomcad render: warning: %s has %zu lights; the first %d are drawn\n",
                  a.plan.c_str(), plan.lights.size(), kMaxLights);
   }
-  Model model;
-  try {
-    model = build_model(plan, BuildOptions{.parts = options.parts, .threads = a.threads});
-  } catch (const PreconditionError& e) {
-    std::fprintf(stderr, "roomcad render: %s: error: %s\n", a.plan.c_str(), e.what());
-    return kPlanErrors;
-  }
+  const Model model = build_model(plan, BuildOptions{.parts = options.parts, .threads = a.threads});
   FrameBuffers out;
   RenderStats stats;
   render_model(model, options, out, &stats);
@@ -189,7 +160,9 @@ int run_render(const RenderArgs& a) {
                  stats.frame_ms, options.width, options.height, stats.culled_triangles,
                  stats.cull_ms);
   }
-  return write_outputs(a, out, model) ? kOk : kCannotRun;
+  if (const Status written = write_outputs(a, out, model); !written)
+    return report_failure("render", written.error());
+  return kExitOk;
 }
 
 }  // namespace

@@ -36,9 +36,9 @@ void add_rm_command(CLI::App& root, Commands& commands) {
                         return run_edit("rm", args->path, args->flags, [&](Plan& plan) {
                           const auto hosted = hosted_openings(plan, args->id);
                           if (!args->cascade && !hosted.empty() && object_kind(plan, args->id) == "wall")
-                            throw EditRefused(fmt::format(
+                            throw PreconditionError(fmt::format(
                                 "wall '{}' has openings ({}); --cascade removes them too", args->id,
-                                fmt::join(hosted, ", ")));
+                                fmt::join(hosted, ", ")), Code::edit_refused);
                           return remove_object(plan, args->id, {.cascade = args->cascade});
                         });
                       }});

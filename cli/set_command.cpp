@@ -27,7 +27,7 @@ EditSummary set_all(Plan& plan, const SetArgs& args) {
   for (const std::string& assignment : args.assignments) {
     const std::size_t eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw std::invalid_argument(fmt::format("'{}' is not key=value (e.g. thickness=0.3)", assignment));
+      throw_usage_error(fmt::format("'{}' is not key=value (e.g. thickness=0.3)", assignment));
     const std::string key = assignment.substr(0, eq);
     const std::string value = assignment.substr(eq + 1);
     for (std::string& changed : set_field(plan, id, key, value).changed)

@@ -9,7 +9,8 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <variant>
+#include <tuple>
+#include <utility>
 
 #include "cli/command.h"
 #include "io/image_io.h"
@@ -38,47 +39,34 @@ struct SurfaceOptions {
   std::filesystem::path output;
 };
 
-int fail(const std::string& message) {
-  std::fprintf(stderr, "roomcad surface: error: %s\n", message.c_str());
-  return kCannotRun;
-}
+Error usage_error(std::string message) { return {Code::usage_error, std::move(message), {}}; }
 
-/// Evaluates a constant expression ("2", "-2*pi"). @return the value, or nullopt with `error`.
-std::optional<double> evaluate_constant(const std::string& text, std::string& error) {
-  auto parsed = parse_surface_expression(text);
-  if (const auto* e = std::get_if<ExpressionError>(&parsed)) {
-    error = e->message;
-    return std::nullopt;
-  }
-  const SurfaceExpression& expression = std::get<SurfaceExpression>(parsed);
-  const auto& ops = expression.program();
+/// Evaluates a constant expression ("2", "-2*pi").
+/// @return the value, or why it is not a finite constant (no x or z).
+Result<double> evaluate_constant(const std::string& text) {
+  const Result<SurfaceExpression> parsed = parse_surface_expression(text);
+  if (!parsed) return parsed.error();
+  const auto& ops = parsed.value().program();
   if (std::find_if(ops.begin(), ops.end(), [](ExprOp op) {
         return op == ExprOp::var_x || op == ExprOp::var_z;
-      }) != ops.end()) {
-    error = "a bound must not use x or z";
-    return std::nullopt;
-  }
-  const double value = expression.evaluate(0.0, 0.0);
-  if (std::isnan(value)) error = "the bound is not a finite number";
-  return std::isnan(value) ? std::nullopt : std::optional<double>(value);
+      }) != ops.end())
+    return usage_error("a bound must not use x or z");
+  const double value = parsed.value().evaluate(0.0, 0.0);
+  if (std::isnan(value)) return usage_error("the bound is not a finite number");
+  return value;
 }
 
-/// Parses "A:B" into its bounds. @return false with `error` naming the option and the value.
-bool parse_range(const std::string& option, const std::string& text, double& lo, double& hi,
-                 std::string& error) {
+/// Parses "A:B" into its bounds. @return the bounds, or a usage_error naming the option and text.
+Result<std::pair<double, double>> parse_range(const std::string& option, const std::string& text) {
   const std::size_t colon = text.find(':');
   std::string why = "expected A:B, e.g. -2:2 or -2*pi:2*pi";
   if (colon != std::string::npos) {
-    const auto a = evaluate_constant(text.substr(0, colon), why);
-    const auto b = a ? evaluate_constant(text.substr(colon + 1), why) : std::nullopt;
-    if (a && b) {
-      lo = *a;
-      hi = *b;
-      return true;
-    }
+    const Result<double> a = evaluate_constant(text.substr(0, colon));
+    const Result<double> b = a ? evaluate_constant(text.substr(colon + 1)) : a;
+    if (a && b) return std::pair(a.value(), b.value());
+    why = a ? b.message() : a.message();
   }
-  error = fmt::format("{} \"{}\": {}", option, text, why);
-  return false;
+  return usage_error(fmt::format("{} \"{}\": {}", option, text, why));
 }
 
 std::string lower_extension(const std::filesystem::path& path) {
@@ -89,39 +77,40 @@ std::string lower_extension(const std::filesystem::path& path) {
 }
 
 int run_surface(const SurfaceOptions& o) {
-  auto parsed = parse_surface_expression(o.expression);
-  if (const auto* e = std::get_if<ExpressionError>(&parsed)) {
-    return fail(fmt::format("EXPR \"{}\": {}", o.expression, e->message));
-  }
-  const auto expression = std::get<SurfaceExpression>(std::move(parsed));
+  Result<SurfaceExpression> parsed = parse_surface_expression(o.expression);
+  if (!parsed)
+    return report_failure("surface", usage_error(fmt::format("EXPR \"{}\": {}", o.expression,
+                                                             parsed.message())));
+  const SurfaceExpression expression = std::move(parsed).value();
   SurfaceView view{.rotate_x_deg = o.rotate_x, .rotate_y_deg = o.rotate_y};
-  std::string error;
-  if (!parse_range("--x", o.x_range, view.x_min, view.x_max, error) ||
-      !parse_range("--z", o.z_range, view.z_min, view.z_max, error)) {
-    return fail(error);
-  }
+  const Result<std::pair<double, double>> x = parse_range("--x", o.x_range);
+  if (!x) return report_failure("surface", x.error());
+  const Result<std::pair<double, double>> z = parse_range("--z", o.z_range);
+  if (!z) return report_failure("surface", z.error());
+  std::tie(view.x_min, view.x_max) = x.value();
+  std::tie(view.z_min, view.z_max) = z.value();
   // Defaults: 100 steps along each section, 40 sections.
   view.dx = o.dx.value_or((view.x_max - view.x_min) / 100.0);
   view.dz = o.dz.value_or(view.z_max > view.z_min ? (view.z_max - view.z_min) / 40.0 : 1.0);
   const std::string ext = lower_extension(o.output);
-  if (ext != ".svg" && ext != ".png") {
-    return fail(fmt::format("-o \"{}\": the output must end in .svg or .png", o.output.string()));
-  }
+  if (ext != ".svg" && ext != ".png")
+    return report_failure("surface", {Code::unsupported, fmt::format("-o \"{}\": the output must "
+                                                                     "end in .svg or .png",
+                                                                     o.output.string())});
   const double unit = ext == ".svg" ? kMmPerPixel : 1.0;
   const SurfaceScreen screen{.width = o.width * unit,
                              .height = o.height * unit,
                              .margin = kMarginPixels * unit,
                              .columns = o.width,
                              .keep_aspect = o.keep_aspect};
-  if (std::string problem = check_surface_request(view, screen); !problem.empty()) {
-    return fail(problem);
-  }
+  if (const Status request = check_surface_request(view, screen); !request)
+    return report_failure("surface", request.error());
   const SurfaceDrawing drawing = draw_floating_horizon(
       [&expression](double x, double z) { return expression.evaluate(x, z); }, view, screen);
   const Status written = ext == ".svg"
                              ? write_svg(make_surface_svg(drawing, "y = " + o.expression), o.output)
                              : write_png(rasterise_surface(drawing), o.output);
-  if (!written.ok()) return fail(written.error);
+  if (!written) return report_failure("surface", written.error());
   if (drawing.polylines.empty()) {
     std::fprintf(stderr,
                  "roomcad surface: warning: \"%s\" has no finite value on the range; "
@@ -130,7 +119,7 @@ int run_surface(const SurfaceOptions& o) {
   }
   std::printf("wrote %s: %zu visible polylines\n", o.output.string().c_str(),
               drawing.polylines.size());
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ void warn_unless_undoable(const std::string& name, const Plan& before, const Pla
 int run_transform(const std::string& name, const TransformArgs& args, const SignedEdit& edit,
                   bool undoable) {
   if (args.all == !args.id.empty())
-    throw std::invalid_argument(args.all ? "give an object ID or --all, not both"
+    throw_usage_error(args.all ? "give an object ID or --all, not both"
                                          : "give the ID of the object to transform, or --all");
   return run_edit(name, args.path, args.flags, [&](Plan& plan) {
     const Plan before = plan;
@@ -92,7 +92,7 @@ void add_move(CLI::App& root, Commands& commands) {
     const auto by = parse_point2(args->amount);
     const auto du = parse_number(args->amount);
     if (!by && (!du || args->all))
-      throw std::invalid_argument(fmt::format(
+      throw_usage_error(fmt::format(
           "--by wants dx,dy in metres{}, got '{}'",
           args->all ? "" : " (or one number du to move a door or window along its wall)", args->amount));
     const auto move = [&](Plan& plan, double sign) {

@@ -22,12 +22,12 @@ struct ValidateCommandOptions {
 /// Reading problems (with their lines and columns) then, if the plan could be read, what
 /// validation finds; unknown fields come from the reader only.
 Report check_plan_text(const std::string& text, const std::string& file) {
-  PlanReadResult read = read_plan_text(text, file);
-  Report report = std::move(read.report);
-  if (read.plan) {
+  Report report;
+  const Result<Plan> read = read_plan_text(text, file, &report);
+  if (read) {
     ValidateOptions options;
     options.unknown_field_warnings = false;
-    report.append(validate(*read.plan, options));
+    report.append(validate(read.value(), options));
   }
   // Errors first (the JSON lists them apart anyway), each group in the order found.
   std::stable_partition(report.items.begin(), report.items.end(),
@@ -36,11 +36,8 @@ Report check_plan_text(const std::string& text, const std::string& file) {
 }
 
 int run_validate(const ValidateCommandOptions& options) {
-  Result<std::string> text = read_text_file(options.plan);
-  if (!text.ok()) {
-    std::fprintf(stderr, "roomcad validate: error: %s\n", text.error().c_str());
-    return kCannotRun;
-  }
+  const Result<std::string> text = read_text_file(options.plan);
+  if (!text) return report_failure("validate", text.error());
   const Report report = check_plan_text(text.value(), options.plan);
   std::string out;
   if (options.format == "json") {
@@ -50,8 +47,8 @@ int run_validate(const ValidateCommandOptions& options) {
     out += options.plan + ": " + format_report_summary(report) + '\n';
   }
   std::fputs(out.c_str(), stdout);
-  if (std::fflush(stdout) != 0) return kCannotRun;
-  return report.ok() ? kOk : kPlanErrors;
+  if (std::fflush(stdout) != 0) return kExitCannotRun;
+  return report.ok() ? kExitOk : kExitPlanErrors;
 }
 
 }  // namespace

@@ -23,19 +23,19 @@ struct ViewArgs {
 /// @return the viewer options the flags ask for, or an error naming the flag and value.
 Result<ViewerOptions> make_options(const ViewArgs& a, const Plan& plan) {
   ViewerOptions o{.width = a.width, .height = a.height, .overlay = !a.no_overlay, .threads = a.threads};
-  if (const std::string problem = check_render_options({.width = a.width, .height = a.height});
-      !problem.empty())
-    return Result<ViewerOptions>::failure(fmt::format("--width, --height: {}", problem));
+  if (const Status size = check_render_options({.width = a.width, .height = a.height}); !size)
+    return Result<ViewerOptions>::failure(Code::usage_error,
+                                          fmt::format("--width, --height: {}", size.message()));
   const auto preset = parse_view_preset(a.view);
   if (!preset)
-    return Result<ViewerOptions>::failure(
+    return Result<ViewerOptions>::failure(Code::usage_error,
         fmt::format("--view '{}': expected one of front, back, left, right, top, iso", a.view));
   o.view = *preset;
   if (a.camera.empty()) return o;
   for (const Camera& c : plan.cameras)
     if (c.id == a.camera) o.camera = c;
   if (!o.camera)
-    return Result<ViewerOptions>::failure(
+    return Result<ViewerOptions>::failure(Code::usage_error,
         fmt::format("--camera '{}': {} has no camera with that id", a.camera, a.plan));
   return o;
 }
@@ -46,18 +46,13 @@ int run_view(const ViewArgs& a) {
   const Result<std::vector<InputEvent>> script = parse_key_script(a.keys);
   const Result<ViewerOptions> options = make_options(a, *loaded.plan);
   Result<ViewSession> session = ViewSession::open(a.plan);
-  for (const std::string* problem : {&script.error(), &options.error(), &session.error()}) {
-    if (problem->empty()) continue;
-    std::fprintf(stderr, "roomcad view: error: %s\n", problem->c_str());
-    return kCannotRun;
-  }
+  for (const Status& step : {script.status(), options.status(), session.status()})
+    if (!step) return report_failure("view", step.error());
   Viewer viewer(std::move(session).value(), options.value());
   const Status shown = run_window(viewer, WindowOptions{.script = script.value(),
                                                         .screenshot = a.screenshot,
                                                         .frames = a.frames});
-  if (shown) return kOk;
-  std::fprintf(stderr, "roomcad view: error: %s\n", shown.error.c_str());
-  return kCannotRun;
+  return shown ? kExitOk : report_failure("view", shown.error());
 }
 
 }  // namespace

@@ -11,12 +11,13 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const roomcad::PlanReadResult read = roomcad::read_plan_text(text, "fuzz.json");
-  (void)roomcad::format_report_json(read.report);
-  (void)roomcad::format_report_text(read.report, false);
-  if (!read.plan) return 0;
-  const std::string canonical = roomcad::write_plan_text(*read.plan);
-  const roomcad::PlanReadResult again = roomcad::read_plan_text(canonical, "canonical.json");
-  if (!again.plan || roomcad::write_plan_text(*again.plan) != canonical) __builtin_trap();
+  roomcad::Report report;
+  const roomcad::Result<roomcad::Plan> read = roomcad::read_plan_text(text, "fuzz.json", &report);
+  (void)roomcad::format_report_json(report);
+  (void)roomcad::format_report_text(report, false);
+  if (!read) return 0;
+  const std::string canonical = roomcad::write_plan_text(read.value());
+  const roomcad::Result<roomcad::Plan> again = roomcad::read_plan_text(canonical, "canonical.json");
+  if (!again || roomcad::write_plan_text(again.value()) != canonical) __builtin_trap();
   return 0;
 }

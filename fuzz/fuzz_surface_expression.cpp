@@ -5,18 +5,19 @@
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
-#include <variant>
 
 #include "render/surface_expression.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const auto parsed = roomcad::parse_surface_expression(text);
-  if (const auto* error = std::get_if<roomcad::ExpressionError>(&parsed)) {
-    if (error->column < 1 || error->column > size + 1) __builtin_trap();
+  if (!parsed) {
+    const std::size_t column = parsed.error().location->column;
+    if (parsed.code() != roomcad::Code::parse_error || column < 1 || column > size + 1)
+      __builtin_trap();
     return 0;
   }
-  const auto& expression = std::get<roomcad::SurfaceExpression>(parsed);
+  const roomcad::SurfaceExpression& expression = parsed.value();
   for (const double x : {-2.5, 0.0, 1.0, 1e300}) {
     for (const double z : {-1.0, 0.0, 3.5}) {
       const double y = expression.evaluate(x, z);

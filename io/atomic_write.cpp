@@ -153,7 +153,7 @@ void sync_directory(const std::filesystem::path& target) {
 }
 
 Status fail(const std::filesystem::path& path, std::string_view what, int error) {
-  return Status::failure("cannot write " + path.string() + ": " + std::string(what) +
+  return Status::failure(Code::io_error, "cannot write " + path.string() + ": " + std::string(what) +
                          (error > 0 ? std::string(": ") + std::strerror(error) : std::string()));
 }
 

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string_view>
 
-#include "io/result.h"
+#include "core/error.h"
 
 namespace roomcad {
 

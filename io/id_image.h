@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "render/image.h"
 #include "render/renderer.h"
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string_view>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "render/image.h"
 
 namespace roomcad {

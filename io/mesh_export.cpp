@@ -128,7 +128,7 @@ Result<MeshFormat> mesh_format_of(const std::filesystem::path& path) {
   if (ext == ".off") return MeshFormat::off;
   if (ext == ".ply") return MeshFormat::ply;
   if (ext == ".stl") return MeshFormat::stl;
-  return Result<MeshFormat>::failure("output file '" + path.string() + "': extension '" + ext +
+  return Result<MeshFormat>::failure(Code::unsupported, "output file '" + path.string() + "': extension '" + ext +
                                      "' is not one of .obj, .off, .ply, .stl");
 }
 
@@ -222,7 +222,7 @@ std::string format_stl(const MeshParts& parts) {
 
 Status write_mesh_file(const std::filesystem::path& path, const MeshParts& parts) {
   const Result<MeshFormat> format = mesh_format_of(path);
-  if (!format) return Status::failure(format.error());
+  if (!format) return format.status();
   switch (format.value()) {
     case MeshFormat::obj: {
       std::filesystem::path mtl = path;
@@ -234,7 +234,7 @@ Status write_mesh_file(const std::filesystem::path& path, const MeshParts& parts
     case MeshFormat::ply: return write_file_atomically(path, format_ply(parts));
     case MeshFormat::stl: return write_file_atomically(path, format_stl(parts));
   }
-  return Status::failure("output file '" + path.string() + "': unknown format");
+  return Status::failure(Code::internal, "output file '" + path.string() + "': unknown format");
 }
 
 }  // namespace roomcad

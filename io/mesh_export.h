@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "modeling/solid_mesh.h"
 
 namespace roomcad {

@@ -166,38 +166,33 @@ std::string first_non_finite(const Plan& plan) {
 
 }  // namespace
 
-PlanReadResult read_plan_text(std::string_view text, std::string_view file) {
-  PlanReadResult result;
+Result<Plan> read_plan_text(std::string_view text, std::string_view file, Report* report) {
+  Report found;
   const io_detail::PositionedJson doc = io_detail::parse_positioned_json(text);
+  Plan plan;
   if (doc.error) {
     const io_detail::LineColumn at = io_detail::line_column_at(text, doc.error->offset);
     Diagnostic d;
-    d.code = doc.error->not_finite ? "invalid_value" : "parse_error";
+    d.code = doc.error->not_finite ? Code::invalid_value : Code::parse_error;
     d.message = std::string(file) + ':' + std::to_string(at.line) + ':' +
                 std::to_string(at.column) + ": " +
                 (doc.error->pointer.empty() ? "" : doc.error->pointer + ": ") + doc.error->message;
     if (doc.error->not_finite) d.fix = "write a finite number (metres, or the file's units)";
-    d.source = SourceLocation{std::string(file), doc.error->pointer, at.line, at.column};
-    result.report.add(std::move(d));
-    return result;
+    d.location = Location{std::string(file), doc.error->pointer, at.line, at.column};
+    found.add(std::move(d));
+  } else {
+    plan = io_detail::read_plan_document(doc, text, file, found);
   }
-  Plan plan = io_detail::read_plan_document(doc, text, file, result.report);
-  if (result.report.ok()) result.plan = std::move(plan);
-  return result;
+  if (report) report->append(found);
+  for (const Diagnostic& d : found.items)
+    if (d.severity == Severity::error) return Error{d.code, d.message, d.location};
+  return plan;
 }
 
-PlanReadResult read_plan_file(const std::filesystem::path& path) {
-  Result<std::string> text = read_text_file(path);
-  if (!text.ok()) {
-    PlanReadResult result;
-    Diagnostic d;
-    d.code = "parse_error";
-    d.message = text.error();
-    d.source = SourceLocation{path.string(), "", 0, 0};
-    result.report.add(std::move(d));
-    return result;
-  }
-  return read_plan_text(text.value(), path.string());
+Result<Plan> read_plan_file(const std::filesystem::path& path, Report* report) {
+  const Result<std::string> text = read_text_file(path);
+  if (!text) return text.error();
+  return read_plan_text(text.value(), path.string(), report);
 }
 
 std::string write_plan_text(const Plan& plan) {
@@ -225,7 +220,7 @@ std::string write_plan_text(const Plan& plan) {
 
 Status write_plan_file(const Plan& plan, const std::filesystem::path& path) {
   if (const std::string where = first_non_finite(plan); !where.empty()) {
-    return Status::failure("cannot write " + path.string() + ": " + where +
+    return Status::failure(Code::invalid_value, "cannot write " + path.string() + ": " + where +
                            " has a number that is not finite (JSON cannot hold it)");
   }
   return write_file_atomically(path, write_plan_text(plan));

@@ -9,27 +9,26 @@
 #pragma once
 
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <string_view>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "modeling/plan.h"
 #include "validation/report.h"
 
 namespace roomcad {
 
-struct PlanReadResult {
-  std::optional<Plan> plan;  ///< set unless the report holds an error
-  Report report;             ///< errors and warnings, in file order
-};
+/// Parses a plan from JSON text; `file` names the source in messages.
+/// @param[out] report  if given, every problem found is appended to it, errors and warnings
+///                     (unknown fields), each with file, line, column and JSON pointer.
+/// @return the plan, or its first error (parse_error, invalid_value) when the text holds any.
+[[nodiscard]] Result<Plan> read_plan_text(std::string_view text, std::string_view file,
+                                          Report* report = nullptr);
 
-/// Parses a plan from JSON text. `file` names the source in diagnostics.
-[[nodiscard]] PlanReadResult read_plan_text(std::string_view text, std::string_view file);
-
-/// Reads a plan file. An unreadable file, or one larger than kMaxTextFileBytes (io/text_file.h),
-/// is a parse_error naming it.
-[[nodiscard]] PlanReadResult read_plan_file(const std::filesystem::path& path);
+/// Reads a plan file as read_plan_text does. An unreadable file, or one larger than
+/// kMaxTextFileBytes (io/text_file.h), is an io_error (too_large) naming it, not in `report`.
+[[nodiscard]] Result<Plan> read_plan_file(const std::filesystem::path& path,
+                                          Report* report = nullptr);
 
 /// @return the canonical JSON text of a plan (ends with a newline).
 [[nodiscard]] std::string write_plan_text(const Plan& plan);

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "modeling/plan.h"
 
 namespace roomcad {

@@ -113,7 +113,7 @@ Result<std::string> select_level(const sh3d::Home& home, const Sh3dImportOptions
     if (l.name == *options.level) return l.id;
     names += fmt::format("{}'{}'", names.empty() ? "" : ", ", l.name);
   }
-  return Result<std::string>::failure(fmt::format(
+  return Result<std::string>::failure(Code::usage_error, fmt::format(
       "{}: --level '{}' names no level of the home (its levels: {})", file, *options.level,
       names.empty() ? "none, it has a single unnamed level" : names));
 }
@@ -123,23 +123,23 @@ Result<std::string> select_level(const sh3d::Home& home, const Sh3dImportOptions
 Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_view file,
                                            const Sh3dImportOptions& options) {
   Result<sh3d::Home> parsed = sh3d::parse_home_xml(xml, file);
-  if (!parsed) return Result<Sh3dImport>::failure(parsed.error());
+  if (!parsed) return parsed.error();
   sh3d::Home& home = parsed.value();
   const Result<std::string> level = select_level(home, options, file);
-  if (!level) return Result<Sh3dImport>::failure(level.error());
+  if (!level) return level.error();
   auto on_level = [&](const std::string& id) { return !options.level || id == level.value(); };
   std::erase_if(home.walls, [&](const sh3d::WallRecord& w) { return !on_level(w.level); });
   std::erase_if(home.items, [&](const sh3d::ItemRecord& i) { return !on_level(i.level); });
   if (home.walls.empty())
-    return Result<Sh3dImport>::failure(fmt::format("{}: no <wall> to import", file));
+    return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format("{}: no <wall> to import", file));
   if (home.walls.size() > io_detail::kMaxPlanObjects || home.items.size() > io_detail::kMaxPlanObjects)
-    return Result<Sh3dImport>::failure(too_many_objects(file, home.walls.size(), home.items.size(),
+    return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(file, home.walls.size(), home.items.size(),
                                                         "<wall> and", "<doorOrWindow> elements"));
   // Matching is O(walls x (items + levels)): bounded, so that no file can make it hang.
   const double pairs = static_cast<double>(home.walls.size()) *
                        static_cast<double>(home.items.size() + home.levels.size());
   if (pairs > kMaxImportPairs)
-    return Result<Sh3dImport>::failure(fmt::format(
+    return Result<Sh3dImport>::failure(Code::too_large, fmt::format(
         "{}: {} <wall> and {} <doorOrWindow> and <level> elements; at most {:.0f} pairs of them "
         "are matched (a home of a thousand walls and a thousand items has a million)",
         file, home.walls.size(), home.items.size() + home.levels.size(), kMaxImportPairs));
@@ -158,13 +158,13 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
   // Found by fuzz_sh3d_archive: with every wall left out, the site's box stayed empty.
   if (out.plan.walls.empty())
-    return Result<Sh3dImport>::failure(fmt::format(
+    return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format(
         "{}: no wall to import: each of its {} <wall> elements starts and ends at the same point",
         file, home.walls.size()));
   out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
   // Arcs become up to 256 chords each: the plan itself must stay readable.
   if (out.plan.walls.size() > io_detail::kMaxPlanObjects)
-    return Result<Sh3dImport>::failure(too_many_objects(file, out.plan.walls.size(),
+    return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(file, out.plan.walls.size(),
                                                         out.plan.openings.size(),
                                                         "straight walls (arcs cut into chords) and",
                                                         "openings"));
@@ -173,7 +173,7 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   // use (coordinates like 1e115 cm) is refused rather than overflowing them.
   const double span = std::max(box.max.x - box.min.x, box.max.y - box.min.y);
   if (!((span + 2 * options.site_margin) / options.cell_size <= kMaxSiteCellsPerSide))
-    return Result<Sh3dImport>::failure(fmt::format(
+    return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format(
         "{}: the walls span {:g} m, more than {:g} cells of {:g} m; check the home's coordinates",
         file, span, kMaxSiteCellsPerSide, options.cell_size));
   out.plan.site = make_site(box, options);
@@ -187,19 +187,19 @@ Result<Sh3dImport> import_sweethome3d_file(const std::filesystem::path& path,
   std::error_code error;
   if (const std::uintmax_t size = std::filesystem::file_size(path, error);
       !error && size > kMaxTextFileBytes)
-    return Result<Sh3dImport>::failure(
+    return Result<Sh3dImport>::failure(Code::too_large,
         fmt::format("{}: it is {} bytes; files of at most {} bytes (256 MiB) are read",
                     path.string(), size, kMaxTextFileBytes));
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    return Result<Sh3dImport>::failure(fmt::format("{}: cannot open the file", path.string()));
+    return Result<Sh3dImport>::failure(Code::io_error, fmt::format("{}: cannot open the file", path.string()));
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (in.bad())
-    return Result<Sh3dImport>::failure(fmt::format("{}: cannot read the file", path.string()));
+    return Result<Sh3dImport>::failure(Code::io_error, fmt::format("{}: cannot read the file", path.string()));
   if (!sh3d::is_zip_data(bytes) && path.extension() != ".sh3d")
     return import_sweethome3d_text(bytes, path.string(), options);
   const Result<std::string> xml = sh3d::read_home_xml_entry(path);
-  if (!xml) return Result<Sh3dImport>::failure(xml.error());
+  if (!xml) return xml.error();
   return import_sweethome3d_text(xml.value(), path.string() + ":Home.xml", options);
 }
 

@@ -25,7 +25,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "modeling/plan.h"
 #include "validation/report.h"
 

@@ -11,8 +11,8 @@ namespace roomcad {
 
 Result<std::string> read_text_file(const std::filesystem::path& path) {
   const std::string name = path.string();
-  auto failure = [&](const std::string& why) {
-    return Result<std::string>::failure("cannot read " + name + ": " + why);
+  auto failure = [&](const std::string& why, Code code = Code::io_error) {
+    return Result<std::string>::failure(code, "cannot read " + name + ": " + why);
   };
   struct stat info {};
   if (::stat(name.c_str(), &info) != 0) return failure(std::strerror(errno));
@@ -20,7 +20,8 @@ Result<std::string> read_text_file(const std::filesystem::path& path) {
   if (!S_ISREG(info.st_mode)) return failure("it is not a regular file");
   if (static_cast<std::uintmax_t>(info.st_size) > kMaxTextFileBytes)
     return failure("it is " + std::to_string(info.st_size) + " bytes; files of at most " +
-                   std::to_string(kMaxTextFileBytes) + " bytes (256 MiB) are read");
+                   std::to_string(kMaxTextFileBytes) + " bytes (256 MiB) are read",
+                   Code::too_large);
 
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"), std::fclose);
   if (!file) return failure(std::strerror(errno));

@@ -3,20 +3,14 @@
 #pragma once
 
 #include <cstddef>
-#include <stdexcept>
 #include <string>
+#include <string_view>
 
+#include "core/error.h"
 #include "modeling/plan.h"
 #include "modeling/solid_mesh.h"
 
 namespace roomcad {
-
-/// Thrown by modeling when a documented precondition does not hold; the message names the
-/// function, the object id, the failed check and the values (STYLE rule 6).
-class PreconditionError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// Which parts of the model to build.
 struct Parts {
@@ -24,6 +18,13 @@ struct Parts {
   bool floor = true;
   bool fixtures = true;
 };
+
+/// The names parse_parts knows, for messages and help.
+inline constexpr const char* kPartNames = "walls, floor, fixtures";
+
+/// Parses a --parts list: names of kPartNames separated by commas, any subset in any order.
+/// @return the parts, or a usage_error naming the list and the first unknown (or empty) name.
+[[nodiscard]] Result<Parts> parse_parts(std::string_view list);
 
 enum class BooleanPath {
   automatic,  ///< per wall: the exact fast path where no general boolean is needed, else CGAL

@@ -25,7 +25,7 @@ double count_steps(double range, double step) {
   return range <= 0.0 ? 0.0 : std::max(1.0, std::ceil(range / step - 1e-9));
 }
 
-std::string check_view(const SurfaceView& v) {
+Status check_view(const SurfaceView& v) {
   for (const auto& [name, value] : {std::pair{"x_min", v.x_min},
                                     {"x_max", v.x_max},
                                     {"z_min", v.z_min},
@@ -35,25 +35,25 @@ std::string check_view(const SurfaceView& v) {
                                     {"rotate_x", v.rotate_x_deg},
                                     {"rotate_y", v.rotate_y_deg}}) {
     if (!std::isfinite(value))
-      return fmt::format("{} must be a finite number, got {}", name, value);
+      return Status::failure(Code::usage_error, fmt::format("{} must be a finite number, got {}", name, value));
   }
-  if (!(v.x_min < v.x_max)) return fmt::format("x range {}:{} is empty", v.x_min, v.x_max);
-  if (!(v.z_min <= v.z_max)) return fmt::format("z range {}:{} is reversed", v.z_min, v.z_max);
-  if (!(v.dx > 0.0)) return fmt::format("dx must be positive, got {}", v.dx);
-  if (!(v.dz > 0.0)) return fmt::format("dz must be positive, got {}", v.dz);
+  if (!(v.x_min < v.x_max)) return Status::failure(Code::usage_error, fmt::format("x range {}:{} is empty", v.x_min, v.x_max));
+  if (!(v.z_min <= v.z_max)) return Status::failure(Code::usage_error, fmt::format("z range {}:{} is reversed", v.z_min, v.z_max));
+  if (!(v.dx > 0.0)) return Status::failure(Code::usage_error, fmt::format("dx must be positive, got {}", v.dx));
+  if (!(v.dz > 0.0)) return Status::failure(Code::usage_error, fmt::format("dz must be positive, got {}", v.dz));
   for (const auto& [name, value] :
        {std::pair{"rotate_x", v.rotate_x_deg}, {"rotate_y", v.rotate_y_deg}}) {
     if (!(std::fabs(value) < 90.0)) {
-      return fmt::format("{} must lie strictly between -90 and 90 degrees, got {}", name, value);
+      return Status::failure(Code::usage_error, fmt::format("{} must lie strictly between -90 and 90 degrees, got {}", name, value));
     }
   }
   const double nx = count_steps(v.x_max - v.x_min, v.dx) + 1.0;
   const double nz = count_steps(v.z_max - v.z_min, v.dz) + 1.0;
   if (nx > kMaxSamplesPerAxis || nz > kMaxSamplesPerAxis || nx * nz > kMaxSamples) {
-    return fmt::format("dx {} and dz {} give {} x {} samples; at most {} per axis and {} in all",
-                       v.dx, v.dz, nx, nz, kMaxSamplesPerAxis, kMaxSamples);
+    return Status::failure(Code::usage_error, fmt::format("dx {} and dz {} give {} x {} samples; at most {} per axis and {} in all",
+                       v.dx, v.dz, nx, nz, kMaxSamplesPerAxis, kMaxSamples));
   }
-  return {};
+  return Status::success();
 }
 
 /// The rotated sample points (picture plane X, Y), NaN where f has no finite value.
@@ -137,27 +137,25 @@ std::vector<HorizonPolyline> sweep_sections(const SampleGrid& grid, const Surfac
 
 }  // namespace
 
-std::string check_surface_request(const SurfaceView& view, const SurfaceScreen& screen) {
-  if (std::string problem = check_view(view); !problem.empty()) return problem;
+Status check_surface_request(const SurfaceView& view, const SurfaceScreen& screen) {
+  if (Status status = check_view(view); !status) return status;
   if (!(screen.width > 0.0 && screen.height > 0.0 && std::isfinite(screen.width) &&
         std::isfinite(screen.height))) {
-    return fmt::format("screen size must be positive, got {} x {}", screen.width, screen.height);
+    return Status::failure(Code::usage_error, fmt::format("screen size must be positive, got {} x {}", screen.width, screen.height));
   }
   if (!(screen.margin >= 0.0 && 2.0 * screen.margin < std::min(screen.width, screen.height))) {
-    return fmt::format("margin {} leaves no room on a {} x {} screen", screen.margin, screen.width,
-                       screen.height);
+    return Status::failure(Code::usage_error, fmt::format("margin {} leaves no room on a {} x {} screen", screen.margin, screen.width,
+                       screen.height));
   }
   if (screen.columns < 1 || screen.columns > kMaxColumns) {
-    return fmt::format("columns must lie in [1, {}], got {}", kMaxColumns, screen.columns);
+    return Status::failure(Code::usage_error, fmt::format("columns must lie in [1, {}], got {}", kMaxColumns, screen.columns));
   }
-  return {};
+  return Status::success();
 }
 
 SurfaceDrawing draw_floating_horizon(const SurfaceFunction& f, const SurfaceView& view,
                                      const SurfaceScreen& screen) {
-  if (std::string problem = check_surface_request(view, screen); !problem.empty()) {
-    throw std::invalid_argument("draw_floating_horizon: " + problem);
-  }
+  throw_if_failed(check_surface_request(view, screen), "draw_floating_horizon");
   SurfaceDrawing drawing;
   drawing.width = screen.width;
   drawing.height = screen.height;

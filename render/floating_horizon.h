@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
+
 namespace roomcad {
 
 /// What part of the surface a range of sample points, and the rotation that shows it.
@@ -65,19 +67,19 @@ struct SurfaceDrawing {
 /// The function drawn; NaN (or any non-finite value) marks a missing sample, drawn as a gap.
 using SurfaceFunction = std::function<double(double x, double z)>;
 
-/// Checks a view and a screen. @return an empty string, or what is wrong, naming the field and
-/// its value (e.g. "dx must be positive, got -1").
-[[nodiscard]] std::string check_surface_request(const SurfaceView& view,
+/// Checks a view and a screen. @return success, or a usage_error naming the field and its
+/// value (e.g. "dx must be positive, got -1").
+[[nodiscard]] Status check_surface_request(const SurfaceView& view,
                                                 const SurfaceScreen& screen);
 
 /// Draws y = f(x, z) by the floating-horizon method. The picture is scaled to fill the screen
 /// inside its margin (see SurfaceScreen::keep_aspect) and centred. Missing samples cut the sections
 /// they lie on.
 /// @param[in] f       called once per sample, from several threads at once (must be pure)
-/// @pre check_surface_request(view, screen).empty()
+/// @pre check_surface_request(view, screen).ok()
 /// @return the visible polylines; none if f has no finite sample. Deterministic.
 ///   Cost: O(nx * nz) evaluations plus O(nz * (nx + columns)) for the horizons.
-/// @throws std::invalid_argument if the precondition fails.
+/// @throws PreconditionError (usage_error) if the precondition fails.
 [[nodiscard]] SurfaceDrawing draw_floating_horizon(const SurfaceFunction& f,
                                                    const SurfaceView& view,
                                                    const SurfaceScreen& screen);

@@ -135,20 +135,18 @@ void fit_page(FloorPlanDrawing& d) {
 
 }  // namespace
 
-std::string check_floor_plan_options(const FloorPlanOptions& o) {
+Status check_floor_plan_options(const FloorPlanOptions& o) {
   if (!(o.scale >= 1.0 && o.scale <= 10000.0)) {
-    return fmt::format("scale 1:{} is not between 1:1 and 1:10000", o.scale);
+    return Status::failure(Code::usage_error, fmt::format("scale 1:{} is not between 1:1 and 1:10000", o.scale));
   }
   if (!(std::isfinite(o.cut_height) && o.cut_height > 0.0)) {
-    return fmt::format("cut height must be a positive number of metres, got {}", o.cut_height);
+    return Status::failure(Code::usage_error, fmt::format("cut height must be a positive number of metres, got {}", o.cut_height));
   }
-  return {};
+  return Status::success();
 }
 
 FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& options) {
-  if (std::string problem = check_floor_plan_options(options); !problem.empty()) {
-    throw std::invalid_argument("draw_floor_plan: " + problem);
-  }
+  throw_if_failed(check_floor_plan_options(options), "draw_floor_plan");
   const Joins joins = find_joins(plan);
   const Box box = plan_extent(plan, joins);
   // Placed anywhere for now: fit_page moves everything onto the page once it is all drawn.

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "modeling/plan.h"
 
 namespace roomcad {
@@ -65,15 +66,15 @@ struct FloorPlanDrawing {
   std::vector<PaperText> labels;              ///< scale bar figures and the title
 };
 
-/// Checks the options. @return an empty string, or what is wrong naming the option and value.
-[[nodiscard]] std::string check_floor_plan_options(const FloorPlanOptions& options);
+/// Checks the options. @return success, or a usage_error naming the option and its value.
+[[nodiscard]] Status check_floor_plan_options(const FloorPlanOptions& options);
 
 /// Draws the floor plan of a plan.
 /// @param[in] plan  a plan that validates without errors (validation/validate.h)
-/// @pre check_floor_plan_options(options).empty() && validate(plan).ok()
+/// @pre check_floor_plan_options(options).ok() && validate(plan).ok()
 /// @return the drawing; a plan with no walls gives a page with the title only. Deterministic.
 ///   Cost O(n log n) in walls and openings plus find_rooms.
-/// @throws std::invalid_argument if the options are wrong.
+/// @throws PreconditionError (usage_error) if the options are wrong.
 [[nodiscard]] FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& options);
 
 }  // namespace roomcad

@@ -138,8 +138,9 @@ LineView camera_line_view(const Camera& camera) {
 LineDrawing draw_line_view(const Model& model, const LineView& view,
                            const LineDrawingOptions& options, const std::string& title) {
   if (!(options.scale >= 1.0 && options.scale <= 10000.0)) {
-    throw std::invalid_argument(fmt::format("draw_line_view: scale 1:{} is not 1:1 .. 1:10000",
-                                            options.scale));
+    throw PreconditionError(
+        fmt::format("draw_line_view: scale 1:{} is not 1:1 .. 1:10000", options.scale),
+        Code::usage_error);
   }
   LineDrawing out;
   out.stats = remove_hidden_lines(model, options.parts, view);

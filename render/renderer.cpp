@@ -223,41 +223,41 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
 
 }  // namespace
 
-std::string check_render_options(const RenderOptions& o) {
+Status check_render_options(const RenderOptions& o) {
   if (o.width < 1 || o.width > kMaxImageSide || o.height < 1 || o.height > kMaxImageSide) {
-    return fmt::format("width x height is {} x {}; each must be 1 to {}", o.width, o.height,
-                       kMaxImageSide);
+    return Status::failure(Code::usage_error, fmt::format("width x height is {} x {}; each must be 1 to {}", o.width, o.height,
+                       kMaxImageSide));
   }
   const long long pixels = static_cast<long long>(o.width) * o.height;
   if (pixels > kMaxImagePixels) {
-    return fmt::format("width x height is {} x {} = {} pixels; at most {} are rendered", o.width,
-                       o.height, pixels, kMaxImagePixels);
+    return Status::failure(Code::usage_error, fmt::format("width x height is {} x {} = {} pixels; at most {} are rendered", o.width,
+                       o.height, pixels, kMaxImagePixels));
   }
   if (o.ssaa != 1 && o.ssaa != 2 && o.ssaa != 4) {
-    return fmt::format("ssaa is {}; it must be 1, 2 or 4", o.ssaa);
+    return Status::failure(Code::usage_error, fmt::format("ssaa is {}; it must be 1, 2 or 4", o.ssaa));
   }
   if (pixels * o.ssaa * o.ssaa > kMaxImageSamples) {
-    return fmt::format("width x height x ssaa^2 is {} x {} x {} = {} samples; at most {}",
+    return Status::failure(Code::usage_error, fmt::format("width x height x ssaa^2 is {} x {} x {} = {} samples; at most {}",
                        o.width, o.height, o.ssaa * o.ssaa, pixels * o.ssaa * o.ssaa,
-                       kMaxImageSamples);
+                       kMaxImageSamples));
   }
   if (o.shadow_resolution < 1 || o.shadow_resolution > kMaxShadowResolution) {
-    return fmt::format("shadow resolution is {}; it must be 1 to {}", o.shadow_resolution,
-                       kMaxShadowResolution);
+    return Status::failure(Code::usage_error, fmt::format("shadow resolution is {}; it must be 1 to {}", o.shadow_resolution,
+                       kMaxShadowResolution));
   }
   if (o.threads < 0 || o.threads > kMaxThreads) {
-    return fmt::format("threads is {}; it must be 0 (all cores) to {}", o.threads, kMaxThreads);
+    return Status::failure(Code::usage_error, fmt::format("threads is {}; it must be 0 (all cores) to {}", o.threads, kMaxThreads));
   }
   const double fov = o.camera ? o.camera->fov_deg : o.view_fov_deg;
   if (!(fov > 0.0 && fov < 180.0)) {
-    return fmt::format("field of view is {} degrees; it must be between 0 and 180", fov);
+    return Status::failure(Code::usage_error, fmt::format("field of view is {} degrees; it must be between 0 and 180", fov));
   }
   if (o.camera && o.camera->projection == Projection::orthographic &&
       !(o.camera->view_height > 0.0 && std::isfinite(o.camera->view_height))) {
-    return fmt::format("camera '{}' view height is {} m; it must be positive", o.camera->id,
-                       o.camera->view_height);
+    return Status::failure(Code::usage_error, fmt::format("camera '{}' view height is {} m; it must be positive", o.camera->id,
+                       o.camera->view_height));
   }
-  return {};
+  return Status::success();
 }
 
 CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options) {
@@ -273,9 +273,7 @@ CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options) {
 
 void render_scene(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
                   RenderStats* stats) {
-  if (const std::string problem = check_render_options(options); !problem.empty()) {
-    throw std::invalid_argument("render: " + problem);
-  }
+  throw_if_failed(check_render_options(options), "render");
   const auto start = Clock::now();
   RenderStats local;
   const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;

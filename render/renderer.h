@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "modeling/build_model.h"
 #include "modeling/plan.h"
 #include "render/camera.h"
@@ -101,16 +102,16 @@ struct RenderStats {
   double cull_ms = 0.0;              ///< the visibility pre-pass (part of raster_ms)
 };
 
-/// Checks options. @return an empty string, or what is wrong (field and value).
-[[nodiscard]] std::string check_render_options(const RenderOptions& options);
+/// Checks options. @return success, or a usage_error naming the option and its value.
+[[nodiscard]] Status check_render_options(const RenderOptions& options);
 
 /// Renders a model.
 /// @param[in]  model    the meshes (their rc:object, rc:kind and rc:color face properties)
-/// @param[in]  options  check_render_options(options).empty()
+/// @param[in]  options  check_render_options(options).ok()
 /// @param[out] out      resized and overwritten: colour, and depth and object ids as
 ///                      options.outputs asks (the others emptied)
 /// @param[out] stats    timings and counts, or nullptr
-/// @throws std::invalid_argument naming the option when check_render_options fails.
+/// @throws PreconditionError (usage_error) naming the option when check_render_options fails.
 /// Cost: O(triangles + pixels * ssaa^2 * lights) plus O(triangles + resolution^2) per shadow map.
 void render_model(const Model& model, const RenderOptions& options, FrameBuffers& out,
                   RenderStats* stats = nullptr);

@@ -30,9 +30,10 @@ bool is_identifier_char(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
 }
 
-/// Thrown inside the parser only; parse_surface_expression turns it into an ExpressionError.
+/// Thrown inside the parser only; parse_surface_expression returns it as a parse_error.
 struct ParseFailure {
-  ExpressionError error;
+  std::size_t column = 0;
+  std::string message;
 };
 
 }  // namespace
@@ -64,8 +65,8 @@ class ExpressionCompiler {
   }
   [[noreturn]] void fail(std::string_view expected) const {
     const std::size_t column = pos_ + 1;
-    throw ParseFailure{
-        {column, "expected " + std::string(expected) + " at column " + std::to_string(column)}};
+    throw ParseFailure{column,
+                       "expected " + std::string(expected) + " at column " + std::to_string(column)};
   }
   /// Appends an op and tracks the stack depth: operands push one value, binary ops pop one.
   void emit(ExprOp op) {
@@ -264,11 +265,11 @@ double SurfaceExpression::evaluate(double x, double z) const {
   return std::isfinite(result) ? result : std::nan("");
 }
 
-std::variant<SurfaceExpression, ExpressionError> parse_surface_expression(std::string_view text) {
+Result<SurfaceExpression> parse_surface_expression(std::string_view text) {
   try {
     return ExpressionCompiler(text).compile();
   } catch (const ParseFailure& failure) {
-    return failure.error;
+    return Error{Code::parse_error, failure.message, Location{"", "", 1, failure.column}};
   }
 }
 

@@ -5,8 +5,9 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
+
+#include "core/error.h"
 
 namespace roomcad {
 
@@ -48,13 +49,6 @@ class SurfaceExpression {
   std::size_t max_depth_ = 0;      ///< deepest evaluation stack the program needs
 };
 
-/// Where and why parsing failed. `column` counts characters from 1; the end of the text is
-/// column size + 1.
-struct ExpressionError {
-  std::size_t column = 0;
-  std::string message;  ///< e.g. "expected a number, variable or '(' at column 3"
-};
-
 /// Parses and compiles an expression. Grammar (usual precedence; `^` is right-associative and
 /// binds tighter than unary minus, so -x^2 = -(x^2) and 2^-1 = 0.5):
 ///   sum     := product (('+' | '-') product)*
@@ -64,8 +58,9 @@ struct ExpressionError {
 ///   primary := number | x | z | pi | e | func '(' sum ')' | '(' sum ')'
 ///   func    := abs | sqrt | exp | ln | sin | cos
 /// Numbers are decimal with an optional exponent (1.5e-3). Spaces are ignored.
-/// @return the compiled expression, or the error. O(text length).
-[[nodiscard]] std::variant<SurfaceExpression, ExpressionError> parse_surface_expression(
-    std::string_view text);
+/// @return the compiled expression, or a parse_error whose location's `column` counts
+///         characters from 1 (the end of the text is column size + 1) and whose message says
+///         why ("expected a number, variable or '(' at column 3"). O(text length).
+[[nodiscard]] Result<SurfaceExpression> parse_surface_expression(std::string_view text);
 
 }  // namespace roomcad

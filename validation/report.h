@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "modeling/plan.h"
 
 namespace roomcad {
@@ -20,24 +21,15 @@ struct Where {
   friend bool operator==(const Where&, const Where&) = default;
 };
 
-/// Where a problem sits in the plan file (set by the reader; line and column count from 1).
-struct SourceLocation {
-  std::string file;
-  std::string pointer;  ///< JSON pointer, e.g. "/walls/3/thickness"
-  std::size_t line = 0;
-  std::size_t column = 0;
-  friend bool operator==(const SourceLocation&, const SourceLocation&) = default;
-};
-
-/// One problem: `code` is one of the spec's codes (parse_error, wall_overlap, ...).
+/// One problem: its code (core/code.h: the format's codes, parse_error, wall_overlap, ...).
 struct Diagnostic {
   Severity severity = Severity::error;
-  std::string code;
+  Code code = Code::invalid_value;
   std::vector<std::string> objects;  ///< ids involved, possibly empty
   std::string message;               ///< one sentence a person can act on
   std::string fix;                   ///< a concrete change that removes it (may be empty)
   std::optional<Where> where;
-  std::optional<SourceLocation> source;
+  std::optional<Location> location;  ///< in the plan file, set by the reader
   friend bool operator==(const Diagnostic&, const Diagnostic&) = default;
 };
 

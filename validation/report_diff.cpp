@@ -10,7 +10,7 @@ namespace roomcad {
 namespace {
 
 /// An error's identity across an edit.
-using ErrorKey = std::pair<std::string, std::vector<std::string>>;
+using ErrorKey = std::pair<Code, std::vector<std::string>>;
 
 ErrorKey key_of(const Diagnostic& d) {
   std::vector<std::string> ids = d.objects;

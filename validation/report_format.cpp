@@ -18,7 +18,7 @@ std::string json_point(const Point2& p) {
 }
 
 std::string json_item(const Diagnostic& d) {
-  std::string out = "{\"code\": " + json_string(d.code) + ", \"objects\": [";
+  std::string out = "{\"code\": " + json_string(std::string(to_string(d.code))) + ", \"objects\": [";
   for (std::size_t i = 0; i < d.objects.size(); ++i)
     out += (i ? ", " : "") + json_string(d.objects[i]);
   out += "], \"message\": " + json_string(d.message);
@@ -28,11 +28,11 @@ std::string json_item(const Diagnostic& d) {
                         : json_point(d.where->min);
   }
   if (!d.fix.empty()) out += ", \"fix\": " + json_string(d.fix);
-  if (d.source) {
-    out += ", \"file\": " + json_string(d.source->file);
-    out += ", \"line\": " + std::to_string(d.source->line);
-    out += ", \"column\": " + std::to_string(d.source->column);
-    out += ", \"pointer\": " + json_string(d.source->pointer);
+  if (d.location) {
+    out += ", \"file\": " + json_string(d.location->file);
+    out += ", \"line\": " + std::to_string(d.location->line);
+    out += ", \"column\": " + std::to_string(d.location->column);
+    out += ", \"pointer\": " + json_string(d.location->pointer);
   }
   return out + '}';
 }
@@ -81,7 +81,7 @@ std::string format_report_text(const Report& report, bool colour) {
     if (colour) out += error ? "\033[1;31m" : "\033[1;33m";
     out += error ? "error" : "warning";
     out += reset;
-    out += std::string(bold) + '[' + d.code + ']' + reset;
+    out += std::string(bold) + '[' + std::string(to_string(d.code)) + ']' + reset;
     for (std::size_t i = 0; i < d.objects.size(); ++i) out += (i ? ", " : " ") + d.objects[i];
     out += ": " + d.message + '\n';
     if (d.where) {

@@ -89,7 +89,7 @@ Result<std::vector<InputEvent>> parse_key_script(std::string_view script) {
                          item.starts_with("pan:") || item.starts_with("wheel:");
     const std::string problem = pointer ? parse_pointer(item, event) : parse_key(item, event);
     if (!problem.empty())
-      return Result<std::vector<InputEvent>>::failure(
+      return Result<std::vector<InputEvent>>::failure(Code::usage_error,
           fmt::format("--keys: input {} '{}': {}", index, item, problem));
     events.push_back(std::move(event));
   }

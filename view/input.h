@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/result.h"
+#include "core/error.h"
 
 namespace roomcad {
 

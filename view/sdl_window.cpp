@@ -100,7 +100,7 @@ bool present(SDL_Window* window, const RgbImage& frame) {
 Result<RgbImage> read_window(SDL_Window* window) {
   SDL_Surface* shown = SDL_GetWindowSurface(window);
   SurfacePtr rgb(shown ? SDL_ConvertSurfaceFormat(shown, SDL_PIXELFORMAT_RGB24, 0) : nullptr);
-  if (!rgb) return Result<RgbImage>::failure(fmt::format("reading the window: {}", SDL_GetError()));
+  if (!rgb) return Result<RgbImage>::failure(Code::io_error, fmt::format("reading the window: {}", SDL_GetError()));
   RgbImage image(rgb->w, rgb->h);
   for (int y = 0; y < rgb->h; ++y) {
     const auto* row = static_cast<const std::uint8_t*>(rgb->pixels) + static_cast<std::size_t>(y) * rgb->pitch;
@@ -117,13 +117,13 @@ Status run_interactive(SDL_Window* window, Viewer& viewer) {
     for (bool got = SDL_WaitEventTimeout(&e, kPollMs) != 0; got && !quit; got = SDL_PollEvent(&e) != 0) {
       if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_EXPOSED &&
           !present(window, viewer.frame()))
-        return Status::failure(fmt::format("drawing the window: {}", SDL_GetError()));
+        return Status::failure(Code::io_error, fmt::format("drawing the window: {}", SDL_GetError()));
       if (const std::optional<InputEvent> input = translate(e, pointer, quit))
         quit = quit || !viewer.handle(*input);
     }
     viewer.poll_file();
     if (!quit && viewer.needs_redraw() && !present(window, viewer.frame()))
-      return Status::failure(fmt::format("drawing the window: {}", SDL_GetError()));
+      return Status::failure(Code::io_error, fmt::format("drawing the window: {}", SDL_GetError()));
   }
   return Status::success();
 }
@@ -134,10 +134,10 @@ Status run_screenshot(SDL_Window* window, Viewer& viewer, const WindowOptions& o
     for (SDL_Event e; SDL_PollEvent(&e) != 0;) {}  // a headless run takes no live input
     viewer.poll_file();
     if (!present(window, viewer.frame()))
-      return Status::failure(fmt::format("drawing the window: {}", SDL_GetError()));
+      return Status::failure(Code::io_error, fmt::format("drawing the window: {}", SDL_GetError()));
   }
   const Result<RgbImage> shot = read_window(window);
-  if (!shot) return Status::failure(shot.error());
+  if (!shot) return shot.status();
   return write_png(shot.value(), options.screenshot);
 }
 
@@ -148,12 +148,12 @@ Status start_video() {
   const char* display = std::getenv("DISPLAY");
   const std::string where = fmt::format("DISPLAY='{}'", display ? display : "");
   if (SDL_Init(SDL_INIT_VIDEO) != 0)
-    return Status::failure(fmt::format("cannot open a window ({}): {}; without a screen, run "
+    return Status::failure(Code::io_error, fmt::format("cannot open a window ({}): {}; without a screen, run "
                                        "under Xvfb (xvfb-run -a roomcad view ...)", where, SDL_GetError()));
   const std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
   if ((driver == "offscreen" || driver == "dummy") && !std::getenv("SDL_VIDEODRIVER")) {
     SDL_Quit();
-    return Status::failure(fmt::format(
+    return Status::failure(Code::io_error, fmt::format(
         "cannot open a window ({}): no screen to show it on; run under Xvfb (xvfb-run -a "
         "roomcad view ...), or set SDL_VIDEODRIVER=offscreen for a --screenshot run", where));
   }
@@ -169,12 +169,12 @@ Status run_window(Viewer& viewer, const WindowOptions& options) {
   WindowPtr window(SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
                                     size.width, size.height, SDL_WINDOW_SHOWN));
   Status status = window ? Status::success()
-                         : Status::failure(fmt::format("cannot open a window: {}", SDL_GetError()));
+                         : Status::failure(Code::io_error, fmt::format("cannot open a window: {}", SDL_GetError()));
   bool quit = false;
   for (const InputEvent& input : options.script)
     if (status && !quit) quit = !viewer.handle(input);
   if (status && quit && !options.screenshot.empty())
-    status = Status::failure(fmt::format("--keys quits ('q') before the screenshot {} is taken",
+    status = Status::failure(Code::usage_error, fmt::format("--keys quits ('q') before the screenshot {} is taken",
                                          options.screenshot.string()));
   else if (status && !quit)
     status = options.screenshot.empty() ? run_interactive(window.get(), viewer)

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "view/input.h"
 #include "view/viewer.h"
 

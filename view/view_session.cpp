@@ -34,13 +34,6 @@ std::vector<std::string> object_ids(const Plan& plan) {
   return ids;
 }
 
-/// The first error of a report as one line, e.g. "wall_overlap: walls a and b overlap".
-std::string first_error(const Report& report) {
-  for (const Diagnostic& d : report.items)
-    if (d.severity == Severity::error) return fmt::format("{}: {}", d.code, d.message);
-  return "";
-}
-
 /// "1 error" or "N errors".
 std::string error_count(const Report& report) {
   const std::size_t n = report.error_count();
@@ -56,11 +49,15 @@ std::string reading_failure(const std::filesystem::path& path, const Report& rep
 }  // namespace
 
 Result<ViewSession> ViewSession::open(const std::filesystem::path& path) {
-  PlanReadResult read = read_plan_file(path);
-  if (!read.plan) return Result<ViewSession>::failure(reading_failure(path, read.report));
+  Report report;
+  Result<Plan> read = read_plan_file(path, &report);
+  if (!read) {
+    if (report.ok()) return read.error();  // not read at all: the io_error says why
+    return Error{read.code(), reading_failure(path, report), read.error().location};
+  }
   ViewSession session;
   session.path_ = path;
-  session.plan_ = std::move(*read.plan);
+  session.plan_ = std::move(read).value();
   session.report_ = validate(session.plan_);
   session.file_time_ = modification_time(path);
   return session;
@@ -190,7 +187,7 @@ bool ViewSession::save() {
     return false;
   }
   if (const Status written = write_plan_file(plan_, path_); !written) {
-    set_message(fmt::format("not saved: {}", written.error));
+    set_message(fmt::format("not saved: {}", written.message()));
     return false;
   }
   file_time_ = modification_time(path_);
@@ -203,14 +200,14 @@ bool ViewSession::reload_if_changed() {
   const auto time = modification_time(path_);
   if (time == file_time_) return false;
   file_time_ = time;  // a bad file is reported once, not every frame
-  PlanReadResult read = read_plan_file(path_);
-  if (!read.plan) {
-    set_message(fmt::format("{} changed on disk but is not a valid plan ({}); the plan shown is kept",
-                            path_.string(), first_error(read.report)));
+  Result<Plan> read = read_plan_file(path_);
+  if (!read) {
+    set_message(fmt::format("{} changed on disk but is not a valid plan ({}: {}); the plan shown "
+                            "is kept", path_.string(), to_string(read.code()), read.message()));
     return false;
   }
-  if (*read.plan == plan_) return false;
-  replace_plan(std::move(*read.plan));
+  if (read.value() == plan_) return false;
+  replace_plan(std::move(read).value());
   modified_ = false;
   set_message(fmt::format("reloaded {} (changed on disk; Ctrl+Z goes back)", path_.string()));
   return true;

@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "modeling/plan.h"
 #include "modeling/plan_edit.h"
 #include "validation/report.h"

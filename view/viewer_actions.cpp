@@ -127,7 +127,7 @@ OverlayText Viewer::overlay_text() const {
   t.selection = s.selection_properties();
   for (const Diagnostic& d : s.report().items)
     if (d.severity == Severity::error)
-      t.errors.push_back(fmt::format("error[{}] {}: {}", d.code, fmt::join(d.objects, ", "), d.message));
+      t.errors.push_back(fmt::format("error[{}] {}: {}", to_string(d.code), fmt::join(d.objects, ", "), d.message));
   t.help =
       "a/d/w/s orbit  x/y/z turn  shift+arrows pan  +/- zoom  1-4 views  p proj  h shadows  "
       "m shading  g grid  e wire  o text  click select  arrows move  r turn  del delete  "

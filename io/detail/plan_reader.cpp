@@ -93,7 +93,7 @@ class PlanReader {
  private:
   // ---- diagnostics ----
 
-  void report(Severity severity, std::string code, const std::string& pointer, bool at_key,
+  void report(Severity severity, Code code, const std::string& pointer, bool at_key,
               const std::string& what, std::string fix = {}) {
     const auto& offsets = at_key ? doc_.key_offsets : doc_.value_offsets;
     const auto found = offsets.find(pointer);
@@ -101,26 +101,26 @@ class PlanReader {
     const LineColumn at = cursor_.at(offset);
     Diagnostic d;
     d.severity = severity;
-    d.code = std::move(code);
+    d.code = code;
     d.objects = objects_;
     d.message = std::string(file_) + ':' + std::to_string(at.line) + ':' +
                 std::to_string(at.column) + ": " + (pointer.empty() ? "" : pointer + ": ") + what;
     d.fix = std::move(fix);
-    d.source = SourceLocation{std::string(file_), pointer, at.line, at.column};
+    d.location = Location{std::string(file_), pointer, at.line, at.column};
     report_.add(std::move(d));
   }
 
   void wrong_type(const std::string& p, std::string_view expected, const Json& found) {
-    report(Severity::error, "parse_error", p, false,
+    report(Severity::error, Code::parse_error, p, false,
            "expected " + std::string(expected) + ", found " + describe(found));
   }
 
   void invalid(const std::string& p, const std::string& what, std::string fix = {}) {
-    report(Severity::error, "invalid_value", p, false, what, std::move(fix));
+    report(Severity::error, Code::invalid_value, p, false, what, std::move(fix));
   }
 
   void missing(const std::string& object_pointer, std::string_view key, std::string_view what) {
-    report(Severity::error, "parse_error", object_pointer, false,
+    report(Severity::error, Code::parse_error, object_pointer, false,
            "missing required field \"" + std::string(key) + "\" (" + std::string(what) + ")");
   }
 
@@ -132,7 +132,7 @@ class PlanReader {
       what += " (did you mean \"" + std::string(*best) + "\"?)";
       fix = "rename it to \"" + std::string(*best) + "\"";
     }
-    report(Severity::warning, "unknown_field", p, true, what, std::move(fix));
+    report(Severity::warning, Code::unknown_field, p, true, what, std::move(fix));
     extra.push_back(ExtraField{key, canonical_text(v)});
   }
 
@@ -395,7 +395,7 @@ Plan read_plan_document(const PositionedJson& doc, std::string_view text, std::s
   std::vector<std::size_t> index(found.items.size());
   for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
   auto position = [&](std::size_t i) {
-    const SourceLocation& at = *found.items[i].source;
+    const Location& at = *found.items[i].location;
     return std::pair(at.line, at.column);
   };
   std::stable_sort(index.begin(), index.end(),

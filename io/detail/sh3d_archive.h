@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/result.h"
+#include "core/error.h"
 
 namespace roomcad::sh3d {
 

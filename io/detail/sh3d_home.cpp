@@ -181,11 +181,11 @@ Result<Home> parse_home_xml(std::string_view xml, std::string_view file) {
   pugi::xml_document doc;
   const pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size());
   if (!parsed)
-    return Result<Home>::failure(fmt::format("{}: malformed XML at byte {}: {}", file,
+    return Result<Home>::failure(Code::parse_error, fmt::format("{}: malformed XML at byte {}: {}", file,
                                              parsed.offset, parsed.description()));
   const pugi::xml_node root = doc.document_element();
   if (std::string_view(root.name()) != "home")
-    return Result<Home>::failure(fmt::format(
+    return Result<Home>::failure(Code::parse_error, fmt::format(
         "{}: not a Sweet Home 3D Home.xml: the root element is <{}>, not <home>", file,
         root.name()));
 
@@ -202,7 +202,7 @@ Result<Home> parse_home_xml(std::string_view xml, std::string_view file) {
   }
   collect_items(root, file, &error, home.items);
   if (error.empty()) error = check_level_references(home, file);
-  if (!error.empty()) return Result<Home>::failure(std::move(error));
+  if (!error.empty()) return Result<Home>::failure(Code::parse_error, std::move(error));
   return home;
 }
 

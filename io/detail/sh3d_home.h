@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/result.h"
+#include "core/error.h"
 #include "modeling/plan.h"
 
 namespace roomcad::sh3d {

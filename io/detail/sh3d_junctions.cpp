@@ -140,7 +140,7 @@ void join_t_ends(std::vector<WallRecord>& walls, double snap_distance, Report& w
   }
   if (moved.empty()) return;
   Diagnostic d = import_warning(
-      "import_t_junction", ids.front(),
+      Code::import_t_junction, ids.front(),
       fmt::format("{} wall ends drawn inside another wall were moved onto that wall's centre line "
                   "(along their own wall) or onto its end (at a corner), so that the plan joins "
                   "them as Sweet Home 3D does: {}",

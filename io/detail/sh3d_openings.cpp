@@ -124,7 +124,7 @@ void warn_about_item(const ItemRecord& item, const std::string& id,
                                        item.name);
   if (pieces.empty()) {
     warnings.add(import_warning(
-        "import_skipped_opening", id,
+        Code::import_skipped_opening, id,
         fmt::format("{} at ({:.3f}, {:.3f}) lies in no straight wall of its level parallel to "
                     "it; it is left out",
                     what, item.centre.x, item.centre.y)));
@@ -132,14 +132,14 @@ void warn_about_item(const ItemRecord& item, const std::string& id,
   }
   if (!item.cut_out_shape.empty() && item.cut_out_shape != kRectangle)
     warnings.add(import_warning(
-        "import_cut_out_shape", id,
+        Code::import_cut_out_shape, id,
         fmt::format("{} has the cut-out shape '{}'; it is imported as its bounding rectangle",
                     what, item.cut_out_shape)));
   if (pieces.size() > 1) {
     std::vector<std::string> where;
     for (const Opening& o : pieces) where.push_back(fmt::format("'{}' in wall '{}'", o.id, o.wall));
     warnings.add(import_warning(
-        "import_split_opening", id,
+        Code::import_split_opening, id,
         fmt::format("{} passes through {} walls; it is cut as {}", what, pieces.size(),
                     fmt::join(where, ", "))));
   }

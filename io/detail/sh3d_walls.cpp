@@ -27,7 +27,7 @@ double flat_height_cm(const Home& home, const WallRecord& w, Report& warnings) {
   if (w.height_at_end_cm && *w.height_at_end_cm != height) {
     const double top = std::max(height, *w.height_at_end_cm);
     warnings.add(import_warning(
-        "import_sloped_wall", w.id,
+        Code::import_sloped_wall, w.id,
         fmt::format("wall '{}' has a sloped top from {} m to {} m; the plan format has one "
                     "height per wall, so it is imported flat at {} m",
                     w.id, height / 100, *w.height_at_end_cm / 100, top / 100)));
@@ -60,10 +60,10 @@ double mitre_margin(const Arc& arc, const WallRecord& w, double tolerance) {
 
 }  // namespace
 
-Diagnostic import_warning(std::string code, const std::string& id, std::string message) {
+Diagnostic import_warning(Code code, const std::string& id, std::string message) {
   Diagnostic d;
   d.severity = Severity::warning;
-  d.code = std::move(code);
+  d.code = code;
   d.objects = {id};
   d.message = std::move(message);
   return d;
@@ -98,7 +98,7 @@ std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> 
   for (const WallRecord& w : walls) {
     if (w.start == w.end) {  // nothing to build, and the plan format forbids it
       warnings.add(import_warning(
-          "import_zero_length_wall", w.id,
+          Code::import_zero_length_wall, w.id,
           fmt::format("wall '{}' starts and ends at the same point in the home; it is left out",
                       w.id)));
       continue;
@@ -119,7 +119,7 @@ std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> 
                                   base_cm, top_cm),
                         w.level});
     warnings.add(import_warning(
-        "import_curved_wall", w.id,
+        Code::import_curved_wall, w.id,
         fmt::format("curved wall '{}' ({:.1f} degrees of arc) is imported as {} straight walls "
                     "'{}-arc1'..'{}-arc{}' within {} m of the arc",
                     w.id, std::abs(*w.arc_extent) * 180 / std::numbers::pi, points.size() - 1,

@@ -41,7 +41,7 @@ struct PlacedWall {
 };
 
 /// @return a warning of `code` about the object `id` (io's own codes start with `import_`).
-[[nodiscard]] Diagnostic import_warning(std::string code, const std::string& id,
+[[nodiscard]] Diagnostic import_warning(Code code, const std::string& id,
                                         std::string message);
 
 struct WallOptions {

@@ -81,7 +81,7 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
         "build_model: the solid of walls {} is not 2-manifold: more than two of its faces meet at "
         "the edge from ({}, {}, {}) to ({}, {}, {}) (walls touching along an edge)", wall_list(walls),
         r.points[bad.first][0], r.points[bad.first][1], r.points[bad.first][2],
-        r.points[bad.second][0], r.points[bad.second][1], r.points[bad.second][2]));
+        r.points[bad.second][0], r.points[bad.second][1], r.points[bad.second][2]), Code::not_buildable);
   FaceSoup soup;
   soup.reserve(r.polygons.size());
   for (std::size_t k = 0; k < r.polygons.size(); ++k) {
@@ -110,7 +110,7 @@ FaceSoup build_cluster_cgal(std::span<const WallFrame* const> walls, int first_o
   if (!holes.empty()) solid -= unite_balanced(std::move(holes));
   if (solid.is_empty() && !walls.empty())
     throw PreconditionError(fmt::format("build_model: the walls joined to wall #{} leave nothing "
-                                        "once their openings are cut", walls.front()->wall));
+                                        "once their openings are cut", walls.front()->wall), Code::not_buildable);
   return to_soup(solid, walls, first_opening_object);
 }
 

@@ -158,7 +158,7 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
             "build_model: a {} face of '{}' with {} corners near ({}, {}, {}) would make the "
             "mesh non-manifold: {}",
             to_string(f.kind), object_name(objects, f.object), f.points.size(), at[0], at[1],
-            at[2], problem.value_or("OpenMesh refused it")));
+            at[2], problem.value_or("OpenMesh refused it")), Code::not_buildable);
       }
       mesh.property(props.object, fh) = f.object;
       mesh.property(props.kind, fh) = f.kind;

@@ -58,7 +58,7 @@ FaceSoup build_floor(const Site& site) {
   if (nx <= 0 || ny <= 0 || !(s > 0.0) || !std::isfinite(s) || nx * ny > 10'000'000)
     throw PreconditionError(fmt::format("build_model: the site's floor cannot be built: cells "
                                         "[{}, {}], cell_size {} (need 1 to 10^7 tiles of a "
-                                        "positive finite size)", nx, ny, s));
+                                        "positive finite size)", nx, ny, s), Code::not_buildable);
   FaceSoup soup;
   soup.reserve(static_cast<std::size_t>(nx * ny));
   auto corner = [&](std::int64_t i, std::int64_t j) {

@@ -26,7 +26,7 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
     throw PreconditionError(fmt::format(
         "build_model: wall '{}' cannot be built: length {}, thickness {}, height {}, base {} "
         "(length, thickness and height must be positive and finite)",
-        w.id, length, w.thickness, w.height, w.base));
+        w.id, length, w.thickness, w.height, w.base), Code::not_buildable);
   WallFrame f;
   f.wall = index;
   f.from = w.from;
@@ -54,7 +54,7 @@ Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
     throw PreconditionError(fmt::format(
         "build_model: opening '{}' cannot be cut: u [{}, {}] x v [{}, {}] is not a non-empty "
         "rectangle inside wall '{}' ([0, {}] x [0, {}])",
-        o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length, w.height));
+        o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length, w.height), Code::not_buildable);
   // base + (sill + height) equals the wall's top exactly when the opening reaches it.
   return {index, o.offset, o.offset + o.width, w.base + o.sill, w.base + (o.sill + o.height)};
 }
@@ -116,7 +116,7 @@ std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_join
     if (it == by_id.end())
       throw PreconditionError(fmt::format("build_model: opening '{}' cannot be cut: its wall '{}' "
                                           "does not exist",
-                                          plan.openings[i].id, plan.openings[i].wall));
+                                          plan.openings[i].id, plan.openings[i].wall), Code::not_buildable);
     frames[it->second].holes.push_back(make_hole(plan, i, frames[it->second]));
   }
   for (WallFrame& f : frames)

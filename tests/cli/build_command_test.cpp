@@ -82,7 +82,7 @@ TEST(BuildCommand, CoordinatesReadBackToTheSameDoubles) {
   const auto r = run_roomcad({"build", write_plan(dir, plan), "--parts", "walls", "-o", out.string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto written = read_off_vertices(test::read_bytes(out));
-  const Model model = build_model(read_plan_text(write_plan_text(plan), "x").plan.value());
+  const Model model = build_model(read_plan_text(write_plan_text(plan), "x").value());
   ASSERT_EQ(written.size(), model.walls.n_vertices());
   for (const auto v : model.walls.vertices()) EXPECT_EQ(written[std::size_t(v.idx())], model.walls.point(v));
 }

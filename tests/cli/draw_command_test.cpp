@@ -73,7 +73,7 @@ TEST(DrawCommand, BadOptionsExitTwo) {
       {{plan, "--view", "sideways", "-o", out}, "--view"},
       {{plan, "--view", "camera:nope", "-o", out}, "no camera \"nope\""},
       {{plan, "--view", "iso", "--hidden", "grey", "-o", out}, "--hidden"},
-      {{plan, "--view", "iso", "--parts", "roof", "-o", out}, "\"roof\""},
+      {{plan, "--view", "iso", "--parts", "roof", "-o", out}, "'roof'"},
       {{plan, "--scale", "1:x", "-o", out}, "--scale \"1:x\""},
       {{plan, "--scale", "1:0", "-o", out}, "scale 1:0"},
       {{plan, "--cut-height", "-1", "-o", out}, "cut height"},

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "support/run_command.h"
 
@@ -30,7 +31,7 @@ class EditCommands : public ::testing::Test {
  protected:
   /// Writes the canonical text of a plan file into the temporary folder; @return its path.
   fs::path canonical_copy(const fs::path& source) {
-    const PlanReadResult read = read_plan_file(source);
+    const test::PlanReading read = test::read_plan_at(source);
     EXPECT_TRUE(read.plan.has_value()) << source;
     const fs::path copy = dir_ / source.filename().string();
     EXPECT_TRUE(test::write_bytes(copy, write_plan_text(*read.plan)));
@@ -44,7 +45,7 @@ class EditCommands : public ::testing::Test {
     for (std::string& w : words(rest)) args.push_back(std::move(w));
     return test::run_roomcad(args);
   }
-  Plan load(const fs::path& path) { return read_plan_file(path).plan.value(); }
+  Plan load(const fs::path& path) { return read_plan_file(path).value(); }
 
   /// Expects the edit to end with `status`, saying `says` on stderr, leaving the file byte for
   /// byte as it was.
@@ -191,8 +192,8 @@ void expect_restored(const fs::path& plan, const std::string& before, int warnin
     EXPECT_EQ(read_bytes(plan), before) << source;
     return;
   }
-  const PlanReadResult original = read_plan_text(before, "before");
-  expect_walls_near(read_plan_file(plan).plan.value(), original.plan.value(), source);
+  const test::PlanReading original = test::read_plan(before, "before");
+  expect_walls_near(read_plan_file(plan).value(), original.plan.value(), source);
 }
 
 TEST_F(EditCommands, FourQuarterTurnsOfTheWholePlanAreIdentity) {

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "support/run_command.h"
 #include "validation/validate.h"
@@ -16,7 +17,7 @@ TEST(Examples, EveryBundledExampleValidates) {
     if (entry.path().extension() != ".json") continue;
     SCOPED_TRACE(entry.path().string());
     ++count;
-    const PlanReadResult read = read_plan_file(entry.path());
+    const test::PlanReading read = test::read_plan_at(entry.path());
     ASSERT_TRUE(read.plan.has_value());
     const Report report = validate(*read.plan);
     for (const Diagnostic& d : report.items)

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "io/sweethome3d_import.h"
 #include "support/run_command.h"
@@ -24,7 +25,7 @@ TEST(ImportCommand, WritesThePlanTheImporterBuilds) {
   // The curved wall is announced by id.
   EXPECT_NE(run.err.find("warning [import_curved_wall]: curved wall 'wall7'"), std::string::npos)
       << run.err;
-  const PlanReadResult read = read_plan_file(dir / "a.json");
+  const test::PlanReading read = test::read_plan_at(dir / "a.json");
   ASSERT_TRUE(read.plan.has_value());
   EXPECT_TRUE(read.report.ok());
   const Result<Sh3dImport> imported = import_sweethome3d_file(home);
@@ -38,7 +39,7 @@ TEST(ImportCommand, OneLevelByName) {
   const test::CommandResult run =
       run_roomcad({"import", home.string(), "-o", dir / "b.json", "--level", "Basement"});
   ASSERT_EQ(run.status, 0) << run.err;
-  const PlanReadResult read = read_plan_file(dir / "b.json");
+  const test::PlanReading read = test::read_plan_at(dir / "b.json");
   ASSERT_TRUE(read.plan.has_value());
   EXPECT_EQ(read.plan->walls.size(), 14u);  // the <wall level='level0'> elements of the file
   for (const Wall& w : read.plan->walls) EXPECT_EQ(w.base, 0.0);

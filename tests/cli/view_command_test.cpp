@@ -135,10 +135,10 @@ std::string click_on(const TempDir& dir, const std::string& plan, const std::str
 TEST_F(ViewCommand, ClickArrowAndSaveMoveAWallOneCell) {
   const auto plan = dir_ / "studio.json";
   std::filesystem::copy_file(studio(), plan);
-  const Plan original = read_plan_file(plan).plan.value();
+  const Plan original = read_plan_file(plan).value();
   const std::string click = click_on(dir_, plan.string(), "east");
   view_shot(dir_ / "a.png", {plan.string(), "--keys", fmt::format("1,{},right,ctrl+s", click)});
-  const Plan moved = read_plan_file(plan).plan.value();
+  const Plan moved = read_plan_file(plan).value();
   const double cell = original.site.cell_size;
   ASSERT_EQ(moved.walls.size(), original.walls.size());
   for (std::size_t i = 0; i < moved.walls.size(); ++i) {
@@ -150,9 +150,9 @@ TEST_F(ViewCommand, ClickArrowAndSaveMoveAWallOneCell) {
   }
   const std::string click_moved = click_on(dir_, plan.string(), "east");
   view_shot(dir_ / "b.png", {plan.string(), "--keys", fmt::format("1,{},left,ctrl+z,ctrl+s", click_moved)});
-  EXPECT_EQ(read_plan_file(plan).plan.value(), moved);  // the undone move was not saved
+  EXPECT_EQ(read_plan_file(plan).value(), moved);  // the undone move was not saved
   view_shot(dir_ / "c.png", {plan.string(), "--keys", fmt::format("1,{},left,ctrl+s", click_moved)});
-  EXPECT_EQ(read_plan_file(plan).plan.value(), original);
+  EXPECT_EQ(read_plan_file(plan).value(), original);
 }
 
 TEST_F(ViewCommand, BadInputsAreNamedWithExitStatus2) {

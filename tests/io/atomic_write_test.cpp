@@ -52,7 +52,7 @@ TEST(AtomicWrite, LargeContentThroughTheStream) {
     for (int i = 0; i < 200000; ++i) out << i << '\n';
     return true;
   });
-  ASSERT_TRUE(s.ok()) << s.error;
+  ASSERT_TRUE(s.ok()) << s.message();
   const std::string bytes = test::read_bytes(dir / "big.bin");
   EXPECT_EQ(bytes.substr(0, 6), "0\n1\n2\n");
   EXPECT_EQ(bytes.substr(bytes.size() - 7), "199999\n");
@@ -66,8 +66,8 @@ TEST(AtomicWrite, AbandonedWriteLeavesTheOldFileAndNoTemporary) {
     return false;
   });
   EXPECT_FALSE(declined.ok());
-  EXPECT_NE(declined.error.find("a.txt"), std::string::npos) << declined.error;
-  EXPECT_NE(declined.error.find("abandoned"), std::string::npos) << declined.error;
+  EXPECT_NE(declined.message().find("a.txt"), std::string::npos) << declined.message();
+  EXPECT_NE(declined.message().find("abandoned"), std::string::npos) << declined.message();
   EXPECT_EQ(test::read_bytes(dir / "a.txt"), "precious");
   EXPECT_EQ(entries(dir.path()), 1u);
 
@@ -76,7 +76,7 @@ TEST(AtomicWrite, AbandonedWriteLeavesTheOldFileAndNoTemporary) {
     throw std::runtime_error("mesh is broken");
   });
   EXPECT_FALSE(thrown.ok());
-  EXPECT_NE(thrown.error.find("mesh is broken"), std::string::npos) << thrown.error;
+  EXPECT_NE(thrown.message().find("mesh is broken"), std::string::npos) << thrown.message();
   EXPECT_EQ(test::read_bytes(dir / "a.txt"), "precious");
   EXPECT_EQ(entries(dir.path()), 1u);
 }
@@ -85,8 +85,8 @@ TEST(AtomicWrite, MissingDirectoryNamesThePathAndTheReason) {
   test::TempDir dir;
   const Status s = write_file_atomically(dir / "no" / "such" / "a.txt", std::string_view("x"));
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.error.find((dir / "no" / "such" / "a.txt").string()), std::string::npos) << s.error;
-  EXPECT_NE(s.error.find("No such file or directory"), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find((dir / "no" / "such" / "a.txt").string()), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("No such file or directory"), std::string::npos) << s.message();
   EXPECT_EQ(entries(dir.path()), 0u);
 }
 
@@ -96,7 +96,7 @@ TEST(AtomicWrite, TargetThatIsADirectoryIsLeftAlone) {
   ASSERT_TRUE(test::write_bytes(dir / "d" / "inside", "keep"));
   const Status s = write_file_atomically(dir / "d", std::string_view("x"));
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.error.find((dir / "d").string()), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find((dir / "d").string()), std::string::npos) << s.message();
   EXPECT_EQ(test::read_bytes(dir / "d" / "inside"), "keep");
   EXPECT_EQ(entries(dir.path()), 1u);
 }

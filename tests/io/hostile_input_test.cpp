@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "support/plan_reading.h"
 #include "io/detail/plan_reader.h"
 #include "io/detail/sh3d_arcs.h"
 #include "io/detail/positioned_json.h"
@@ -51,14 +52,14 @@ std::string png_claiming(std::uint32_t width, std::uint32_t height) {
 TEST(HostileInput, PngClaimingAHugeImageIsRefusedBeforeAllocation) {
   const Result<RgbImage> huge = read_png_bytes(png_claiming(100000, 100000), "huge.png");
   ASSERT_FALSE(huge.ok());
-  EXPECT_NE(huge.error().find("'huge.png' is 100000 x 100000 pixels"), std::string::npos)
+  EXPECT_NE(huge.message().find("'huge.png' is 100000 x 100000 pixels"), std::string::npos)
       << huge.error();
   // One side over the limit, the area within it: still refused.
   EXPECT_FALSE(read_png_bytes(png_claiming(kMaxPngSide + 1, 1), "wide.png").ok());
   // At the limit the header passes the size check and fails only for the missing data.
   const Result<RgbImage> side = read_png_bytes(png_claiming(kMaxPngSide, 1), "side.png");
   ASSERT_FALSE(side.ok());
-  EXPECT_NE(side.error().find("could not be decoded"), std::string::npos) << side.error();
+  EXPECT_NE(side.message().find("could not be decoded"), std::string::npos) << side.error();
 }
 
 TEST(HostileInput, Sh3dArchiveDeclaringAHugeHomeXmlIsRefused) {
@@ -66,7 +67,7 @@ TEST(HostileInput, Sh3dArchiveDeclaringAHugeHomeXmlIsRefused) {
   const auto archive = test::source_dir() / "fuzz/corpus/sh3d_archive/huge-entry.sh3d";
   const Result<Sh3dImport> imported = import_sweethome3d_file(archive);
   ASSERT_FALSE(imported.ok());
-  EXPECT_NE(imported.error().find("huge-entry.sh3d: its Home.xml entry is 4294967280 bytes"),
+  EXPECT_NE(imported.message().find("huge-entry.sh3d: its Home.xml entry is 4294967280 bytes"),
             std::string::npos)
       << imported.error();
 }
@@ -82,7 +83,7 @@ TEST(HostileInput, Sh3dHomeWithTooManyWallItemPairsIsRefusedBeforeMatching) {
   xml += "</home>";
   const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "crowded.Home.xml");
   ASSERT_FALSE(imported.ok());
-  EXPECT_NE(imported.error().find("crowded.Home.xml: 50000 <wall> and 20001 <doorOrWindow> and "
+  EXPECT_NE(imported.message().find("crowded.Home.xml: 50000 <wall> and 20001 <doorOrWindow> and "
                                   "<level> elements; at most 1000000000 pairs"),
             std::string::npos)
       << imported.error();
@@ -98,7 +99,7 @@ TEST(HostileInput, Sh3dHomeWithMoreWallsThanAPlanHoldsIsRefused) {
   xml += "</home>";
   const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "huge.Home.xml");
   ASSERT_FALSE(imported.ok());
-  EXPECT_NE(imported.error().find("huge.Home.xml: 1000001 <wall> and 0 <doorOrWindow> elements; "
+  EXPECT_NE(imported.message().find("huge.Home.xml: 1000001 <wall> and 0 <doorOrWindow> elements; "
                                   "a plan may hold at most 1000000 of each kind"),
             std::string::npos)
       << imported.error();
@@ -112,14 +113,14 @@ TEST(HostileInput, Sh3dHomeSpreadBeyondAnySiteIsRefused) {
       "height='250'/></home>";
   const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "far.Home.xml");
   ASSERT_FALSE(imported.ok());
-  EXPECT_NE(imported.error().find("far.Home.xml: the walls span 3.5e+115 m, more than 1e+09 "
+  EXPECT_NE(imported.message().find("far.Home.xml: the walls span 3.5e+115 m, more than 1e+09 "
                                   "cells of 1 m"),
             std::string::npos)
       << imported.error();
   const auto found = test::source_dir() / "fuzz/corpus/sh3d_xml/crash-site-cells.Home.xml";
   const Result<Sh3dImport> again = import_sweethome3d_file(found);
   ASSERT_FALSE(again.ok());
-  EXPECT_NE(again.error().find("more than 1e+09 cells"), std::string::npos) << again.error();
+  EXPECT_NE(again.message().find("more than 1e+09 cells"), std::string::npos) << again.error();
 }
 
 TEST(HostileInput, Sh3dHomeWhoseWallsAllHaveZeroLengthIsRefused) {
@@ -131,12 +132,13 @@ TEST(HostileInput, Sh3dHomeWhoseWallsAllHaveZeroLengthIsRefused) {
       "height='250'/></home>";
   const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "dots.Home.xml");
   ASSERT_FALSE(imported.ok());
-  EXPECT_EQ(imported.error(), "dots.Home.xml: no wall to import: each of its 2 <wall> elements "
-                              "starts and ends at the same point");
+  EXPECT_EQ(imported.code(), Code::invalid_value);
+  EXPECT_EQ(imported.message(), "dots.Home.xml: no wall to import: each of its 2 <wall> elements "
+                                "starts and ends at the same point");
   const auto found = test::source_dir() / "fuzz/corpus/sh3d_archive/crash-zero-length-walls.sh3d";
   const Result<Sh3dImport> again = import_sweethome3d_file(found);
   ASSERT_FALSE(again.ok());
-  EXPECT_NE(again.error().find("no wall to import"), std::string::npos) << again.error();
+  EXPECT_NE(again.message().find("no wall to import"), std::string::npos) << again.error();
 }
 
 TEST(HostileInput, Sh3dTEndsThatCannotMoveAreNeitherMovedNorReported) {
@@ -155,7 +157,7 @@ TEST(HostileInput, Sh3dTEndsThatCannotMoveAreNeitherMovedNorReported) {
                                 "fuzz/corpus/sh3d_archive/crash-t-join-kept.sh3d")}) {
     ASSERT_TRUE(imported.ok()) << imported.error();
     for (const Diagnostic& d : imported.value().warnings.items) {
-      if (d.code == "import_t_junction") {
+      if (d.code == Code::import_t_junction) {
         EXPECT_FALSE(d.objects.empty()) << d.message;
       }
     }
@@ -176,11 +178,11 @@ TEST(HostileInput, TooManyObjectsIsAnInvalidValueNamingTheArrayAndCount) {
   std::string text = R"({"format": "roomcad-plan", "version": 1, "walls": [0)";
   for (std::size_t i = 0; i < io_detail::kMaxPlanObjects; ++i) text += ",0";
   text += "]}";
-  const PlanReadResult read = read_plan_text(text, "many.json");
+  const test::PlanReading read = test::read_plan(text, "many.json");
   ASSERT_FALSE(read.plan);
   ASSERT_EQ(read.report.items.size(), 1u);
   const Diagnostic& d = read.report.items[0];
-  EXPECT_EQ(d.code, "invalid_value");
+  EXPECT_EQ(d.code, Code::invalid_value);
   EXPECT_EQ(d.message,
             "many.json:1:51: /walls: 1000001 objects; a plan may hold at most 1000000 of each "
             "kind (walls, openings, lights, cameras)");
@@ -196,15 +198,14 @@ TEST(HostileInput, FilesOverTheSizeLimitAreRefusedUnread) {
     std::fclose(file);
   }
   const std::string why = ": it is 268435457 bytes; files of at most 268435456 bytes (256 MiB)";
-  const PlanReadResult plan = read_plan_file(dir / "big.json");
-  ASSERT_FALSE(plan.plan);
-  ASSERT_EQ(plan.report.items.size(), 1u);
-  EXPECT_EQ(plan.report.items[0].code, "parse_error");
-  EXPECT_NE(plan.report.items[0].message.find("big.json" + why), std::string::npos)
-      << plan.report.items[0].message;
+  const Result<Plan> plan = read_plan_file(dir / "big.json");
+  ASSERT_FALSE(plan.ok());
+  EXPECT_EQ(plan.code(), Code::too_large);
+  EXPECT_NE(plan.message().find("big.json" + why), std::string::npos) << plan.error();
   const Result<Sh3dImport> home = import_sweethome3d_file(dir / "big.Home.xml");
   ASSERT_FALSE(home.ok());
-  EXPECT_NE(home.error().find("big.Home.xml" + why), std::string::npos) << home.error();
+  EXPECT_EQ(home.code(), Code::too_large);
+  EXPECT_NE(home.message().find("big.Home.xml" + why), std::string::npos) << home.error();
   // The command exits 2 (could not run), naming the file.
   const auto r = test::run_roomcad({"info", (dir / "big.json").string()});
   EXPECT_EQ(r.status, 2);
@@ -217,15 +218,15 @@ TEST(HostileInput, ManyProblemsOnOneLineGetTheirOwnColumns) {
   const std::size_t n = 2000;
   for (std::size_t i = 0; i < n; ++i) text += std::string(i ? "," : "") + R"({"id": "é", "x": 1})";
   text += "]}";
-  const PlanReadResult read = read_plan_text(text, "one-line.json");
+  const test::PlanReading read = test::read_plan(text, "one-line.json");
   ASSERT_FALSE(read.plan);
   std::size_t unknown = 0;
   for (const Diagnostic& d : read.report.items) {
-    if (d.code != "unknown_field") continue;
-    ASSERT_TRUE(d.source);
+    if (d.code != Code::unknown_field) continue;
+    ASSERT_TRUE(d.location);
     // Wall i starts at column 52 + 20 i ("é" is one character); its key "x" 12 further on.
-    EXPECT_EQ(d.source->line, 1u);
-    EXPECT_EQ(d.source->column, 52 + 20 * unknown + 12) << d.message;
+    EXPECT_EQ(d.location->line, 1u);
+    EXPECT_EQ(d.location->column, 52 + 20 * unknown + 12) << d.message;
     ++unknown;
   }
   EXPECT_EQ(unknown, n);

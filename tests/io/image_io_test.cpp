@@ -55,14 +55,14 @@ TEST(ImageIo, ErrorsNameTheFileAndLeaveNothing) {
   const fs::path missing_dir = scratch("no_such_dir") / "out.png";
   const Status s = write_png(gradient(4, 4), missing_dir);
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.error.find("out.png"), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find("out.png"), std::string::npos) << s.message();
   EXPECT_FALSE(fs::exists(missing_dir));
   EXPECT_FALSE(write_png(RgbImage{}, scratch("empty.png")).ok());
   const fs::path not_png = scratch("not.png");
   std::ofstream(not_png) << "hello";
   const Result<RgbImage> r = read_png(not_png);
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error().find("not.png"), std::string::npos) << r.error();
+  EXPECT_NE(r.message().find("not.png"), std::string::npos) << r.error();
   EXPECT_FALSE(read_png(scratch("absent.png")).ok());
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "plan_test_support.h"
 
@@ -237,17 +238,16 @@ TEST(PlanRead, UnitsMayComeAfterTheLengths) {
 }
 
 TEST(PlanRead, ReadsAFileAndNamesIt) {
-  const PlanReadResult missing = read_plan_file("/nonexistent/roomcad/plan.json");
-  EXPECT_FALSE(missing.plan.has_value());
-  ASSERT_EQ(missing.report.items.size(), 1u);
-  EXPECT_EQ(missing.report.items[0].code, "parse_error");
-  EXPECT_NE(missing.report.items[0].message.find("/nonexistent/roomcad/plan.json"), std::string::npos);
-  EXPECT_NE(missing.report.items[0].message.find("No such file"), std::string::npos);
+  const Result<Plan> missing = read_plan_file("/nonexistent/roomcad/plan.json");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.code(), Code::io_error);
+  EXPECT_NE(missing.message().find("/nonexistent/roomcad/plan.json"), std::string::npos);
+  EXPECT_NE(missing.message().find("No such file"), std::string::npos);
 
-  const PlanReadResult directory = read_plan_file("/tmp");
-  EXPECT_FALSE(directory.plan.has_value());
-  ASSERT_EQ(directory.report.items.size(), 1u);
-  EXPECT_NE(directory.report.items[0].message.find("directory"), std::string::npos);
+  const Result<Plan> directory = read_plan_file("/tmp");
+  ASSERT_FALSE(directory.ok());
+  EXPECT_EQ(directory.code(), Code::io_error);
+  EXPECT_NE(directory.message().find("directory"), std::string::npos);
 }
 
 }  // namespace

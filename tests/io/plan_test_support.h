@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/plan_reading.h"
 #include "io/plan_json.h"
 
 namespace roomcad::test {
@@ -61,7 +62,7 @@ inline constexpr std::string_view kSpecCanonical = R"({
 
 /// Reads `text`, which must have no error, and returns the plan.
 inline Plan read_ok(std::string_view text) {
-  PlanReadResult r = read_plan_text(text, "plan.json");
+  PlanReading r = read_plan(text, "plan.json");
   EXPECT_TRUE(r.report.ok()) << (r.report.items.empty() ? "" : r.report.items[0].message);
   EXPECT_TRUE(r.plan.has_value());
   return r.plan.value_or(Plan{});
@@ -69,7 +70,7 @@ inline Plan read_ok(std::string_view text) {
 
 /// What one diagnostic must say.
 struct Expected {
-  std::string code;
+  Code code = Code::parse_error;
   std::string pointer;
   std::size_t line = 0;    ///< 0: not checked
   std::size_t column = 0;  ///< 0: not checked
@@ -79,26 +80,26 @@ struct Expected {
 /// Checks that reading `text` fails with exactly one problem, as `e` says.
 inline void expect_one_error(std::string_view text, const Expected& e) {
   SCOPED_TRACE(std::string(text));
-  const PlanReadResult r = read_plan_text(text, "plan.json");
+  const PlanReading r = read_plan(text, "plan.json");
   EXPECT_FALSE(r.plan.has_value());
   ASSERT_EQ(r.report.items.size(), 1u) << r.report.items[0].message << " / "
                                        << r.report.items.back().message;
   const Diagnostic& d = r.report.items[0];
   EXPECT_EQ(d.severity, Severity::error);
   EXPECT_EQ(d.code, e.code) << d.message;
-  ASSERT_TRUE(d.source.has_value());
-  EXPECT_EQ(d.source->file, "plan.json");
-  EXPECT_EQ(d.source->pointer, e.pointer) << d.message;
+  ASSERT_TRUE(d.location.has_value());
+  EXPECT_EQ(d.location->file, "plan.json");
+  EXPECT_EQ(d.location->pointer, e.pointer) << d.message;
   if (e.line) {
-    EXPECT_EQ(d.source->line, e.line) << d.message;
+    EXPECT_EQ(d.location->line, e.line) << d.message;
   }
   if (e.column) {
-    EXPECT_EQ(d.source->column, e.column) << d.message;
+    EXPECT_EQ(d.location->column, e.column) << d.message;
   }
   EXPECT_NE(d.message.find(e.text), std::string::npos) << d.message;
   // The message names the file, the position and the pointer.
-  const std::string prefix = "plan.json:" + std::to_string(d.source->line) + ':' +
-                             std::to_string(d.source->column) + ": ";
+  const std::string prefix = "plan.json:" + std::to_string(d.location->line) + ':' +
+                             std::to_string(d.location->column) + ": ";
   EXPECT_EQ(d.message.rfind(prefix, 0), 0u) << d.message;
   if (!e.pointer.empty()) {
     EXPECT_NE(d.message.find(e.pointer + ": "), std::string::npos) << d.message;

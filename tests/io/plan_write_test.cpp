@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "plan_test_support.h"
 #include "support/random_plan.h"
@@ -105,7 +106,7 @@ TEST(PlanWrite, ExtrasAfterKnownKeysSortedAndKnownKeysNeverRepeated) {
   EXPECT_NE(text.find("  \"cameras\": [],\n  \"a\": \"x\",\n  \"b\": {}\n}\n"), std::string::npos) << text;
   EXPECT_EQ(text.find("\"walls\": [],\n  \"openings\": [],\n  \"lights\": [],\n  \"cameras\": [],\n  \"walls\""),
             std::string::npos);
-  const PlanReadResult r = read_plan_text(text, "x.json");
+  const test::PlanReading r = test::read_plan(text, "x.json");
   EXPECT_TRUE(r.report.ok()) << r.report.items[0].message;
 }
 
@@ -123,7 +124,7 @@ TEST(PlanWrite, RandomPlansRoundTrip) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const Plan plan = test::random_plan(seed);
     const std::string text = write_plan_text(plan);
-    const PlanReadResult r = read_plan_text(text, "random.json");
+    const test::PlanReading r = test::read_plan(text, "random.json");
     ASSERT_TRUE(r.plan.has_value()) << r.report.items[0].message << "\n" << text;
     EXPECT_EQ(r.report.warning_count(), r.report.items.size());
     EXPECT_EQ(*r.plan, plan) << text;
@@ -143,7 +144,7 @@ TEST(PlanWrite, ExamplesRoundTrip) {
     if (entry.path().extension() != ".json") continue;
     SCOPED_TRACE(entry.path().string());
     ++count;
-    const PlanReadResult r = read_plan_file(entry.path());
+    const test::PlanReading r = test::read_plan_at(entry.path());
     ASSERT_TRUE(r.plan.has_value()) << r.report.items[0].message;
     EXPECT_TRUE(r.report.items.empty()) << r.report.items[0].message;
     const std::string text = write_plan_text(*r.plan);
@@ -159,7 +160,7 @@ TEST(PlanWrite, FileIsWrittenAndReadBack) {
   test::TempDir dir;
   const Plan plan = test::random_plan(42);
   ASSERT_TRUE(write_plan_file(plan, dir / "p.json").ok());
-  const PlanReadResult r = read_plan_file(dir / "p.json");
+  const test::PlanReading r = test::read_plan_at(dir / "p.json");
   ASSERT_TRUE(r.plan.has_value());
   EXPECT_EQ(*r.plan, plan);
 }
@@ -175,8 +176,8 @@ TEST(PlanWrite, NonFiniteNumbersAreRefusedAndNothingIsWritten) {
   plan.walls.push_back(w);
   const Status s = write_plan_file(plan, dir / "p.json");
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.error.find("wall \"w1\""), std::string::npos) << s.error;
-  EXPECT_NE(s.error.find("p.json"), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find("wall \"w1\""), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("p.json"), std::string::npos) << s.message();
   EXPECT_EQ(test::read_bytes(dir / "p.json"), "old");
 }
 
@@ -184,8 +185,8 @@ TEST(PlanWrite, FailedWriteLeavesTheOldFile) {
   test::TempDir dir;
   const Status s = write_plan_file(Plan{}, dir / "missing" / "p.json");
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.error.find("missing/p.json"), std::string::npos) << s.error;
-  EXPECT_NE(s.error.find("No such file or directory"), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find("missing/p.json"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("No such file or directory"), std::string::npos) << s.message();
 }
 
 }  // namespace

@@ -86,7 +86,7 @@ TEST(SvgWriter, WritesFilesAtomicallyAndReportsFailures) {
   EXPECT_EQ(bytes.str(), sample_document().to_string());
   const Status failed = write_svg(sample_document(), dir / "missing" / "out.svg");
   EXPECT_FALSE(failed.ok());
-  EXPECT_NE(failed.error.find("out.svg"), std::string::npos) << failed.error;
+  EXPECT_NE(failed.message().find("out.svg"), std::string::npos) << failed.message();
   std::filesystem::remove_all(dir);
 }
 

@@ -28,7 +28,7 @@ void write_zip(const fs::path& path, const std::string& name, const std::string&
 std::string import_error(const fs::path& path) {
   const Result<Sh3dImport> r = import_sweethome3d_file(path);
   EXPECT_FALSE(r.ok()) << path;
-  return r.ok() ? std::string() : r.error();
+  return r.ok() ? std::string() : r.message();
 }
 
 TEST(Sh3dArchive, ImportsLikeItsHomeXml) {
@@ -100,7 +100,7 @@ TEST(Sh3dArchive, ItemWithNoWallIsSkippedWithAWarningNamingIt) {
   const Sh3dImport imported = import_or_fail(home);
   EXPECT_TRUE(imported.plan.openings.empty());
   ASSERT_EQ(imported.warnings.items.size(), 1u);
-  EXPECT_EQ(imported.warnings.items[0].code, "import_skipped_opening");
+  EXPECT_EQ(imported.warnings.items[0].code, Code::import_skipped_opening);
   EXPECT_EQ(imported.warnings.items[0].objects, std::vector<std::string>{"far"});
   ASSERT_EQ(imported.plan.walls.size(), 1u);
   EXPECT_DOUBLE_EQ(imported.plan.walls[0].height, 2.5);  // the home's default wall height

@@ -23,7 +23,7 @@ namespace {
 
 using namespace sh3d_test;
 
-std::set<std::string> objects_warned(const Report& report, const std::string& code) {
+std::set<std::string> objects_warned(const Report& report, Code code) {
   std::set<std::string> ids;
   for (const Diagnostic& d : report.items)
     if (d.code == code) ids.insert(d.objects.begin(), d.objects.end());
@@ -44,7 +44,7 @@ TEST(Sh3dImport, WallCountsMatchTheXmlWithArcsSplitIntoChords) {
     const std::vector<Attributes> xml_walls = elements(read_text(home), "wall");
     const Sh3dImport imported = import_or_fail(home);
     EXPECT_EQ(imported.source_walls, xml_walls.size());
-    const std::set<std::string> left_out = objects_warned(imported.warnings, "import_zero_length_wall");
+    const std::set<std::string> left_out = objects_warned(imported.warnings, Code::import_zero_length_wall);
     std::size_t expected = 0;
     for (const Attributes& w : xml_walls) {
       if (left_out.contains(w.at("id"))) {
@@ -68,8 +68,8 @@ TEST(Sh3dImport, EveryItemIsAnOpeningOrASkipWarningAndPiecesAreAnnounced) {
     SCOPED_TRACE(home.filename().string());
     const std::vector<Attributes> items = elements(read_text(home), "doorOrWindow");
     const Sh3dImport imported = import_or_fail(home);
-    const std::set<std::string> skipped = objects_warned(imported.warnings, "import_skipped_opening");
-    const std::set<std::string> split = objects_warned(imported.warnings, "import_split_opening");
+    const std::set<std::string> skipped = objects_warned(imported.warnings, Code::import_skipped_opening);
+    const std::set<std::string> split = objects_warned(imported.warnings, Code::import_split_opening);
     std::set<std::string> ids;
     for (const Opening& o : imported.plan.openings) ids.insert(o.id);
     std::size_t pieces = 0;
@@ -309,7 +309,7 @@ TEST(Sh3dImport, NoLooseWallEndInsideACrossingWallOffItsCentreLine) {
   std::vector<std::string> loose;
   for (const fs::path& home : all_homes()) {
     const Sh3dImport imported = import_or_fail(home);
-    moved += objects_warned(imported.warnings, "import_t_junction").size();
+    moved += objects_warned(imported.warnings, Code::import_t_junction).size();
     for (const Wall& w : imported.plan.walls)
       for (const Wall& host : imported.plan.walls) {
         const double L = length_of(host), own = length_of(w);
@@ -336,7 +336,7 @@ TEST(Sh3dImport, ZeroLengthWallIsLeftOutWithAWarning) {
   // ApartmentWithBowWindow's wall36 has xStart == xEnd and yStart == yEnd.
   const Sh3dImport imported =
       import_or_fail(kData / "eteks-example-homes" / "ApartmentWithBowWindow.Home.xml");
-  EXPECT_EQ(objects_warned(imported.warnings, "import_zero_length_wall"),
+  EXPECT_EQ(objects_warned(imported.warnings, Code::import_zero_length_wall),
             std::set<std::string>{"wall36"});
   EXPECT_EQ(find_wall(imported.plan, "wall36"), nullptr);
 }
@@ -351,8 +351,8 @@ TEST(Sh3dImport, OneLevelByName) {
   for (const Wall& w : imported.plan.walls) EXPECT_EQ(w.base, 0.0);
   const Result<Sh3dImport> unknown = import_sweethome3d_file(home, {.level = "Loft"});
   ASSERT_FALSE(unknown.ok());
-  EXPECT_NE(unknown.error().find("'Loft'"), std::string::npos) << unknown.error();
-  EXPECT_NE(unknown.error().find("'Basement'"), std::string::npos) << unknown.error();
+  EXPECT_NE(unknown.message().find("'Loft'"), std::string::npos) << unknown.error();
+  EXPECT_NE(unknown.message().find("'Basement'"), std::string::npos) << unknown.error();
 }
 
 }  // namespace

@@ -12,9 +12,9 @@ namespace roomcad {
 namespace {
 
 SurfaceFunction function_of(const std::string& text) {
-  auto parsed = parse_surface_expression(text);
-  EXPECT_TRUE(std::holds_alternative<SurfaceExpression>(parsed)) << text;
-  auto expression = std::get<SurfaceExpression>(std::move(parsed));
+  Result<SurfaceExpression> parsed = parse_surface_expression(text);
+  EXPECT_TRUE(parsed.ok()) << text;
+  SurfaceExpression expression = parsed ? std::move(parsed).value() : SurfaceExpression{};
   return [expression](double x, double z) { return expression.evaluate(x, z); };
 }
 
@@ -212,20 +212,31 @@ TEST(FloatingHorizon, WindowStretchesOrKeepsTheAspect) {
 }
 
 TEST(FloatingHorizon, RejectsBadRequests) {
+  // Each bad field is a usage_error whose message names the field and its value.
+  auto problem = [](const SurfaceView& view) {
+    const Status status = check_surface_request(view, SurfaceScreen{});
+    EXPECT_EQ(status.code(), Code::usage_error);
+    return status ? std::string() : status.message();
+  };
   SurfaceView view;
   view.dx = -1;
-  EXPECT_EQ(check_surface_request(view, SurfaceScreen{}), "dx must be positive, got -1");
+  EXPECT_EQ(problem(view), "dx must be positive, got -1");
   view = SurfaceView{};
   view.rotate_x_deg = 90;
-  EXPECT_NE(check_surface_request(view, SurfaceScreen{}).find("rotate_x"), std::string::npos);
+  EXPECT_NE(problem(view).find("rotate_x"), std::string::npos);
   view = SurfaceView{};
   view.dx = 1e-9;  // billions of samples: refused, not attempted
-  EXPECT_NE(check_surface_request(view, SurfaceScreen{}).find("samples"), std::string::npos);
+  EXPECT_NE(problem(view).find("samples"), std::string::npos);
   view = SurfaceView{};
   view.x_min = NAN;
-  EXPECT_NE(check_surface_request(view, SurfaceScreen{}).find("x_min"), std::string::npos);
-  EXPECT_THROW((void)draw_floating_horizon(function_of("x"), view, SurfaceScreen{}),
-               std::invalid_argument);
+  EXPECT_NE(problem(view).find("x_min"), std::string::npos);
+  try {
+    (void)draw_floating_horizon(function_of("x"), view, SurfaceScreen{});
+    ADD_FAILURE() << "a NaN x_min was drawn";
+  } catch (const PreconditionError& e) {
+    EXPECT_EQ(e.code(), Code::usage_error);
+  }
+  EXPECT_TRUE(check_surface_request(SurfaceView{}, SurfaceScreen{}).ok());
 }
 
 }  // namespace

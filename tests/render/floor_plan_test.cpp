@@ -189,10 +189,14 @@ TEST(FloorPlan, NamesRoomsAndDimensionsOuterWallsOutside) {
 }
 
 TEST(FloorPlan, RejectsBadOptions) {
-  EXPECT_NE(check_floor_plan_options({.scale = 0}).find("scale"), std::string::npos);
-  EXPECT_NE(check_floor_plan_options({.cut_height = -1}).find("cut height"), std::string::npos);
-  EXPECT_THROW((void)draw_floor_plan(one_wall_plan(), {.scale = NAN}), std::invalid_argument);
-  EXPECT_TRUE(check_floor_plan_options({}).empty());
+  const Status scale = check_floor_plan_options({.scale = 0});
+  EXPECT_EQ(scale.code(), Code::usage_error);
+  EXPECT_NE(scale.message().find("scale"), std::string::npos);
+  const Status cut = check_floor_plan_options({.cut_height = -1});
+  EXPECT_EQ(cut.code(), Code::usage_error);
+  EXPECT_NE(cut.message().find("cut height"), std::string::npos);
+  EXPECT_THROW((void)draw_floor_plan(one_wall_plan(), {.scale = NAN}), PreconditionError);
+  EXPECT_TRUE(check_floor_plan_options({}).ok());
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ test::RandomPlanOptions plain_options() {
   return o;
 }
 
-using Verdict = std::pair<std::string, std::vector<std::string>>;
+using Verdict = std::pair<Code, std::vector<std::string>>;
 
 std::multiset<Verdict> verdicts(const Plan& plan) {
   ValidateOptions options;

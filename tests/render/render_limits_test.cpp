@@ -8,7 +8,13 @@
 namespace roomcad {
 namespace {
 
-std::string problem(const RenderOptions& options) { return check_render_options(options); }
+/// "" for good options; else the message, after checking that the code is usage_error.
+std::string problem(const RenderOptions& options) {
+  const Status status = check_render_options(options);
+  if (status) return "";
+  EXPECT_EQ(status.code(), Code::usage_error);
+  return status.message();
+}
 
 TEST(RenderLimits, AcceptsTheLargestFramesAndMaps) {
   EXPECT_EQ(problem({.width = 8192, .height = 8192, .ssaa = 2}), "");

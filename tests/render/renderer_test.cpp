@@ -141,10 +141,11 @@ TEST(Render, ReusesCallerBuffersAndRejectsBadOptions) {
   render_model(m, RenderOptions{.width = 64, .height = 48}, out);
   EXPECT_EQ(out.color.pixels.data(), first);  // same size: no reallocation
   EXPECT_EQ(out.objects.ids.size(), 64u * 48u);
-  EXPECT_THROW(render_model(m, RenderOptions{.width = 0}, out), std::invalid_argument);
-  EXPECT_THROW(render_model(m, RenderOptions{.ssaa = 3}, out), std::invalid_argument);
-  EXPECT_NE(check_render_options(RenderOptions{.shadow_resolution = 0}).find("0"),
-            std::string::npos);
+  EXPECT_THROW(render_model(m, RenderOptions{.width = 0}, out), PreconditionError);
+  EXPECT_THROW(render_model(m, RenderOptions{.ssaa = 3}, out), PreconditionError);
+  const Status shadows = check_render_options(RenderOptions{.shadow_resolution = 0});
+  EXPECT_EQ(shadows.code(), Code::usage_error);
+  EXPECT_NE(shadows.message().find("0"), std::string::npos);
 }
 
 TEST(Render, EmptyModelGivesBackgroundOnly) {

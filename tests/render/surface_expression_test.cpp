@@ -11,22 +11,29 @@ namespace {
 
 SurfaceExpression compile(const std::string& text) {
   auto parsed = parse_surface_expression(text);
-  if (auto* error = std::get_if<ExpressionError>(&parsed)) {
-    ADD_FAILURE() << "'" << text << "': " << error->message;
+  if (!parsed) {
+    ADD_FAILURE() << "'" << text << "': " << parsed.message();
     return {};
   }
-  return std::get<SurfaceExpression>(std::move(parsed));
+  return std::move(parsed).value();
 }
 
 double eval(const std::string& text, double x = 0.0, double z = 0.0) {
   return compile(text).evaluate(x, z);
 }
 
+/// The parse error of a text that must not parse: its code is asserted here, and its column
+/// (from its location) and message are returned for the test to check.
+struct ExpressionError {
+  std::size_t column = 0;
+  std::string message;
+};
 ExpressionError error_of(const std::string& text) {
   auto parsed = parse_surface_expression(text);
-  EXPECT_TRUE(std::holds_alternative<ExpressionError>(parsed)) << "'" << text << "' parsed";
-  if (auto* error = std::get_if<ExpressionError>(&parsed)) return *error;
-  return {};
+  EXPECT_FALSE(parsed.ok()) << "'" << text << "' parsed";
+  if (parsed.ok()) return {};
+  EXPECT_EQ(parsed.code(), Code::parse_error);
+  return {parsed.error().location->column, parsed.message()};
 }
 
 TEST(SurfaceExpression, Precedence) {

@@ -9,7 +9,6 @@ namespace roomcad {
 namespace {
 
 using namespace roomcad::testing;
-using Codes = std::vector<std::string>;
 
 TEST(Exactness, MicrometreOverlapAndGapAreToldApartInEveryFrame) {
   for (const MarginCase& c : margin_cases())

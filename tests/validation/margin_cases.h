@@ -14,7 +14,7 @@ namespace roomcad::testing {
 struct MarginCase {
   const char* name;
   std::function<Plan(double e)> build;
-  std::vector<std::string> when_overlapping;
+  std::vector<Code> when_overlapping;
 };
 
 /// Every geometric error code with walls `t` metres thick (t well under 1 m).
@@ -26,47 +26,47 @@ inline std::vector<MarginCase> margin_cases(double t = 0.25) {
   return {
       {"parallel walls side by side",
        [=](double e) { return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {0, 2 * h - e}, {4, 2 * h - e})}); },
-       {"wall_overlap"}},
+       {Code::wall_overlap}},
       {"wall end against the side of another, not joined",
        [=](double e) { return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {2, h - e}, {2, 3})}); },
-       {"wall_overlap"}},
+       {Code::wall_overlap}},
       {"window past the end of its wall",
        [=](double e) {
          return plan_with({wall("s", {0, 0}, {4, 0})},
                           {make_opening("w", OpeningType::window, "s", 3, 1 + e, 1, 0.9)});
        },
-       {"opening_outside_wall"}},
+       {Code::opening_outside_wall}},
       {"window above the top of its wall",
        [=](double e) {
          return plan_with({wall("s", {0, 0}, {4, 0})},
                           {make_opening("w", OpeningType::window, "s", 1, 1, 1.5 + e, 1)});
        },
-       {"opening_outside_wall"}},
+       {Code::opening_outside_wall}},
       {"two windows side by side",
        [=](double e) {
          return plan_with({wall("s", {0, 0}, {4, 0})},
                           {make_opening("w1", OpeningType::window, "s", 0.5, 1, 1, 0.9),
                            make_opening("w2", OpeningType::window, "s", 1.5 - e, 1, 1, 0.9)});
        },
-       {"opening_overlap"}},
+       {Code::opening_overlap}},
       {"door in the bar of a T next to the stem",
        [=](double e) {
          return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {2, 0}, {2, 3})},
                           {make_opening("d", OpeningType::door, "a", 0.5, 2 - h - 0.5 + e, 2, 0)});
        },
-       {"opening_blocked"}},
+       {Code::opening_blocked}},
       {"door in the stem of a T next to the bar",
        [=](double e) {
          return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {2, 0}, {2, 3})},
                           {make_opening("d", OpeningType::door, "b", h - e, 1, 2, 0)});
        },
-       {"opening_blocked"}},
+       {Code::opening_blocked}},
       {"window at a mitred corner",
        [=](double e) {
          return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {0, 0}, {0, 3})},
                           {make_opening("w", OpeningType::window, "a", h - e, 1, 1, 0.9)});
        },
-       {"opening_blocked"}},
+       {Code::opening_blocked}},
       {"wall resting on top of another, with a window reaching the top",
        [=](double e) {
          // b's footprint overlaps a's in plan, their centre lines 0.4 t apart (not joined);
@@ -77,7 +77,7 @@ inline std::vector<MarginCase> margin_cases(double t = 0.25) {
          p.walls[1].height = 1;
          return p;
        },
-       {"wall_overlap", "opening_blocked"}},
+       {Code::wall_overlap, Code::opening_blocked}},
   };
 }
 

@@ -15,7 +15,6 @@ namespace roomcad {
 namespace {
 
 using namespace roomcad::testing;
-using Codes = std::vector<std::string>;
 
 constexpr double kMargin = 1e-7;
 
@@ -77,9 +76,9 @@ TEST(NumericalStress, WindowFlushWithAMitredCornerTurnedFarAwayIsDecided) {
   // coordinates as rounded, but it must come. 1e-7 m either side decides as expected.
   const Frame f{1e-9, {1e6, -1e6}};
   const Codes flush = error_codes(validate(f.apply(flush_corner_plan(0)), no_rooms()));
-  EXPECT_TRUE(flush.empty() || flush == Codes{"opening_blocked"}) << fmt::format("{}", fmt::join(flush, ", "));
+  EXPECT_TRUE(flush.empty() || flush == Codes{Code::opening_blocked}) << ::testing::PrintToString(flush);
   EXPECT_EQ(error_codes(validate(f.apply(flush_corner_plan(kMargin)), no_rooms())),
-            Codes{"opening_blocked"});
+            Codes{Code::opening_blocked});
   EXPECT_EQ(error_codes(validate(f.apply(flush_corner_plan(-kMargin)), no_rooms())), Codes{});
 }
 
@@ -98,9 +97,9 @@ TEST(NumericalStress, SiteEdgeAndMaxHeightToATenthOfAMicrometre) {
     for (const double d : {1e6, 1e7}) {
       SCOPED_TRACE(fmt::format("walls {} m at {} m", t, d));
       EXPECT_EQ(error_codes(validate(wall_at_site_edge(t, kMargin, 0, d), no_rooms())),
-                Codes{"out_of_bounds"});
+                Codes{Code::out_of_bounds});
       EXPECT_EQ(error_codes(validate(wall_at_site_edge(t, 0, kMargin, d), no_rooms())),
-                Codes{"out_of_bounds"});
+                Codes{Code::out_of_bounds});
       EXPECT_EQ(error_codes(validate(wall_at_site_edge(t, -kMargin, -kMargin, d), no_rooms())), Codes{});
     }
 }

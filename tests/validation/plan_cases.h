@@ -47,9 +47,12 @@ inline Plan plan_with(std::vector<Wall> walls, std::vector<Opening> openings = {
   return p;
 }
 
+using Codes = std::vector<Code>;
+using Ids = std::vector<std::string>;
+
 /// @return the codes of the report's errors (warnings left out), in order.
-inline std::vector<std::string> error_codes(const Report& r) {
-  std::vector<std::string> out;
+inline Codes error_codes(const Report& r) {
+  Codes out;
   for (const Diagnostic& d : r.items)
     if (d.severity == Severity::error) out.push_back(d.code);
   return out;

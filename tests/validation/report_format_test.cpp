@@ -11,20 +11,20 @@ namespace {
 Report sample_report() {
   Report r;
   Diagnostic overlap;
-  overlap.code = "wall_overlap";
+  overlap.code = Code::wall_overlap;
   overlap.objects = {"a", "b"};
   overlap.message = "walls \"a\" and \"b\" overlap";
   overlap.fix = "move wall \"b\" 0.1 m east";
   overlap.where = Where{{1, 2.5}, Point2{3, 4}};
   r.add(overlap);
   Diagnostic parse;
-  parse.code = "parse_error";
+  parse.code = Code::parse_error;
   parse.message = "plan.json:3:7: /walls/0/thickness: expected a number, found \"x\"";
-  parse.source = SourceLocation{"plan.json", "/walls/0/thickness", 3, 7};
+  parse.location = Location{"plan.json", "/walls/0/thickness", 3, 7};
   r.add(parse);
   Diagnostic door;
   door.severity = Severity::warning;
-  door.code = "door_above_floor";
+  door.code = Code::door_above_floor;
   door.objects = {"d\"1"};
   door.message = "door \"d1\" starts 0.2 m above the floor";
   door.where = Where{{0.1, -0.0}, std::nullopt};
@@ -60,7 +60,7 @@ TEST(ReportFormat, WarningsAloneAreOk) {
   Report r;
   Diagnostic w;
   w.severity = Severity::warning;
-  w.code = std::string("unknown_field");
+  w.code = Code::unknown_field;
   w.message = std::string("m");
   r.add(w);
   EXPECT_EQ(format_report_json(r).rfind("{\n  \"ok\": true,\n  \"errors\": [],\n", 0), 0u);
@@ -81,7 +81,7 @@ TEST(ReportFormat, TextWithoutColour) {
 TEST(ReportFormat, TextRoundsPlacesToTenDigitsButKeepsTinyOnes) {
   Report r;
   Diagnostic d;
-  d.code = std::string("wall_overlap");
+  d.code = Code::wall_overlap;
   d.message = std::string("m");
   d.where = Where{{7.859999999999999, 1e-7}, Point2{-2.0000000000000004, 123456.789}};
   r.add(d);

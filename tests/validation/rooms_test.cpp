@@ -7,7 +7,6 @@ namespace roomcad {
 namespace {
 
 using namespace roomcad::testing;
-using Codes = std::vector<std::string>;
 
 /// Two 4 x 4 m rooms (centre lines) side by side, 0.2 m walls; a door between them and a
 /// window in the south wall of the west room only.
@@ -25,11 +24,11 @@ TEST(Rooms, TwoRoomsWithClearAreasAndTheirOpenings) {
   // Numbered from the south-west; clear floor 3.8 x 3.8 m inside 0.2 m walls.
   EXPECT_NEAR(rooms[0].area, 3.8 * 3.8, 1e-9);
   EXPECT_NEAR(rooms[1].area, 3.8 * 3.8, 1e-9);
-  EXPECT_EQ(rooms[0].walls, (Codes{"m", "n", "s", "w"}));
-  EXPECT_EQ(rooms[1].walls, (Codes{"e", "m", "n", "s"}));
-  EXPECT_EQ(rooms[0].doors, Codes{"d"});
-  EXPECT_EQ(rooms[1].doors, Codes{"d"});
-  EXPECT_EQ(rooms[0].windows, Codes{"win"});
+  EXPECT_EQ(rooms[0].walls, (Ids{"m", "n", "s", "w"}));
+  EXPECT_EQ(rooms[1].walls, (Ids{"e", "m", "n", "s"}));
+  EXPECT_EQ(rooms[0].doors, Ids{"d"});
+  EXPECT_EQ(rooms[1].doors, Ids{"d"});
+  EXPECT_EQ(rooms[0].windows, Ids{"win"});
   EXPECT_TRUE(rooms[1].windows.empty());
   ASSERT_EQ(rooms[0].outline.size(), 4u);
   for (const Point2& c : rooms[0].outline) {  // the clear floor: [0.1, 3.9] x [0.1, 3.9]
@@ -43,8 +42,8 @@ TEST(Rooms, WarningsForARoomWithoutWindowAndWithoutDoor) {
   Report r = validate(p);
   EXPECT_TRUE(r.ok());
   ASSERT_EQ(r.items.size(), 1u);
-  EXPECT_EQ(r.items[0].code, "room_without_window");
-  EXPECT_EQ(r.items[0].objects, (Codes{"e", "m", "n", "s"}));
+  EXPECT_EQ(r.items[0].code, Code::room_without_window);
+  EXPECT_EQ(r.items[0].objects, (Ids{"e", "m", "n", "s"}));
   EXPECT_NE(r.items[0].message.find("room 2"), std::string::npos) << r.items[0].message;
 
   p.openings.erase(p.openings.begin());  // no door anywhere now
@@ -76,7 +75,7 @@ TEST(Rooms, CrossingWallsAndToleranceJoinsUseTheExactArrangement) {
   std::vector<Room> rooms = find_rooms(cross);
   ASSERT_EQ(rooms.size(), 4u);
   for (const Room& r : rooms) EXPECT_NEAR(r.area, 3.8 * 3.8, 1e-9);
-  EXPECT_EQ(rooms[0].walls, (Codes{"h", "s", "v", "w"}));
+  EXPECT_EQ(rooms[0].walls, (Ids{"h", "s", "v", "w"}));
   // A corner whose ends are 0.5 um apart (within the tolerance) still closes its room.
   Plan gap = plan_with({make_wall("s", {0, 0}, {4, 0}, 0.2), make_wall("e", {4, 0}, {4, 4}, 0.2),
                         make_wall("n", {4, 4}, {0, 4}, 0.2), make_wall("w", {0, 4}, {0, 0.5e-6}, 0.2)});
@@ -89,7 +88,7 @@ TEST(Openings, OutsideWallMessageSaysHowFarAndHowToFix) {
   const Plan p = plan_with({make_wall("s", {0, 0}, {4, 0})},
                            {make_opening("w2", OpeningType::window, "s", 2.95, 1.2, 1.2, 0.9)});
   const Report r = validate(p, no_rooms());
-  ASSERT_EQ(error_codes(r), Codes{"opening_outside_wall"});
+  ASSERT_EQ(error_codes(r), Codes{Code::opening_outside_wall});
   EXPECT_NE(r.items[0].message.find("window 'w2' ends 0.15 m past the end of wall 's'"),
             std::string::npos) << r.items[0].message;
   EXPECT_EQ(r.items[0].fix, "move it 0.15 m toward the start, or make it 1.05 m wide");
@@ -99,8 +98,8 @@ TEST(Openings, BlockedDoorFixOffersClearOffsets) {
   const Plan p = plan_with({make_wall("a", {0, 0}, {4, 0}), make_wall("b", {2, 0}, {2, 3})},
                            {make_opening("d", OpeningType::door, "a", 1.5, 0.9, 2.1, 0)});
   const Report r = validate(p, no_rooms());
-  ASSERT_EQ(error_codes(r), Codes{"opening_blocked"});
-  EXPECT_EQ(r.items[0].objects, (Codes{"d", "a", "b"}));
+  ASSERT_EQ(error_codes(r), Codes{Code::opening_blocked});
+  EXPECT_EQ(r.items[0].objects, (Ids{"d", "a", "b"}));
   EXPECT_EQ(r.items[0].fix, "move d along a clear of b: offset 0.97 (before it) or offset 2.13 (after it)");
 }
 
@@ -111,8 +110,8 @@ TEST(Openings, OverlapAndNoOverlapAcrossDifferentHeights) {
   EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});  // stacked: w2 starts at w1's top
   p.openings[1].sill = 1.2;
   const Report r = validate(p, no_rooms());
-  ASSERT_EQ(error_codes(r), Codes{"opening_overlap"});
-  EXPECT_EQ(r.items[0].objects, (Codes{"w1", "w2"}));
+  ASSERT_EQ(error_codes(r), Codes{Code::opening_overlap});
+  EXPECT_EQ(r.items[0].objects, (Ids{"w1", "w2"}));
 }
 
 }  // namespace

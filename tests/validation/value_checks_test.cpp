@@ -10,7 +10,6 @@ namespace roomcad {
 namespace {
 
 using namespace roomcad::testing;
-using Codes = std::vector<std::string>;
 
 Light light(std::string id) {
   Light l;
@@ -75,7 +74,7 @@ TEST(Values, EachBadNumberIsOneInvalidValueAndSilencesGeometry) {
     Plan p = good_plan();
     apply(p);
     const Report r = validate(p, no_rooms());
-    EXPECT_EQ(error_codes(r), Codes{"invalid_value"});
+    EXPECT_EQ(error_codes(r), Codes{Code::invalid_value});
     ASSERT_FALSE(r.items.empty());
     EXPECT_FALSE(r.items[0].message.empty());
     EXPECT_FALSE(r.items[0].fix.empty());
@@ -87,7 +86,7 @@ TEST(Values, MessageNamesObjectFieldAndValue) {
   p.walls[1].thickness = -0.2;
   const Report r = validate(p, no_rooms());
   ASSERT_EQ(r.items.size(), 1u);
-  EXPECT_EQ(r.items[0].objects, Codes{"b"});
+  EXPECT_EQ(r.items[0].objects, Ids{"b"});
   EXPECT_NE(r.items[0].message.find("wall 'b'"), std::string::npos) << r.items[0].message;
   EXPECT_NE(r.items[0].message.find("thickness is -0.2"), std::string::npos) << r.items[0].message;
 }
@@ -97,8 +96,8 @@ TEST(Values, DuplicateIdsAcrossAllKindsOfObject) {
   p.openings[0].id = "b";  // same as a wall
   p.cameras.push_back(camera("a"));  // same as the other wall
   const Report r = validate(p, no_rooms());
-  EXPECT_EQ(error_codes(r), (Codes{"duplicate_id", "duplicate_id"}));
-  EXPECT_EQ(r.items[0].objects, Codes{"a"});
+  EXPECT_EQ(error_codes(r), (Codes{Code::duplicate_id, Code::duplicate_id}));
+  EXPECT_EQ(r.items[0].objects, Ids{"a"});
   EXPECT_NE(r.items[0].message.find("walls[0], cameras[0]"), std::string::npos) << r.items[0].message;
 }
 
@@ -107,7 +106,7 @@ TEST(Values, UnknownReferenceIsReportedAndNotCheckedFurther) {
   p.openings[0].wall = "nope";
   p.openings[0].offset = 100;  // would be outside its wall, but there is no wall
   const Report r = validate(p, no_rooms());
-  EXPECT_EQ(error_codes(r), Codes{"unknown_reference"});
+  EXPECT_EQ(error_codes(r), Codes{Code::unknown_reference});
   EXPECT_NE(r.items[0].message.find("'nope'"), std::string::npos);
 }
 
@@ -115,7 +114,7 @@ TEST(Values, OpeningOnABadWallIsNotCheckedFurther) {
   Plan p = good_plan();
   p.walls[0].height = -1;
   p.openings[0].height = 5;  // taller than the wall would be: not reported, the wall is bad
-  EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{"invalid_value"});
+  EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{Code::invalid_value});
 }
 
 TEST(Values, AllProblemsComeInOneRun) {
@@ -127,7 +126,7 @@ TEST(Values, AllProblemsComeInOneRun) {
   p.lights.push_back(light("x"));                         // duplicate of the window
   const Report r = validate(p, no_rooms());
   EXPECT_EQ(error_codes(r),
-            (Codes{"invalid_value", "duplicate_id", "wall_overlap", "opening_outside_wall"}));
+            (Codes{Code::invalid_value, Code::duplicate_id, Code::wall_overlap, Code::opening_outside_wall}));
 }
 
 TEST(Values, WarningsForUnknownFieldsAndRaisedDoors) {
@@ -137,9 +136,9 @@ TEST(Values, WarningsForUnknownFieldsAndRaisedDoors) {
   const Report r = validate(p, no_rooms());
   EXPECT_TRUE(r.ok());
   ASSERT_EQ(r.warning_count(), 2u);
-  EXPECT_EQ(r.items[0].code, "unknown_field");
+  EXPECT_EQ(r.items[0].code, Code::unknown_field);
   EXPECT_NE(r.items[0].message.find("'colour'"), std::string::npos);
-  EXPECT_EQ(r.items[1].code, "door_above_floor");
+  EXPECT_EQ(r.items[1].code, Code::door_above_floor);
   ValidateOptions quiet = no_rooms();
   quiet.unknown_field_warnings = false;
   EXPECT_EQ(validate(p, quiet).warning_count(), 1u);

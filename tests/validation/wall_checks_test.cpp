@@ -9,7 +9,6 @@ namespace roomcad {
 namespace {
 
 using namespace roomcad::testing;
-using Codes = std::vector<std::string>;
 
 TEST(Walls, JoinedWallsDoNotOverlapInEveryFrame) {
   const std::vector<std::pair<const char*, Plan>> joined = {
@@ -35,15 +34,15 @@ TEST(Walls, JustOutsideTheToleranceIsNotJoinedAndOverlaps) {
   const Plan p = plan_with({make_wall("a", {0, 0}, {4, 0}), make_wall("b", {2, 2e-6}, {2, 3})});
   for (const Frame& f : all_frames()) {
     SCOPED_TRACE(f.degrees);
-    EXPECT_EQ(error_codes(validate(f.apply(p), no_rooms())), Codes{"wall_overlap"});
+    EXPECT_EQ(error_codes(validate(f.apply(p), no_rooms())), Codes{Code::wall_overlap});
   }
 }
 
 TEST(Walls, CentreLinesOverlappingAlongALengthOverlapEvenWhenJoined) {
   const Plan p = plan_with({make_wall("a", {0, 0}, {4, 0}), make_wall("b", {3, 0}, {6, 0})});
   const Report r = validate(p, no_rooms());
-  ASSERT_EQ(error_codes(r), Codes{"wall_overlap"});
-  EXPECT_EQ(r.items[0].objects, (Codes{"a", "b"}));
+  ASSERT_EQ(error_codes(r), Codes{Code::wall_overlap});
+  EXPECT_EQ(r.items[0].objects, (Ids{"a", "b"}));
   EXPECT_NE(r.items[0].message.find("for 1.00 m"), std::string::npos) << r.items[0].message;
 }
 
@@ -57,13 +56,13 @@ TEST(Walls, StoreysStackedOnOneCentreLineDoNotOverlap) {
   EXPECT_FALSE(find_joins(p).are_joined(0, 1));
   EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});
   upper.base = lower.height - 0.1;  // 0.1 m of the two storeys' walls now share a volume
-  EXPECT_EQ(error_codes(validate(plan_with({lower, upper}), no_rooms())), Codes{"wall_overlap"});
+  EXPECT_EQ(error_codes(validate(plan_with({lower, upper}), no_rooms())), Codes{Code::wall_overlap});
 }
 
 TEST(Walls, OverlapMessageGivesTheDepthAndAFix) {
   const Plan p = plan_with({make_wall("a", {0, 0}, {4, 0}), make_wall("b", {0, 0.2}, {4, 0.2})});
   const Report r = validate(p, no_rooms());
-  ASSERT_EQ(error_codes(r), Codes{"wall_overlap"});
+  ASSERT_EQ(error_codes(r), Codes{Code::wall_overlap});
   EXPECT_NE(r.items[0].message.find("overlap by 0.05 m"), std::string::npos) << r.items[0].message;
   EXPECT_NE(r.items[0].fix.find("move b 0.05 m north"), std::string::npos) << r.items[0].fix;
   ASSERT_TRUE(r.items[0].where.has_value());
@@ -88,7 +87,7 @@ TEST(Bounds, FootprintTouchingTheSiteEdgeIsInsideAndAMicrometrePastIsOut) {
     Plan out = touching;
     out.walls[0].from.x -= 1e-6;
     const Report r = validate(out, no_rooms());
-    ASSERT_EQ(error_codes(r), Codes{"out_of_bounds"});
+    ASSERT_EQ(error_codes(r), Codes{Code::out_of_bounds});
     EXPECT_NE(r.items[0].message.find("west edge"), std::string::npos) << r.items[0].message;
   }
 }
@@ -107,7 +106,7 @@ TEST(Bounds, RotatedWallCornerAgainstTheSiteEdge) {
     p.site.cells = {16, 16};
     EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});
     p.site.origin.y = lowest + 1e-6;
-    EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{"out_of_bounds"});
+    EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{Code::out_of_bounds});
   }
 }
 
@@ -118,7 +117,7 @@ TEST(Bounds, MitredCornerCountsAndHeightIsExact) {
   p.site.origin = {0.875, 0.875};
   EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});
   p.site.origin = {0.875 + 1e-6, 0};
-  EXPECT_EQ(error_codes(validate(p, no_rooms())), (Codes{"out_of_bounds", "out_of_bounds"}));
+  EXPECT_EQ(error_codes(validate(p, no_rooms())), (Codes{Code::out_of_bounds, Code::out_of_bounds}));
 
   Plan tall = on_site(make_wall("a", {1, 1}, {4, 1}));
   tall.walls[0].base = 0.1;
@@ -128,7 +127,7 @@ TEST(Bounds, MitredCornerCountsAndHeightIsExact) {
   tall.site.max_height = 6.0;
   ASSERT_EQ(0.1 + 5.9, 6.0);
   const Report r = validate(tall, no_rooms());
-  EXPECT_EQ(error_codes(r), Codes{"out_of_bounds"});
+  EXPECT_EQ(error_codes(r), Codes{Code::out_of_bounds});
   tall.walls[0].height = 5.875;
   EXPECT_EQ(error_codes(validate(tall, no_rooms())), Codes{});
 }

@@ -33,9 +33,10 @@ TEST(KeyScript, NamesTheBadItem) {
                           "drag:1:2:3", "LEFT", "ctrl+ctrl"}) {
     const auto events = parse_key_script(bad);
     ASSERT_FALSE(events.ok()) << bad;
-    EXPECT_NE(events.error().find("--keys: input"), std::string::npos) << events.error();
+    EXPECT_EQ(events.code(), Code::usage_error) << bad;
+    EXPECT_NE(events.message().find("--keys: input"), std::string::npos) << events.error();
   }
-  EXPECT_NE(parse_key_script("a,f13").error().find("input 2 'f13'"), std::string::npos);
+  EXPECT_NE(parse_key_script("a,f13").message().find("input 2 'f13'"), std::string::npos);
 }
 
 TEST(KeyBindings, EveryBindingIsAKeyAndUnique) {

@@ -35,7 +35,7 @@ struct SessionFile {
     EXPECT_TRUE(s.ok()) << s.error();
     return std::move(s).value();
   }
-  Plan on_disk() const { return read_plan_file(path).plan.value(); }
+  Plan on_disk() const { return read_plan_file(path).value(); }
 };
 
 TEST(ViewSession, MovesTheSelectionByWholeCellsAndUndoes) {
@@ -152,7 +152,7 @@ TEST(ViewSession, OpenNamesTheFileThatIsNotAPlan) {
   ASSERT_TRUE(test::write_bytes(dir / "bad.json", "{\"format\": 3}"));
   const Result<ViewSession> s = ViewSession::open(dir / "bad.json");
   ASSERT_FALSE(s.ok());
-  EXPECT_NE(s.error().find("bad.json"), std::string::npos) << s.error();
+  EXPECT_NE(s.message().find("bad.json"), std::string::npos) << s.error();
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ Viewer open_viewer(const std::filesystem::path& path, bool overlay = false) {
 
 /// What `roomcad render` draws of the plan with these options (grid on, the plan's lights).
 RgbImage rendered(const std::filesystem::path& path, RenderOptions o) {
-  const Plan plan = read_plan_file(path).plan.value();
+  const Plan plan = read_plan_file(path).value();
   o.width = kWidth, o.height = kHeight, o.lights = plan.lights;
   o.grid = GridLines{.enabled = true, .origin = {plan.site.origin.x, plan.site.origin.y},
                      .cell_size = plan.site.cell_size, .cells = plan.site.cells};
@@ -103,7 +103,7 @@ TEST(Viewer, ClickSelectsWhatThePixelShowsAndTintsIt) {
 
 TEST(Viewer, ErrorsAreDrawnRedLiveAndListed) {
   test::TempDir dir;
-  Plan plan = read_plan_file(studio()).plan.value();
+  Plan plan = read_plan_file(studio()).value();
   ASSERT_TRUE(test::write_bytes(dir / "p.json", write_plan_text(plan)));
   Viewer v = open_viewer(dir / "p.json");
   v.handle(key("1"));
@@ -129,7 +129,7 @@ TEST(Viewer, ErrorsAreDrawnRedLiveAndListed) {
 
 TEST(Viewer, RedrawsWhenTheFileChangesOnDisk) {
   test::TempDir dir;
-  Plan plan = read_plan_file(studio()).plan.value();
+  Plan plan = read_plan_file(studio()).value();
   const auto path = dir / "p.json";
   ASSERT_TRUE(test::write_bytes(path, write_plan_text(plan)));
   Viewer v = open_viewer(path);

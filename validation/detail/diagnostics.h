@@ -31,7 +31,7 @@ namespace roomcad::detail {
 [[nodiscard]] Where box_where(double min_x, double min_y, double max_x, double max_y);
 
 /// @return an error (or warning) with the given parts; `where` is optional.
-[[nodiscard]] Diagnostic make_diagnostic(Severity severity, std::string_view code,
+[[nodiscard]] Diagnostic make_diagnostic(Severity severity, Code code,
                                          std::vector<std::string> objects, std::string message,
                                          std::string fix = {}, std::optional<Where> where = {});
 

@@ -53,7 +53,7 @@ void report_duplicates(const Plan& plan, Report& report) {
     for (const IdUse* u : group) labels.push_back(fmt::format("{}[{}]", u->list, u->index));
     const std::string_view id = group.front()->id;
     report.add(make_diagnostic(
-        Severity::error, "duplicate_id", {std::string(id)},
+        Severity::error, Code::duplicate_id, {std::string(id)},
         fmt::format("id '{}' is used by {} objects ({}); ids must be unique in the plan.", id,
                     group.size(), fmt::join(labels, ", ")),
         fmt::format("rename all but one of them, e.g. {} to '{}-2'", labels[1], id)));
@@ -73,7 +73,7 @@ void check_ids(const Plan& plan, Usable& usable, Report& report) {
     if (found == walls.end()) {
       usable.host[i].reset();
       report.add(make_diagnostic(
-          Severity::error, "unknown_reference", {o.id},
+          Severity::error, Code::unknown_reference, {o.id},
           fmt::format("{} names wall '{}', which is not in the plan.", name_of(o), o.wall),
           plan.walls.empty()
               ? std::string("add the wall it belongs to, or delete the opening")

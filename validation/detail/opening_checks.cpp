@@ -89,7 +89,7 @@ void check_fit(const Wall& w, const Opening& o, Report& report) {
     problems.push_back(m.problem);
     fixes.push_back(m.fix);
   }
-  report.add(make_diagnostic(Severity::error, "opening_outside_wall", {o.id, w.id},
+  report.add(make_diagnostic(Severity::error, Code::opening_outside_wall, {o.id, w.id},
                              fmt::format("{} {}.", name_of(o), fmt::join(problems, ", and ")),
                              fmt::format("{}", fmt::join(fixes, "; ")), opening_where(w, o)));
 }
@@ -107,7 +107,7 @@ bool rectangles_overlap(const Opening& a, const Opening& b) {
 void report_opening_overlap(const Wall& w, const Opening& a, const Opening& b, Report& report) {
   const double shared = std::min(a.offset + a.width, b.offset + b.width) - std::max(a.offset, b.offset);
   report.add(make_diagnostic(
-      Severity::error, "opening_overlap", {a.id, b.id},
+      Severity::error, Code::opening_overlap, {a.id, b.id},
       fmt::format("{} and {} in {} overlap over {} along the wall.", name_of(a), name_of(b),
                   name_of(w), metres(shared)),
       fmt::format("move {} {} toward the end of the wall (offset {:.2f}), or narrow {} by that much",
@@ -179,7 +179,7 @@ void report_blocked(const Plan& plan, const Joins& joins, const Opening& o, std:
   const std::array<Point2, 4> hole = hole_points(h, o);
   const std::array<Point2, 4> blocker = approximate_footprint(plan, joins, other);
   report.add(make_diagnostic(
-      Severity::error, "opening_blocked", {o.id, h.id, x.id},
+      Severity::error, Code::opening_blocked, {o.id, h.id, x.id},
       fmt::format("{} in {} is blocked: {} fills its hole {} deep.", name_of(o), name_of(h),
                   name_of(x), metres(penetration(hole, blocker).first)),
       clearing_fix(h, o, blocker, x), bounds_where(hole)));

@@ -9,7 +9,7 @@
 namespace roomcad::detail {
 namespace {
 
-void warn_room(const Room& room, std::size_t number, std::string_view code, std::string_view what,
+void warn_room(const Room& room, std::size_t number, Code code, std::string_view what,
                Report& report) {
   double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
   for (const Point2& p : room.outline) {
@@ -28,9 +28,9 @@ void warn_room(const Room& room, std::size_t number, std::string_view code, std:
 
 void warn_about_rooms(const std::vector<Room>& rooms, Report& report) {
   for (std::size_t i = 0; i < rooms.size(); ++i) {
-    if (rooms[i].doors.empty()) warn_room(rooms[i], i + 1, "room_without_door", "door", report);
+    if (rooms[i].doors.empty()) warn_room(rooms[i], i + 1, Code::room_without_door, "door", report);
     if (rooms[i].windows.empty())
-      warn_room(rooms[i], i + 1, "room_without_window", "window", report);
+      warn_room(rooms[i], i + 1, Code::room_without_window, "window", report);
   }
 }
 

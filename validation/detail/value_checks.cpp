@@ -62,7 +62,7 @@ class FieldChecker {
                       : fmt::format("{} '{}' ({}[{}])", kind_, id_, list_, index_);
     if (fix.empty()) fix = fmt::format("set {} of {} to {}", field, label, must_be);
     report_.add(make_diagnostic(
-        Severity::error, "invalid_value",
+        Severity::error, Code::invalid_value,
         id_.empty() ? std::vector<std::string>{} : std::vector<std::string>{std::string(id_)},
         fmt::format("{}: {} is {}; it must be {}.", label, field, value, must_be),
         std::move(fix)));

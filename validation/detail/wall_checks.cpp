@@ -31,7 +31,7 @@ std::pair<Point2, Point2> shared_run(const Wall& a, const Wall& b) {
 void report_shared_centre_line(const Wall& a, const Wall& b, Report& report) {
   const auto [p, q] = shared_run(a, b);
   report.add(make_diagnostic(
-      Severity::error, "wall_overlap", {a.id, b.id},
+      Severity::error, Code::wall_overlap, {a.id, b.id},
       fmt::format("{} and {} run along the same centre line for {}, from {} to {}.", name_of(a),
                   name_of(b), metres(std::hypot(q.x - p.x, q.y - p.y)), point_text(p),
                   point_text(q)),
@@ -44,7 +44,7 @@ void report_overlap(const Wall& a, const Wall& b, const std::array<Point2, 4>& f
                     const std::array<Point2, 4>& fb, const Box2& box, Report& report) {
   const auto [depth, dir] = penetration(fa, fb);
   report.add(make_diagnostic(
-      Severity::error, "wall_overlap", {a.id, b.id},
+      Severity::error, Code::wall_overlap, {a.id, b.id},
       fmt::format("{} and {} overlap by {} but are not joined (their centre lines do not meet).",
                   name_of(a), name_of(b), metres(depth)),
       fmt::format("move {} {} {} (or thin one of them), or extend one centre line to meet the "
@@ -138,7 +138,7 @@ void report_outside_site(const Plan& plan, const std::array<Point2, 4>& f, const
     return a.excess < b.excess;
   });
   report.add(make_diagnostic(
-      Severity::error, "out_of_bounds", {w.id},
+      Severity::error, Code::out_of_bounds, {w.id},
       fmt::format("{} reaches {} past the {} edge of the site [{}, {}] x [{}, {}].", name_of(w),
                   metres(std::max(worst.excess, 0.0)), worst.edge, r.x0, r.x1, r.y0, r.y1),
       fmt::format("move it {} {}, or enlarge the site to {}",
@@ -157,7 +157,7 @@ bool is_under_max_height(const Site& s, const Wall& w) {
 void report_too_high(const Site& s, const Wall& w, const std::array<Point2, 4>& f,
                      Report& report) {
   report.add(make_diagnostic(
-      Severity::error, "out_of_bounds", {w.id},
+      Severity::error, Code::out_of_bounds, {w.id},
       fmt::format("{} rises to {} (base {} + height {}), above the site's max_height {}.",
                   name_of(w), metres(w.base + w.height), metres(w.base), metres(w.height),
                   metres(s.max_height)),

@@ -13,7 +13,7 @@ void warn_extra(const ExtraFields& extra, std::string_view owner, const std::str
                 Report& report) {
   for (const ExtraField& f : extra)
     report.add(make_diagnostic(
-        Severity::warning, "unknown_field", id.empty() ? std::vector<std::string>{} : std::vector{id},
+        Severity::warning, Code::unknown_field, id.empty() ? std::vector<std::string>{} : std::vector{id},
         fmt::format("{} has a field '{}' that the plan format does not define; it is kept but "
                     "has no effect.", owner, f.key),
         fmt::format("check the spelling of '{}', or remove it", f.key)));
@@ -37,7 +37,7 @@ void check_warnings(const Plan& plan, const ValidateOptions& options, Report& re
   for (const Opening& o : plan.openings) {
     if (o.type != OpeningType::door || !std::isfinite(o.sill) || o.sill <= 0) continue;
     report.add(make_diagnostic(
-        Severity::warning, "door_above_floor", {o.id},
+        Severity::warning, Code::door_above_floor, {o.id},
         fmt::format("{} starts {} above the base of wall '{}'; a door normally starts at the "
                     "floor.", name_of(o), metres(o.sill), o.wall),
         "set its sill to 0, or make it a window if it is one"));

@@ -9,7 +9,7 @@
 #include <map>
 
 #include "io/atomic_write.h"
-#include "modeling/triangulate_face.h"
+#include "modeling/float_triangulation.h"
 
 namespace roomcad {
 namespace {
@@ -32,6 +32,16 @@ void append_point(std::string& out, const OpenMesh::Vec3d& p) {
   append_number(out, p[1]);
   out += ' ';
   append_number(out, p[2]);
+}
+
+// STL stores float32, little endian.
+void append_float(std::string& out, float x) {
+  const auto bits = std::bit_cast<std::uint32_t>(x);
+  for (int k = 0; k < 4; ++k) out += static_cast<char>((bits >> (8 * k)) & 0xffu);
+}
+
+void append_float3(std::string& out, const OpenMesh::Vec3f& p) {
+  for (int k = 0; k < 3; ++k) append_float(out, p[k]);
 }
 
 std::string material_name(Color c) { return "c_" + to_string(c).substr(1); }
@@ -190,29 +200,16 @@ std::string format_ply(const MeshParts& parts) {
   return out;
 }
 
-void append_float(std::string& out, double x) {
-  const auto bits = std::bit_cast<std::uint32_t>(static_cast<float>(x));
-  for (int k = 0; k < 4; ++k) out += static_cast<char>((bits >> (8 * k)) & 0xffu);
-}
-
-void append_float3(std::string& out, const OpenMesh::Vec3d& p) {
-  for (int k = 0; k < 3; ++k) append_float(out, p[k]);
-}
-
 std::string format_stl(const MeshParts& parts) {
   std::string body;
   std::uint32_t count = 0;
-  std::vector<OpenMesh::Vec3d> points;
-  for_each_face(parts, [&](const SolidMesh& mesh, SolidMesh::FaceHandle f, std::size_t) {
-    points.clear();
-    for (const auto v : mesh.fv_range(f)) points.push_back(mesh.point(v));
-    for (const auto& t : triangulate_face(points, mesh.normal(f))) {
-      append_float3(body, mesh.normal(f));
-      for (int k : t) append_float3(body, points[std::size_t(k)]);
+  for (const SolidMesh* mesh : parts.meshes)
+    for (const FloatTriangle& t : triangulate_in_float(*mesh)) {
+      append_float3(body, OpenMesh::Vec3f(mesh->normal(t.face)));
+      for (const auto& corner : t.corners) append_float3(body, corner);
       body += std::string(2, '\0');
       ++count;
     }
-  });
   std::string out(80, ' ');
   const std::string title = "roomcad model (binary STL, float32, little endian)";
   out.replace(0, title.size(), title);

@@ -2,7 +2,8 @@
 //
 // Coordinates are written as the shortest decimal that reads back to the same double
 // (std::to_chars), except in STL, whose format stores float32 (each coordinate rounded to the
-// nearest float). Output bytes depend only on the meshes: the same model gives the same file.
+// nearest float, modeling/float_triangulation.h). Output bytes depend only on the meshes: the
+// same model gives the same file.
 // Every file goes through write_file_atomically: a failed export leaves no partial file.
 #pragma once
 
@@ -37,8 +38,10 @@ struct MeshParts {
 [[nodiscard]] std::string format_off(const MeshParts& parts);
 /// PLY text (format ascii 1.0): double vertices, polygon faces with uchar red/green/blue. O(n).
 [[nodiscard]] std::string format_ply(const MeshParts& parts);
-/// Binary STL: faces triangulated (triangulate_face), float32 normals and corners, little
-/// endian. O(n) for faces of bounded size.
+/// Binary STL: float32 normals (each face's own) and corners, little endian. Each part is
+/// triangulated on its corners rounded to float32 (triangulate_in_float), so no facet has a
+/// repeated corner or zero area and a closed part stays closed when a reader welds corners by
+/// their coordinates. O(n log n) for faces of bounded size.
 [[nodiscard]] std::string format_stl(const MeshParts& parts);
 
 /// Writes the parts to `path` in the format of its extension; for OBJ also writes the MTL

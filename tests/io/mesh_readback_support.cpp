@@ -30,9 +30,9 @@ const std::vector<BuiltExample>& built_examples() {
   static const std::vector<BuiltExample> built = [] {
     std::vector<BuiltExample> out;
     for (const auto& path : example_plan_files()) {
-      const PlanReadResult read = read_plan_file(path);
-      if (!read.plan) throw std::runtime_error(path.string() + ": does not read");
-      out.push_back({path.stem().string(), build_model(*read.plan), analytic_wall_volume(*read.plan)});
+      const Result<Plan> read = read_plan_file(path);
+      if (!read) throw std::runtime_error(path.string() + ": does not read: " + read.message());
+      out.push_back({path.stem().string(), build_model(*read), analytic_wall_volume(*read)});
     }
     return out;
   }();

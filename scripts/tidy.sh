@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Runs clang-tidy with the checks of .clang-tidy (which the tree is kept clean of; any finding
-# is an error) over the given .cpp files, or over every .cpp file of roomcad's own but fuzz/
-# (built only by the sanitized build), with the headers of the repository they include. Uses
+# is an error) over the given .cpp files, or over every .cpp file of the repository that
+# build/ compiles (so not fuzz/, built only by the sanitized build, nor bench/osmesa_bench.cpp
+# without OSMesa), with the headers of the repository they include. Uses
 # build/compile_commands.json (configured here when missing). Slow: each file compiles the
 # CGAL headers it includes, one file per core at a time.
 # Usage: scripts/tidy.sh [FILE.cpp...]
@@ -14,7 +15,8 @@ if [[ ! -f build/compile_commands.json ]]; then
 fi
 files=("$@")
 if ((${#files[@]} == 0)); then
-  mapfile -t files < <(git ls-files '*.cpp' | grep -v '^fuzz/')
+  mapfile -t files < <(git ls-files '*.cpp' |
+    grep -Fxf <(sed -n "s|^ *\"file\": \"$(pwd)/\(.*\)\",\?$|\1|p" build/compile_commands.json))
 fi
 headers="^$(pwd)/[a-z_]+/"  # every header of the repository (modules, tests, bench)
 printf '%s\n' "${files[@]}" |

@@ -1,5 +1,6 @@
 // `roomcad import HOME.xml|HOME.sh3d -o PLAN.json`: a Sweet Home 3D home as a plan.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -15,7 +16,7 @@ struct ImportArgs {
   std::string home;
   std::string output;
   std::string level;  ///< empty: every level
-  double chord_tolerance = 0.01;
+  std::optional<double> chord_tolerance;  ///< unset: the format's default
 };
 
 int run_import(const ImportArgs& args) {
@@ -32,8 +33,10 @@ int run_import(const ImportArgs& args) {
   const Plan& plan = imported.value().plan;
   if (const Status written = write_plan_file(plan, args.output); !written)
     return report_failure("import", written.error());
-  fmt::print(stderr, "roomcad import: {} walls and {} openings from {} written to {}\n",
-             plan.walls.size(), plan.openings.size(), args.home, args.output);
+  fmt::print(stderr,
+             "roomcad import: {} levels, {} walls, {} openings and {} slabs from {} written to {}\n",
+             plan.levels.size(), plan.walls.size(), plan.openings.size(), plan.slabs.size(),
+             args.home, args.output);
   return kExitOk;
 }
 
@@ -43,14 +46,16 @@ void add_import_command(CLI::App& root, Commands& commands) {
   auto args = std::make_shared<ImportArgs>();
   CLI::App* app = root.add_subcommand(
       "import",
-      "Import a Sweet Home 3D home (its Home.xml, or a .sh3d file) as a plan. Approximations "
-      "(curved and sloped walls, round cut-outs, doors and windows that fit no wall) are "
-      "reported as warnings naming the wall or item.");
+      "Import a Sweet Home 3D home (its Home.xml, or a .sh3d file) as a plan: its levels, walls "
+      "(sloped and curved as drawn), doors and windows (with their cut-out shapes) and rooms "
+      "(floor and ceiling slabs). What cannot be represented (doors and windows that fit no "
+      "wall, walls of no length) is reported as warnings naming the wall or item.");
   app->add_option("home", args->home, "Sweet Home 3D Home.xml or .sh3d file")->required();
   app->add_option("-o,--output", args->output, "plan JSON file to write")->required();
   app->add_option("--level", args->level, "import only the level with this name");
   app->add_option("--chord-tolerance", args->chord_tolerance,
-                  "largest distance in metres between a curved wall and its straight pieces")
+                  "site.chord_tolerance of the plan: largest distance in metres between a curved "
+                  "wall and its chords (default 0.001, the format's, left unwritten)")
       ->check(CLI::PositiveNumber);
   commands.push_back({app, [args] { return run_import(*args); }});
 }

@@ -6,13 +6,17 @@
 #include <iterator>
 #include <limits>
 #include <numbers>
+#include <set>
 
 #include <fmt/format.h>
 
 #include "io/plan_json.h"
+#include "modeling/plan_levels.h"
 #include "import/detail/sh3d_archive.h"
 #include "import/detail/sh3d_home.h"
+#include "import/detail/sh3d_levels.h"
 #include "import/detail/sh3d_openings.h"
+#include "import/detail/sh3d_rooms.h"
 #include "import/detail/sh3d_walls.h"
 #include "io/text_file.h"
 
@@ -25,17 +29,24 @@ struct Box {
   double top = 0.0;
 };
 
-/// Box around the walls' end points grown by half their thickness (the margin covers mitres).
-Box bounds_of(const std::vector<Wall>& walls) {
+/// Box around the walls' centre lines (an arc's chords) grown by half their thickness (the
+/// margin covers mitres) and the slabs, up to the highest wall top, slab top or level top.
+Box bounds_of(const Plan& plan, const std::vector<sh3d::PlacedWall>& walls) {
   Box box;
-  for (const Wall& w : walls) {
-    const double r = w.thickness / 2;
-    for (const Point2 p : {w.from, w.to}) {
-      box.min = {std::min(box.min.x, p.x - r), std::min(box.min.y, p.y - r)};
-      box.max = {std::max(box.max.x, p.x + r), std::max(box.max.y, p.y + r)};
-    }
-    box.top = std::max(box.top, w.base + w.height);
+  const auto add = [&box](Point2 p, double r) {
+    box.min = {std::min(box.min.x, p.x - r), std::min(box.min.y, p.y - r)};
+    box.max = {std::max(box.max.x, p.x + r), std::max(box.max.y, p.y + r)};
+  };
+  for (const sh3d::PlacedWall& w : walls) {
+    for (const Point2 p : w.polyline) add(p, w.wall.thickness / 2);
+    const double height = std::max(w.wall.height, w.wall.height_at_end.value_or(0.0));
+    box.top = std::max(box.top, w.base_z + height);
   }
+  for (const Slab& s : plan.slabs) {
+    for (const Point2 p : s.outline) add(p, 0.0);
+    box.top = std::max(box.top, top_z(plan, s));
+  }
+  for (const Level& l : plan.levels) box.top = std::max(box.top, l.elevation + l.height);
   return box;
 }
 
@@ -52,6 +63,7 @@ Site make_site(const Box& box, const Sh3dImportOptions& options) {
   site.cell_size = cell;
   site.max_height = std::ceil(box.top) + 1.0;
   site.tolerance = options.join_tolerance;
+  site.chord_tolerance = options.chord_tolerance;
   return site;
 }
 
@@ -104,6 +116,29 @@ std::string too_many_objects(std::string_view file, std::size_t walls, std::size
                      walls_are, items, items_are, kMaxPlanObjects);
 }
 
+/// @return the centimetres that raise the home so that its lowest level's floor band (or its
+/// walls without a level) starts at z = 0: the format has no negative z.
+double z_shift_of(const sh3d::Home& home, const std::vector<sh3d::Level>& selected) {
+  double lowest = std::numeric_limits<double>::max();
+  for (const sh3d::Level& l : selected)
+    lowest = std::min(lowest, sh3d::level_base(home, l.id).base_cm);
+  for (const sh3d::WallRecord& w : home.walls)
+    if (w.level.empty()) lowest = std::min(lowest, 0.0);
+  return lowest == std::numeric_limits<double>::max() ? 0.0 : 0.0 - lowest;  // no -0
+}
+
+/// The ids of the home's walls, items and rooms: a level may not take one as its id.
+std::set<std::string, std::less<>> ids_of(const sh3d::Home& home) {
+  std::set<std::string, std::less<>> ids;
+  for (const sh3d::WallRecord& w : home.walls) ids.insert(w.id);
+  for (const sh3d::ItemRecord& i : home.items) ids.insert(i.id);
+  for (const sh3d::RoomRecord& r : home.rooms) {
+    ids.insert(r.id);
+    ids.insert(r.id + "-ceiling");
+  }
+  return ids;
+}
+
 /// The level id selected by name, "" for all levels.
 Result<std::string> select_level(const sh3d::Home& home, const Sh3dImportOptions& options,
                                  std::string_view file) {
@@ -130,6 +165,10 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   auto on_level = [&](const std::string& id) { return !options.level || id == level.value(); };
   std::erase_if(home.walls, [&](const sh3d::WallRecord& w) { return !on_level(w.level); });
   std::erase_if(home.items, [&](const sh3d::ItemRecord& i) { return !on_level(i.level); });
+  std::erase_if(home.rooms, [&](const sh3d::RoomRecord& r) { return !on_level(r.level); });
+  // Which level is the lowest stays the home's: home.levels is kept whole.
+  std::vector<sh3d::Level> selected = home.levels;
+  std::erase_if(selected, [&](const sh3d::Level& l) { return !on_level(l.id); });
   if (home.walls.empty())
     return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format("{}: no <wall> to import", file));
   if (home.walls.size() > kMaxPlanObjects || home.items.size() > kMaxPlanObjects)
@@ -147,28 +186,29 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   Sh3dImport out;
   out.source_walls = home.walls.size();
   out.source_items = home.items.size();
-  // The lowest wall stands at z = 0 (the format has no negative base).
-  const double z_shift_cm = 0.0 - sh3d::lowest_base_cm(home, home.walls);  // no -0
+  const double z_shift_cm = z_shift_of(home, selected);
   out.z_shift = z_shift_cm / 100;
+  const std::vector<sh3d::PlacedLevel> levels =
+      sh3d::place_levels(home, selected, z_shift_cm, ids_of(home));
+  for (const sh3d::PlacedLevel& l : levels) out.plan.levels.push_back(l.level);
   sh3d::WallOptions wall_options;
-  wall_options.chord_tolerance = options.chord_tolerance;
+  wall_options.chord_tolerance = options.chord_tolerance.value_or(kDefaultChordTolerance);
   wall_options.z_shift_cm = z_shift_cm;
   const std::vector<sh3d::PlacedWall> walls =
-      sh3d::convert_walls(home, home.walls, home.items, wall_options, out.warnings);
+      sh3d::convert_walls(home, home.walls, levels, wall_options, out.warnings);
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
   // Found by fuzz_sh3d_archive: with every wall left out, the site's box stayed empty.
   if (out.plan.walls.empty())
     return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format(
         "{}: no wall to import: each of its {} <wall> elements starts and ends at the same point",
         file, home.walls.size()));
-  out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
-  // Arcs become up to 256 chords each: the plan itself must stay readable.
-  if (out.plan.walls.size() > kMaxPlanObjects)
-    return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(file, out.plan.walls.size(),
-                                                        out.plan.openings.size(),
-                                                        "straight walls (arcs cut into chords) and",
-                                                        "openings"));
-  const Box box = bounds_of(out.plan.walls);
+  const sh3d::Placement placement{levels, z_shift_cm, wall_options.chord_tolerance, nullptr};
+  out.plan.openings = sh3d::place_openings(home.items, walls, placement, out.warnings);
+  out.plan.slabs = sh3d::make_slabs(home, home.rooms, levels, sh3d::z_of(z_shift_cm), out.warnings);
+  if (out.plan.slabs.size() > kMaxPlanObjects)
+    return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(
+        file, out.plan.walls.size(), out.plan.slabs.size(), "walls and", "slabs"));
+  const Box box = bounds_of(out.plan, walls);
   // The site's cell counts are integers: a home spread over more cells than any plan could
   // use (coordinates like 1e115 cm) is refused rather than overflowing them.
   const double span = std::max(box.max.x - box.min.x, box.max.y - box.min.y);

@@ -1,23 +1,25 @@
 // Importing Sweet Home 3D homes (`Home.xml`, or a `.sh3d` archive holding one) as plans.
 //
-// Mapping (centimetres to metres, Sweet Home 3D's downward y negated):
-// - each straight `<wall>` becomes a wall; a curved one (`arcExtent`) a chain of straight walls
-//   `<id>-arc1..n` within `chord_tolerance` of the arc, cut between its doors and windows; a
-//   sloped top (`heightAtEnd`) is made flat at its higher end. Walls of a level stand on its
-//   elevation, and on every level but the lowest reach down through the floor slab as in
-//   Sweet Home 3D, so storeys stack with no gap;
+// Mapping (centimetres to metres, Sweet Home 3D's downward y negated; plan format version 2
+// when the home uses levels, slopes, arcs, shapes or rooms):
+// - each `<level>` becomes a level (its name as id where unique), at its elevation;
+// - each `<wall>` becomes a wall of its level, with `height_at_end` for a sloped top and
+//   `arc_extent` for a curved one; on every level but the lowest it reaches down through the
+//   level's floor (base = -floorThickness), as in Sweet Home 3D, so storeys stack with no gap;
 // - wall ends that Sweet Home 3D draws anywhere inside the wall they meet are moved onto its
 //   centre line or end (sh3d::join_t_ends), so that the plan's join rule sees the junction;
 // - each `<doorOrWindow>` becomes an opening of the wall that holds it (found by geometry: see
-//   sh3d::find_host_wall), width along the wall, sill from its elevation, and of every other
-//   wall it passes through (`<id>-2`, ...);
+//   sh3d::place_openings), width along the wall, sill from its elevation, its cut-out shape
+//   as its `shape`, and of every other wall it passes through (`<id>-2`, ...);
+// - each `<room>` becomes a floor slab on the levels above the lowest, and a ceiling slab
+//   where no floor above covers it (sh3d::make_slabs);
 // - z values and opening edges lie on a 2^-20 m grid, so that `base + height`, `offset + width`
 //   and `sill + height` are exact: what touches in the home touches exactly in the plan;
-// - the whole home is raised so that its lowest wall stands at z = 0 (a basement below ground
+// - the whole home is raised so that its lowest level stands at z = 0 (a basement below ground
 //   in Sweet Home 3D starts at 0 in the plan);
 // - the site is a grid of `cell_size` tiles covering the walls plus `site_margin`;
 // - one default sun, and the home's observer and aerial cameras.
-// Every approximation is a warning that names the wall or item concerned.
+// What cannot be represented is a warning that names the wall or item concerned.
 #pragma once
 
 #include <filesystem>
@@ -32,8 +34,10 @@
 namespace roomcad {
 
 struct Sh3dImportOptions {
-  std::optional<std::string> level;  ///< import only the level with this name; all if unset
-  double chord_tolerance = 0.01;     ///< metres between a curved wall and its straight pieces
+  std::optional<std::string> level{};///< import only the level with this name; all if unset
+  /// The plan's `site.chord_tolerance` (metres between an arc and its chords; also the one
+  /// for curved cut-out shapes); unset: the format's default (1 mm), not written.
+  std::optional<double> chord_tolerance{};
   double site_margin = 1.0;          ///< metres of site around the walls
   double cell_size = 1.0;            ///< site tile side, metres
   /// Join tolerance of the plan. Sweet Home 3D keeps float32 centimetres (a few 1e-7 m of

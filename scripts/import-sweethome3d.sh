@@ -15,7 +15,7 @@ if [[ -z "$roomcad" ]]; then
   done
 fi
 [[ -n "$roomcad" ]] || { echo "import-sweethome3d: build roomcad first (scripts/build.sh)" >&2; exit 2; }
-for home in "$data"/eteks-example-homes/*.Home.xml "$data"/edge-cases/*.Home.xml; do
+for home in "$data"/eteks-example-homes/*.Home.xml "$data"/edge-cases/*.Home.xml "$data"/community-homes/*.Home.xml; do
   name=$(basename "$home" .Home.xml)
   "$roomcad" import "$home" -o "$out/$name.json" 2> "$out/$name.import.txt"
   echo "$name: $(grep -c 'warning' "$out/$name.import.txt" || true) import warnings"

@@ -125,6 +125,23 @@ ItemRecord read_item(AttributeReader& r) {
                     .wall_top = r.number("wallTop", 0.0)};
 }
 
+RoomRecord read_room(pugi::xml_node node, AttributeReader& r, std::string_view file,
+                     std::string* error) {
+  RoomRecord room{.id = r.text("id"),
+                  .name = r.text("name"),
+                  .level = r.text("level"),
+                  .points = {},
+                  .floor_visible = r.text("floorVisible") != "false",
+                  .ceiling_visible = r.text("ceilingVisible") != "false",
+                  .floor_color = parse_argb(r.text("floorColor")),
+                  .ceiling_color = parse_argb(r.text("ceilingColor"))};
+  for (pugi::xml_node point : node.children("point")) {
+    AttributeReader p(point, file, error);
+    room.points.push_back(p.point("x", "y"));
+  }
+  return room;
+}
+
 /// Sweet Home 3D's camera looks along (-sin yaw, cos yaw) on screen (y down), tilted down by
 /// `pitch`; on screen y is negated, which gives (-sin yaw, -cos yaw) in roomcad's frame.
 CameraRecord read_camera(AttributeReader& r) {
@@ -172,6 +189,10 @@ std::string check_level_references(const Home& home, std::string_view file) {
     if (unknown(i.level))
       return fmt::format("{}: <doorOrWindow id='{}'> attribute 'level' names no <level>: '{}'",
                          file, i.id, i.level);
+  for (const RoomRecord& r : home.rooms)
+    if (unknown(r.level))
+      return fmt::format("{}: <room id='{}'> attribute 'level' names no <level>: '{}'", file,
+                         r.id, r.level);
   return {};
 }
 
@@ -198,6 +219,7 @@ Result<Home> parse_home_xml(std::string_view xml, std::string_view file) {
     AttributeReader r(child, file, &error);
     if (name == "level") home.levels.push_back(read_level(r));
     else if (name == "wall") home.walls.push_back(read_wall(r));
+    else if (name == "room") home.rooms.push_back(read_room(child, r, file, &error));
     else if (name == "camera" || name == "observerCamera") home.cameras.push_back(read_camera(r));
   }
   collect_items(root, file, &error, home.items);

@@ -64,6 +64,19 @@ struct ItemRecord {
   double wall_top = 0.0;
 };
 
+/// A `<room>`: a floor (and its ceiling) drawn on a level, its points in roomcad's frame, in
+/// the order drawn (either way round).
+struct RoomRecord {
+  std::string id;
+  std::string name;
+  std::string level;
+  std::vector<Point2> points;
+  bool floor_visible = true;
+  bool ceiling_visible = true;
+  std::optional<Color> floor_color;
+  std::optional<Color> ceiling_color;
+};
+
 /// A `<camera>` or `<observerCamera>` child of `<home>`: the eye and the view direction.
 struct CameraRecord {
   std::string kind;  ///< its `attribute`: observerCamera, topCamera or storedCamera
@@ -78,6 +91,7 @@ struct Home {
   std::vector<Level> levels;
   std::vector<WallRecord> walls;
   std::vector<ItemRecord> items;
+  std::vector<RoomRecord> rooms;
   std::vector<CameraRecord> cameras;
 };
 

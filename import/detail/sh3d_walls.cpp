@@ -1,6 +1,5 @@
 #include "import/detail/sh3d_walls.h"
 
-#include "import/detail/sh3d_arcs.h"
 #include "import/detail/sh3d_junctions.h"
 
 #include <algorithm>
@@ -11,51 +10,67 @@
 
 #include <fmt/format.h>
 
+#include "modeling/arc_chords.h"
+
 namespace roomcad::sh3d {
 namespace {
 
 
-/// The wall's height (centimetres): its own, else the home's default, else its level's, else
-/// 250 (Sweet Home 3D's default). A sloped top becomes flat at its higher end, with a warning.
-double flat_height_cm(const Home& home, const WallRecord& w, Report& warnings) {
-  double height = 250.0;
-  if (w.height_cm) height = *w.height_cm;
-  else if (home.wall_height_cm) height = *home.wall_height_cm;
-  else if (const auto l = std::ranges::find(home.levels, w.level, &Level::id);
-           l != home.levels.end() && l->height_cm > 0)
-    height = l->height_cm;
-  if (w.height_at_end_cm && *w.height_at_end_cm != height) {
-    const double top = std::max(height, *w.height_at_end_cm);
-    warnings.add(import_warning(
-        Code::import_sloped_wall, w.id,
-        fmt::format("wall '{}' has a sloped top from {} m to {} m; the plan format has one "
-                    "height per wall, so it is imported flat at {} m",
-                    w.id, height / 100, *w.height_at_end_cm / 100, top / 100)));
-    height = top;
-  }
-  return height;
+/// The wall's height (centimetres) at its start: its own, else the home's default, else its
+/// level's, else 250 (Sweet Home 3D's default).
+double height_cm(const Home& home, const WallRecord& w) {
+  if (w.height_cm) return *w.height_cm;
+  if (home.wall_height_cm) return *home.wall_height_cm;
+  if (const auto l = std::ranges::find(home.levels, w.level, &Level::id);
+      l != home.levels.end() && l->height_cm > 0)
+    return l->height_cm;
+  return 250.0;
 }
 
-/// A plan wall from `from` to `to` with the thickness and colour of `w`, spanning z in
-/// [base_cm, top_cm].
-Wall make_wall(const WallRecord& w, std::string id, Point2 from, Point2 to, double base_cm,
-               double top_cm) {
-  Wall wall;
-  wall.id = std::move(id);
-  wall.from = from;
-  wall.to = to;
+/// A height (metres) from a height above the level's floor plus the stretch below it, on the
+/// dyadic grid (so base + height lands exactly on the floor's grid value); a height that
+/// comes out at most 0 (Sweet Home 3D accepts a zero height at one end) is a millimetre, with
+/// an import_sloped_wall warning.
+double wall_height(const WallRecord& w, double above_cm, double below_cm, Report& warnings) {
+  const double height = z_of(above_cm) + z_of(below_cm);
+  if (height > 0) return height;
+  warnings.add(import_warning(
+      Code::import_sloped_wall, w.id,
+      fmt::format("wall '{}' has a height of {} m at one end; a wall's height must be positive, "
+                  "so it is imported as 1 mm there", w.id, above_cm / 100)));
+  return on_dyadic_grid(1e-3);
+}
+
+/// The plan wall of `w`, on its level: from `elevation - floor offset` (base_z) up to its
+/// height above the level's floor, sloped and curved as drawn.
+PlacedWall make_wall(const Home& home, const WallRecord& w, const std::vector<PlacedLevel>& levels,
+                     const WallOptions& options, Report& warnings) {
+  PlacedWall placed;
+  Wall& wall = placed.wall;
+  wall.id = w.id;
+  wall.from = w.start;
+  wall.to = w.end;
   wall.thickness = w.thickness;
-  wall.base = z_of(base_cm);
-  wall.height = z_of(top_cm) - wall.base;  // exact: both on the same dyadic grid
   if (w.color) wall.color = *w.color;
-  return wall;
-}
-
-/// How far from a chord's end an opening must stop for the mitre with the next chord (turning by
-/// at most the chord angle for `tolerance`) to stay out of its hole, plus a millimetre.
-double mitre_margin(const Arc& arc, const WallRecord& w, double tolerance) {
-  const double turn = 2 * std::acos(std::max(-1.0, 1 - tolerance / arc.radius));
-  return w.thickness / 2 * std::tan(std::min(turn, 1.0) / 2) + 1e-3;
+  const PlacedLevel* level = find_placed(levels, w.level);
+  const double below_cm = level ? level->floor_offset_cm : 0.0;
+  if (level) {
+    wall.level = level->level.id;
+    wall.base = 0.0 - z_of(below_cm);  // no -0
+    placed.base_z = level->level.elevation + wall.base;  // exact: both on the dyadic grid
+  } else {
+    wall.base = z_of(options.z_shift_cm);
+    placed.base_z = wall.base;
+  }
+  const double start_cm = height_cm(home, w);
+  wall.height = wall_height(w, start_cm, below_cm, warnings);
+  if (w.height_at_end_cm && *w.height_at_end_cm != start_cm)
+    wall.height_at_end = wall_height(w, *w.height_at_end_cm, below_cm, warnings);
+  const double degrees = w.arc_extent.value_or(0.0) * 180 / std::numbers::pi;
+  if (degrees != 0 && std::abs(degrees) < 360) wall.arc_extent = -degrees;
+  placed.level = w.level;
+  placed.polyline = centre_polyline(wall, options.chord_tolerance);
+  return placed;
 }
 
 }  // namespace
@@ -83,14 +98,8 @@ LevelBase level_base(const Home& home, const std::string& level_id) {
   return {.base_cm = level->elevation_cm - offset, .floor_offset_cm = offset};
 }
 
-double lowest_base_cm(const Home& home, const std::vector<WallRecord>& walls) {
-  double lowest = std::numeric_limits<double>::max();
-  for (const WallRecord& w : walls) lowest = std::min(lowest, level_base(home, w.level).base_cm);
-  return walls.empty() ? 0.0 : lowest;
-}
-
 std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> walls,
-                                      const std::vector<ItemRecord>& items,
+                                      const std::vector<PlacedLevel>& levels,
                                       const WallOptions& options, Report& warnings) {
   snap_close_ends(walls, options.snap_distance);
   join_t_ends(walls, options.snap_distance, warnings);
@@ -103,27 +112,7 @@ std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> 
                       w.id)));
       continue;
     }
-    const LevelBase level = level_base(home, w.level);
-    const double base_cm = level.base_cm + options.z_shift_cm;
-    const double top_cm = base_cm + level.floor_offset_cm + flat_height_cm(home, w, warnings);
-    if (!w.arc_extent || *w.arc_extent == 0) {
-      placed.push_back({make_wall(w, w.id, w.start, w.end, base_cm, top_cm), w.level});
-      continue;
-    }
-    const Arc arc = arc_through(w.start, w.end, *w.arc_extent);
-    const std::vector<Point2> points =
-        split_arc(w.start, w.end, *w.arc_extent, options.chord_tolerance,
-                  openings_on_arc(w, arc, items, mitre_margin(arc, w, options.chord_tolerance)));
-    for (std::size_t k = 1; k < points.size(); ++k)
-      placed.push_back({make_wall(w, fmt::format("{}-arc{}", w.id, k), points[k - 1], points[k],
-                                  base_cm, top_cm),
-                        w.level});
-    warnings.add(import_warning(
-        Code::import_curved_wall, w.id,
-        fmt::format("curved wall '{}' ({:.1f} degrees of arc) is imported as {} straight walls "
-                    "'{}-arc1'..'{}-arc{}' within {} m of the arc",
-                    w.id, std::abs(*w.arc_extent) * 180 / std::numbers::pi, points.size() - 1,
-                    w.id, w.id, points.size() - 1, options.chord_tolerance)));
+    placed.push_back(make_wall(home, w, levels, options, warnings));
   }
   return placed;
 }

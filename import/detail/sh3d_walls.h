@@ -1,11 +1,12 @@
-// Sweet Home 3D walls to plan walls: levels to bases, arcs to chains of straight walls, sloped
-// tops to flat ones, and joined end points made to coincide exactly.
+// Sweet Home 3D walls to plan walls (plan format version 2): on their levels, with their sloped
+// tops and arcs, and joined end points made to coincide exactly.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "import/detail/sh3d_home.h"
+#include "import/detail/sh3d_levels.h"
 #include "validation/report.h"
 
 namespace roomcad::sh3d {
@@ -31,13 +32,12 @@ struct LevelBase {
 /// @pre every level id used by the home names one of `home.levels`. O(levels).
 [[nodiscard]] LevelBase level_base(const Home& home, const std::string& level_id);
 
-/// @return the lowest base among `walls`, centimetres (0 for none). O(walls x levels).
-[[nodiscard]] double lowest_base_cm(const Home& home, const std::vector<WallRecord>& walls);
-
-/// A plan wall and the Sweet Home 3D level it stands on.
+/// A plan wall, the Sweet Home 3D level it stands on and where it is.
 struct PlacedWall {
   Wall wall;
-  std::string level;  ///< Sweet Home 3D level id
+  std::string level;             ///< Sweet Home 3D level id
+  double base_z = 0.0;           ///< absolute z of its base, metres
+  std::vector<Point2> polyline;  ///< its centre line as built (an arc's chords: centre_polyline)
 };
 
 /// @return a warning of `code` about the object `id` (io's own codes start with `import_`).
@@ -45,20 +45,20 @@ struct PlacedWall {
                                         std::string message);
 
 struct WallOptions {
-  double chord_tolerance = 0.01;  ///< largest gap between an arc and its chords, metres
+  double chord_tolerance = kDefaultChordTolerance;  ///< the plan's, for arcs' polylines
   double snap_distance = 1e-3;    ///< end points closer than this are made equal, metres
   double z_shift_cm = 0.0;        ///< added to every elevation (raises a basement to z >= 0)
 };
 
-/// Converts `walls` (a selection of `home.walls`, in file order) to plan walls, one per straight
-/// wall and one per chord of a curved wall (no chord break falls in one of `items`); a wall
-/// of zero length is left out with an `import_zero_length_wall` warning.
-/// @param[out] warnings appended: one warning per curved or sloped wall, naming it.
-/// @return the placed walls, in file order (an arc's chords in order from its start).
-/// O(walls + chords).
+/// Converts `walls` (a selection of `home.walls`, in file order) to plan walls, one per
+/// `<wall>`: on its plan level (`levels`, from place_levels) and reaching down through the
+/// level's floor as in Sweet Home 3D, with its sloped top (`height_at_end`) and its arc
+/// (`arc_extent`, the sign turned: Sweet Home 3D's positive arcs turn clockwise once y points
+/// north). A wall of zero length is left out with an `import_zero_length_wall` warning.
+/// @return the placed walls, in file order. O(walls^2) (junctions) + O(chords).
 [[nodiscard]] std::vector<PlacedWall> convert_walls(const Home& home,
                                                     std::vector<WallRecord> walls,
-                                                    const std::vector<ItemRecord>& items,
+                                                    const std::vector<PlacedLevel>& levels,
                                                     const WallOptions& options, Report& warnings);
 
 }  // namespace roomcad::sh3d

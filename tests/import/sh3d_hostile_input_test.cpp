@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include "import/detail/sh3d_arcs.h"
 #include "import/sweethome3d_import.h"
 #include "io/plan_json.h"
 #include "io/text_file.h"
@@ -116,16 +115,6 @@ TEST(HostileSh3d, Sh3dTEndsThatCannotMoveAreNeitherMovedNorReported) {
       }
     }
   }
-}
-
-TEST(HostileSh3d, ArcWithAToleranceBelowItsRoundingGetsBoundedChords) {
-  // 1 - tolerance / radius rounds to 1: the chord angle is 0 and the chord count infinite.
-  const std::vector<Point2> points = sh3d::split_arc({0, 0}, {1e9, 0}, 1.0, 1e-12);
-  ASSERT_GE(points.size(), 2u);
-  EXPECT_LE(points.size(), 257u);
-  EXPECT_EQ(points.front(), (Point2{0, 0}));
-  EXPECT_EQ(points.back(), (Point2{1e9, 0}));
-  for (const Point2 p : points) EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
 }
 
 TEST(HostileSh3d, FilesOverTheSizeLimitAreRefusedUnread) {

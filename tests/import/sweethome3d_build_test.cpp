@@ -14,17 +14,17 @@ namespace {
 
 using namespace sh3d_test;
 
-// The homes whose model builds today: all but one. 3-BedroomHouseWithMezzanine stops in
-// build_model with a clear error ("a wall_face face of 'wall30' ... would make the mesh
-// non-manifold: a corner is closed all round"), at a T that meets the joint of two nearly
-// collinear walls: rounding the exact union leaves a groove one double step wide there
-// (reduced in tests/modeling/rounded_joints_test.cpp). To be added here when fixed.
+// The homes whose walls build today: the one-storey homes of straight, flat-topped walls.
+// 3-BedroomHouseWithMezzanine stops in build_model with a clear error ("a wall_face face of
+// 'wall30' ... would make the mesh non-manifold: a corner is closed all round"), at a T that
+// meets the joint of two nearly collinear walls: rounding the exact union leaves a groove one
+// double step wide there (reduced in tests/modeling/rounded_joints_test.cpp). The homes with
+// levels, sloped or curved walls (1-BedroomApartment, 2-BedroomHouseWithBasement,
+// 3-BedroomHouseWithAttic, 4-BedroomHouse, Sample) are imported as version 2 plans, which the
+// build reads from the general path on (issue 15): they join this list with it.
 const char* const kBuildingHomes[] = {
-    "eteks-example-homes/1-BedroomApartment",     "eteks-example-homes/2-BedroomApartment",
-    "eteks-example-homes/2-BedroomHouseWithBasement", "eteks-example-homes/3-BedroomApartment",
-    "eteks-example-homes/3-BedroomHouseWithAttic", "eteks-example-homes/4-BedroomHouse",
-    "eteks-example-homes/ApartmentWithBowWindow",
-    "eteks-example-homes/Studio",                 "edge-cases/Sample"};
+    "eteks-example-homes/2-BedroomApartment", "eteks-example-homes/3-BedroomApartment",
+    "eteks-example-homes/ApartmentWithBowWindow", "eteks-example-homes/Studio"};
 
 TEST(Sh3dBuild, HomesBuildAClosedSolidOfTheAnalyticVolume) {
   for (const char* name : kBuildingHomes) {

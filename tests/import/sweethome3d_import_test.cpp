@@ -1,6 +1,7 @@
 // The Sweet Home 3D importer on the real homes of examples/sweethome3d/homes: counts, units,
 // frame and placement are checked against the XML itself, read here with plain text matching
 // (independently of the importer's XML parser).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include "import/detail/sh3d_arcs.h"
+#include "modeling/arc_chords.h"
+#include "modeling/plan_levels.h"
 #include "import/sweethome3d_import.h"
 #include "import/sh3d_test_data.h"
 
@@ -38,7 +40,7 @@ const Opening* find_opening(const Plan& plan, const std::string& id) {
 
 double length_of(const Wall& w) { return std::hypot(w.to.x - w.from.x, w.to.y - w.from.y); }
 
-TEST(Sh3dImport, WallCountsMatchTheXmlWithArcsSplitIntoChords) {
+TEST(Sh3dImport, EveryWallIsOneWallSlopedAndCurvedAsDrawn) {
   for (const fs::path& home : all_homes()) {
     SCOPED_TRACE(home.filename().string());
     const std::vector<Attributes> xml_walls = elements(read_text(home), "wall");
@@ -51,15 +53,28 @@ TEST(Sh3dImport, WallCountsMatchTheXmlWithArcsSplitIntoChords) {
         EXPECT_EQ(w.at("xStart") + " " + w.at("yStart"), w.at("xEnd") + " " + w.at("yEnd"));
         continue;
       }
-      const bool curved = w.contains("arcExtent") && std::stod(w.at("arcExtent")) != 0;
-      std::size_t chords = 0;
-      for (const Wall& p : imported.plan.walls)
-        if (p.id == w.at("id") || p.id.starts_with(w.at("id") + "-arc")) ++chords;
-      EXPECT_EQ(chords > 1, curved) << w.at("id");
-      EXPECT_GE(chords, 1u) << w.at("id");
-      expected += chords;
+      ++expected;
+      const Wall* wall = find_wall(imported.plan, w.at("id"));
+      ASSERT_NE(wall, nullptr) << w.at("id");
+      const double arc = w.contains("arcExtent") ? std::stod(w.at("arcExtent")) : 0.0;
+      EXPECT_EQ(wall->arc_extent.has_value(), arc != 0) << w.at("id");
+      if (arc != 0) {
+        EXPECT_NEAR(*wall->arc_extent, -arc * 180 / std::numbers::pi, 1e-9);
+      }
+      const bool sloped = w.contains("heightAtEnd") && w.contains("height") &&
+                          w.at("heightAtEnd") != w.at("height");
+      EXPECT_EQ(wall->height_at_end.has_value(), sloped) << w.at("id");
+      if (sloped) {  // the slope is kept: the two ends differ by what the home says
+        EXPECT_NEAR(*wall->height_at_end - wall->height,
+                    (std::stod(w.at("heightAtEnd")) - std::stod(w.at("height"))) / 100, 2e-6);
+      }
     }
     EXPECT_EQ(imported.plan.walls.size(), expected);
+    for (const Diagnostic& d : imported.warnings.items) {  // nothing flattened or cut in chords
+      EXPECT_NE(d.code, Code::import_sloped_wall) << d.message;
+      EXPECT_NE(d.code, Code::import_curved_wall) << d.message;
+      EXPECT_NE(d.code, Code::import_cut_out_shape) << d.message;
+    }
   }
 }
 
@@ -83,6 +98,28 @@ TEST(Sh3dImport, EveryItemIsAnOpeningOrASkipWarningAndPiecesAreAnnounced) {
   }
 }
 
+/// The distance from p to the line of the polyline's nearest segment (a piece cut in a wall
+/// beside the host lies across that wall's line, maybe past its end) and how far along the
+/// polyline the foot of p lies.
+std::pair<double, double> project_on(const std::vector<Point2>& line, Point2 p) {
+  std::pair<double, double> best{INFINITY, 0.0};
+  double nearest = INFINITY, start = 0;
+  for (std::size_t k = 1; k < line.size(); ++k) {
+    const Point2 a = line[k - 1], b = line[k];
+    const double L = std::hypot(b.x - a.x, b.y - a.y);
+    const double t = std::clamp(((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / L, 0.0, L);
+    const double d = std::hypot(a.x + t * (b.x - a.x) / L - p.x, a.y + t * (b.y - a.y) / L - p.y);
+    const double across = std::abs((p.x - a.x) * (b.y - a.y) - (p.y - a.y) * (b.x - a.x)) / L;
+    const double along = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / L;
+    if (d < nearest) {
+      nearest = d;
+      best = {across, start + along};
+    }
+    start += L;
+  }
+  return best;
+}
+
 TEST(Sh3dImport, EveryOpeningLiesInsideItsWallAndOnTheItem) {
   for (const fs::path& home : all_homes()) {
     SCOPED_TRACE(home.filename().string());
@@ -92,18 +129,24 @@ TEST(Sh3dImport, EveryOpeningLiesInsideItsWallAndOnTheItem) {
     for (const Opening& o : imported.plan.openings) {
       const Wall* w = find_wall(imported.plan, o.wall);
       ASSERT_NE(w, nullptr) << o.id;
+      const std::vector<Point2> line = centre_polyline(*w, chord_tolerance_of(imported.plan.site));
       EXPECT_GE(o.offset, 0.0) << o.id;
-      EXPECT_LE(o.offset + o.width, length_of(*w)) << o.id;
+      EXPECT_LE(o.offset + o.width, polyline_length(line)) << o.id;
       EXPECT_GE(o.sill, 0.0) << o.id;
-      EXPECT_LE(o.sill + o.height, w->height) << o.id;
+      EXPECT_LE(o.sill + o.height, std::max(w->height, w->height_at_end.value_or(0.0))) << o.id;
+      for (const Point2& p : o.shape) {
+        EXPECT_TRUE(p.x >= 0 && p.x <= 1 && p.y >= 0 && p.y <= 1) << o.id;
+        // Under the (sloped) top of the wall, here in doubles.
+        const double u = o.offset + p.x * o.width;
+        const double top = w->height + (w->height_at_end.value_or(w->height) - w->height) * u /
+                                           polyline_length(line);
+        EXPECT_LE(o.sill + p.y * o.height, top) << o.id;
+      }
       // The item's centre, read from the XML in centimetres with y down, lies in the wall's
       // footprint (grown by half the item's depth) and within the opening's span.
       const Attributes& item = items.contains(o.id) ? items.at(o.id) : items.at(o.id.substr(0, o.id.rfind('-')));
-      const double x = std::stod(item.at("x")) / 100, y = -std::stod(item.at("y")) / 100;
-      const double L = length_of(*w);
-      const double ux = (w->to.x - w->from.x) / L, uy = (w->to.y - w->from.y) / L;
-      const double u = (x - w->from.x) * ux + (y - w->from.y) * uy;
-      const double v = std::abs((y - w->from.y) * ux - (x - w->from.x) * uy);
+      const Point2 centre{std::stod(item.at("x")) / 100, -std::stod(item.at("y")) / 100};
+      const auto [v, u] = project_on(line, centre);
       EXPECT_LE(v, w->thickness / 2 + std::stod(item.at("depth")) / 200 + 0.01) << o.id;
       if (o.id == item.at("id")) {  // the host piece holds the centre
         EXPECT_GE(u, o.offset - 1e-9) << o.id;
@@ -111,6 +154,29 @@ TEST(Sh3dImport, EveryOpeningLiesInsideItsWallAndOnTheItem) {
       }
     }
   }
+}
+
+TEST(Sh3dImport, CutOutShapesAreTheOpeningsOutlines) {
+  // The six rounded doors of 3-BedroomHouseWithAttic ("M0,1 v-0.788 a0.5,0.2 0 1,1 1,0 v0.788
+  // z"): straight sides to 0.788 of the height, then half an ellipse up to the top.
+  const Sh3dImport imported =
+      import_or_fail(kData / "eteks-example-homes" / "3-BedroomHouseWithAttic.Home.xml");
+  std::size_t shaped = 0;
+  for (const Opening& o : imported.plan.openings) {
+    if (o.shape.empty()) continue;
+    ++shaped;
+    double area = 0, top = 0;
+    for (std::size_t i = 0; i < o.shape.size(); ++i) {
+      const Point2 a = o.shape[i], b = o.shape[(i + 1) % o.shape.size()];
+      area += (a.x * b.y - a.y * b.x) / 2;
+      top = std::max(top, a.y);
+    }
+    // 0.788 of the square and half an ellipse of radii 0.5 x 0.2 (chords within 1 mm of it).
+    EXPECT_NEAR(area, 0.788 + std::numbers::pi * 0.5 * 0.2 / 2, 1e-3) << o.id;
+    EXPECT_GT(area, 0.0) << o.id;  // counter-clockwise
+    EXPECT_NEAR(top, 0.988, 1e-6) << o.id;
+  }
+  EXPECT_EQ(shaped, 6u);
 }
 
 TEST(Sh3dImport, OpeningsDrawnSideBySideTouchExactly) {
@@ -185,7 +251,11 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   EXPECT_NEAR(window->sill, 0.87 + 0.12, 1e-6);
   const Wall* host = find_wall(imported.plan, window->wall);
   ASSERT_NE(host, nullptr);
-  EXPECT_NEAR(host->base, 1.12 - 0.12 + 1.5, 1e-9);  // the basement (-1.5 m) is raised to 0
+  // The first floor's walls reach down through its 12 cm floor; the basement (-1.5 m) is
+  // raised to 0.
+  EXPECT_EQ(host->level, "1st floor");
+  EXPECT_NEAR(host->base, -0.12, 1e-6);
+  EXPECT_NEAR(base_z(imported.plan, *host), 1.12 - 0.12 + 1.5, 1e-9);
   // A door of the basement, the lowest level: its sill is the wall's base.
   const Opening* door = find_opening(imported.plan, "doorOrWindow-a4cf284d-8a9a-4412-8654-36f2ddb6959f");
   ASSERT_NE(door, nullptr);
@@ -220,15 +290,26 @@ TEST(Sh3dImport, StoreysStandExactlyOnTheWallsBelow) {
     SCOPED_TRACE(name);
     const Plan plan =
         import_or_fail(kData / "eteks-example-homes" / (std::string(name) + ".Home.xml")).plan;
+    EXPECT_GE(plan.levels.size(), 2u);
     std::set<double> tops;
-    for (const Wall& w : plan.walls) tops.insert(w.base + w.height);  // exact on the grid
+    for (const Wall& w : plan.walls) tops.insert(base_z(plan, w) + w.height);  // exact: the grid
     std::size_t upper = 0;
     for (const Wall& w : plan.walls) {
-      if (w.base == 0.0) continue;
+      ASSERT_NE(find_level(plan, w.level), nullptr) << w.id;
+      if (base_z(plan, w) == 0.0) continue;
       ++upper;
-      EXPECT_TRUE(tops.contains(w.base)) << w.id << " base " << w.base;
+      EXPECT_TRUE(tops.contains(base_z(plan, w))) << w.id << " base " << base_z(plan, w);
+      // The floor slabs of its level fill the band it reaches down through.
+      const Level& level = *find_level(plan, w.level);
+      EXPECT_EQ(base_z(plan, w) + -w.base, level.elevation) << w.id;
     }
     EXPECT_GT(upper, 0u);
+    for (const Slab& s : plan.slabs) {
+      if (s.id.ends_with("-ceiling")) continue;
+      ASSERT_NE(find_level(plan, s.level), nullptr) << s.id;
+      EXPECT_EQ(s.top, 0.0) << s.id;
+      EXPECT_TRUE(tops.contains(top_z(plan, s) - s.thickness)) << s.id;  // on the walls below
+    }
   }
 }
 
@@ -246,32 +327,28 @@ TEST(Sh3dImport, PrefersTheWallThatHoldsTheWholeOpening) {
   EXPECT_EQ(piece->wall, "wall2");
 }
 
-TEST(Sh3dImport, CurvedWallBecomesChordsWithinTolerance) {
-  const Point2 a{6.4976215, -9.1945013}, b{0.041, -10.419019};
-  for (const double tolerance : {0.05, 0.01, 0.001}) {
-    const std::vector<Point2> p = sh3d::split_arc(a, b, 0.6981317, tolerance);
-    ASSERT_GE(p.size(), 3u);
-    EXPECT_EQ(p.front(), a);
-    EXPECT_EQ(p.back(), b);
-    // All points on one circle; every chord's sagitta within the tolerance; bulge to the left.
-    const double chord = std::hypot(b.x - a.x, b.y - a.y);
-    const double radius = chord / (2 * std::sin(0.6981317 / 2));
-    for (std::size_t k = 1; k + 1 < p.size(); ++k) {
-      const double side = (b.x - a.x) * (p[k].y - a.y) - (b.y - a.y) * (p[k].x - a.x);
-      EXPECT_GT(side, 0.0);
-      const double step = std::hypot(p[k + 1].x - p[k].x, p[k + 1].y - p[k].y);
-      EXPECT_LE(radius - std::sqrt(radius * radius - step * step / 4), tolerance * (1 + 1e-9));
-    }
-  }
-  // The two windows of 1-BedroomApartment's curved wall land on its chords.
+TEST(Sh3dImport, CurvedWallKeepsItsArcAndItsWindows) {
   const Sh3dImport imported =
       import_or_fail(kData / "eteks-example-homes" / "1-BedroomApartment.Home.xml");
+  const Wall* bow = find_wall(imported.plan, "wall7");
+  ASSERT_NE(bow, nullptr);
+  // arcExtent 0.6981317 rad bulges to the left of start -> end once y points north: that is a
+  // clockwise turn, a negative arc_extent in the plan.
+  ASSERT_TRUE(bow->arc_extent.has_value());
+  EXPECT_NEAR(*bow->arc_extent, -40.0, 1e-6);
+  const double length =
+      polyline_length(centre_polyline(*bow, chord_tolerance_of(imported.plan.site)));
+  // The two windows of the curved wall are openings of it, inside its polyline.
   for (const char* id : {"doorOrWindow-f9f28cd6-0838-41ac-8559-7fbb187976ce",
                          "doorOrWindow-224b7c32-ec5d-48e0-9938-b799e7cd7eeb"}) {
     const Opening* o = find_opening(imported.plan, id);
     ASSERT_NE(o, nullptr) << id;
-    EXPECT_TRUE(o->wall.starts_with("wall7-arc")) << o->wall;
+    EXPECT_EQ(o->wall, "wall7");
+    EXPECT_GT(o->offset, 0.0);
+    EXPECT_LT(o->offset + o->width, length);
   }
+  for (const Diagnostic& d : imported.warnings.items)
+    EXPECT_NE(d.code, Code::import_curved_wall) << d.message;
 }
 
 TEST(Sh3dImport, JoinedWallsShareTheirEndPointsExactly) {

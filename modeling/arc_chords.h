@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The chord polyline of an arc wall (plan format version 2, `arc_extent`): the wall IS this
+// polyline, so the build, validation, drawings and the importer all take it from here and
+// agree to the bit.
+#pragma once
+
+#include <vector>
+
+#include "modeling/plan.h"
+
+namespace roomcad {
+
+/// Most chords one arc is built as: a 1 km radius turning 359 degrees at 1 mm needs 2,200;
+/// beyond this count the sagitta may exceed the tolerance (a finer tolerance buys nothing).
+inline constexpr int kMaxArcChords = 4096;
+
+/// The number of equal chords of an arc of `radius` metres turning by `theta` radians: the
+/// smallest n whose sagitta radius * (1 - cos(theta / 2n)) is at most `tolerance` metres
+/// (docs/plan-format.md, "arc_extent"), at most kMaxArcChords.
+/// @pre radius > 0, 0 < |theta| < 2 pi, tolerance > 0. O(1).
+[[nodiscard]] int chord_count(double radius, double theta, double tolerance);
+
+/// The radius (metres) of the arc from `from` to `to` turning by `extent_deg` degrees.
+/// @pre from != to, 0 < |extent_deg| < 360. O(1).
+[[nodiscard]] double arc_radius(Point2 from, Point2 to, double extent_deg);
+
+/// The centre line of `wall` as the polyline it is built as: {from, to} for a straight wall;
+/// for an arc wall (`arc_extent`) the end points of its chord_count equal chords, turning
+/// counter-clockwise for a positive extent (the centre to the left of from -> to), first
+/// exactly `from` and last exactly `to`. `chord_tolerance` is the site's (or its default).
+/// @pre from != to; an arc_extent, when present, with 0 < |arc_extent| < 360.
+/// O(chords).
+[[nodiscard]] std::vector<Point2> centre_polyline(const Wall& wall, double chord_tolerance);
+
+/// @return the site's chord tolerance, or the format's default (kDefaultChordTolerance).
+[[nodiscard]] double chord_tolerance_of(const Site& site);
+
+/// @return the length (metres, in doubles) of the polyline `points`. O(points).
+[[nodiscard]] double polyline_length(const std::vector<Point2>& points);
+
+}  // namespace roomcad

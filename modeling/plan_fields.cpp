@@ -38,7 +38,7 @@ const Field<Wall> kWallFields[] = {
     {"to", &Wall::to, metre, Check::finite, required, 0, "the end of the centre line, x,y"},
     {"thickness", &Wall::thickness, metre, Check::positive, optional, 0.25, kMetres},
     {"height", &Wall::height, metre, Check::positive, optional, 2.8, "metres (at from)"},
-    {"base", &Wall::base, metre, Check::non_negative, optional, 0.0, "metres above its level"},
+    {"base", &Wall::base, metre, Check::level_offset, optional, 0.0, "metres above its level"},
     {"height_at_end", &Wall::height_at_end, metre, Check::positive, version2, 2.8,
      "metres at to (a sloped top)"},
     {"arc_extent", &Wall::arc_extent, degree, Check::turn, version2, 90,

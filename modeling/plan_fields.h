@@ -30,6 +30,8 @@ enum class Check : std::uint8_t {
   finite,        ///< any finite number
   positive,      ///< > 0
   non_negative,  ///< >= 0
+  level_offset,  ///< a wall's base: >= 0 without a level; on a level any finite number (a
+                 ///< wall reaching down through its level's floor), its absolute z >= 0
   unit_interval, ///< in [0, 1] (ambient)
   non_zero,      ///< a direction other than (0, 0, 0)
   turn,          ///< an arc's extent: 0 < |x| < 360 degrees

@@ -9,17 +9,16 @@
 
 #include "modeling/joins.h"
 #include "validation/detail/checks.h"
+#include "validation/detail/resolved_plan.h"
 
 namespace roomcad {
 namespace {
 
-/// The plan the geometry checks see: walls that failed a value check are made to join
-/// nothing (NaN ends), so a bad thickness cannot bend a good wall's mitre.
-Plan geometry_plan(const Plan& plan, const detail::Usable& usable) {
-  Plan copy = plan;
-  for (std::size_t w = 0; w < copy.walls.size(); ++w)
-    if (!usable.walls[w]) copy.walls[w].from = copy.walls[w].to = {NAN, NAN};
-  return copy;
+/// Walls that failed a value check are made to join nothing (NaN ends), so a bad thickness
+/// cannot bend a good wall's mitre.
+void isolate_unusable(Plan& plan, const std::vector<bool>& usable) {
+  for (std::size_t w = 0; w < plan.walls.size(); ++w)
+    if (!usable[w]) plan.walls[w].from = plan.walls[w].to = {NAN, NAN};
 }
 
 }  // namespace
@@ -28,21 +27,19 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   Report report;
   detail::Usable usable = detail::check_values(plan, report);
   detail::check_ids(plan, usable, report);
-  const bool all_walls_usable =
-      std::all_of(usable.walls.begin(), usable.walls.end(), [](bool ok) { return ok; });
-  const Joins joins = find_joins(plan);
+  // Geometry is judged on the plan as built: levels resolved, arcs as their chords.
+  detail::ResolvedPlan resolved = detail::resolve_plan(plan, usable);
+  isolate_unusable(resolved.plan, resolved.usable.walls);
+  const Joins joins = find_joins(resolved.plan);
   // Rooms take about as long as all the other checks: find them on the second core while
   // those run (they only read the plan). Their warnings are added below, in a fixed place,
   // so the report does not depend on timing.
   std::future<std::vector<Room>> rooms;
   if (options.room_warnings)
-    rooms = std::async(std::launch::async, [&plan, &joins] { return detail::find_rooms(plan, joins); });
-  if (all_walls_usable) {
-    detail::check_geometry(plan, joins, usable, report);
-  } else {
-    const Plan geometry = geometry_plan(plan, usable);
-    detail::check_geometry(geometry, find_joins(geometry), usable, report);
-  }
+    rooms = std::async(std::launch::async, [&resolved, &joins] {
+      return detail::find_rooms(resolved.plan, joins);
+    });
+  detail::check_geometry(plan, usable, resolved, joins, report);
   const bool has_errors = !report.ok();
   detail::check_warnings(plan, options, report);
   // Rooms are only meaningful on a plan whose walls are sound: with errors, say nothing more.

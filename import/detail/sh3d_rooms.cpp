@@ -9,6 +9,7 @@
 
 #include "import/detail/sh3d_cut_out.h"
 #include "import/detail/sh3d_walls.h"
+#include "modeling/polygon_predicates.h"
 
 namespace roomcad::sh3d {
 namespace {
@@ -66,11 +67,16 @@ std::vector<Slab> make_slabs(const Home& home, const std::vector<RoomRecord>& ro
     const RoomRecord& room = rooms[k];
     const std::string id = room.id.empty() ? fmt::format("room{}", k + 1) : room.id;
     const Polygon outline = outline_of(room);
-    if (outline.empty()) {
+    if (outline.empty() || !is_simple_polygon(outline)) {
       warnings.add(import_warning(
           Code::import_skipped_element, id,
-          fmt::format("room '{}' ({}) encloses no area; it has no floor or ceiling slab", id,
-                      room.name)));
+          outline.empty()
+              ? fmt::format("room '{}' ({}) encloses no area; it has no floor or ceiling slab",
+                            id, room.name)
+              : fmt::format("the outline of room '{}' ({}) crosses or runs back along itself "
+                            "(as a slit drawn around a stair well does), which a slab's outline "
+                            "may not; it has no floor or ceiling slab (redraw the well as a "
+                            "hole: roomcad set ... holes=...)", id, room.name)));
       continue;
     }
     const PlacedLevel* level = find_placed(levels, room.level);

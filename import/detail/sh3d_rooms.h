@@ -23,7 +23,8 @@ inline constexpr double kDefaultFloorThicknessCm = 12.0;
 ///   `<room id>-ceiling` on the room's level from its height up by its floor thickness (12 cm
 ///   without levels), so that a top storey is closed as drawn.
 /// Outlines are counter-clockwise, repeated points dropped; a room of fewer than 3 distinct
-/// points or no area is left out with an `import_skipped_element` warning.
+/// points, no area, or an outline that is not simple (a slit around a stair well) is left out
+/// with an `import_skipped_element` warning.
 /// `base_z` is the z of the floor of a home without levels. O(rooms^2).
 [[nodiscard]] std::vector<Slab> make_slabs(const Home& home, const std::vector<RoomRecord>& rooms,
                                            const std::vector<PlacedLevel>& levels, double base_z,

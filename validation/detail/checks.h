@@ -18,6 +18,7 @@ struct Usable {
   bool site = false;                            ///< origin, cells, cell_size, max_height finite/positive
   std::vector<bool> walls;                      ///< by index into Plan::walls
   std::vector<std::optional<std::size_t>> host; ///< by opening: its host wall, if both are usable
+  std::vector<bool> slabs;                      ///< by index into Plan::slabs
 };
 
 /// invalid_value for every number, size and direction of the plan (no geometry).
@@ -28,9 +29,14 @@ struct Usable {
 /// O(n log n).
 void check_ids(const Plan& plan, Usable& usable, Report& report);
 
-/// wall_overlap and out_of_bounds on usable walls; opening_outside_wall, opening_overlap and
-/// opening_blocked on usable openings. O(n log n + k).
-void check_geometry(const Plan& plan, const Joins& joins, const Usable& usable, Report& report);
+struct ResolvedPlan;
+
+/// wall_overlap and out_of_bounds on usable walls (of `resolved`, with its `joins`);
+/// opening_outside_wall and opening_overlap on the usable openings of `plan` (judged on their
+/// walls' polylines and sloped tops), opening_blocked on `resolved`'s; slab_overlap,
+/// opening_blocked by slabs and out_of_bounds of slabs and levels. O(n log n + k).
+void check_geometry(const Plan& plan, const Usable& usable, const ResolvedPlan& resolved,
+                    const Joins& joins, Report& report);
 
 /// unknown_field (if asked) and door_above_floor warnings. O(n).
 void check_warnings(const Plan& plan, const ValidateOptions& options, Report& report);

@@ -12,6 +12,9 @@
 
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
+#include "modeling/arc_chords.h"
+#include "modeling/polygon_predicates.h"
+#include "validation/detail/resolved_plan.h"
 #include "validation/detail/shapes.h"
 
 namespace roomcad::detail {
@@ -45,24 +48,86 @@ struct Misfit {
   std::string fix;
 };
 
-std::vector<Misfit> find_misfits(const Wall& w, const Opening& o) {
+/// The corners of an opening's outline in its unit square: its shape, or the rectangle's.
+const Polygon& outline_of(const Opening& o) {
+  static const Polygon kRectangle{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  return o.shape.empty() ? kRectangle : o.shape;
+}
+
+/// A wall as the openings see it: its centre line (an arc's chords) and its length along it.
+struct Host {
+  const Wall& wall;
+  std::vector<Point2> line;
+  double length;  ///< doubles, for messages
+};
+
+Host host_of(const Plan& plan, const Wall& w) {
+  std::vector<Point2> line = centre_polyline(w, chord_tolerance_of(plan.site));
+  const double length = polyline_length(line);
+  return {w, std::move(line), length};
+}
+
+/// The exact length of the host's polyline.
+template <class NT>
+NT exact_length(const Host& h) {
+  NT length(0);
+  for (std::size_t k = 1; k < h.line.size(); ++k) {
+    const exact::Pt<NT> d = exact::to_pt<NT>(h.line[k]) - exact::to_pt<NT>(h.line[k - 1]);
+    length = length + exact::root(exact::dot(d, d));
+  }
+  return length;
+}
+
+/// How far (doubles) the outline of `o` reaches above the host's (sloped) top, at most.
+double height_over_top(const Host& h, const Opening& o) {
+  const double rise = h.wall.height_at_end.value_or(h.wall.height) - h.wall.height;
+  double over = -INFINITY;
+  for (const Point2& p : outline_of(o)) {
+    const double u = o.offset + p.x * o.width;
+    over = std::max(over, o.sill + p.y * o.height - (h.wall.height + rise * u / h.length));
+  }
+  return over;
+}
+
+std::vector<Misfit> find_misfits(const Host& h, const Opening& o) {
+  const Wall& w = h.wall;
+  const Polygon& outline = outline_of(o);
   std::vector<Misfit> out;
-  const double length = length_of(w);
-  const bool starts_in = exact::decide([&](auto tag) { return decltype(tag)(o.offset) >= 0; });
-  const bool ends_in = exact::decide([&](auto tag) {
-    using NT = decltype(tag);
-    const exact::Pt<NT> d = exact::to_pt<NT>(w.to) - exact::to_pt<NT>(w.from);
-    return NT(o.offset) + NT(o.width) <= exact::root(exact::dot(d, d));
+  const double length = h.length;
+  double u_lo = INFINITY, u_hi = -INFINITY;
+  for (const Point2& p : outline) {
+    u_lo = std::min(u_lo, o.offset + p.x * o.width);
+    u_hi = std::max(u_hi, o.offset + p.x * o.width);
+  }
+  // Each side is decided exactly at the outline's corners: the wall's face is convex (a
+  // trapezoid under a sloped top), so the outline is inside it iff its corners are.
+  const auto all_corners = [&](auto&& inside) {
+    return std::all_of(outline.begin(), outline.end(), [&](const Point2& p) {
+      return exact::decide([&](auto tag) { return inside(decltype(tag)(), p); });
+    });
+  };
+  const bool starts_in = all_corners([&](auto nt, const Point2& p) {
+    using NT = decltype(nt);
+    return NT(o.offset) + NT(p.x) * NT(o.width) >= NT(0);
   });
-  const bool top_in = exact::decide([&](auto tag) {
-    using NT = decltype(tag);
-    return NT(o.sill) + NT(o.height) <= NT(w.height);
+  const bool ends_in = all_corners([&](auto nt, const Point2& p) {
+    using NT = decltype(nt);
+    return NT(o.offset) + NT(p.x) * NT(o.width) <= exact_length<NT>(h);
+  });
+  const bool top_in = all_corners([&](auto nt, const Point2& p) {
+    using NT = decltype(nt);
+    const NT v = NT(o.sill) + NT(p.y) * NT(o.height);
+    if (!w.height_at_end) return v <= NT(w.height);
+    // v <= height + rise * u / length, multiplied out by the (positive) length.
+    const NT u = NT(o.offset) + NT(p.x) * NT(o.width);
+    const NT rise = NT(*w.height_at_end) - NT(w.height);
+    return (v - NT(w.height)) * exact_length<NT>(h) <= rise * u;
   });
   if (!starts_in)
-    out.push_back({fmt::format("starts {} before the start of {}", metres(-o.offset), name_of(w)),
-                   fmt::format("move it {} toward the end (offset 0)", metres_at_least(-o.offset))});
+    out.push_back({fmt::format("starts {} before the start of {}", metres(-u_lo), name_of(w)),
+                   fmt::format("move it {} toward the end", metres_at_least(-u_lo))});
   if (!ends_in) {
-    const double past = o.offset + o.width - length;
+    const double past = u_hi - length;
     const double fits = length - std::max(o.offset, 0.0);
     out.push_back({fmt::format("ends {} past the end of {} ({} long)", metres(past), name_of(w),
                                metres(length)),
@@ -72,17 +137,20 @@ std::vector<Misfit> find_misfits(const Wall& w, const Opening& o) {
                        : fmt::format("make it at most {} wide", metres_at_most(fits))});
   }
   if (!top_in) {
-    const double over = o.sill + o.height - w.height;
-    out.push_back({fmt::format("reaches {} above the top of {} ({} high)", metres(over),
-                               name_of(w), metres(w.height)),
+    const double over = height_over_top(h, o);
+    const std::string top = w.height_at_end
+        ? fmt::format("{} to {} high, sloped", metres(w.height), metres(*w.height_at_end))
+        : fmt::format("{} high", metres(w.height));
+    out.push_back({fmt::format("reaches {} above the top of {} ({})", metres(over),
+                               name_of(w), top),
                    fmt::format("make it {} high or lower its sill by that much",
                                metres_at_most(o.height - over))});
   }
   return out;
 }
 
-void check_fit(const Wall& w, const Opening& o, Report& report) {
-  const std::vector<Misfit> misfits = find_misfits(w, o);
+void check_fit(const Plan& plan, const Wall& w, const Opening& o, Report& report) {
+  const std::vector<Misfit> misfits = find_misfits(host_of(plan, w), o);
   if (misfits.empty()) return;
   std::vector<std::string> problems, fixes;
   for (const Misfit& m : misfits) {
@@ -94,7 +162,8 @@ void check_fit(const Wall& w, const Opening& o, Report& report) {
                              fmt::format("{}", fmt::join(fixes, "; ")), opening_where(w, o)));
 }
 
-bool rectangles_overlap(const Opening& a, const Opening& b) {
+bool openings_overlap(const Opening& a, const Opening& b) {
+  if (!a.shape.empty() || !b.shape.empty()) return outlines_overlap(a, b);
   return exact::decide([&](auto tag) {
     using NT = decltype(tag);
     return static_cast<bool>(spans_overlap(NT(a.offset), NT(a.offset) + NT(a.width),
@@ -133,7 +202,7 @@ void check_overlapping_openings(const Plan& plan, const Usable& usable, Report& 
     for (std::size_t j = i + 1; j < order.size() && usable.host[order[j]] == usable.host[order[i]] &&
                                 plan.openings[order[j]].offset < end;
          ++j)
-      if (rectangles_overlap(a, plan.openings[order[j]]))
+      if (openings_overlap(a, plan.openings[order[j]]))
         report_opening_overlap(plan.walls[*usable.host[order[i]]], a, plan.openings[order[j]], report);
   }
 }
@@ -145,7 +214,7 @@ bool is_blocked_by(const Plan& plan, const Footprints& fp, const Opening& o, std
   return exact::decide([&](auto tag) {
     using NT = decltype(tag);
     const NT bottom = NT(h.base) + NT(o.sill);
-    if (!spans_overlap(bottom, bottom + NT(o.height), NT(x.base), NT(x.base) + NT(x.height)))
+    if (!spans_overlap(bottom, bottom + NT(o.height), NT(x.base), NT(x.base) + NT(highest_height(x))))
       return false;
     return interiors_overlap(hole_corners<NT>(h, o), fp.get<NT>(other));
   });
@@ -185,8 +254,10 @@ void report_blocked(const Plan& plan, const Joins& joins, const Opening& o, std:
       clearing_fix(h, o, blocker, x), bounds_where(hole)));
 }
 
-void check_blocked_openings(const Plan& plan, const Joins& joins, const Footprints& fp,
-                            const Usable& usable, Report& report) {
+void check_blocked_openings(const ResolvedPlan& r, const Joins& joins, const Footprints& fp,
+                            Report& report) {
+  const Plan& plan = r.plan;
+  const Usable& usable = r.usable;
   std::vector<Box2> holes;
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     if (!usable.host[i]) continue;
@@ -195,19 +266,21 @@ void check_blocked_openings(const Plan& plan, const Joins& joins, const Footprin
   }
   for (const auto& [i, other] : find_meeting_boxes(holes, fp.boxes())) {
     const std::size_t host = *usable.host[i];
-    if (other != host && is_blocked_by(plan, fp, plan.openings[i], host, other))
+    // The chords of an arc wall carry its openings' holes along the arc: not blockers.
+    if (r.source_wall[other] != r.source_wall[host] &&
+        is_blocked_by(plan, fp, plan.openings[i], host, other))
       report_blocked(plan, joins, plan.openings[i], host, other, report);
   }
 }
 
 }  // namespace
 
-void check_openings(const Plan& plan, const Joins& joins, const Footprints& footprints,
-                    const Usable& usable, Report& report) {
+void check_openings(const Plan& plan, const Usable& usable, const ResolvedPlan& resolved,
+                    const Joins& joins, const Footprints& footprints, Report& report) {
   for (std::size_t i = 0; i < plan.openings.size(); ++i)
-    if (usable.host[i]) check_fit(plan.walls[*usable.host[i]], plan.openings[i], report);
+    if (usable.host[i]) check_fit(plan, plan.walls[*usable.host[i]], plan.openings[i], report);
   check_overlapping_openings(plan, usable, report);
-  check_blocked_openings(plan, joins, footprints, usable, report);
+  check_blocked_openings(resolved, joins, footprints, report);
 }
 
 }  // namespace roomcad::detail

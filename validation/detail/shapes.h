@@ -129,9 +129,17 @@ std::pair<double, Point2> penetration(const std::array<Point2, 4>& p,
                                       const std::array<Point2, 4>& q);
 
 struct Usable;
+struct ResolvedPlan;
 
-/// opening_outside_wall, opening_overlap and opening_blocked (opening_checks.cpp).
-void check_openings(const Plan& plan, const Joins& joins, const Footprints& footprints,
-                    const Usable& usable, Report& report);
+/// opening_outside_wall and opening_overlap on the usable openings of `plan` (on their walls'
+/// polylines, under their sloped tops, by their outlines); opening_blocked on `resolved`'s
+/// pieces by other walls (opening_checks.cpp).
+void check_openings(const Plan& plan, const Usable& usable, const ResolvedPlan& resolved,
+                    const Joins& joins, const Footprints& footprints, Report& report);
+
+/// slab_overlap, opening_blocked by slabs, out_of_bounds of slabs and levels, and
+/// invalid_value for slab outlines and holes that are not simple or not nested (slab_checks.cpp).
+void check_slabs(const Plan& plan, const Usable& usable, const ResolvedPlan& resolved,
+                 const Joins& joins, const Footprints& footprints, Report& report);
 
 }  // namespace roomcad::detail

@@ -10,6 +10,7 @@
 #include "modeling/plan_fields.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
+#include "modeling/polygon_predicates.h"
 
 namespace roomcad::detail {
 namespace {
@@ -166,7 +167,13 @@ bool check_site(const Site& s, Report& report) {
 
 bool check_wall(const Wall& w, std::size_t i, Report& report) {
   FieldChecker c(report, "wall", "walls", i, w.id);
-  const bool ok = c.check_fields(w);
+  bool ok = c.check_fields(w);
+  // Below its level's floor is where a wall of a level may start (docs/plan-format.md, "What
+  // roomcad decides"); a wall without a level stands on z = 0 or above.
+  if (w.level.empty() && std::isfinite(w.base) && w.base < 0)
+    ok = c.fail("base", fmt::format("{}", w.base), "a number of at least 0 (a wall without a level)",
+                fmt::format("set base of wall '{}' to 0 or more, or put the wall on a level",
+                            w.id));
   const bool ends = std::isfinite(w.from.x) && std::isfinite(w.from.y) &&
                     std::isfinite(w.to.x) && std::isfinite(w.to.y);
   if (ends && w.from == w.to)
@@ -185,6 +192,44 @@ void check_camera(const Camera& cam, std::size_t i, Report& report) {
   else if (cam.projection == Projection::orthographic &&
            !(std::isfinite(cam.view_height) && cam.view_height > 0))
     c.fail("view_height", fmt::format("{}", cam.view_height), "a positive number (e.g. 10)");
+}
+
+/// invalid_value for a slab whose outline or holes are not simple, or whose holes are not
+/// strictly inside the outline and apart (docs/plan-format.md, "slabs[]"). @return good.
+bool check_slab_polygons(const Slab& slab, std::size_t i, Report& report) {
+  FieldChecker c(report, "slab", "slabs", i, slab.id);
+  if (!is_simple_polygon(slab.outline))
+    return c.fail("outline", "a polygon whose edges cross or touch", "a simple polygon",
+                  fmt::format("redraw the outline of slab '{}' so that its edges meet only at "
+                              "their shared corners", slab.id));
+  for (std::size_t h = 0; h < slab.holes.size(); ++h) {
+    const std::string field = fmt::format("holes[{}]", h);
+    if (!is_simple_polygon(slab.holes[h]))
+      return c.fail(field, "a polygon whose edges cross or touch", "a simple polygon");
+    if (!is_strictly_inside(slab.holes[h], slab.outline))
+      return c.fail(field, "not strictly inside the outline", "strictly inside the outline",
+                    fmt::format("move or shrink hole {} of slab '{}' inside its outline, off "
+                                "its edges", h, slab.id));
+    for (std::size_t k = 0; k < h; ++k)
+      if (!are_disjoint(slab.holes[h], slab.holes[k]))
+        return c.fail(field, fmt::format("meeting holes[{}]", k), "apart from the other holes",
+                      fmt::format("merge holes {} and {} of slab '{}' into one", k, h, slab.id));
+  }
+  return true;
+}
+
+/// invalid_value for an opening's shape that is not a simple polygon in the unit square.
+bool check_shape(const Opening& o, std::size_t i, Report& report) {
+  if (o.shape.empty()) return true;
+  FieldChecker c(report, to_string(o.type), "openings", i, o.id);
+  for (const Point2& p : o.shape)
+    if (!(p.x >= 0 && p.x <= 1 && p.y >= 0 && p.y <= 1))
+      return c.fail("shape", fmt::format("a polygon with the corner [{}, {}]", p.x, p.y),
+                    "a polygon in the unit square [0, 1] x [0, 1]");
+  return is_simple_polygon(o.shape) ||
+         c.fail("shape", "a polygon whose edges cross or touch", "a simple polygon",
+                fmt::format("redraw the shape of '{}' so that its edges meet only at their "
+                            "shared corners", o.id));
 }
 
 /// Checks each object of a list by its table. @return which were good.
@@ -209,10 +254,13 @@ Usable check_values(const Plan& plan, Report& report) {
   usable.host.assign(plan.openings.size(), std::nullopt);
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     const Opening& o = plan.openings[i];
-    if (FieldChecker(report, to_string(o.type), "openings", i, o.id).check_fields(o))
+    if (FieldChecker(report, to_string(o.type), "openings", i, o.id).check_fields(o) &&
+        check_shape(o, i, report))
       usable.host[i] = 0;  // the host is set by check_ids
   }
-  (void)check_list(plan.slabs, "slab", "slabs", report);
+  usable.slabs = check_list(plan.slabs, "slab", "slabs", report);
+  for (std::size_t i = 0; i < plan.slabs.size(); ++i)
+    if (usable.slabs[i]) usable.slabs[i] = check_slab_polygons(plan.slabs[i], i, report);
   (void)check_list(plan.lights, "light", "lights", report);
   for (std::size_t i = 0; i < plan.cameras.size(); ++i) check_camera(plan.cameras[i], i, report);
   return usable;

@@ -6,12 +6,14 @@
 // Every verdict is exact (exact::decide); distances in messages are doubles.
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include <fmt/format.h>
 
 #include "modeling/detail/segment_predicates.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
+#include "validation/detail/resolved_plan.h"
 #include "validation/detail/shapes.h"
 
 namespace roomcad::detail {
@@ -57,8 +59,8 @@ bool solids_overlap(const Plan& plan, const Footprints& fp, std::size_t a, std::
   const Wall& wb = plan.walls[b];
   return exact::decide([&](auto tag) {
     using NT = decltype(tag);
-    if (!spans_overlap(NT(wa.base), NT(wa.base) + NT(wa.height), NT(wb.base),
-                       NT(wb.base) + NT(wb.height)))
+    if (!spans_overlap(NT(wa.base), NT(wa.base) + NT(highest_height(wa)), NT(wb.base),
+                       NT(wb.base) + NT(highest_height(wb))))
       return false;
     return interiors_overlap(fp.get<NT>(a), fp.get<NT>(b));
   });
@@ -69,18 +71,26 @@ Box2 common_box(const Box2& p, const Box2& q) {
           std::min(p.max_y, q.max_y), 0};
 }
 
-void check_overlaps(const Plan& plan, const Joins& joins, const Footprints& fp, Report& report) {
+void check_overlaps(const ResolvedPlan& r, const Joins& joins, const Footprints& fp,
+                    Report& report) {
+  const Plan& plan = r.plan;
   std::vector<const Box2*> box_of_wall(plan.walls.size(), nullptr);
   for (const Box2& b : fp.boxes()) box_of_wall[b.index] = &b;
+  std::set<std::pair<std::size_t, std::size_t>> reported;  // by input wall: arcs once
   for (const auto& [a, b] : find_meeting_boxes(fp.boxes())) {
+    const std::pair<std::size_t, std::size_t> walls = std::minmax(r.source_wall[a], r.source_wall[b]);
+    if (walls.first == walls.second || reported.contains(walls)) continue;  // one arc's chords
     const Wall& wa = plan.walls[a];
     const Wall& wb = plan.walls[b];
     if (joins.are_joined(a, b)) {
-      if (overlap_collinearly(wa.from, wa.to, wb.from, wb.to))
+      if (overlap_collinearly(wa.from, wa.to, wb.from, wb.to)) {
+        reported.insert(walls);
         report_shared_centre_line(wa, wb, report);
+      }
       continue;
     }
     if (!solids_overlap(plan, fp, a, b)) continue;
+    reported.insert(walls);
     report_overlap(wa, wb, approximate_footprint(plan, joins, a), approximate_footprint(plan, joins, b),
                    common_box(*box_of_wall[a], *box_of_wall[b]), report);
   }
@@ -150,16 +160,17 @@ void report_outside_site(const Plan& plan, const std::array<Point2, 4>& f, const
 bool is_under_max_height(const Site& s, const Wall& w) {
   return exact::decide([&](auto tag) {
     using NT = decltype(tag);
-    return NT(w.base) + NT(w.height) <= NT(s.max_height);
+    return NT(w.base) + NT(highest_height(w)) <= NT(s.max_height);
   });
 }
 
 void report_too_high(const Site& s, const Wall& w, const std::array<Point2, 4>& f,
                      Report& report) {
+  const double height = highest_height(w);
   report.add(make_diagnostic(
       Severity::error, Code::out_of_bounds, {w.id},
       fmt::format("{} rises to {} (base {} + height {}), above the site's max_height {}.",
-                  name_of(w), metres(w.base + w.height), metres(w.base), metres(w.height),
+                  name_of(w), metres(w.base + height), metres(w.base), metres(height),
                   metres(s.max_height)),
       fmt::format("lower its height to {} or less, or raise site.max_height",
                   metres_at_most(std::max(s.max_height - w.base, 0.0))),
@@ -167,25 +178,45 @@ void report_too_high(const Site& s, const Wall& w, const std::array<Point2, 4>& 
                 std::max({f[0].x, f[1].x, f[2].x, f[3].x}), std::max({f[0].y, f[1].y, f[2].y, f[3].y}))));
 }
 
-void check_bounds(const Plan& plan, const Joins& joins, const Footprints& fp, std::size_t w,
-                  Report& report) {
+void report_below_ground(const Wall& w, const std::array<Point2, 4>& f, Report& report) {
+  report.add(make_diagnostic(
+      Severity::error, Code::out_of_bounds, {w.id},
+      fmt::format("{} starts at z = {}, below the site's floor (z = 0).", name_of(w),
+                  metres(w.base)),
+      fmt::format("raise its base by {}, or raise its level", metres_at_least(-w.base)),
+      box_where(std::min({f[0].x, f[1].x, f[2].x, f[3].x}), std::min({f[0].y, f[1].y, f[2].y, f[3].y}),
+                std::max({f[0].x, f[1].x, f[2].x, f[3].x}), std::max({f[0].y, f[1].y, f[2].y, f[3].y}))));
+}
+
+/// out_of_bounds of wall w; a chord of an arc wall `reported` already is not reported again.
+void check_bounds(const ResolvedPlan& r, const Joins& joins, const Footprints& fp,
+                  std::size_t w, std::vector<bool>& reported, Report& report) {
+  const Plan& plan = r.plan;
   const bool inside = is_inside_site(plan.site, fp, w);
   const bool low = is_under_max_height(plan.site, plan.walls[w]);
-  if (inside && low) return;
+  const bool above_ground = plan.walls[w].base >= 0;  // absolute: the levels are resolved
+  if ((inside && low && above_ground) || reported[r.source_wall[w]]) return;
+  reported[r.source_wall[w]] = true;
   const std::array<Point2, 4> f = approximate_footprint(plan, joins, w);
   if (!inside) report_outside_site(plan, f, plan.walls[w], report);
   if (!low) report_too_high(plan.site, plan.walls[w], f, report);
+  if (!above_ground) report_below_ground(plan.walls[w], f, report);
 }
 
 }  // namespace
 
-void check_geometry(const Plan& plan, const Joins& joins, const Usable& usable, Report& report) {
-  const Footprints fp(plan, joins, usable.walls);
-  check_overlaps(plan, joins, fp, report);
-  if (usable.site)
-    for (std::size_t w = 0; w < plan.walls.size(); ++w)
-      if (usable.walls[w]) check_bounds(plan, joins, fp, w, report);
-  check_openings(plan, joins, fp, usable, report);
+void check_geometry(const Plan& plan, const Usable& usable, const ResolvedPlan& resolved,
+                    const Joins& joins, Report& report) {
+  const Plan& g = resolved.plan;
+  const Footprints fp(g, joins, resolved.usable.walls);
+  check_overlaps(resolved, joins, fp, report);
+  if (usable.site) {
+    std::vector<bool> reported(plan.walls.size(), false);
+    for (std::size_t w = 0; w < g.walls.size(); ++w)
+      if (resolved.usable.walls[w]) check_bounds(resolved, joins, fp, w, reported, report);
+  }
+  check_openings(plan, usable, resolved, joins, fp, report);
+  check_slabs(plan, usable, resolved, joins, fp, report);
 }
 
 }  // namespace roomcad::detail

@@ -16,6 +16,7 @@ struct ImportArgs {
   std::string home;
   std::string output;
   std::string level;  ///< empty: every level
+  bool ceilings = false;
   std::optional<double> chord_tolerance;  ///< unset: the format's default
 };
 
@@ -23,6 +24,7 @@ int run_import(const ImportArgs& args) {
   Sh3dImportOptions options;
   if (!args.level.empty()) options.level = args.level;
   options.chord_tolerance = args.chord_tolerance;
+  options.ceilings = args.ceilings;
   const Result<Sh3dImport> imported = import_sweethome3d_file(args.home, options);
   if (!imported) {
     report_failure("import", imported.error());
@@ -48,11 +50,14 @@ void add_import_command(CLI::App& root, Commands& commands) {
       "import",
       "Import a Sweet Home 3D home (its Home.xml, or a .sh3d file) as a plan: its levels, walls "
       "(sloped and curved as drawn), doors and windows (with their cut-out shapes) and rooms "
-      "(floor and ceiling slabs). What cannot be represented (doors and windows that fit no "
+      "(floor slabs; ceilings with --ceilings). What cannot be represented (doors and windows that fit no "
       "wall, walls of no length) is reported as warnings naming the wall or item.");
   app->add_option("home", args->home, "Sweet Home 3D Home.xml or .sh3d file")->required();
   app->add_option("-o,--output", args->output, "plan JSON file to write")->required();
   app->add_option("--level", args->level, "import only the level with this name");
+  app->add_flag("--ceilings", args->ceilings,
+                "Also import the rooms' ceilings as slabs where no floor above covers them "
+                "(closes the top storey; Sweet Home 3D shows ceilings from below only)");
   app->add_option("--chord-tolerance", args->chord_tolerance,
                   "site.chord_tolerance of the plan: largest distance in metres between a curved "
                   "wall and its chords (default 0.001, the format's, left unwritten)")

@@ -27,6 +27,7 @@ struct RenderArgs {
   double fov = 50.0, view_height = 10.0;
   std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";
   std::string parts = "walls,floor,fixtures", cull = "back", frustum_cull = "on";
+  std::string level;  ///< render only this level; empty: all
   bool stats = false, force = false;
 };
 
@@ -141,7 +142,9 @@ int run_render(const RenderArgs& a) {
   // The validation gate: errors stop the render unless --force.
   const LoadedPlan loaded = load_valid_plan("render", a.plan, a.force);
   if (!loaded.plan) return loaded.exit_status;
-  const Plan& plan = *loaded.plan;
+  const Result<Plan> level = select_level(*loaded.plan, a.level);
+  if (!level) return report_failure("render", level.error());
+  const Plan& plan = level.value();
   const RenderOptions options = make_options(a, plan);  // PreconditionError: main reports it
   if (plan.lights.size() > static_cast<std::size_t>(kMaxLights)) {
     std::fprintf(stderr, "roomcad render: warning: %s has %zu lights; the first %d are drawn\n",
@@ -184,6 +187,9 @@ void add_render_command(CLI::App& root, Commands& commands) {
   app->add_option("--projection", args->projection, "perspective or orthographic")->capture_default_str();
   app->add_option("--view-height", args->view_height, "Metres seen vertically (orthographic)")
       ->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--level", args->level,
+                  "Render only the level with this id (its walls, openings and slabs, at their "
+                  "height)");
   app->add_option("--view", args->view, "Frame the model from front|back|left|right|top|iso (default iso)");
   app->add_option("--shading", args->shading, "unlit, flat, gouraud or phong")->capture_default_str();
   app->add_option("--shadows", args->shadows, "off, hard or pcf")->capture_default_str();

@@ -15,7 +15,7 @@ namespace roomcad::cli {
 namespace {
 
 struct ViewArgs {
-  std::string plan, camera, view = "iso", keys, screenshot;
+  std::string plan, camera, view = "iso", keys, screenshot, level;
   int width = 1280, height = 720, frames = 1, threads = 0;
   bool no_overlay = false;
 };
@@ -31,6 +31,8 @@ Result<ViewerOptions> make_options(const ViewArgs& a, const Plan& plan) {
     return Result<ViewerOptions>::failure(Code::usage_error,
         fmt::format("--view '{}': expected one of front, back, left, right, top, iso", a.view));
   o.view = *preset;
+  if (const Result<Plan> level = select_level(plan, a.level); !level) return level.error();
+  o.level = a.level;
   if (a.camera.empty()) return o;
   for (const Camera& c : plan.cameras)
     if (c.id == a.camera) o.camera = c;
@@ -72,6 +74,8 @@ void add_view_command(CLI::App& root, Commands& commands) {
                   "Show --frames frames, save the window's content as this PNG and close");
   app->add_option("--frames", args->frames, "Frames shown before the screenshot")
       ->check(CLI::Range(1, 1000))->capture_default_str();
+  app->add_option("--level", args->level,
+                  "Start showing only the level with this id ('l' steps through the levels)");
   app->add_flag("--no-overlay", args->no_overlay, "Start without the text overlay ('o' toggles it)");
   app->add_option("--threads", args->threads, "Render threads, 0 = all cores")->check(CLI::NonNegativeNumber);
   app->footer("Keys:\n" + key_help());

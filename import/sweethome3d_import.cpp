@@ -204,7 +204,8 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
         file, home.walls.size()));
   const sh3d::Placement placement{levels, z_shift_cm, wall_options.chord_tolerance, nullptr};
   out.plan.openings = sh3d::place_openings(home.items, walls, placement, out.warnings);
-  out.plan.slabs = sh3d::make_slabs(home, home.rooms, levels, sh3d::z_of(z_shift_cm), out.warnings);
+  out.plan.slabs = sh3d::make_slabs(home, home.rooms, levels, sh3d::z_of(z_shift_cm),
+                                    options.ceilings, out.warnings);
   if (out.plan.slabs.size() > kMaxPlanObjects)
     return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(
         file, out.plan.walls.size(), out.plan.slabs.size(), "walls and", "slabs"));

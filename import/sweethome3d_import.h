@@ -11,8 +11,8 @@
 // - each `<doorOrWindow>` becomes an opening of the wall that holds it (found by geometry: see
 //   sh3d::place_openings), width along the wall, sill from its elevation, its cut-out shape
 //   as its `shape`, and of every other wall it passes through (`<id>-2`, ...);
-// - each `<room>` becomes a floor slab on the levels above the lowest, and a ceiling slab
-//   where no floor above covers it (sh3d::make_slabs);
+// - each `<room>` becomes a floor slab on the levels above the lowest, and (`ceilings`) a
+//   ceiling slab where no floor above covers it (sh3d::make_slabs);
 // - z values and opening edges lie on a 2^-20 m grid, so that `base + height`, `offset + width`
 //   and `sill + height` are exact: what touches in the home touches exactly in the plan;
 // - the whole home is raised so that its lowest level stands at z = 0 (a basement below ground
@@ -38,6 +38,10 @@ struct Sh3dImportOptions {
   /// The plan's `site.chord_tolerance` (metres between an arc and its chords; also the one
   /// for curved cut-out shapes); unset: the format's default (1 mm), not written.
   std::optional<double> chord_tolerance{};
+  /// Also import rooms' ceilings as slabs where no floor above covers them (sh3d::make_slabs).
+  /// Off by default: Sweet Home 3D draws a ceiling as a surface seen from below only, so a
+  /// home seen from above shows its rooms; as slabs they would close every top storey.
+  bool ceilings = false;
   double site_margin = 1.0;          ///< metres of site around the walls
   double cell_size = 1.0;            ///< site tile side, metres
   /// Join tolerance of the plan. Sweet Home 3D keeps float32 centimetres (a few 1e-7 m of

@@ -5,6 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <future>
+#include <iterator>
+#include <map>
+#include <string>
+#include <string_view>
+#include <unordered_set>
 #include <vector>
 
 #include "modeling/joins.h"
@@ -19,6 +24,28 @@ namespace {
 void isolate_unusable(Plan& plan, const std::vector<bool>& usable) {
   for (std::size_t w = 0; w < plan.walls.size(); ++w)
     if (!usable[w]) plan.walls[w].from = plan.walls[w].to = {NAN, NAN};
+}
+
+/// The rooms of each storey: the resolved plan's walls grouped by their level (walls without
+/// one form a group of their own), so that walls of different storeys never bound one room.
+std::vector<Room> find_rooms_by_level(const Plan& plan, const detail::ResolvedPlan& resolved,
+                                      const Joins& joins) {
+  if (plan.levels.empty()) return detail::find_rooms(resolved.plan, joins);
+  std::map<std::string, Plan> storeys;
+  for (std::size_t j = 0; j < resolved.plan.walls.size(); ++j) {
+    Plan& storey = storeys[plan.walls[resolved.source_wall[j]].level];
+    storey.walls.push_back(resolved.plan.walls[j]);
+  }
+  std::vector<Room> rooms;
+  for (auto& [level, storey] : storeys) {
+    std::unordered_set<std::string_view> ids;
+    for (const Wall& w : storey.walls) ids.insert(w.id);
+    for (const Opening& o : resolved.plan.openings)
+      if (ids.contains(o.wall)) storey.openings.push_back(o);
+    storey.site = plan.site;
+    std::ranges::move(detail::find_rooms(storey, find_joins(storey)), std::back_inserter(rooms));
+  }
+  return rooms;
 }
 
 }  // namespace
@@ -36,8 +63,8 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   // so the report does not depend on timing.
   std::future<std::vector<Room>> rooms;
   if (options.room_warnings)
-    rooms = std::async(std::launch::async, [&resolved, &joins] {
-      return detail::find_rooms(resolved.plan, joins);
+    rooms = std::async(std::launch::async, [&plan, &resolved, &joins] {
+      return find_rooms_by_level(plan, resolved, joins);
     });
   detail::check_geometry(plan, usable, resolved, joins, report);
   const bool has_errors = !report.ok();

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "modeling/plan_levels.h"
 #include "view/frame_overlay.h"
 #include "view/orbit_camera.h"
 #include "view/wireframe.h"
@@ -28,7 +29,7 @@ Bounds framing_bounds(const Scene& scene) {
 }  // namespace
 
 Viewer::Viewer(ViewSession session, const ViewerOptions& options)
-    : session_(std::move(session)), viewer_options_(options) {
+    : session_(std::move(session)), viewer_options_(options), level_(options.level) {
   options_ = RenderOptions{.width = options.width, .height = options.height, .threads = options.threads};
   options_.grid.enabled = true;  // as `roomcad render --grid on`
   options_.outputs.depth = false;  // the window picks by object id, never by depth
@@ -40,7 +41,9 @@ Viewer::Viewer(ViewSession session, const ViewerOptions& options)
 void Viewer::rebuild_model() {
   if (built_revision_ == session_.revision()) return;
   built_revision_ = session_.revision();
-  const Plan& plan = session_.plan();
+  // The level shown alone; a level that an edit or reload removed shows all levels again.
+  if (!level_.empty() && !find_level(session_.plan(), level_)) level_.clear();
+  const Plan plan = level_.empty() ? session_.plan() : plan_of_level(session_.plan(), level_);
   options_.lights = plan.lights;
   options_.grid = GridLines{.enabled = options_.grid.enabled,
                             .origin = {plan.site.origin.x, plan.site.origin.y},

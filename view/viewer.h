@@ -29,6 +29,7 @@ struct ViewerOptions {
   ViewPreset view = ViewPreset::iso;  ///< perspective, 50 degrees, as `roomcad render --view`
   bool overlay = true;                ///< text on the frame (toggled with 'o')
   int threads = 0;                    ///< render threads, 0: all cores
+  std::string level{};                ///< show only this level at start; empty: all
 };
 
 /// Colours of the highlights.
@@ -69,6 +70,7 @@ class Viewer {
   void apply_display(Action action);
   void apply_edit(Action action);
   void step(int dx, int dy);
+  void step_level(int by);
   void frame_preset(ViewPreset preset);
   void pick(int x, int y);
   void draw();
@@ -86,6 +88,7 @@ class Viewer {
   std::string model_problem_;             ///< why the last rebuild failed, or ""
   FrameBuffers buffers_;
   RgbImage shown_;                        ///< the colour buffer with wireframe and overlay
+  std::string level_;                     ///< the level shown alone (plan_of_level), or "" for all
   bool wireframe_ = false;
   bool dirty_ = true;
   double frame_ms_ = 0.0;

@@ -1,4 +1,6 @@
 // What each key's action does to the viewer: camera moves, display toggles and edits.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "validation/report_format.h"
@@ -85,6 +87,8 @@ void Viewer::apply_display(Action a) {
     case Action::toggle_grid: options_.grid.enabled = !options_.grid.enabled; break;
     case Action::toggle_wireframe: wireframe_ = !wireframe_; break;
     case Action::toggle_overlay: viewer_options_.overlay = !viewer_options_.overlay; break;
+    case Action::next_level: step_level(1); break;
+    case Action::previous_level: step_level(-1); break;
     default: break;
   }
 }
@@ -111,12 +115,32 @@ void Viewer::apply_edit(Action a) {
   }
 }
 
+/// Levels in the order the keys step through them: all (-1), then each level from the lowest
+/// (by elevation, then as listed), then all again.
+void Viewer::step_level(int by) {
+  const std::vector<Level>& levels = session_.plan().levels;
+  if (levels.empty()) return;
+  std::vector<std::size_t> order(levels.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return levels[a].elevation < levels[b].elevation;
+  });
+  const auto n = static_cast<int>(order.size());
+  int at = -1;  // all levels
+  for (int i = 0; i < n; ++i)
+    if (levels[order[i]].id == level_) at = i;
+  at = ((at + 1 + by) % (n + 1) + n + 1) % (n + 1) - 1;
+  level_ = at < 0 ? std::string() : levels[order[at]].id;
+  built_revision_ = ~std::uint64_t{0};  // rebuild the model of what is shown
+}
+
 OverlayText Viewer::overlay_text() const {
   OverlayText t;
   const ViewSession& s = session_;
-  t.status.push_back(fmt::format("{}{}  {}", s.path().filename().string(),
+  t.status.push_back(fmt::format("{}{}  {}{}", s.path().filename().string(),
                                  s.is_modified() ? " (modified)" : "",
-                                 format_report_summary(s.report())));
+                                 format_report_summary(s.report()),
+                                 level_.empty() ? "" : fmt::format("  level {}", level_)));
   t.status.push_back(fmt::format("{}  {} shading  shadows {}  frame {:.1f} ms{}",
                                  to_string(camera_.projection), to_text(options_.shading),
                                  options_.shadows == ShadowFilter::off ? "off" : "on", frame_ms_,
@@ -130,7 +154,7 @@ OverlayText Viewer::overlay_text() const {
       t.errors.push_back(fmt::format("error[{}] {}: {}", to_string(d.code), fmt::join(d.objects, ", "), d.message));
   t.help =
       "a/d/w/s orbit  x/y/z turn  shift+arrows pan  +/- zoom  1-4 views  p proj  h shadows  "
-      "m shading  g grid  e wire  o text  click select  arrows move  r turn  del delete  "
+      "m shading  g grid  e wire  l level  o text  click select  arrows move  r turn  del delete  "
       "ctrl+s save  ctrl+z undo  q quit";
   return t;
 }

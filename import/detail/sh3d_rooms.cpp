@@ -60,7 +60,7 @@ struct Planned {
 
 std::vector<Slab> make_slabs(const Home& home, const std::vector<RoomRecord>& rooms,
                              const std::vector<PlacedLevel>& levels, double base_z,
-                             Report& warnings) {
+                             bool ceilings_too, Report& warnings) {
   std::vector<Planned> floors;
   std::vector<Planned> ceilings;
   for (std::size_t k = 0; k < rooms.size(); ++k) {
@@ -94,7 +94,7 @@ std::vector<Slab> make_slabs(const Home& home, const std::vector<RoomRecord>& ro
       if (room.floor_color) floor.color = *room.floor_color;
       floors.push_back({floor, {elevation - ft, elevation}, bounds_of(outline)});
     }
-    if (room.ceiling_visible && ft > 0) {
+    if (ceilings_too && room.ceiling_visible && ft > 0) {
       Slab ceiling = slab;
       ceiling.id = id + "-ceiling";
       ceiling.top = level ? height + ft : elevation + height + ft;

@@ -18,7 +18,7 @@ inline constexpr double kDefaultFloorThicknessCm = 12.0;
 ///   its floor): the slab `<room id>` from the level's elevation down by its floor thickness,
 ///   the band Sweet Home 3D fills. The lowest level's floors lie on the ground, which Sweet
 ///   Home 3D draws with no thickness: they are not slabs;
-/// - a room's ceiling, if shown and no floor slab of a higher level could cover it (no such
+/// - with `ceilings`, a room's ceiling, if shown and no floor slab of a higher level could cover it (no such
 ///   floor's box meets the room's box in the band above the ceiling): the slab
 ///   `<room id>-ceiling` on the room's level from its height up by its floor thickness (12 cm
 ///   without levels), so that a top storey is closed as drawn.
@@ -28,6 +28,6 @@ inline constexpr double kDefaultFloorThicknessCm = 12.0;
 /// `base_z` is the z of the floor of a home without levels. O(rooms^2).
 [[nodiscard]] std::vector<Slab> make_slabs(const Home& home, const std::vector<RoomRecord>& rooms,
                                            const std::vector<PlacedLevel>& levels, double base_z,
-                                           Report& warnings);
+                                           bool ceilings, Report& warnings);
 
 }  // namespace roomcad::sh3d

@@ -313,6 +313,36 @@ TEST(Sh3dImport, StoreysStandExactlyOnTheWallsBelow) {
   }
 }
 
+TEST(Sh3dImport, RoomsAreFloorSlabsAboveTheLowestLevelAndCeilingsWhenAsked) {
+  const fs::path house = kData / "eteks-example-homes" / "3-BedroomHouseWithMezzanine.Home.xml";
+  const Plan plan = import_or_fail(house).plan;
+  ASSERT_FALSE(plan.slabs.empty());
+  for (const Slab& s : plan.slabs) {  // the upper level's floors, 12 cm under its elevation
+    const Level* level = find_level(plan, s.level);
+    ASSERT_NE(level, nullptr) << s.id;
+    EXPECT_GT(level->elevation, 0.0) << s.id;
+    EXPECT_EQ(s.top, 0.0) << s.id;
+    EXPECT_NEAR(s.thickness, 0.12, 1e-6) << s.id;
+    EXPECT_FALSE(s.id.ends_with("-ceiling")) << s.id;
+  }
+  // A one-storey flat: its floors lie on the ground (no slab); with --ceilings its rooms are
+  // closed at the home's wall height, 12 cm thick (Sweet Home 3D's default floor thickness).
+  const fs::path studio = kData / "eteks-example-homes" / "Studio.Home.xml";
+  EXPECT_TRUE(import_or_fail(studio).plan.slabs.empty());
+  Sh3dImportOptions options;
+  options.ceilings = true;
+  const Plan closed = import_or_fail(studio, options).plan;
+  std::size_t shown = 0;  // rooms whose ceiling is visible
+  for (const Attributes& room : elements(read_text(studio), "room"))
+    shown += !room.contains("ceilingVisible") || room.at("ceilingVisible") != "false";
+  EXPECT_EQ(closed.slabs.size(), shown);
+  EXPECT_GT(shown, 0u);
+  for (const Slab& s : closed.slabs) {
+    EXPECT_TRUE(s.id.ends_with("-ceiling")) << s.id;
+    EXPECT_NEAR(s.top - s.thickness, closed.walls.front().height, 1e-6) << s.id;
+  }
+}
+
 TEST(Sh3dImport, PrefersTheWallThatHoldsTheWholeOpening) {
   // In 2-BedroomApartment a thin slanted wall (wall2) lies inside the outer wall27 under a
   // window; its centre line is nearer the window, but only wall27 holds the whole window.

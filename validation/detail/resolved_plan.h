@@ -21,12 +21,11 @@ struct ResolvedPlan {
   Plan plan;
   Usable usable;                         ///< by index of `plan`'s walls and openings
   std::vector<std::size_t> source_wall;  ///< by wall of `plan`: its wall in the input
-  /// By wall of `plan`: whether it is a chord of an arc (its neighbours are its own chords).
-  std::vector<bool> is_chord;
 };
 
 /// Resolves `plan` (whose usable walls and hosts are `usable`, from check_values/check_ids)
-/// for the geometry checks. O(walls + chords + openings x chords of their wall).
+/// for the geometry checks (with_absolute_heights, then with_arcs_as_chords).
+/// O(walls + chords + openings x chords of their wall).
 [[nodiscard]] ResolvedPlan resolve_plan(const Plan& plan, const Usable& usable);
 
 /// @return the highest top of wall `w` above its base: its height, or the larger end of a

@@ -1,5 +1,7 @@
 // Warnings that do not depend on geometry: unknown_field and door_above_floor.
 #include <cmath>
+#include <string_view>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -36,13 +38,26 @@ void warn_unknown_fields(const Plan& plan, Report& report) {
 
 void check_warnings(const Plan& plan, const ValidateOptions& options, Report& report) {
   if (options.unknown_field_warnings) warn_unknown_fields(plan, report);
+  std::unordered_map<std::string_view, const Wall*> walls;
+  for (const Wall& w : plan.walls) walls.emplace(w.id, &w);
   for (const Opening& o : plan.openings) {
     if (o.type != OpeningType::door || !std::isfinite(o.sill) || o.sill <= 0) continue;
+    // A wall of a level that reaches down through its floor (base < 0) has the floor at
+    // v = -base: a door standing there is at the floor.
+    const auto found = walls.find(o.wall);
+    const Wall* w = found == walls.end() ? nullptr : found->second;
+    const bool below_floor = w && !w->level.empty() && w->base < 0;
+    if (below_floor && o.sill == -w->base) continue;
     report.add(make_diagnostic(
         Severity::warning, Code::door_above_floor, {o.id},
-        fmt::format("{} starts {} above the base of wall '{}'; a door normally starts at the "
-                    "floor.", name_of(o), metres(o.sill), o.wall),
-        "set its sill to 0, or make it a window if it is one"));
+        below_floor
+            ? fmt::format("{} starts {} above the floor of its level (wall '{}' reaches {} below "
+                          "it); a door normally starts at the floor.", name_of(o),
+                          metres(o.sill + w->base), o.wall, metres(-w->base))
+            : fmt::format("{} starts {} above the base of wall '{}'; a door normally starts at "
+                          "the floor.", name_of(o), metres(o.sill), o.wall),
+        below_floor ? fmt::format("set its sill to {}, or make it a window if it is one", -w->base)
+                    : "set its sill to 0, or make it a window if it is one"));
   }
 }
 

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "io/plan_json.h"
-#include "modeling/arc_chords.h"
+#include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 #include "io/text_file.h"
 #include "validation/report_format.h"

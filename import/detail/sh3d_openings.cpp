@@ -9,7 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "import/detail/sh3d_cut_out.h"
-#include "modeling/arc_chords.h"
+#include "modeling/plan_chords.h"
 
 namespace roomcad::sh3d {
 namespace {
@@ -253,14 +253,25 @@ void warn_about_item(const ItemRecord& item, const std::string& id,
 
 }  // namespace
 
+/// Whether an item of level `a` may stand in a wall of level `b`: the same level, or levels
+/// at the same elevation (Sweet Home 3D's layers: a door drawn on one cuts the walls of all).
+bool same_storey(const std::vector<PlacedLevel>& levels, const std::string& a,
+                 const std::string& b) {
+  if (a == b) return true;
+  const PlacedLevel* la = find_placed(levels, a);
+  const PlacedLevel* lb = find_placed(levels, b);
+  return la && lb && la->level.elevation == lb->level.elevation;
+}
+
 std::optional<std::pair<std::size_t, Fit>> find_host(const ItemRecord& item,
                                                    const std::vector<Segment>& segments,
                                                    const std::vector<PlacedWall>& walls,
+                                                   const std::vector<PlacedLevel>& levels,
                                                    const HostOptions& options) {
   std::optional<std::pair<std::size_t, Fit>> best;
   std::pair<bool, double> best_score;  // (sticks out of the wall, distance): less is better
   for (const Segment& s : segments) {
-    if (walls[s.wall].level != item.level) continue;
+    if (!same_storey(levels, walls[s.wall].level, item.level)) continue;
     const std::optional<Fit> fit = fit_item(item, s, walls[s.wall].wall.thickness, options);
     if (!fit || !fit->over) continue;
     const Interval u = span_along(item, *fit);
@@ -295,7 +306,7 @@ std::vector<Opening> place_openings(const std::vector<ItemRecord>& items,
     Placement with_outline = placement;
     with_outline.outline = outline ? &*outline : nullptr;
     std::vector<Opening> pieces;
-    if (const auto host = find_host(item, segments, walls, HostOptions{}))
+    if (const auto host = find_host(item, segments, walls, placement.levels, HostOptions{}))
       pieces = cut_item(item, id, host->second, host->first, segments, walls, with_outline);
     warn_about_item(item, id, pieces, !shaped || outline.has_value(), warnings);
     std::ranges::move(pieces, std::back_inserter(openings));

@@ -31,7 +31,8 @@ struct Placement {
 };
 
 /// Converts items to openings. Each is given to a wall by geometry, as Sweet Home 3D itself
-/// does: among the straight pieces (an arc's chords) of walls on the item's level that are
+/// does: among the straight pieces (an arc's chords) of walls on the item's level (or a level
+/// at its elevation: Sweet Home 3D's layers) that are
 /// parallel to it (within 5 degrees), whose span holds the item's centre and whose centre line
 /// is within half the wall's thickness plus half the item's depth (+ 1 cm) of the centre, one
 /// that holds the item's whole width if any does, and of those the nearest. Like Sweet Home

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "modeling/arc_chords.h"
+#include "modeling/plan_chords.h"
 
 namespace roomcad::sh3d {
 namespace {
@@ -69,7 +70,11 @@ PlacedWall make_wall(const Home& home, const WallRecord& w, const std::vector<Pl
   const double degrees = w.arc_extent.value_or(0.0) * 180 / std::numbers::pi;
   if (degrees != 0 && std::abs(degrees) < 360) wall.arc_extent = -degrees;
   placed.level = w.level;
-  placed.polyline = centre_polyline(wall, options.chord_tolerance);
+  // An arc of more chords than a plan builds keeps its extent (validation and the build say
+  // why); its doors and windows are placed on its chord.
+  placed.polyline = is_buildable_arc(wall, options.chord_tolerance)
+                        ? chord_polyline(wall, options.chord_tolerance)
+                        : std::vector<Point2>{wall.from, wall.to};
   return placed;
 }
 

@@ -37,7 +37,7 @@ struct PlacedWall {
   Wall wall;
   std::string level;             ///< Sweet Home 3D level id
   double base_z = 0.0;           ///< absolute z of its base, metres
-  std::vector<Point2> polyline;  ///< its centre line as built (an arc's chords: centre_polyline)
+  std::vector<Point2> polyline;  ///< its centre line as built (an arc's chords: chord_polyline)
 };
 
 /// @return a warning of `code` about the object `id` (io's own codes start with `import_`).

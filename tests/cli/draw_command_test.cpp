@@ -122,5 +122,36 @@ TEST(DrawCommand, DrawsElevationsIsoAndCameraViews) {
   EXPECT_EQ(hidden_lines(off), 0u);
 }
 
+TEST(DrawCommand, LevelDrawsTheFloorPlanOfOneStorey) {
+  const TempDir dir;
+  const std::string plan = (source_dir() / "examples" / "version2" / "two-storey.json").string();
+  ASSERT_EQ(draw({plan, "--level", "ground", "-o", (dir / "ground.svg").string()}).status, 0);
+  ASSERT_EQ(draw({plan, "--level", "first", "-o", (dir / "first.svg").string()}).status, 0);
+  const std::string ground = read_bytes(dir / "ground.svg");
+  const std::string first = read_bytes(dir / "first.svg");
+  EXPECT_NE(ground.find("floor plan of level ground"), std::string::npos);
+  EXPECT_NE(first.find("floor plan of level first"), std::string::npos);
+  EXPECT_NE(ground, first);
+  // Each plan draws its own storey's door leaves: two on the ground floor (entry, hall door),
+  // one on the first (the bedroom door).
+  const auto leaves = [](const std::string& svg) {
+    const std::size_t from = svg.find("<g class=\"leaves\"");
+    const std::size_t to = svg.find("</g>", from);
+    std::size_t n = 0;
+    for (std::size_t at = svg.find("<line", from); at < to; at = svg.find("<line", at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(leaves(ground), 2u);
+  EXPECT_EQ(leaves(first), 1u);
+  const CommandResult unknown =
+      draw({plan, "--level", "cellar", "-o", (dir / "cellar.svg").string()});
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("--level 'cellar': the plan has no such level (its levels: "
+                             "'ground', 'first')"),
+            std::string::npos)
+      << unknown.err;
+  EXPECT_FALSE(fs::exists(dir / "cellar.svg"));
+}
+
 }  // namespace
 }  // namespace roomcad::test

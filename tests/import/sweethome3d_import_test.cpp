@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "modeling/arc_chords.h"
+#include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 #include "import/sweethome3d_import.h"
 #include "import/sh3d_test_data.h"
@@ -129,7 +130,7 @@ TEST(Sh3dImport, EveryOpeningLiesInsideItsWallAndOnTheItem) {
     for (const Opening& o : imported.plan.openings) {
       const Wall* w = find_wall(imported.plan, o.wall);
       ASSERT_NE(w, nullptr) << o.id;
-      const std::vector<Point2> line = centre_polyline(*w, chord_tolerance_of(imported.plan.site));
+      const std::vector<Point2> line = chord_polyline(*w, chord_tolerance_of(imported.plan.site));
       EXPECT_GE(o.offset, 0.0) << o.id;
       EXPECT_LE(o.offset + o.width, polyline_length(line)) << o.id;
       EXPECT_GE(o.sill, 0.0) << o.id;
@@ -367,7 +368,7 @@ TEST(Sh3dImport, CurvedWallKeepsItsArcAndItsWindows) {
   ASSERT_TRUE(bow->arc_extent.has_value());
   EXPECT_NEAR(*bow->arc_extent, -40.0, 1e-6);
   const double length =
-      polyline_length(centre_polyline(*bow, chord_tolerance_of(imported.plan.site)));
+      polyline_length(chord_polyline(*bow, chord_tolerance_of(imported.plan.site)));
   // The two windows of the curved wall are openings of it, inside its polyline.
   for (const char* id : {"doorOrWindow-f9f28cd6-0838-41ac-8559-7fbb187976ce",
                          "doorOrWindow-224b7c32-ec5d-48e0-9938-b799e7cd7eeb"}) {

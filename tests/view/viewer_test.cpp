@@ -146,6 +146,62 @@ TEST(Viewer, RedrawsWhenTheFileChangesOnDisk) {
   EXPECT_EQ(v.session().plan(), plan);
 }
 
+/// Two storeys side by side in plan (so that each shows alone differently): a room of level
+/// `ground` and a room of level `first`.
+Plan two_storeys() {
+  Plan p;
+  p.site.cells = {12, 6};
+  p.levels = {Level{.id = "ground", .elevation = 0, .height = 3},
+              Level{.id = "first", .elevation = 3, .height = 3}};
+  const auto room = [&p](const std::string& level, double x) {
+    const Point2 c[] = {{x, 1}, {x + 4, 1}, {x + 4, 5}, {x, 5}};
+    for (int i = 0; i < 4; ++i) {
+      Wall w;
+      w.id = level + std::to_string(i);
+      w.level = level;
+      w.from = c[i];
+      w.to = c[(i + 1) % 4];
+      w.height = 2.5;
+      p.walls.push_back(w);
+    }
+  };
+  room("ground", 1);
+  room("first", 7);
+  return p;
+}
+
+TEST(Viewer, LevelKeyShowsEachLevelAloneThenAll) {
+  const test::TempDir dir;
+  const std::filesystem::path path = dir / "storeys.json";
+  ASSERT_TRUE(test::write_bytes(path, write_plan_text(two_storeys())));
+  Viewer v = open_viewer(path);
+  const std::vector<std::uint8_t> all = v.frame().pixels;
+  v.handle(key("l"));  // the lowest level alone
+  const std::vector<std::uint8_t> ground = v.frame().pixels;
+  EXPECT_NE(ground, all);
+  v.handle(key("l"));  // the next
+  const std::vector<std::uint8_t> first = v.frame().pixels;
+  EXPECT_NE(first, all);
+  EXPECT_NE(first, ground);
+  v.handle(key("l"));  // all levels again
+  EXPECT_EQ(v.frame().pixels, all);
+  v.handle(key("l", false));
+  InputEvent back = key("l");
+  back.shift = true;
+  v.handle(back);  // shift+l: back to all
+  EXPECT_EQ(v.frame().pixels, all);
+  v.handle(back);  // and back once more: the last level
+  EXPECT_EQ(v.frame().pixels, first);
+  // Starting on a level (`roomcad view --level first`) shows it alone, framed.
+  Result<ViewSession> s = ViewSession::open(path);
+  ASSERT_TRUE(s.ok());
+  Viewer started(std::move(s).value(),
+                 ViewerOptions{.width = kWidth, .height = kHeight, .overlay = false, .level = "first"});
+  EXPECT_NE(started.frame().pixels, all);
+  started.handle(key("l"));  // after the last level: all of them
+  EXPECT_NE(started.frame().pixels, first);
+}
+
 TEST(Viewer, OverlayWritesOnTheFrame) {
   Viewer with = open_viewer(studio(), true);
   Viewer without = open_viewer(studio(), false);

@@ -13,6 +13,7 @@
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 #include "modeling/arc_chords.h"
+#include "modeling/plan_chords.h"
 #include "modeling/polygon_predicates.h"
 #include "validation/detail/resolved_plan.h"
 #include "validation/detail/shapes.h"
@@ -62,7 +63,9 @@ struct Host {
 };
 
 Host host_of(const Plan& plan, const Wall& w) {
-  std::vector<Point2> line = centre_polyline(w, chord_tolerance_of(plan.site));
+  const double tolerance = chord_tolerance_of(plan.site);
+  std::vector<Point2> line = is_buildable_arc(w, tolerance) ? chord_polyline(w, tolerance)
+                                                            : std::vector<Point2>{w.from, w.to};
   const double length = polyline_length(line);
   return {w, std::move(line), length};
 }

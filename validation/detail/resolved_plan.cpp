@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "modeling/arc_chords.h"
+#include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 
 namespace roomcad::detail {

@@ -28,6 +28,15 @@ constexpr const char* kRoomPlan = R"({
   ]
 })";
 
+/// @return the number of <line> elements in the first group that starts with `group`.
+std::size_t lines_in(const std::string& svg, const std::string& group) {
+  const std::size_t begin = svg.find(group);
+  const std::size_t end = svg.find("</g>", begin);
+  std::size_t n = 0;
+  for (std::size_t p = svg.find("<line", begin); p < end; p = svg.find("<line", p + 1)) ++n;
+  return n;
+}
+
 CommandResult draw(std::vector<std::string> args) {
   args.insert(args.begin(), "draw");
   return run_roomcad(args);
@@ -111,15 +120,8 @@ TEST(DrawCommand, DrawsElevationsIsoAndCameraViews) {
   ASSERT_EQ(draw({plan, "--view", "south", "--hidden", "off", "-o", (dir / "off.svg").string()})
                 .status, 0);
   const std::string dashed = read_bytes(dir / "dashed.svg"), off = read_bytes(dir / "off.svg");
-  const auto hidden_lines = [](const std::string& svg) {
-    const std::size_t begin = svg.find("<g id=\"hidden\"");
-    const std::size_t end = svg.find("</g>", begin);
-    std::size_t n = 0;
-    for (std::size_t p = svg.find("<line", begin); p < end; p = svg.find("<line", p + 1)) ++n;
-    return n;
-  };
-  EXPECT_GT(hidden_lines(dashed), 0u);
-  EXPECT_EQ(hidden_lines(off), 0u);
+  EXPECT_GT(lines_in(dashed, "<g id=\"hidden\""), 0u);
+  EXPECT_EQ(lines_in(off, "<g id=\"hidden\""), 0u);
 }
 
 TEST(DrawCommand, LevelDrawsTheFloorPlanOfOneStorey) {
@@ -134,15 +136,8 @@ TEST(DrawCommand, LevelDrawsTheFloorPlanOfOneStorey) {
   EXPECT_NE(ground, first);
   // Each plan draws its own storey's door leaves: two on the ground floor (entry, hall door),
   // one on the first (the bedroom door).
-  const auto leaves = [](const std::string& svg) {
-    const std::size_t from = svg.find("<g class=\"leaves\"");
-    const std::size_t to = svg.find("</g>", from);
-    std::size_t n = 0;
-    for (std::size_t at = svg.find("<line", from); at < to; at = svg.find("<line", at + 1)) ++n;
-    return n;
-  };
-  EXPECT_EQ(leaves(ground), 2u);
-  EXPECT_EQ(leaves(first), 1u);
+  EXPECT_EQ(lines_in(ground, "<g class=\"leaves\""), 2u);
+  EXPECT_EQ(lines_in(first, "<g class=\"leaves\""), 1u);
   const CommandResult unknown =
       draw({plan, "--level", "cellar", "-o", (dir / "cellar.svg").string()});
   EXPECT_EQ(unknown.status, 2);

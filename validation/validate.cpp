@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "modeling/joins.h"
+#include "modeling/rooms.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/resolved_plan.h"
 
@@ -30,7 +31,7 @@ void isolate_unusable(Plan& plan, const std::vector<bool>& usable) {
 /// one form a group of their own), so that walls of different storeys never bound one room.
 std::vector<Room> find_rooms_by_level(const Plan& plan, const detail::ResolvedPlan& resolved,
                                       const Joins& joins) {
-  if (plan.levels.empty()) return detail::find_rooms(resolved.plan, joins);
+  if (plan.levels.empty()) return find_rooms(resolved.plan, joins);
   std::map<std::string, Plan> storeys;
   for (std::size_t j = 0; j < resolved.plan.walls.size(); ++j) {
     Plan& storey = storeys[plan.walls[resolved.source_wall[j]].level];
@@ -43,7 +44,7 @@ std::vector<Room> find_rooms_by_level(const Plan& plan, const detail::ResolvedPl
     for (const Opening& o : resolved.plan.openings)
       if (ids.contains(o.wall)) storey.openings.push_back(o);
     storey.site = plan.site;
-    std::ranges::move(detail::find_rooms(storey, find_joins(storey)), std::back_inserter(rooms));
+    std::ranges::move(find_rooms(storey, find_joins(storey)), std::back_inserter(rooms));
   }
   return rooms;
 }

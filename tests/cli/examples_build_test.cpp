@@ -3,6 +3,8 @@
 
 #include <filesystem>
 
+#include "io/plan_json.h"
+#include "modeling/plan_fields.h"
 #include "support/run_command.h"
 
 namespace roomcad {
@@ -21,25 +23,12 @@ std::vector<std::filesystem::path> example_plans() {
   return plans;
 }
 
-// Plans of version 2 geometry (levels, sloped tops, arcs, shapes, slabs) that the build does
-// not read yet: it does from the general path on (issue 15), and they join the loop below
-// with it. Each is checked to be a version 2 plan, so the list hides no version 1 plan.
-const char* const kVersion2Plans[] = {
-    "sweethome3d/1-BedroomApartment.json",         "sweethome3d/2-BedroomHouseWithBasement.json",
-    "sweethome3d/3-BedroomHouseWithAttic.json",    "sweethome3d/3-BedroomHouseWithMezzanine.json",
-    "sweethome3d/4-BedroomHouse.json",             "sweethome3d/Sample.json",
-    "sweethome3d/arif-home.json",                  "sweethome3d/arif-putra-pertama-1.json",
-    "version2/two-storey.json"};
-
-bool is_listed_version2(const std::filesystem::path& plan) {
-  const std::string relative =
-      std::filesystem::relative(plan, test::source_dir() / "examples").generic_string();
-  for (const char* listed : kVersion2Plans)
-    if (relative == listed) {
-      EXPECT_NE(test::read_bytes(plan).find("\"version\": 2"), std::string::npos) << plan;
-      return true;
-    }
-  return false;
+// Version 2 geometry (levels, slopes, arcs, shapes, slabs) is built from the general path on
+// (issue 15): until then those plans are read, validated and drawn only, and skipped here.
+bool uses_version2_geometry(const std::filesystem::path& plan) {
+  const Result<Plan> read = read_plan_file(plan);
+  EXPECT_TRUE(read.ok()) << plan;
+  return read.ok() && uses_version2(read.value());
 }
 
 // The curated plans (examples/*.json) validate and build as they are; the imported homes
@@ -50,7 +39,7 @@ TEST(BuildCommand, EveryExamplePlanBuildsAndChecks) {
   if (plans.empty()) GTEST_SKIP() << "no example plans under examples/";
   test::TempDir dir;
   for (const auto& plan : plans) {
-    if (is_listed_version2(plan)) continue;
+    if (uses_version2_geometry(plan)) continue;
     const bool curated = plan.parent_path() == test::source_dir() / "examples";
     const auto out = dir / (plan.stem().string() + ".obj");
     std::vector<std::string> args{"build", plan.string(), "-o", out.string(), "--check"};

@@ -10,6 +10,7 @@
 #include "io/step_file.h"
 #include "modeling/mesh_check.h"
 #include "modeling/plan_levels.h"
+#include "validation/validate.h"
 
 namespace roomcad {
 namespace {
@@ -58,12 +59,15 @@ TEST(IfcExport, WritesTheSpatialTreeAndEveryObjectOnce) {
   EXPECT_EQ(count(t, "=IFCDOOR("), 1u);
   EXPECT_EQ(count(t, "=IFCWINDOW("), 1u);
   EXPECT_EQ(count(t, "=IFCSLAB("), 1u);
-  EXPECT_EQ(count(t, "=IFCSPACE("), 2u);  // the two rooms of the ground floor
-  EXPECT_EQ(count(t, "=IFCSURFACESTYLE("), 2u);  // the wall colour and the slab colour
+  const Plan plan = two_storeys();
+  const std::size_t rooms = find_rooms(plan_of_level(plan, "ground")).size() + find_rooms(plan_of_level(plan, "first")).size();
+  EXPECT_EQ(find_rooms(plan_of_level(plan, "ground")).size(), 2u);  // the two rooms of the ground floor
+  EXPECT_EQ(count(t, "=IFCSPACE("), rooms);
+  EXPECT_EQ(count(t, "=IFCSURFACESTYLE("), 3u);  // the walls', the slab's and the floor's (spaces)
   EXPECT_EQ(count(t, "=IFCSIUNIT(*,.LENGTHUNIT.,$,.METRE.)"), 1u);
   EXPECT_EQ(summary.walls, 6u);
   EXPECT_EQ(summary.doors, 1u);
-  EXPECT_EQ(summary.spaces, 2u);
+  EXPECT_EQ(summary.spaces, rooms);
   // Each instance parses back, and every GlobalId is distinct.
   const Result<step::File> parsed = step::parse(t, "two.ifc");
   ASSERT_TRUE(parsed.ok()) << parsed.error();

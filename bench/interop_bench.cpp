@@ -8,14 +8,14 @@
 
 #include <benchmark/benchmark.h>
 
-#include "bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "import/ifc_import.h"
 #include "io/ifc_export.h"
 
 namespace {
 
 void BM_IfcExportGrid70(benchmark::State& state) {
-  const roomcad::Plan plan = roomcad::bench::make_grid_plan({.n = 70});
+  const roomcad::Plan plan = roomcad::samples::make_grid_plan({.n = 70});
   std::size_t bytes = 0;
   for (auto _ : state) {
     auto ifc = roomcad::format_ifc(plan, "grid.ifc");

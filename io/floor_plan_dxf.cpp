@@ -271,21 +271,22 @@ void write_blocks(DxfWriter& w) {
   w.group(0, "ENDSEC");
 }
 
+void dictionary(DxfWriter& w, std::string_view handle, std::string_view owner) {
+  w.group(0, "DICTIONARY");
+  w.group(5, handle);
+  w.group(330, owner);
+  w.group(100, "AcDbDictionary");
+  w.group(281, 1);
+}
+
+/// The root dictionary (C) holding the empty ACAD_GROUP dictionary (D), as AutoCAD expects.
 void write_objects(DxfWriter& w) {
   w.group(0, "SECTION");
   w.group(2, "OBJECTS");
-  w.group(0, "DICTIONARY");
-  w.group(5, "C");
-  w.group(330, "0");
-  w.group(100, "AcDbDictionary");
-  w.group(281, 1);
+  dictionary(w, "C", "0");
   w.group(3, "ACAD_GROUP");
   w.group(350, "D");
-  w.group(0, "DICTIONARY");
-  w.group(5, "D");
-  w.group(330, "C");
-  w.group(100, "AcDbDictionary");
-  w.group(281, 1);
+  dictionary(w, "D", "C");
   w.group(0, "ENDSEC");
 }
 

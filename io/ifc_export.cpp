@@ -12,7 +12,7 @@
 #include "io/detail/ifc_shapes.h"
 #include "io/step_file.h"
 #include "modeling/plan_levels.h"
-#include "validation/validate.h"
+#include "modeling/rooms.h"
 
 namespace roomcad {
 namespace {

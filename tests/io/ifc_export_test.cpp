@@ -10,7 +10,7 @@
 #include "io/step_file.h"
 #include "modeling/mesh_check.h"
 #include "modeling/plan_levels.h"
-#include "validation/validate.h"
+#include "modeling/rooms.h"
 
 namespace roomcad {
 namespace {

@@ -17,6 +17,7 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "io/floor_plan_dxf.h"
 #include "io/floor_plan_svg.h"
 #include "render/floor_plan.h"
 #include "render/line_drawing.h"
@@ -114,13 +115,24 @@ int run_draw(const DrawOptions& o) {
   if (const Status options = check_floor_plan_options({.scale = scale, .cut_height = o.cut_height});
       !options)
     return report_failure("draw", options.error());
-  if (o.output.extension() != ".svg")
-    return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are "
-                                                                  "written as .svg", o.output.string())});
+  const bool dxf = o.output.extension() == ".dxf";
+  if (o.output.extension() != ".svg" && !(dxf && o.view == "plan"))
+    return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are written "
+                                                                  "as .svg (and the plan view as .dxf too)",
+                                                                  o.output.string())});
   const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
   if (!loaded.plan) return loaded.exit_status;
   const Result<Plan> shown = select_level(*loaded.plan, o.level);
   if (!shown) return report_failure("draw", shown.error());
+  if (dxf) {
+    const FloorPlanOptions options{.scale = scale, .cut_height = o.cut_height};
+    const FloorPlanDrawing drawing =
+        draw_floor_plan(floor_plan_input(shown.value(), !o.level.empty()), options);
+    if (const Status written = write_floor_plan_dxf(drawing, o.output); !written)
+      return report_failure("draw", written.error());
+    std::printf("wrote %s\n", o.output.string().c_str());
+    return kExitOk;
+  }
   const Result<ViewDrawer> drawer = find_view(o.view, *loaded.plan);
   if (!drawer) return report_failure("draw", drawer.error());
   const Result<SvgDocument> document = drawer.value()(shown.value(), o, scale);
@@ -137,7 +149,7 @@ void add_draw_command(CLI::App& root, Commands& commands) {
   auto o = std::make_shared<DrawOptions>();
   CLI::App* app = root.add_subcommand(
       "draw",
-      "Draw a plan as an SVG line drawing on paper at a scale.\n"
+      "Draw a plan as an SVG line drawing on paper at a scale (the plan view also as DXF).\n"
       "  plan: the architectural floor plan, a horizontal section at --cut-height: cut walls\n"
       "        filled, windows as three lines, doors with leaf and swing, rooms with name and\n"
       "        area, per-wall and overall dimensions (metres), a scale bar.\n"
@@ -145,6 +157,9 @@ void add_draw_command(CLI::App& root, Commands& commands) {
       "        standing north, looking south); iso: isometric from the south-west;\n"
       "        camera:ID: the plan camera's view. Feature edges only; hidden lines removed\n"
       "        exactly, drawn dashed (--hidden dashed) or left out (--hidden off).\n"
+      "  -o OUT.dxf (plan view): the same drawing for CAD programs (AutoCAD 2000 DXF), in model\n"
+      "        space at true size in metres, on layers WALLS_CUT (with solid hatches),\n"
+      "        WALLS_BELOW, WALLS_ABOVE, WINDOWS, DOORS, DIMENSIONS and ROOMS.\n"
       "--level ID draws one level of a plan with levels: its floor plan is cut at --cut-height\n"
       "above the level's elevation; its views show its walls and slabs alone.\n"
       "Example: roomcad draw house.json --view plan --scale 1:50 -o house-plan.svg");
@@ -172,7 +187,7 @@ void add_draw_command(CLI::App& root, Commands& commands) {
                   "height of the plan's section, metres (above the level's floor with --level)")
       ->capture_default_str();
   app->add_option("--level", o->level, "draw only the level with this id (plan format version 2)");
-  app->add_option("-o,--output", o->output, "OUT.svg (written atomically)")->required();
+  app->add_option("-o,--output", o->output, "OUT.svg, or OUT.dxf for the plan view (written atomically)")->required();
   app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
   commands.push_back({app, [o] { return run_draw(*o); }});
 }

@@ -5,7 +5,8 @@
 # Usage: scripts/build.sh [TARGET...]   (e.g. scripts/build.sh roomcad)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+# Everything includes the tests, so their independent readers too (setup.sh --tests).
+if (($# == 0)); then bash scripts/setup.sh --tests; else bash scripts/setup.sh; fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DROOMCAD_WERROR=ON
 targets=()
 for target in "$@"; do targets+=(--target "$target"); done

@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
 # Installs, from Debian's packages, whatever roomcad needs that this machine lacks (toolchain
-# included). Idempotent and non-interactive: packages already installed are left alone, and
-# nothing is fetched when nothing is missing. Run as root, or as a user with sudo.
-# Usage: scripts/setup.sh [EXTRA_PACKAGE...]   (e.g. the sanitized build's clang)
+# included); with --tests also the independent readers of the export tests (python3-ezdxf,
+# Node.js, and tests/readers' npm packages web-ifc and gltf-validator at the versions of its
+# package-lock.json), which the demo does not need. Idempotent and non-interactive: packages
+# already installed are left alone, and nothing is fetched when nothing is missing. Run as
+# root, or as a user with sudo (npm runs as the caller).
+# Usage: scripts/setup.sh [--tests] [EXTRA_PACKAGE...]   (e.g. the sanitized build's clang)
 set -euo pipefail
+tests=false
+if [[ "${1:-}" == --tests ]]; then tests=true; shift; fi
 
 packages=(
   # toolchain
@@ -17,6 +22,26 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth gnuplot-nox admesh
   "$@"
 )
+if $tests; then
+  # the independent readers of the IFC, glTF and DXF export tests: ezdxf reads the DXF,
+  # Node.js runs web-ifc and the Khronos glTF validator (tests/readers); Node.js from Debian
+  # unless a node and npm are already on the PATH (a newer one, e.g. nvm's)
+  packages+=(python3-ezdxf)
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
+fi
+
+# The npm readers (with --tests), when tests/readers/node_modules does not hold its lock
+# file's versions.
+install_readers() {
+  $tests || return 0
+  local readers
+  readers="$(dirname "$0")/../tests/readers"
+  if ! cmp -s <(sed -n '/"node_modules\//,$p' "$readers/package-lock.json") \
+              <(sed -n '/"node_modules\//,$p' "$readers/node_modules/.package-lock.json" 2>/dev/null); then
+    echo "setup: installing the test readers (npm ci in tests/readers)"
+    npm ci --prefix "$readers" --no-audit --no-fund --loglevel=error
+  fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -26,6 +51,7 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "setup: all ${#packages[@]} packages present"
+  install_readers
   exit 0
 fi
 
@@ -38,3 +64,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -qq
 "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_readers

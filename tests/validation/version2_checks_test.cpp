@@ -142,11 +142,13 @@ TEST(Version2Checks, SlabsAndLevelsStayInsideTheSiteAndUnderMaxHeight) {
   p.slabs = {slab("s", "ground", square(0, 0, 4, 4))};  // z -0.2 .. 0: below the ground
   EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{Code::out_of_bounds});
   p.slabs.clear();
-  p.levels[1].height = 6.5;  // 3 + 6.5 > 9
+  p.levels[1].height = 6.5;  // a nominal storey past max_height is no error: its walls are judged
+  EXPECT_TRUE(validate(p, no_rooms()).ok());
+  p.levels[1].elevation = 9.5;  // its floor above max_height is
   const Report r = validate(p, no_rooms());
   ASSERT_EQ(error_codes(r), Codes{Code::out_of_bounds});
   EXPECT_EQ(r.items[0].objects, Ids{"first"});
-  p.levels[1].height = 3;
+  p.levels[1] = {.id = "first", .elevation = 3, .height = 3};
   // A wall of the ground level reaching below it reaches below the ground.
   p.walls = {on("ground", make_wall("a", {0, 0}, {4, 0}))};
   p.walls[0].base = -0.1;

@@ -183,24 +183,24 @@ void check_slab_bounds(const Plan& plan, const Slab& s, const Box2& box, Report&
                              fmt::format("{} {}.", slab_name(s), problem), fix, where_of(box)));
 }
 
-/// out_of_bounds for a level whose storey (elevation to elevation + height) is not within
-/// [0, max_height].
+/// out_of_bounds for a level whose floor (its elevation) is not within [0, max_height]. Its
+/// height is only the default of its walls, which are judged themselves: a roof level whose
+/// nominal storey rises past max_height is not an error.
 void check_level_bounds(const Plan& plan, Report& report) {
   for (const Level& l : plan.levels) {
     if (!std::isfinite(l.elevation) || !(l.height > 0)) continue;  // invalid_value already
     const bool fits = exact::decide([&](auto tag) {
       using NT = decltype(tag);
-      return NT(l.elevation) >= NT(0) && NT(l.elevation) + NT(l.height) <= NT(plan.site.max_height);
+      return NT(l.elevation) >= NT(0) && NT(l.elevation) <= NT(plan.site.max_height);
     });
     if (fits) continue;
     report.add(make_diagnostic(
         Severity::error, Code::out_of_bounds, {l.id},
-        fmt::format("level '{}' spans z = {} to {}, outside the site's heights 0 to max_height {}.",
-                    l.id, metres(l.elevation), metres(l.elevation + l.height),
-                    metres(plan.site.max_height)),
+        fmt::format("level '{}' has its floor at z = {}, outside the site's heights 0 to "
+                    "max_height {}.", l.id, metres(l.elevation), metres(plan.site.max_height)),
         l.elevation < 0 ? fmt::format("raise its elevation by {}", metres_at_least(-l.elevation))
                         : fmt::format("raise site.max_height to {} or more, or lower the level",
-                                      metres_at_least(l.elevation + l.height))));
+                                      metres_at_least(l.elevation))));
   }
 }
 

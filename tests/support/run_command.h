@@ -19,6 +19,10 @@ struct CommandResult {
 /// Runs `roomcad args...` (each argument shell-quoted), with stdin from /dev/null.
 [[nodiscard]] CommandResult run_roomcad(const std::vector<std::string>& args);
 
+/// Runs a program (found on PATH) with its arguments, as run_roomcad does.
+[[nodiscard]] CommandResult run_program(const std::string& program,
+                                        const std::vector<std::string>& args);
+
 /// A fresh empty directory under the system temporary directory, removed with its contents
 /// when the object is destroyed.
 class TempDir {

@@ -42,10 +42,13 @@ class Viewer {
   Viewer(ViewSession session, const ViewerOptions& options);
 
   /// Applies one input: a bound key's action, a click (selects what the pixel shows, or
-  /// nothing), a drag (orbit; right button: pan) or wheel notches (zoom).
+  /// nothing), a drag (orbit; right button: pan) or wheel notches (zoom). A wait does nothing
+  /// here: the window does the waiting (run_window).
   /// @return false when the input asks to quit.
   bool handle(const InputEvent& input);
-  /// Reloads the plan if its file changed on disk. @return true if it did.
+  /// Looks at the plan's file (ViewSession::reload_if_changed): reloads it, or shows the
+  /// conflict with the window's unsaved edits. @return true if it found a change (the frame
+  /// will be drawn again).
   bool poll_file();
   /// @return the current frame, drawn again only if something changed since the last call.
   /// Cost: one render_scene (see render/renderer.h) when anything changed, else O(1).

@@ -197,7 +197,8 @@ pid_t spawn_roomcad(const std::vector<std::string>& args) {
   return pid;
 }
 
-/// A plan of `n` separate walls w0, w1, ... (large enough that an edit takes tens of ms).
+/// A plan of `n` separate walls w0, w1, ... (large enough that an edit takes tens of ms, most
+/// of it with the lock held).
 Plan many_walls(int n) {
   Plan plan;
   plan.site.cells = {100, 1 + n / 60};
@@ -214,7 +215,7 @@ Plan many_walls(int n) {
 TEST(ConcurrentEdits, KilledEditorsLeaveAWholePlanAndNoLockThatBlocks) {
   test::TempDir dir;
   const fs::path plan = dir / "plan.json";
-  Plan state = many_walls(2000);
+  Plan state = many_walls(600);
   ASSERT_TRUE(test::write_bytes(plan, write_plan_text(state)));
   // How long one edit takes here: kills land anywhere from its start to a little after its end.
   const auto start = std::chrono::steady_clock::now();

@@ -48,7 +48,7 @@ void Viewer::rebuild_model() {
   try {
     BuildOptions build;
     build.threads = viewer_options_.threads;
-    const Model model = build_model(plan, build);
+    const Model model = models_.build(plan, build);
     scene_ = flatten_model(model);
     objects_ = model.objects;
     base_colors_ = scene_.colors;

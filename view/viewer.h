@@ -18,6 +18,7 @@
 #include "view/frame_overlay.h"
 #include "view/input.h"
 #include "view/key_bindings.h"
+#include "view/model_cache.h"
 #include "view/view_session.h"
 
 namespace roomcad {
@@ -64,6 +65,8 @@ class Viewer {
   [[nodiscard]] double last_frame_ms() const { return frame_ms_; }
   /// Milliseconds the model rebuild before the last frame took (0 if the plan had not changed).
   [[nodiscard]] double last_build_ms() const { return build_ms_; }
+  /// What the last model rebuild built and reused (view/model_cache.h).
+  [[nodiscard]] const ModelCacheStats& last_build_stats() const { return models_.last_stats(); }
 
  private:
   void rebuild_model();
@@ -82,6 +85,7 @@ class Viewer {
   ViewerOptions viewer_options_;
   RenderOptions options_;
   Camera camera_;
+  ModelCache models_;                     ///< rebuilds only the wall groups an edit touched
   Scene scene_;
   std::vector<Color> base_colors_;        ///< scene_ colours before highlighting
   std::vector<std::string> objects_;      ///< Model::objects of the model drawn

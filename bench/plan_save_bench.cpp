@@ -1,7 +1,7 @@
 // What a durable save costs (README, "Editing"): write_plan_file, which flushes the new file to
 // disk before renaming it over the plan and the folder after (io/atomic_write.h), against the
 // same text written and renamed without the two flushes; the text alone; and the plan lock
-// (io/plan_lock.h) taken and released. Grid plans of 112 and 9,940 walls (bench/grid_plan.h,
+// (io/plan_lock.h) taken and released. Grid plans of 112 and 9,940 walls (testing/grid_plan.h,
 // n = 7 and 70), written in a fresh folder under the system's temporary folder (its file system
 // decides the cost of a flush). Wall-clock time: a flush waits for the disk, not the CPU.
 #include <benchmark/benchmark.h>
@@ -13,9 +13,9 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "grid_plan.h"
 #include "io/plan_json.h"
 #include "io/plan_lock.h"
+#include "testing/grid_plan.h"
 
 namespace roomcad {
 namespace {
@@ -33,7 +33,7 @@ struct Folder {
 };
 
 Plan grid_of(benchmark::State& state) {
-  return bench::make_grid_plan({.n = static_cast<int>(state.range(0))});
+  return samples::make_grid_plan({.n = static_cast<int>(state.range(0))});
 }
 
 void BM_SaveDurable(benchmark::State& state) {

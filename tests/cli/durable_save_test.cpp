@@ -124,6 +124,7 @@ TEST_F(DurableSave, TheNewFileIsFlushedBeforeTheRenameAndTheFolderAfter) {
 TEST_F(DurableSave, AFailedFileFlushLeavesThePlanAsItWas) {
   const Traced t = traced_set(dir_, plan_, "fsync:error=EIO:when=1");
   EXPECT_EQ(t.result.status, 2) << t.result.err;
+  EXPECT_EQ(test::failure_code(t.result), Code::io_error) << t.result.err;
   EXPECT_NE(
       t.result.err.find("cannot write " + plan_.string() + ": write failed: Input/output error"),
       std::string::npos)
@@ -135,6 +136,7 @@ TEST_F(DurableSave, AFailedFileFlushLeavesThePlanAsItWas) {
 TEST_F(DurableSave, AFailedFolderFlushIsReported) {
   const Traced t = traced_set(dir_, plan_, "fsync:error=EIO:when=2");
   EXPECT_EQ(t.result.status, 2) << t.result.err;
+  EXPECT_EQ(test::failure_code(t.result), Code::io_error) << t.result.err;
   EXPECT_NE(t.result.err.find("the new file is in place, but its folder could not be flushed"),
             std::string::npos)
       << t.result.err;

@@ -283,6 +283,7 @@ TEST_F(EditCommands, BadArgumentsExitTwoWithAClearMessage) {
   expect_untouched(2, "set", plan, "south thickness", "not key=value");
   const CommandResult missing = edit("move", dir_ / "none.json", "south --by 1,1");
   EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(test::failure_code(missing), Code::io_error);
   EXPECT_NE(missing.err.find("none.json"), std::string::npos) << missing.err;
   EXPECT_FALSE(fs::exists(dir_ / "none.json"));
 }
@@ -309,14 +310,16 @@ TEST_F(EditCommands, EveryEditWaitsForThePlansLockThenGivesUpNamingTheHolder) {
   for (const auto& [verb, rest] : edits) {
     const CommandResult r = edit(verb, plan, rest + " --wait 0.2");
     EXPECT_EQ(r.status, 2) << verb;
+    EXPECT_EQ(test::failure_code(r), Code::lock_timeout) << verb << ": " << r.err;
     const std::string says = fmt::format(
-        "roomcad {}: error: {} is locked by another editor (pid {}, roomcad view), which did not "
+        "roomcad {}: error[lock_timeout]: {} is locked by another editor (pid {}, roomcad view), which did not "
         "release it within 0.2 s; --wait SECONDS waits longer",
         verb, plan.string(), ::getpid());
     EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
   }
   const CommandResult formatted = test::run_roomcad({"fmt", plan.string(), "--wait", "0"});
   EXPECT_EQ(formatted.status, 2);
+  EXPECT_EQ(test::failure_code(formatted), Code::lock_timeout) << formatted.err;
   EXPECT_NE(formatted.err.find("locked by another editor"), std::string::npos) << formatted.err;
   EXPECT_EQ(read_bytes(plan), before);
   // Reading needs no lock: a dry run and fmt --check go on.

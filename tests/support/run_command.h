@@ -1,9 +1,13 @@
 // Running the roomcad binary from tests and capturing what it prints.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/code.h"
 
 namespace roomcad::test {
 
@@ -23,6 +27,10 @@ struct CommandResult {
 [[nodiscard]] CommandResult run_program(const std::string& program,
                                         const std::vector<std::string>& args);
 
+/// @return the code of the failure the command reported ("roomcad CMD: error[CODE]: ..." on
+///         stderr, cli/command.h), or nullopt when it reported none or a name no Code has.
+[[nodiscard]] std::optional<Code> failure_code(const CommandResult& result);
+
 /// A fresh empty directory under the system temporary directory, removed with its contents
 /// when the object is destroyed.
 class TempDir {
@@ -40,6 +48,9 @@ class TempDir {
 
 /// Writes `bytes` to `path` (plain write, for setting up tests). @return false on failure.
 bool write_bytes(const std::filesystem::path& path, const std::string& bytes);
+/// Makes `path` a sparse file of `size` bytes (no disk space used), for size limits.
+/// @return false on failure.
+bool make_sparse_file(const std::filesystem::path& path, std::uintmax_t size);
 /// @return the bytes of `path`, or "" if it cannot be read.
 [[nodiscard]] std::string read_bytes(const std::filesystem::path& path);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a durable save costs (README, "Editing"): write_plan_file, which flushes the new file to
 // disk before renaming it over the plan and the folder after (io/atomic_write.h), against the
 // same text written and renamed without the two flushes; the text alone; and the plan lock

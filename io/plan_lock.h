@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The lock of a plan file: every read-modify-write of a plan (the edit commands, `fmt`, the
 // window's save) holds it from reading the file to renaming the new one over it, so that two
 // editors never both read the same plan and the last writer never drops the other's edit.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The lost-edit experiment (issue #17): SHELLS shells at once, each running K
 # `roomcad add PLAN wall --id ...` one after the other on the same plan. At the end every
 # command that exited 0 must have its wall in the file; one that is missing is a lost edit (the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ViewSession and its file on disk: opening, saving under the plan's lock, noticing changes
 // other editors make, and the conflict between those and the window's unsaved edits.
 #include <utility>

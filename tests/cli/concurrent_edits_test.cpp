@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // No edit is lost (issue #17): processes editing one plan at once each see every other's edits
 // (the plan's lock, io/plan_lock.h, makes each read-modify-write whole), and an editor killed
 // at any point leaves a whole plan, old or new, and no lock that blocks the next one.

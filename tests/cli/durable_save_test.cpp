@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Saves are durable (io/atomic_write.h): the new file is flushed to disk (fsync) before it is
 // renamed over the plan, and the folder after the rename, as strace sees roomcad do it; a
 // flush that fails (an error strace injects) is reported with exit status 2, and before the

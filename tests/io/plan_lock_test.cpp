@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plan lock: exclusive across open files (flock locks an open file, so two acquires in one
 // process exclude each other as two processes do), waits, gives up with lock_timeout naming the
 // plan and the holder, never trusts a dead holder's record, and never blocks after its holder

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The window's session and other editors of its file: a change on disk is reloaded when the
 // window has no unsaved edits; with unsaved edits (or at a save over a changed file) it is a
 // conflict, where nothing is saved or dropped until the person chooses: reload the file, or

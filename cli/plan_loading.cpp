@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <fmt/format.h>
+
 #include <unistd.h>
 
 #include "cli/command.h"
@@ -36,6 +38,17 @@ LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path
   }
   loaded.plan = std::move(read).value();
   return loaded;
+}
+
+std::optional<PlanLock> lock_plan(std::string_view command, const std::filesystem::path& path,
+                                  double wait_seconds) {
+  Result<PlanLock> lock =
+      PlanLock::acquire(path, wait_duration(wait_seconds), fmt::format("roomcad {}", command));
+  if (lock) return std::move(lock).value();
+  Error error = lock.error();
+  if (error.code == Code::lock_timeout) error.message += "; --wait SECONDS waits longer";
+  report_failure(command, error);
+  return std::nullopt;
 }
 
 LoadedPlan load_valid_plan(std::string_view command, const std::filesystem::path& path,

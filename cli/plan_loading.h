@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "io/plan_lock.h"
 #include "modeling/plan.h"
 #include "validation/report.h"
 
@@ -24,6 +25,14 @@ struct LoadedPlan {
 /// errors. A file that cannot be read (missing, a directory, no permission) gives kExitCannotRun;
 /// a file that is read but is not a valid plan gives kExitPlanErrors.
 [[nodiscard]] LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path);
+
+/// Takes the lock of the plan file `path` for subcommand `command` (io/plan_lock.h), waiting up
+/// to `wait_seconds` (--wait) for another editor. Prints why it could not (the holder, if
+/// known, and how to wait longer) to stderr.
+/// @return the lock, held until destroyed, or nullopt: stop with kExitCannotRun.
+[[nodiscard]] std::optional<PlanLock> lock_plan(std::string_view command,
+                                                const std::filesystem::path& path,
+                                                double wait_seconds);
 
 /// Reads and validates the plan for a command that needs a sound plan (build, render): the
 /// gate. Prints reading and validation problems to stderr as text, and a summary line when

@@ -18,8 +18,9 @@ packages=(
   # formats, command line, threads, images, windows, archives
   nlohmann-json3-dev libsimdjson-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libsdl2-dev libzip-dev libpugixml-dev
   # tests and benchmarks (Xvfb: a screen for the window tests of `roomcad view`; gnuplot draws
-  # bench/report.sh's plots; admesh: an independent STL reader for the export tests)
-  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth gnuplot-nox admesh
+  # bench/report.sh's plots; admesh: an independent STL reader for the export tests; strace:
+  # the durable-save tests watch the flushes and renames and inject their failures)
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth gnuplot-nox admesh strace
   "$@"
 )
 if $tests; then

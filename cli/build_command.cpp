@@ -1,4 +1,4 @@
-// `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|cgal] [--check] [--force]
+// `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|general|nef] [--check] [--force]
 // [--threads N] [--stats] [--format text|json]`: the plan's 3D model, exported and checked.
 #include <cmath>
 #include <cstdio>
@@ -35,6 +35,12 @@ struct CheckVerdict {
   double relative = 0.0;  ///< |volume - analytic| / analytic
   bool ok = false;
 };
+
+BooleanPath parse_boolean_path(const std::string& name) {
+  if (name == "general") return BooleanPath::general;
+  if (name == "nef" || name == "cgal") return BooleanPath::nef;
+  return BooleanPath::automatic;
+}
 
 CheckVerdict check_walls(const Model& model, const Plan& plan) {
   CheckVerdict v;
@@ -83,9 +89,10 @@ std::string check_json(const CheckVerdict& v) {
 
 void print_stats(const Model& model, const BuildStats& stats) {
   std::fprintf(stderr,
-               "build: %zu walls on the fast path, %zu on the CGAL path, %.3f ms\n"
+               "build: %zu walls on the fast path, %zu on the general path, %zu on the Nef path, %.3f ms\n"
                "  walls %zu faces, floor %zu faces, fixtures %zu faces\n",
-               stats.fast_path_walls, stats.cgal_path_walls, stats.build_ms, model.walls.n_faces(),
+               stats.fast_path_walls, stats.general_path_walls, stats.nef_path_walls, stats.build_ms,
+               model.walls.n_faces(),
                model.floor.n_faces(), model.fixtures.n_faces());
 }
 
@@ -100,7 +107,7 @@ int run_build(const BuildCommandOptions& options) {
   // The validation gate: errors stop the build unless --force.
   const LoadedPlan loaded = load_valid_plan("build", options.plan, options.force);
   if (!loaded.plan) return loaded.exit_status;
-  build.boolean = options.boolean == "cgal" ? BooleanPath::cgal : BooleanPath::automatic;
+  build.boolean = parse_boolean_path(options.boolean);
   build.threads = options.threads;
   const bool export_walls = build.parts.walls;
   if (options.check) build.parts.walls = true;  // checked even when not written
@@ -137,9 +144,11 @@ void add_build_command(CLI::App& root, Commands& commands) {
   app->add_option("--parts", options->parts, "what to build and write: any of walls,floor,fixtures")
       ->capture_default_str();
   app->add_option("--boolean", options->boolean,
-                  "auto: the exact fast path where no general boolean is needed, else CGAL;\n"
-                  "cgal: CGAL's exact Nef polyhedra for every wall (to compare)")
-      ->check(CLI::IsMember({"auto", "cgal"}))
+                  "auto: the exact fast path where no boolean is needed, else the exact general\n"
+                  "path (plane by plane); general: the general path for every wall; nef: CGAL's\n"
+                  "exact Nef polyhedra for every wall, the reference to compare with (cgal: the\n"
+                  "same, its old name)")
+      ->check(CLI::IsMember({"auto", "general", "nef", "cgal"}))
       ->capture_default_str();
   app->add_flag("--check", options->check,
                 "check the wall solid as written (closed, 2-manifold, no self-intersection or\n"

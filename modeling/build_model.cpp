@@ -11,6 +11,7 @@
 #include "modeling/detail/fast_wall.h"
 #include "modeling/detail/floor_fixtures.h"
 #include "modeling/detail/fuse_seams.h"
+#include "modeling/detail/general_solid.h"
 #include "modeling/detail/wall_frame.h"
 #include "modeling/joins.h"
 
@@ -30,7 +31,7 @@ std::vector<std::string> object_ids(const Plan& plan) {
 }
 
 FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, const detail::Work& work,
-                    const WorkItem& item) {
+                    const WorkItem& item, BooleanPath path) {
   const int first_opening = detail::opening_object(plan, 0);
   if (item.kind == WorkItem::Kind::hub) return detail::build_hub(work.hubs[item.hub], work.fast_frames);
   if (item.kind == WorkItem::Kind::fast_wall) {
@@ -40,24 +41,25 @@ FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, cons
   std::vector<const WallFrame*> walls;
   walls.reserve(item.walls.size());
   for (std::size_t i : item.walls) walls.push_back(&frames[i]);
-  return detail::build_cluster_cgal(walls, first_opening);
+  return path == BooleanPath::nef ? detail::build_cluster_cgal(walls, first_opening)
+                                  : detail::build_cluster_general(walls, first_opening);
 }
 
 // Builds every item in parallel; results land in item order, so the mesh does not depend on
 // the thread count.
 std::vector<FaceSoup> build_items(const Plan& plan, const std::vector<WallFrame>& frames,
-                                  const detail::Work& work) {
+                                  const detail::Work& work, BooleanPath path) {
   std::vector<FaceSoup> soups(work.items.size());
   tbb::parallel_for(std::size_t{0}, work.items.size(), [&](std::size_t i) {
-    soups[i] = build_item(plan, frames, work, work.items[i]);
+    soups[i] = build_item(plan, frames, work, work.items[i], path);
   });
   return soups;
 }
 
 // Builds the wall items, then fuses the fast path's faces across the seams of its hubs.
 std::vector<FaceSoup> build_walls(const Plan& plan, const std::vector<WallFrame>& frames,
-                                  const detail::Work& work) {
-  std::vector<FaceSoup> soups = build_items(plan, frames, work);
+                                  const detail::Work& work, BooleanPath path) {
+  std::vector<FaceSoup> soups = build_items(plan, frames, work, path);
   std::vector<detail::Hub> hubs;
   for (const WorkItem& item : work.items)
     if (item.kind == WorkItem::Kind::hub) hubs.push_back(work.hubs[item.hub]);
@@ -65,10 +67,10 @@ std::vector<FaceSoup> build_walls(const Plan& plan, const std::vector<WallFrame>
   return soups;
 }
 
-void count_paths(const std::vector<WorkItem>& items, BuildStats& stats) {
+void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStats& stats) {
+  std::size_t& cluster_walls = path == BooleanPath::nef ? stats.nef_path_walls : stats.general_path_walls;
   for (const WorkItem& item : items)
-    (item.kind == WorkItem::Kind::cluster ? stats.cgal_path_walls : stats.fast_path_walls) +=
-        item.walls.size();
+    (item.kind == WorkItem::Kind::cluster ? cluster_walls : stats.fast_path_walls) += item.walls.size();
 }
 
 }  // namespace
@@ -85,8 +87,8 @@ Model build_model(const Plan& plan, const BuildOptions& options, BuildStats* sta
   BuildStats local;
   if (options.parts.walls) {
     const detail::Work work = detail::plan_work(frames, joins, options.boolean);
-    count_paths(work.items, local);
-    model.walls = detail::assemble_mesh(build_walls(plan, frames, work), model.objects);
+    count_paths(work.items, options.boolean, local);
+    model.walls = detail::assemble_mesh(build_walls(plan, frames, work, options.boolean), model.objects);
   } else {
     add_face_properties(model.walls);
   }

@@ -19,13 +19,13 @@ struct Prism {
   double z0, z1;
 };
 
-Polygon to_polygon(const std::array<EK::Point_2, 4>& q) { return Polygon(q.begin(), q.end()); }
+Polygon to_polygon(const std::vector<EK::Point_2>& q) { return Polygon(q.begin(), q.end()); }
 
 // The union of the prisms' outlines over the slab [z0, z1].
 PolygonSet union_in_slab(const std::vector<Prism>& prisms, double z0, double z1) {
   std::vector<Polygon> present;
   for (const Prism& p : prisms)
-    if (p.z0 <= z0 && p.z1 >= z1) present.push_back(p.outline);
+    if (p.z0 <= z0 && p.z1 >= z1 && !p.outline.is_empty()) present.push_back(p.outline);
   PolygonSet set;
   if (!present.empty()) set.join(present.begin(), present.end());
   return set;

@@ -63,14 +63,14 @@ std::size_t count_inside(const WallFrame& f, std::span<const OpenMesh::Vec3d> po
   return count;
 }
 
+}  // namespace
+
 FaceKind wall_face_kind(const WallFrame& f, const OpenMesh::Vec3d& n) {
   if (n[2] > 0.5) return FaceKind::wall_top;
   if (n[2] < -0.5) return FaceKind::wall_bottom;
   const double across = n[0] * f.normal.x + n[1] * f.normal.y;
   return std::abs(across) > 0.9 ? FaceKind::wall_face : FaceKind::wall_end;
 }
-
-}  // namespace
 
 FaceLabel classify_face(std::span<const OpenMesh::Vec3d> points,
                         std::span<const WallFrame* const> walls, int first_opening_object) {

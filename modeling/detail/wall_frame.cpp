@@ -55,6 +55,11 @@ Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
         "build_model: opening '{}' cannot be cut: u [{}, {}] x v [{}, {}] is not a non-empty "
         "rectangle inside wall '{}' ([0, {}] x [0, {}])",
         o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length, w.height), Code::not_buildable);
+  for (std::size_t k = 0; k < 4; ++k)
+    if (f.footprint[k] == f.footprint[(k + 1) % 4])
+      throw PreconditionError(fmt::format(
+          "build_model: opening '{}' cannot be cut: wall '{}' is shorter than its mitres (a side "
+          "of its footprint has no length)", o.id, w.id), Code::not_buildable);
   // base + (sill + height) equals the wall's top exactly when the opening reaches it.
   return {index, o.offset, o.offset + o.width, w.base + o.sill, w.base + (o.sill + o.height)};
 }

@@ -66,7 +66,7 @@ double area_tolerance(const SolidMesh& mesh, double area) {
 SolidCheck expect_valid_model(const Model& model, const Plan& plan, BooleanPath path, long genus,
                               double expected_volume) {
   const SolidCheck c = check_solid(model.walls);
-  const char* name = path == BooleanPath::cgal ? "cgal" : "auto";
+  const char* name = path == BooleanPath::nef ? "cgal" : "auto";
   EXPECT_TRUE(c.is_closed()) << name << ": " << c.border_edges << " border edges";
   EXPECT_TRUE(c.is_manifold()) << name << ": " << c.non_manifold_vertices << " non-manifold vertices, "
                                << c.rejected_triangles << " rejected triangles";
@@ -90,9 +90,9 @@ SolidCheck expect_valid_walls(const Plan& plan, BooleanPath path, long genus, do
 
 void expect_paths_agree(const Plan& plan, long genus, double expected_volume) {
   const Model fast_model = build_model(plan, options_for(BooleanPath::automatic));
-  const Model cgal_model = build_model(plan, options_for(BooleanPath::cgal));
+  const Model cgal_model = build_model(plan, options_for(BooleanPath::nef));
   const SolidCheck fast = expect_valid_model(fast_model, plan, BooleanPath::automatic, genus, expected_volume);
-  const SolidCheck cgal = expect_valid_model(cgal_model, plan, BooleanPath::cgal, genus, expected_volume);
+  const SolidCheck cgal = expect_valid_model(cgal_model, plan, BooleanPath::nef, genus, expected_volume);
   EXPECT_NEAR(fast.volume, cgal.volume, 2 * volume_tolerance(cgal_model.walls, cgal.volume));
   const auto a = area_by_kind(fast_model.walls);
   const auto b = area_by_kind(cgal_model.walls);

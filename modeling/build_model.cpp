@@ -41,7 +41,7 @@ FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, cons
   std::vector<const WallFrame*> walls;
   walls.reserve(item.walls.size());
   for (std::size_t i : item.walls) walls.push_back(&frames[i]);
-  return path == BooleanPath::nef ? detail::build_cluster_cgal(walls, first_opening)
+  return uses_nef(path) ? detail::build_cluster_cgal(walls, first_opening)
                                   : detail::build_cluster_general(walls, first_opening);
 }
 
@@ -68,7 +68,7 @@ std::vector<FaceSoup> build_walls(const Plan& plan, const std::vector<WallFrame>
 }
 
 void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStats& stats) {
-  std::size_t& cluster_walls = path == BooleanPath::nef ? stats.nef_path_walls : stats.general_path_walls;
+  std::size_t& cluster_walls = uses_nef(path) ? stats.nef_path_walls : stats.general_path_walls;
   for (const WorkItem& item : items)
     (item.kind == WorkItem::Kind::cluster ? cluster_walls : stats.fast_path_walls) += item.walls.size();
 }

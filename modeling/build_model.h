@@ -30,7 +30,14 @@ enum class BooleanPath {
   automatic,  ///< per wall: the exact fast path where no boolean is needed, else the general path
   general,    ///< the exact general path (plane by plane, detail/general_solid.h) for every wall
   nef,        ///< CGAL's exact Nef polyhedra for every wall: the reference, to compare against
+  fast_then_nef,  ///< the fast path where it applies, Nef polyhedra for the rest: the automatic
+                  ///< build before the general path, kept for benchmarks
 };
+
+/// @return whether clusters of this path go through Nef polyhedra.
+[[nodiscard]] inline bool uses_nef(BooleanPath path) {
+  return path == BooleanPath::nef || path == BooleanPath::fast_then_nef;
+}
 
 struct BuildOptions {
   BooleanPath boolean = BooleanPath::automatic;

@@ -133,7 +133,7 @@ Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, Boolean
   const std::size_t n = frames.size();
   Work work;
   work.fast_frames = frames;
-  const bool fast = path == BooleanPath::automatic;
+  const bool fast = path == BooleanPath::automatic || path == BooleanPath::fast_then_nef;
   if (fast) work.hubs = find_hubs(frames, joins);
   for (const Hub& hub : work.hubs) attach_hub(hub, work.fast_frames);
   if (fast) work.tees = find_tees(work.fast_frames, joins);

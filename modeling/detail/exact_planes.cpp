@@ -1,6 +1,7 @@
 #include "modeling/detail/exact_planes.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numeric>
 
@@ -96,12 +97,29 @@ std::array<Exact, 4> exact_of_point(const PlaneSet& set, const XPoint& p) {
 
 // The correctly rounded double of num / den (ties to even). @pre den != 0.
 double round_quotient(const Exact& num, const Exact& den) {
+  // A close guess, then exact comparisons with the midpoints to its neighbours.
+  double r = num.to_double() / den.to_double();
+  if (std::isfinite(r) && r != 0.0) {
+    const Exact n = den.sign() > 0 ? num : -num, d = den.sign() > 0 ? den : -den;
+    for (int step = 0; step < 4; ++step) {
+      const double up = std::nextafter(r, INFINITY), down = std::nextafter(r, -INFINITY);
+      // 2 n vs (r + up) d: sums of two doubles are exact in Mpzf.
+      const int above = exact_sign(Exact(2) * n - (Exact(r) + Exact(up)) * d);
+      const int below = exact_sign(Exact(2) * n - (Exact(r) + Exact(down)) * d);
+      if (above > 0) { r = up; continue; }
+      if (below < 0) { r = down; continue; }
+      const bool even = (std::bit_cast<std::uint64_t>(r) & 1u) == 0;
+      if (above == 0 && !even) return up;
+      if (below == 0 && !even) return down;
+      return r;
+    }
+  }
   const mpq_class q = mpq_class(num) / mpq_class(den);
-  mpfr_t r;
-  mpfr_init2(r, 53);
-  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
-  const double out = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
+  mpfr_t m;
+  mpfr_init2(m, 53);
+  mpfr_set_q(m, q.get_mpq_t(), MPFR_RNDN);
+  const double out = mpfr_get_d(m, MPFR_RNDN);
+  mpfr_clear(m);
   return out;
 }
 
@@ -116,17 +134,38 @@ bool do_overlap(const Interval& a, const Interval& b) { return !(a.sup() < b.inf
 
 }  // namespace
 
-std::pair<int, double> simple_axis(const PlaneSet& set, PlaneId id) {
-  const PlaneRecipe& r = set.recipe(id);
-  if (r.kind != PlaneRecipe::Kind::axis || r.v[2] != 0.0) return {-1, 0.0};
-  return {int(r.v[0]), r.v[1]};
+namespace {
+thread_local bool t_upward = false;  // an IntervalScope rounds upward on this thread
+}  // namespace
+
+UpwardRounding::UpwardRounding() : switched_(!t_upward) {
+  if (switched_) saved_ = CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD);
+}
+UpwardRounding::~UpwardRounding() {
+  if (switched_) CGAL::FPU_set_cw(saved_);
+}
+
+IntervalScope::IntervalScope() : outer_(!t_upward) {
+  if (!outer_) return;
+  saved_ = CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD);
+  t_upward = true;
+}
+IntervalScope::~IntervalScope() {
+  if (!outer_) return;
+  t_upward = false;
+  CGAL::FPU_set_cw(saved_);
 }
 
 PlaneId PlaneSet::add(const PlaneRecipe& recipe) {
-  Plane& p = planes_.emplace_back(recipe);
-  const UpwardRounding upward;
-  p.approx = coefficients<Interval>(recipe);
-  return PlaneId(planes_.size() - 1);
+  recipes_.push_back(recipe);
+  {
+    const UpwardRounding upward;
+    approx_.push_back(coefficients<Interval>(recipe));
+  }
+  const bool simple = recipe.kind == PlaneRecipe::Kind::axis && recipe.v[2] == 0.0;
+  axis_.emplace_back(simple ? int(recipe.v[0]) : -1, simple ? recipe.v[1] : 0.0);
+  exact_.emplace_back();
+  return PlaneId(recipes_.size() - 1);
 }
 
 PlaneId PlaneSet::add_axis(int axis, double value) {
@@ -137,14 +176,15 @@ PlaneId PlaneSet::add_axis(int axis, double value) {
 }
 
 const std::array<Exact, 4>& PlaneSet::exact(PlaneId id) const {
-  const Plane& p = planes_[id];
-  std::call_once(p.once, [&p] { p.exact = coefficients<Exact>(p.recipe); });
-  return p.exact;
+  ExactSlot& slot = exact_[id];
+  std::call_once(slot.once, [&] { slot.coefficients = coefficients<Exact>(recipes_[id]); });
+  return slot.coefficients;
 }
 
 XPoint make_point(double x, double y, double z) {
   XPoint p;
   p.approx = {Interval(x), Interval(y), Interval(z)};
+  p.hom = {p.approx[0], p.approx[1], p.approx[2], Interval(1)};
   return p;
 }
 
@@ -161,78 +201,165 @@ XPoint make_point(const PlaneSet& set, PlaneId a, PlaneId b, PlaneId c) {
   XPoint p;
   p.planes = {a, b, c};
   const UpwardRounding upward;
-  const auto h = meet(set.approx(a), set.approx(b), set.approx(c));
-  for (std::size_t k = 0; k < 3; ++k) p.approx[k] = h[k] / h[3];
+  p.hom = meet(set.approx(a), set.approx(b), set.approx(c));
+  for (std::size_t k = 0; k < 3; ++k) p.approx[k] = p.hom[k] / p.hom[3];
+  // A coordinate fixed by an axis plane at a double is exact.
+  for (const auto& [axis, value] : {std::pair{aa, av}, std::pair{ba, bv}, std::pair{ca, cv}})
+    if (axis >= 0) p.approx[std::size_t(axis)] = Interval(value);
   return p;
 }
 
-int side(const PlaneSet& set, PlaneRef plane, const XPoint& p) {
+namespace {
+
+// The predicates on points, given how to get a point's exact homogeneous coordinates (computed
+// only when the filters cannot decide).
+template <class HomOf>
+int side_of(const PlaneSet& set, PlaneRef plane, const XPoint& p, HomOf&& hom_of) {
   if (!p.is_explicit() && p.is_on_plane_by_definition(plane.id)) return 0;
-  int s = kUnknown;
+  // Against an axis plane at a double, an exact coordinate decides at once.
+  if (const auto [axis, value] = simple_axis(set, plane.id); axis >= 0) {
+    const Interval& x = p.approx[std::size_t(axis)];
+    if (x.inf() > value) return plane.sign;
+    if (x.sup() < value) return -plane.sign;
+    if (x.inf() == x.sup()) return 0;
+  }
   {
     const UpwardRounding upward;
     const auto& q = set.approx(plane.id);
-    if (p.is_explicit()) {
-      s = interval_sign(q[0] * p.approx[0] + q[1] * p.approx[1] + q[2] * p.approx[2] + q[3]);
-    } else {
-      const auto& a = set.approx(p.planes[0]);
-      const auto& b = set.approx(p.planes[1]);
-      const auto& c = set.approx(p.planes[2]);
-      const int s4 = interval_sign(det4(a, b, c, q));
-      const int s3 = interval_sign(det3(a, b, c, 0, 1, 2));
-      if (s4 != kUnknown && s3 != kUnknown) s = s4 * s3;
-    }
+    const auto& h = p.hom;
+    // q . (X, Y, Z, W) is the plane's value at the point times W.
+    const int sq = interval_sign(q[0] * h[0] + q[1] * h[1] + q[2] * h[2] + q[3] * h[3]);
+    const int sw = interval_sign(h[3]);
+    if (sq != kUnknown && sw != kUnknown) return sq * sw * plane.sign;
   }
-  if (s == kUnknown) {
-    const auto& q = set.exact(plane.id);
-    if (p.is_explicit()) {
-      s = exact_sign(q[0] * Exact(p.approx[0].inf()) + q[1] * Exact(p.approx[1].inf()) +
-                     q[2] * Exact(p.approx[2].inf()) + q[3]);
-    } else {
-      const auto& a = set.exact(p.planes[0]);
-      const auto& b = set.exact(p.planes[1]);
-      const auto& c = set.exact(p.planes[2]);
-      s = exact_sign(det4(a, b, c, q)) * exact_sign(det3(a, b, c, 0, 1, 2));
-    }
-  }
-  return s * plane.sign;
+  const auto& q = set.exact(plane.id);
+  const XHom& h = hom_of();
+  return exact_sign(q[0] * h.x + q[1] * h.y + q[2] * h.z + q[3] * h.w) * exact_sign(h.w) * plane.sign;
 }
 
-bool is_same_point(const PlaneSet& set, const XPoint& p, const XPoint& q) {
+template <class HomOf>
+bool same_point(const XPoint& p, const XPoint& q, HomOf&& hom_of) {
   if (p.is_explicit() && q.is_explicit()) {
     for (std::size_t k = 0; k < 3; ++k)
       if (p.approx[k].inf() != q.approx[k].inf()) return false;
     return true;
   }
-  for (std::size_t k = 0; k < 3; ++k)
+  bool all_points = true;
+  for (std::size_t k = 0; k < 3; ++k) {
     if (!do_overlap(p.approx[k], q.approx[k])) return false;
+    all_points = all_points && p.approx[k].inf() == p.approx[k].sup() && q.approx[k].inf() == q.approx[k].sup();
+  }
+  if (all_points) return true;  // overlapping point intervals: equal doubles
   if (!p.is_explicit() && !q.is_explicit()) {
     auto a = p.planes, b = q.planes;
     std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
     if (a == b) return true;
   }
-  const auto hp = exact_of_point(set, p), hq = exact_of_point(set, q);
-  for (std::size_t k = 0; k < 3; ++k)
-    if (hp[k] * hq[3] != hq[k] * hp[3]) return false;
-  return true;
+  const XHom& hp = hom_of(0);
+  const XHom& hq = hom_of(1);
+  return hp.x * hq.w == hq.x * hp.w && hp.y * hq.w == hq.y * hp.w && hp.z * hq.w == hq.z * hp.w;
 }
 
-int compare_coordinate(const PlaneSet& set, const XPoint& p, const XPoint& q, int axis) {
+const Exact& coordinate(const XHom& h, std::size_t k) { return k == 0 ? h.x : k == 1 ? h.y : h.z; }
+
+template <class HomOf>
+int compare_points(const XPoint& p, const XPoint& q, int axis, HomOf&& hom_of) {
   const auto k = std::size_t(axis);
   if (p.approx[k].sup() < q.approx[k].inf()) return -1;
   if (p.approx[k].inf() > q.approx[k].sup()) return 1;
-  if (p.is_explicit() && q.is_explicit()) return 0;  // both point intervals, overlapping
-  const auto hp = exact_of_point(set, p), hq = exact_of_point(set, q);
-  return exact_sign(hp[k] * hq[3] - hq[k] * hp[3]) * exact_sign(hp[3]) * exact_sign(hq[3]);
+  if (p.approx[k].inf() == p.approx[k].sup() && q.approx[k].inf() == q.approx[k].sup()) return 0;
+  const XHom& hp = hom_of(0);
+  const XHom& hq = hom_of(1);
+  return exact_sign(coordinate(hp, k) * hq.w - coordinate(hq, k) * hp.w) * exact_sign(hp.w) * exact_sign(hq.w);
 }
 
-int compare_coordinate(const PlaneSet& set, const XPoint& p, double value, int axis) {
+template <class HomOf>
+int compare_value(const XPoint& p, double value, int axis, HomOf&& hom_of) {
   const auto k = std::size_t(axis);
   if (p.approx[k].sup() < value) return -1;
   if (p.approx[k].inf() > value) return 1;
-  if (p.is_explicit()) return 0;
-  const auto h = exact_of_point(set, p);
-  return exact_sign(h[k] - Exact(value) * h[3]) * exact_sign(h[3]);
+  if (p.approx[k].inf() == p.approx[k].sup()) return 0;
+  const XHom& h = hom_of();
+  return exact_sign(coordinate(h, k) - Exact(value) * h.w) * exact_sign(h.w);
+}
+
+template <class HomOf>
+std::array<double, 3> round_of(const XPoint& p, HomOf&& hom_of) {
+  std::array<double, 3> out{};
+  bool all_points = true;
+  for (std::size_t k = 0; k < 3; ++k) {
+    out[k] = p.approx[k].inf();
+    all_points = all_points && p.approx[k].inf() == p.approx[k].sup();
+  }
+  if (all_points) return out;
+  const XHom& h = hom_of();
+  for (std::size_t k = 0; k < 3; ++k) out[k] = round_quotient(coordinate(h, k), h.w) + 0.0;
+  return out;
+}
+
+}  // namespace
+
+XHom homogeneous(const PlaneSet& set, const XPoint& p) {
+  auto h = exact_of_point(set, p);
+  return {std::move(h[0]), std::move(h[1]), std::move(h[2]), std::move(h[3])};
+}
+
+int side(const PlaneSet& set, PlaneRef plane, const XPoint& p) {
+  XHom h;
+  return side_of(set, plane, p, [&]() -> const XHom& { return h = homogeneous(set, p); });
+}
+
+bool is_same_point(const PlaneSet& set, const XPoint& p, const XPoint& q) {
+  XHom h[2];
+  return same_point(p, q, [&](int i) -> const XHom& { return h[i] = homogeneous(set, i == 0 ? p : q); });
+}
+
+int compare_coordinate(const PlaneSet& set, const XPoint& p, const XPoint& q, int axis) {
+  XHom h[2];
+  return compare_points(p, q, axis, [&](int i) -> const XHom& { return h[i] = homogeneous(set, i == 0 ? p : q); });
+}
+
+int compare_coordinate(const PlaneSet& set, const XPoint& p, double value, int axis) {
+  XHom h;
+  return compare_value(p, value, axis, [&]() -> const XHom& { return h = homogeneous(set, p); });
+}
+
+std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p) {
+  XHom h;
+  return round_of(p, [&]() -> const XHom& { return h = homogeneous(set, p); });
+}
+
+std::size_t PointCache::add(const XPoint& p) {
+  points_.push_back(p);
+  exact_.emplace_back();
+  return points_.size() - 1;
+}
+
+const XHom& PointCache::exact(std::size_t i) {
+  if (!exact_[i]) exact_[i] = std::make_unique<XHom>(homogeneous(set_, points_[i]));
+  return *exact_[i];
+}
+
+int PointCache::side(PlaneRef plane, std::size_t i) {
+  return side_of(set_, plane, points_[i], [&]() -> const XHom& { return exact(i); });
+}
+
+bool PointCache::is_same(std::size_t i, std::size_t j) {
+  if (i == j) return true;
+  return same_point(points_[i], points_[j], [&](int k) -> const XHom& { return exact(k == 0 ? i : j); });
+}
+
+int PointCache::compare(std::size_t i, std::size_t j, int axis) {
+  if (i == j) return 0;
+  return compare_points(points_[i], points_[j], axis, [&](int k) -> const XHom& { return exact(k == 0 ? i : j); });
+}
+
+int PointCache::compare(std::size_t i, double value, int axis) {
+  return compare_value(points_[i], value, axis, [&]() -> const XHom& { return exact(i); });
+}
+
+std::array<double, 3> PointCache::round(std::size_t i) {
+  return round_of(points_[i], [&]() -> const XHom& { return exact(i); });
 }
 
 int orient_normals(const PlaneSet& set, PlaneRef a, PlaneRef b, PlaneRef c) {
@@ -301,11 +428,11 @@ bool are_same_plane(const PlaneSet& set, PlaneId a, PlaneId b) {
 }
 
 std::vector<PlaneRef> PlaneSet::find_equal_planes() const {
-  const std::size_t n = planes_.size();
+  const std::size_t n = recipes_.size();
   std::vector<std::array<Interval, 4>> inv(n);
   {
     const UpwardRounding upward;
-    for (std::size_t i = 0; i < n; ++i) inv[i] = invariants(planes_[i].approx);
+    for (std::size_t i = 0; i < n; ++i) inv[i] = invariants(approx_[i]);
   }
   std::vector<PlaneId> order(n);
   std::iota(order.begin(), order.end(), PlaneId{0});
@@ -339,24 +466,6 @@ std::vector<PlaneRef> PlaneSet::find_equal_planes() const {
     group[id] = {rep, rep == id ? 1 : dot_normals(*this, {id, 1}, {rep, 1})};
   }
   return group;
-}
-
-XHom homogeneous(const PlaneSet& set, const XPoint& p) {
-  auto h = exact_of_point(set, p);
-  return {std::move(h[0]), std::move(h[1]), std::move(h[2]), std::move(h[3])};
-}
-
-std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p) {
-  std::array<double, 3> out{};
-  bool all_points = true;
-  for (std::size_t k = 0; k < 3; ++k) {
-    out[k] = p.approx[k].inf();
-    all_points = all_points && p.approx[k].inf() == p.approx[k].sup();
-  }
-  if (p.is_explicit() || all_points) return out;
-  const auto h = exact_of_point(set, p);
-  for (std::size_t k = 0; k < 3; ++k) out[k] = round_quotient(h[k], h[3]) + 0.0;
-  return out;
 }
 
 }  // namespace roomcad::detail

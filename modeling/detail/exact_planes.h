@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -33,8 +34,36 @@ using Interval = CGAL::Interval_nt<false>;  ///< needs upward rounding (UpwardRo
 using Exact = CGAL::Mpzf;
 using PlaneId = std::uint32_t;
 
-/// Sets the FPU to round upward for the scope, as Interval needs.
-using UpwardRounding = CGAL::Protect_FPU_rounding<true>;
+/// Sets the FPU to round upward for the scope, as Interval needs, unless an
+/// IntervalScope of this thread already did.
+class UpwardRounding {
+ public:
+  UpwardRounding();
+  ~UpwardRounding();
+  UpwardRounding(const UpwardRounding&) = delete;
+  UpwardRounding& operator=(const UpwardRounding&) = delete;
+
+ private:
+  bool switched_;
+  CGAL::FPU_CW_t saved_{};
+};
+
+/// Rounds upward for the whole scope on this thread, so that the predicates below need not
+/// switch the rounding mode each time (a measurable share of their cost in the inner loops).
+/// Inside it, plain double arithmetic rounds upward too: only approximations (bounds,
+/// guesses that exact arithmetic checks) may be computed there. Mpzf and MPFR do not depend
+/// on the FPU's mode.
+class IntervalScope {
+ public:
+  IntervalScope();
+  ~IntervalScope();
+  IntervalScope(const IntervalScope&) = delete;
+  IntervalScope& operator=(const IntervalScope&) = delete;
+
+ private:
+  bool outer_;
+  CGAL::FPU_CW_t saved_{};
+};
 
 /// How a plane's coefficients (a, b, c, d: a x + b y + c z + d = 0) come from doubles.
 struct PlaneRecipe {
@@ -63,7 +92,8 @@ struct PlaneRef {
 struct XPoint {
   static constexpr PlaneId kExplicit = UINT32_MAX;
   std::array<PlaneId, 3> planes{kExplicit, kExplicit, kExplicit};
-  std::array<Interval, 3> approx;  ///< encloses the exact coordinates (points if explicit)
+  std::array<Interval, 3> approx;  ///< encloses the exact coordinates (points if exact doubles)
+  std::array<Interval, 4> hom;     ///< encloses homogeneous coordinates (X, Y, Z, W): x = X / W
   [[nodiscard]] bool is_explicit() const { return planes[0] == kExplicit; }
   /// @return whether plane `id` is one of the three that define the point. O(1).
   [[nodiscard]] bool is_on_plane_by_definition(PlaneId id) const {
@@ -84,11 +114,13 @@ class PlaneSet {
   PlaneId add(const PlaneRecipe& recipe);
   /// @return an axis plane x[axis] = value (normal +e[axis]).
   PlaneId add_axis(int axis, double value);
-  [[nodiscard]] std::size_t size() const { return planes_.size(); }
-  [[nodiscard]] const std::array<Interval, 4>& approx(PlaneId id) const { return planes_[id].approx; }
+  [[nodiscard]] std::size_t size() const { return recipes_.size(); }
+  [[nodiscard]] const std::array<Interval, 4>& approx(PlaneId id) const { return approx_[id]; }
   /// @return the exact coefficients (computed once, thread-safe).
   [[nodiscard]] const std::array<Exact, 4>& exact(PlaneId id) const;
-  [[nodiscard]] const PlaneRecipe& recipe(PlaneId id) const { return planes_[id].recipe; }
+  [[nodiscard]] const PlaneRecipe& recipe(PlaneId id) const { return recipes_[id]; }
+  /// @return {axis, offset} if the plane is x[axis] = offset with offset a double, else {-1, 0}.
+  [[nodiscard]] std::pair<int, double> simple_axis(PlaneId id) const { return axis_[id]; }
 
   /// Groups equal planes (exactly: proportional coefficients).
   /// @return per plane, its group's first plane and the orientation relative to it.
@@ -96,14 +128,14 @@ class PlaneSet {
   [[nodiscard]] std::vector<PlaneRef> find_equal_planes() const;
 
  private:
-  struct Plane {
-    explicit Plane(const PlaneRecipe& r) : recipe(r) {}
-    PlaneRecipe recipe;
-    std::array<Interval, 4> approx;
-    mutable std::once_flag once;
-    mutable std::array<Exact, 4> exact;
+  struct ExactSlot {
+    std::once_flag once;
+    std::array<Exact, 4> coefficients;
   };
-  std::deque<Plane> planes_;
+  std::vector<PlaneRecipe> recipes_;
+  std::vector<std::array<Interval, 4>> approx_;
+  std::vector<std::pair<int, double>> axis_;
+  mutable std::deque<ExactSlot> exact_;  // a deque: adding keeps the slots (and flags) in place
 };
 
 /// @return the explicit point (x, y, z). @pre finite.
@@ -133,8 +165,33 @@ class PlaneSet {
 [[nodiscard]] XHom homogeneous(const PlaneSet& set, const XPoint& p);
 /// @return the point's coordinates, each rounded to the nearest double (ties to even).
 [[nodiscard]] std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p);
+/// Points of one computation with their exact homogeneous coordinates, computed once on
+/// first need and kept (the predicates of exact_planes.h, by point index). Single-threaded.
+class PointCache {
+ public:
+  explicit PointCache(const PlaneSet& set) : set_(set) {}
+  /// Adds a point (equal points are not merged). @return its index.
+  std::size_t add(const XPoint& p);
+  [[nodiscard]] const XPoint& operator[](std::size_t i) const { return points_[i]; }
+  [[nodiscard]] std::size_t size() const { return points_.size(); }
+  [[nodiscard]] const PlaneSet& planes() const { return set_; }
+  [[nodiscard]] int side(PlaneRef plane, std::size_t i);
+  [[nodiscard]] bool is_same(std::size_t i, std::size_t j);
+  [[nodiscard]] int compare(std::size_t i, std::size_t j, int axis);
+  [[nodiscard]] int compare(std::size_t i, double value, int axis);
+  [[nodiscard]] std::array<double, 3> round(std::size_t i);
+
+ private:
+  const XHom& exact(std::size_t i);
+  const PlaneSet& set_;
+  std::vector<XPoint> points_;
+  std::vector<std::unique_ptr<XHom>> exact_;
+};
+
 /// @return {axis, offset} if the plane is x[axis] = offset with offset a double, else {-1, 0}.
-[[nodiscard]] std::pair<int, double> simple_axis(const PlaneSet& set, PlaneId id);
+[[nodiscard]] inline std::pair<int, double> simple_axis(const PlaneSet& set, PlaneId id) {
+  return set.simple_axis(id);
+}
 /// @return a double interval enclosing coordinate `axis` of the point.
 [[nodiscard]] inline std::pair<double, double> bounds(const XPoint& p, int axis) {
   return {p.approx[std::size_t(axis)].inf(), p.approx[std::size_t(axis)].sup()};

@@ -20,16 +20,6 @@ struct KeyHash {
   }
 };
 
-// A point's representation (explicit doubles or its three planes) as a hash key.
-Key representation(const XPoint& p) {
-  if (p.is_explicit())
-    return {std::bit_cast<std::uint64_t>(p.approx[0].inf() + 0.0), std::bit_cast<std::uint64_t>(p.approx[1].inf() + 0.0),
-            std::bit_cast<std::uint64_t>(p.approx[2].inf() + 0.0)};
-  auto ids = p.planes;
-  std::sort(ids.begin(), ids.end());
-  return {ids[0] | (std::uint64_t(1) << 63), ids[1], ids[2]};
-}
-
 Key coordinates_key(const OpenMesh::Vec3d& p) {
   return {std::bit_cast<std::uint64_t>(p[0] + 0.0), std::bit_cast<std::uint64_t>(p[1] + 0.0),
           std::bit_cast<std::uint64_t>(p[2] + 0.0)};
@@ -37,26 +27,22 @@ Key coordinates_key(const OpenMesh::Vec3d& p) {
 
 // The distinct rounded points of the faces, one exact representative each.
 struct PointTable {
+  explicit PointTable(const PlaneSet& set) : exact(set) {}
   std::vector<OpenMesh::Vec3d> points;
-  std::vector<XPoint> exact;
+  PointCache exact;  // by point index
   std::vector<std::vector<std::size_t>> polygons;  // per face, point indices
 };
 
-PointTable round_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
-  PointTable t;
-  std::unordered_map<Key, std::size_t, KeyHash> by_rep, by_coordinates;
+PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
+  PointTable t(set);
+  std::unordered_map<Key, std::size_t, KeyHash> by_coordinates;
   for (const SolidFace& f : faces) {
     std::vector<std::size_t>& poly = t.polygons.emplace_back();
-    for (const XPoint& v : f.vertices) {
-      auto [rep, fresh] = by_rep.try_emplace(representation(v), 0);
-      if (fresh) {
-        const auto r = round_point(set, v);
-        const OpenMesh::Vec3d p(r[0], r[1], r[2]);
-        const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), t.points.size());
-        if (added) t.points.push_back(p), t.exact.push_back(v);
-        rep->second = at->second;
-      }
-      poly.push_back(rep->second);
+    for (std::size_t k = 0; k < f.vertices.size(); ++k) {
+      const OpenMesh::Vec3d p(f.rounded[k][0], f.rounded[k][1], f.rounded[k][2]);
+      const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), t.points.size());
+      if (added) t.points.push_back(p), t.exact.add(f.vertices[k]);
+      poly.push_back(at->second);
     }
   }
   return t;
@@ -120,18 +106,18 @@ bool is_near_segment(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, const O
 }
 
 // The axis along which u -> v changes most, and the sign of that change (exact).
-std::pair<int, int> edge_axis(const PlaneSet& set, const XPoint& u, const XPoint& v, const OpenMesh::Vec3d& d) {
+std::pair<int, int> edge_axis(PointCache& exact, std::size_t u, std::size_t v, const OpenMesh::Vec3d& d) {
   std::array<int, 3> axes{0, 1, 2};
   std::sort(axes.begin(), axes.end(), [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
   for (int a : axes)
-    if (const int s = compare_coordinate(set, v, u, a); s != 0) return {a, s};
+    if (const int s = exact.compare(v, u, a); s != 0) return {a, s};
   return {0, 0};
 }
 
 }  // namespace
 
 IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
-  PointTable t = round_faces(set, faces);
+  PointTable t = number_faces(set, faces);
   const PointGrid grid(t.points);
   IndexedSoup out;
   for (std::size_t fi = 0; fi < faces.size(); ++fi) {
@@ -147,20 +133,17 @@ IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& face
       grid.for_each_near(u, v, 1e-9 * (1.0 + u.norm()), [&](std::size_t wi) {
         if (wi == ui || wi == vi || !is_near_segment(u, v, t.points[wi])) return;
         if (std::find(poly.begin(), poly.end(), wi) != poly.end()) return;
-        const XPoint& w = t.exact[wi];
-        if (side(set, f.plane, w) == 0 && side(set, f.lines[k], w) == 0) on_edge.push_back(wi);
+        if (t.exact.side(f.plane, wi) == 0 && t.exact.side(f.lines[k], wi) == 0) on_edge.push_back(wi);
       });
       if (on_edge.empty()) continue;
-      const XPoint& eu = f.vertices[k];
-      const XPoint& ev = f.vertices[(k + 1) % poly.size()];
-      const auto [axis, dir] = edge_axis(set, eu, ev, v - u);
+      const auto [axis, dir] = edge_axis(t.exact, ui, vi, v - u);
       auto between = [&](std::size_t wi) {
-        return compare_coordinate(set, t.exact[wi], eu, axis) == dir && compare_coordinate(set, ev, t.exact[wi], axis) == dir;
+        return t.exact.compare(wi, ui, axis) == dir && t.exact.compare(vi, wi, axis) == dir;
       };
       on_edge.erase(std::remove_if(on_edge.begin(), on_edge.end(), [&](std::size_t wi) { return !between(wi); }),
                     on_edge.end());
       std::sort(on_edge.begin(), on_edge.end(), [&](std::size_t a, std::size_t b) {
-        return compare_coordinate(set, t.exact[a], t.exact[b], axis) * dir < 0;
+        return t.exact.compare(a, b, axis) * dir < 0;
       });
       result.insert(result.end(), on_edge.begin(), on_edge.end());
     }

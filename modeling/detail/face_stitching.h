@@ -3,7 +3,7 @@
 // T-junction), it is inserted into that edge, exactly: the vertex lies on the edge's plane
 // and line (sign 0 of both predicates) strictly between its ends. Then every vertex is
 // rounded once to the nearest doubles; equal exact points round to equal doubles, which is
-// how the faces share vertices in the mesh.
+// how the faces share vertices in the mesh (the faces come rounded: plane_faces.h).
 #pragma once
 
 #include <cstddef>
@@ -20,6 +20,7 @@ struct SolidFace {
   std::size_t owner = 0;         ///< the primitive whose face it is
   std::vector<XPoint> vertices;  ///< counter-clockwise seen from outside
   std::vector<PlaneRef> lines;   ///< lines[k]: the line of edge vertices[k] -> vertices[k + 1]
+  std::vector<std::array<double, 3>> rounded;  ///< each vertex rounded to the nearest doubles
 };
 
 /// @return the faces as rounded polygons with every vertex lying on an edge inserted into it;

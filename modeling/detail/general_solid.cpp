@@ -104,6 +104,7 @@ std::optional<Contribution> section(const PlaneSet& set, const BoxPlanes& box, c
 
 PlaneFaces run_plane(const PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
                      const PlaneWork& w) {
+  const IntervalScope intervals;
   std::vector<Contribution> contributions;
   for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
   for (std::size_t p : w.crossing)
@@ -214,7 +215,7 @@ FaceSoup build_cluster_general(std::span<const WallFrame* const> walls, int firs
   run_planes(set, box, prims, works);
   std::vector<SolidFace> faces;
   for (const PlaneWork& w : works)
-    for (const PlaneFace& f : w.result.faces) faces.push_back({{w.plane, f.side}, f.owner, f.vertices, f.lines});
+    for (const PlaneFace& f : w.result.faces) faces.push_back({{w.plane, f.side}, f.owner, f.vertices, f.lines, f.rounded});
   return to_face_soup(stitch_faces(set, faces), faces, prims, set, walls, first_opening_object);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <map>
+#include <string>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
@@ -21,26 +22,30 @@ struct Context {
   int i, j;  // the two coordinate axes the plane is seen along (dominant_axis dropped)
   const std::vector<Contribution>& contributions;
   const std::vector<Cut>& cuts;
+  PointCache& points;  // every point of the plane, by index
 };
 
 // A polygon edge (or a cut line across the box): the segment of `line` where from_end <= 0
 // and to_end <= 0, from `start` to `end` in direction n x n_line (the polygon on its left).
 struct Edge {
   PlaneRef line, from_end, to_end;
-  XPoint start, end;
-  std::size_t source = 0;  // contribution index; contributions.size() + k for cut k
+  std::size_t start = 0, end = 0;  // point indices
+  std::size_t source = 0;          // contribution index; contributions.size() + k for cut k
   Bounds bounds{};
-  std::vector<XPoint> splits;
+  std::vector<std::size_t> splits;
 };
 
 // A piece of an edge no other boundary crosses; a -> b in the edge's direction.
 struct Piece {
-  XPoint a, b;
+  std::size_t a = 0, b = 0;
   PlaneRef line;
+  std::size_t source = 0;  // the edge's
   Bounds bounds{};
 };
 
-Bounds bounds_of(const Context& cx, const XPoint& p, const XPoint& q) {
+Bounds bounds_of(const Context& cx, std::size_t a, std::size_t b) {
+  const XPoint& p = cx.points[a];
+  const XPoint& q = cx.points[b];
   const auto pi = bounds(p, cx.i), pj = bounds(p, cx.j), qi = bounds(q, cx.i), qj = bounds(q, cx.j);
   return {std::min(pi.first, qi.first), std::min(pj.first, qj.first), std::max(pi.second, qi.second),
           std::max(pj.second, qj.second)};
@@ -61,8 +66,8 @@ Edge make_cut_edge(const Context& cx, const Cut& cut, std::size_t source) {
     d = orient_normals(cx.set, cx.plane, cut.line, high);
   }
   const PlaneRef low{cx.box.low[std::size_t(b)], -1};
-  const XPoint at_low = make_point(cx.set, cx.plane.id, cut.line.id, low.id);
-  const XPoint at_high = make_point(cx.set, cx.plane.id, cut.line.id, high.id);
+  const std::size_t at_low = cx.points.add(make_point(cx.set, cx.plane.id, cut.line.id, low.id));
+  const std::size_t at_high = cx.points.add(make_point(cx.set, cx.plane.id, cut.line.id, high.id));
   Edge e = d > 0 ? Edge{cut.line, low, high, at_low, at_high, source, {}, {}}
                  : Edge{cut.line, high, low, at_high, at_low, source, {}, {}};
   e.bounds = bounds_of(cx, e.start, e.end);
@@ -73,10 +78,11 @@ std::vector<Edge> make_edges(const Context& cx) {
   std::vector<Edge> edges;
   for (std::size_t c = 0; c < cx.contributions.size(); ++c) {
     const PlanePolygon& poly = cx.contributions[c].polygon;
-    const std::size_t n = poly.lines.size();
+    const std::size_t n = poly.lines.size(), first = cx.points.size();
+    for (const XPoint& v : poly.vertices) cx.points.add(v);
     for (std::size_t m = 0; m < n; ++m) {
       const std::size_t prev = (m + n - 1) % n;
-      Edge e{poly.lines[m], poly.lines[prev], poly.lines[(m + 1) % n], poly.vertices[prev], poly.vertices[m], c, {}, {}};
+      Edge e{poly.lines[m], poly.lines[prev], poly.lines[(m + 1) % n], first + prev, first + m, c, {}, {}};
       e.bounds = bounds_of(cx, e.start, e.end);
       edges.push_back(std::move(e));
     }
@@ -86,32 +92,36 @@ std::vector<Edge> make_edges(const Context& cx) {
   return edges;
 }
 
-bool is_strictly_inside(const Context& cx, const Edge& e, const XPoint& p) {
-  return side(cx.set, e.from_end, p) < 0 && side(cx.set, e.to_end, p) < 0;
+bool is_strictly_inside(const Context& cx, const Edge& e, std::size_t p) {
+  return cx.points.side(e.from_end, p) < 0 && cx.points.side(e.to_end, p) < 0;
 }
 
-// Records where e and f cross or touch, on each of them.
+// Records where e and f cross or touch, on each of them: by the sides of each one's ends
+// against the other's line (ends are often explicit doubles, cheap to decide exactly), so a
+// new point is made only where the two cross properly, strictly inside both.
 void split_pair(const Context& cx, Edge& e, Edge& f) {
-  bool collinear = e.line.id == f.line.id;
-  if (!collinear) {
-    if (orient_normals(cx.set, cx.plane, e.line, f.line) == 0) {
-      if (side(cx.set, f.line, e.start) != 0) return;  // parallel
-      collinear = true;                                  // the same trace
-    } else {
-      const XPoint x = make_point(cx.set, cx.plane.id, e.line.id, f.line.id);
-      const int e0 = side(cx.set, e.from_end, x), e1 = side(cx.set, e.to_end, x);
-      if (e0 > 0 || e1 > 0) return;
-      const int f0 = side(cx.set, f.from_end, x), f1 = side(cx.set, f.to_end, x);
-      if (f0 > 0 || f1 > 0) return;
-      if (e0 < 0 && e1 < 0) e.splits.push_back(x);
-      if (f0 < 0 && f1 < 0) f.splits.push_back(x);
-      return;
-    }
+  const int s1 = cx.points.side(f.line, e.start), s2 = cx.points.side(f.line, e.end);
+  if (s1 * s2 > 0) return;
+  const int s3 = cx.points.side(e.line, f.start), s4 = cx.points.side(e.line, f.end);
+  if (s3 * s4 > 0) return;
+  if (s1 == 0 && s2 == 0) {  // the same trace: each splits the other at its ends inside it
+    for (const std::size_t q : {f.start, f.end})
+      if (is_strictly_inside(cx, e, q)) e.splits.push_back(q);
+    for (const std::size_t q : {e.start, e.end})
+      if (is_strictly_inside(cx, f, q)) f.splits.push_back(q);
+    return;
   }
-  for (const XPoint* q : {&f.start, &f.end})
-    if (is_strictly_inside(cx, e, *q)) e.splits.push_back(*q);
-  for (const XPoint* q : {&e.start, &e.end})
-    if (is_strictly_inside(cx, f, *q)) f.splits.push_back(*q);
+  if (s1 != 0 && s2 != 0 && s3 != 0 && s4 != 0) {  // a proper crossing
+    const std::size_t x = cx.points.add(make_point(cx.set, cx.plane.id, e.line.id, f.line.id));
+    e.splits.push_back(x);
+    f.splits.push_back(x);
+    return;
+  }
+  // An end of one lies on the other's line: it splits the other if inside it.
+  if (s1 == 0 && is_strictly_inside(cx, f, e.start)) f.splits.push_back(e.start);
+  if (s2 == 0 && is_strictly_inside(cx, f, e.end)) f.splits.push_back(e.end);
+  if (s3 == 0 && is_strictly_inside(cx, e, f.start)) e.splits.push_back(f.start);
+  if (s4 == 0 && is_strictly_inside(cx, e, f.end)) e.splits.push_back(f.end);
 }
 
 // Sweeps the edges' bounds along the first view axis and splits every overlapping pair.
@@ -137,42 +147,43 @@ void split_edges(const Context& cx, std::vector<Edge>& edges) {
 
 // The edge's pieces, its splits sorted along it.
 void append_pieces(const Context& cx, Edge& e, std::vector<Piece>& pieces) {
-  const double di = std::abs(bounds(e.end, cx.i).first - bounds(e.start, cx.i).first);
-  const double dj = std::abs(bounds(e.end, cx.j).first - bounds(e.start, cx.j).first);
+  const XPoint& start = cx.points[e.start];
+  const XPoint& end = cx.points[e.end];
+  const double di = std::abs(bounds(end, cx.i).first - bounds(start, cx.i).first);
+  const double dj = std::abs(bounds(end, cx.j).first - bounds(start, cx.j).first);
   int axis = di >= dj ? cx.i : cx.j;
-  int dir = compare_coordinate(cx.set, e.end, e.start, axis);
+  int dir = cx.points.compare(e.end, e.start, axis);
   if (dir == 0) {
     axis = axis == cx.i ? cx.j : cx.i;
-    dir = compare_coordinate(cx.set, e.end, e.start, axis);
+    dir = cx.points.compare(e.end, e.start, axis);
   }
   auto& s = e.splits;
-  std::sort(s.begin(), s.end(), [&](const XPoint& p, const XPoint& q) {
-    return compare_coordinate(cx.set, p, q, axis) * dir < 0;
-  });
-  s.erase(std::unique(s.begin(), s.end(), [&](const XPoint& p, const XPoint& q) { return is_same_point(cx.set, p, q); }),
+  std::sort(s.begin(), s.end(), [&](std::size_t p, std::size_t q) { return cx.points.compare(p, q, axis) * dir < 0; });
+  s.erase(std::unique(s.begin(), s.end(), [&](std::size_t p, std::size_t q) { return cx.points.is_same(p, q); }),
           s.end());
-  const XPoint* from = &e.start;
-  for (const XPoint& p : s) {
-    pieces.push_back({*from, p, e.line, bounds_of(cx, *from, p)});
-    from = &p;
+  std::size_t from = e.start;
+  for (const std::size_t p : s) {
+    pieces.push_back({from, p, e.line, e.source, bounds_of(cx, from, p)});
+    from = p;
   }
-  pieces.push_back({*from, e.end, e.line, bounds_of(cx, *from, e.end)});
+  pieces.push_back({from, e.end, e.line, e.source, bounds_of(cx, from, e.end)});
 }
 
-// Ids for the pieces' end points, equal points sharing one. @return per end point (2 per
-// piece) its id; `points` receives one point per id.
-std::vector<std::size_t> number_points(const Context& cx, const std::vector<Piece>& pieces,
-                                       std::vector<XPoint>& points) {
-  // Same representation (explicit doubles, or the same three planes): one point, by hashing.
+// Gives equal points one index (of the first of them): @return per point index its
+// representative's. Points of the same representation (explicit doubles, or the same three
+// planes) by hashing, then the others by a sweep over their bounds on the first axis.
+std::vector<std::size_t> find_equal_points(const Context& cx) {
   using Key = std::array<std::uint64_t, 3>;
   struct KeyHash {
-    std::size_t operator()(const Key& k) const { return std::size_t(k[0] * 0x9E3779B97F4A7C15ull ^ (k[1] + 0x7F4A7C15ull) * 31 ^ k[2]); }
+    std::size_t operator()(const Key& k) const {
+      return std::size_t((k[0] * 0x9E3779B97F4A7C15ull) ^ ((k[1] + 0x7F4A7C15ull) * 0xBF58476D1CE4E5B9ull) ^ k[2]);
+    }
   };
+  const std::size_t n = cx.points.size();
   std::unordered_map<Key, std::size_t, KeyHash> by_key;
-  std::vector<std::size_t> first(2 * pieces.size());
-  std::vector<XPoint> reps;
-  for (std::size_t k = 0; k < 2 * pieces.size(); ++k) {
-    const XPoint& p = k % 2 == 0 ? pieces[k / 2].a : pieces[k / 2].b;
+  std::vector<std::size_t> rep(n), reps;
+  for (std::size_t k = 0; k < n; ++k) {
+    const XPoint& p = cx.points[k];
     Key key;
     if (p.is_explicit()) {
       for (std::size_t c = 0; c < 3; ++c) key[c] = std::bit_cast<std::uint64_t>(p.approx[c].inf() + 0.0);
@@ -181,48 +192,36 @@ std::vector<std::size_t> number_points(const Context& cx, const std::vector<Piec
       std::sort(ids.begin(), ids.end());
       key = {ids[0] | (std::uint64_t(1) << 63), ids[1], ids[2]};
     }
-    const auto [it, fresh] = by_key.try_emplace(key, reps.size());
-    if (fresh) reps.push_back(p);
-    first[k] = it->second;
+    const auto [it, fresh] = by_key.try_emplace(key, k);
+    if (fresh) reps.push_back(k);
+    rep[k] = it->second;
   }
-  // Equal points of different representations: a sweep over their bounds on the first axis.
-  std::vector<std::size_t> order(reps.size()), parent(reps.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::iota(parent.begin(), parent.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const double la = bounds(reps[a], cx.i).first, lb = bounds(reps[b], cx.i).first;
+  std::sort(reps.begin(), reps.end(), [&](std::size_t a, std::size_t b) {
+    const double la = bounds(cx.points[a], cx.i).first, lb = bounds(cx.points[b], cx.i).first;
     return la < lb || (la == lb && a < b);
   });
   std::vector<std::size_t> active;
-  for (std::size_t r : order) {
-    const double low = bounds(reps[r], cx.i).first;
+  for (const std::size_t r : reps) {
+    const double low = bounds(cx.points[r], cx.i).first;
     active.erase(std::remove_if(active.begin(), active.end(),
-                                [&](std::size_t a) { return bounds(reps[a], cx.i).second < low; }),
+                                [&](std::size_t a) { return bounds(cx.points[a], cx.i).second < low; }),
                  active.end());
-    for (std::size_t a : active)
-      if (is_same_point(cx.set, reps[r], reps[a])) {
-        parent[r] = a;
+    for (const std::size_t a : active)
+      if (cx.points.is_same(r, a)) {
+        rep[r] = a;
         break;
       }
-    if (parent[r] == r) active.push_back(r);
+    if (rep[r] == r) active.push_back(r);
   }
-  std::vector<std::size_t> id_of_rep(reps.size(), SIZE_MAX), ids(first.size());
-  for (std::size_t k = 0; k < first.size(); ++k) {
-    const std::size_t root = parent[first[k]];
-    if (id_of_rep[root] == SIZE_MAX) {
-      id_of_rep[root] = points.size();
-      points.push_back(reps[root]);
-    }
-    ids[k] = id_of_rep[root];
-  }
-  return ids;
+  for (std::size_t k = 0; k < n; ++k) rep[k] = rep[rep[k]];
+  return rep;
 }
 
 // The sides of a piece against line t: {its negative side, its positive side}, each -1 when
 // inside t (t's negative side), +1 outside.
 std::array<int, 2> side_signs(const Context& cx, PlaneRef t, const Piece& p) {
-  int s = side(cx.set, t, p.a);
-  if (s == 0) s = side(cx.set, t, p.b);
+  int s = cx.points.side(t, p.a);
+  if (s == 0) s = cx.points.side(t, p.b);
   if (s != 0) return {s, s};
   // t runs along the piece: its inside is the piece's negative side if they point alike.
   const int aligned = t.id == p.line.id ? t.sign * p.line.sign : dot_in_plane(cx.set, cx.plane, t, p.line);
@@ -233,7 +232,7 @@ std::array<int, 2> side_signs(const Context& cx, PlaneRef t, const Piece& p) {
 // on which side of its cuts the point is.
 struct SideLabel {
   long up_owner = -1, down_owner = -1;  // faces looking along (+) and against (-) the normal
-  std::vector<char> up_cells, down_cells;
+  std::string up_cells, down_cells;     // a character per cut of the owner (short: no allocation)
 };
 
 struct Presence {
@@ -248,11 +247,11 @@ struct Presence {
   }
 };
 
-std::vector<char> cells_of(const Context& cx, const Piece& p, long owner, int s) {
-  std::vector<char> cells;
+std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
+  std::string cells;
   if (owner < 0) return cells;
   for (const Cut& cut : cx.cuts)
-    if (long(cut.owner) == owner) cells.push_back(char(side_signs(cx, cut.line, p)[std::size_t(s)] > 0));
+    if (long(cut.owner) == owner) cells.push_back(side_signs(cx, cut.line, p)[std::size_t(s)] > 0 ? '+' : '-');
   return cells;
 }
 
@@ -261,7 +260,9 @@ std::array<SideLabel, 2> classify(const Context& cx, const Piece& p, const std::
   for (std::size_t c = 0; c < cx.contributions.size(); ++c) {
     if (!do_overlap(p.bounds, cbounds[c])) continue;
     std::array<bool, 2> inside{true, true};
-    for (const PlaneRef& t : cx.contributions[c].polygon.lines) {
+    if (c == p.source) {
+      inside[1] = false;  // the piece lies on its own polygon's edge, the polygon on its left
+    } else for (const PlaneRef& t : cx.contributions[c].polygon.lines) {
       const auto s = side_signs(cx, t, p);
       inside[0] = inside[0] && s[0] < 0;
       inside[1] = inside[1] && s[1] < 0;
@@ -282,7 +283,7 @@ std::array<SideLabel, 2> classify(const Context& cx, const Piece& p, const std::
   return out;
 }
 
-using GroupKey = std::tuple<int, long, std::vector<char>>;  // side, owner, cut cells
+using GroupKey = std::tuple<int, long, std::string>;  // side, owner, cut cells
 
 void add_boundary(std::map<GroupKey, std::vector<DirectedPiece>>& groups, const Piece& p, std::size_t a,
                   std::size_t b, const std::array<SideLabel, 2>& l) {
@@ -301,14 +302,15 @@ void add_boundary(std::map<GroupKey, std::vector<DirectedPiece>>& groups, const 
 
 PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef plane,
                              const std::vector<Contribution>& contributions, const std::vector<Cut>& cuts) {
+  const IntervalScope intervals;
   const int k = dominant_axis(set, plane.id);
-  const Context cx{set, box, plane, (k + 1) % 3, (k + 2) % 3, contributions, cuts};
+  PointCache points(set);
+  const Context cx{set, box, plane, (k + 1) % 3, (k + 2) % 3, contributions, cuts, points};
   std::vector<Edge> edges = make_edges(cx);
   split_edges(cx, edges);
   std::vector<Piece> pieces;
   for (Edge& e : edges) append_pieces(cx, e, pieces);
-  std::vector<XPoint> points;
-  const std::vector<std::size_t> ids = number_points(cx, pieces, points);
+  const std::vector<std::size_t> rep = find_equal_points(cx);
   std::vector<Bounds> cbounds;
   for (const Contribution& c : contributions) {
     Bounds b{INFINITY, INFINITY, -INFINITY, -INFINITY};
@@ -319,8 +321,7 @@ PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef
     cbounds.push_back(b);
   }
   std::map<GroupKey, std::vector<DirectedPiece>> groups;
-  for (std::size_t n = 0; n < pieces.size(); ++n)
-    add_boundary(groups, pieces[n], ids[2 * n], ids[2 * n + 1], classify(cx, pieces[n], cbounds));
+  for (const Piece& p : pieces) add_boundary(groups, p, rep[p.a], rep[p.b], classify(cx, p, cbounds));
   PlaneFaces out;
   for (auto& [key, directed] : groups) {
     std::sort(directed.begin(), directed.end(), [](const DirectedPiece& x, const DirectedPiece& y) {
@@ -330,16 +331,21 @@ PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef
                      return x.from == y.from && x.to == y.to;
                    }),
                    directed.end());
-    const auto [side_of, owner, cells] = key;
-    for (PieceLoop& loop : link_loops(set, plane, side_of, std::move(directed), points)) {
-      std::vector<XPoint> vertices;
-      std::vector<PlaneRef> lines;
+    const auto& [side_of, owner, cells] = key;
+    for (PieceLoop& loop : link_loops(plane, side_of, std::move(directed), points)) {
+      PlaneFace face{side_of, std::size_t(owner), {}, {}, {}};
       for (const DirectedPiece& p : loop.pieces) {
-        vertices.push_back(points[p.from]);
-        lines.push_back(p.line);
+        face.vertices.push_back(points[p.from]);
+        face.lines.push_back(p.line);
       }
-      if (loop.is_hole) out.holes.emplace_back(std::size_t(owner), std::move(vertices));
-      else out.faces.push_back({side_of, std::size_t(owner), std::move(vertices), std::move(lines)});
+      if (loop.is_hole) {
+        out.holes.emplace_back(std::size_t(owner), std::move(face.vertices));
+        continue;
+      }
+      // Rounded here, where the exact coordinates found on the way are at hand (and planes
+      // run in parallel).
+      for (const DirectedPiece& p : loop.pieces) face.rounded.push_back(points.round(p.from));
+      out.faces.push_back(std::move(face));
     }
   }
   return out;

@@ -44,6 +44,7 @@ struct PlaneFace {
   std::size_t owner = 0;
   std::vector<XPoint> vertices;  ///< counter-clockwise seen from outside
   std::vector<PlaneRef> lines;   ///< lines[k]: the line of edge vertices[k] -> vertices[k + 1]
+  std::vector<std::array<double, 3>> rounded;  ///< each vertex rounded to the nearest doubles
 };
 
 struct PlaneFaces {

@@ -49,15 +49,13 @@ std::size_t pick_next(const Turn& turn, const DirectedPiece& in, const std::vect
 
 // Whether a loop runs clockwise: the turn at its lowest vertex (lexicographically in the
 // plane's two view axes) is a right turn.
-bool is_clockwise(const Turn& turn, const std::vector<DirectedPiece>& loop, const std::vector<XPoint>& points) {
+bool is_clockwise(const Turn& turn, const std::vector<DirectedPiece>& loop, PointCache& points) {
   const int k = dominant_axis(turn.set, turn.plane.id);
   const int i = (k + 1) % 3, j = (k + 2) % 3;
   std::size_t low = 0;
   for (std::size_t m = 1; m < loop.size(); ++m) {
-    const XPoint& p = points[loop[m].from];
-    const XPoint& q = points[loop[low].from];
-    int c = compare_coordinate(turn.set, p, q, i);
-    if (c == 0) c = compare_coordinate(turn.set, p, q, j);
+    int c = points.compare(loop[m].from, loop[low].from, i);
+    if (c == 0) c = points.compare(loop[m].from, loop[low].from, j);
     if (c < 0) low = m;
   }
   const DirectedPiece& in = loop[(low + loop.size() - 1) % loop.size()];
@@ -66,8 +64,9 @@ bool is_clockwise(const Turn& turn, const std::vector<DirectedPiece>& loop, cons
 
 }  // namespace
 
-std::vector<PieceLoop> link_loops(const PlaneSet& set, PlaneRef plane, int view,
-                                  std::vector<DirectedPiece> pieces, const std::vector<XPoint>& points) {
+std::vector<PieceLoop> link_loops(PlaneRef plane, int view, std::vector<DirectedPiece> pieces,
+                                  PointCache& points) {
+  const PlaneSet& set = points.planes();
   std::sort(pieces.begin(), pieces.end(), [](const DirectedPiece& a, const DirectedPiece& b) {
     return a.from < b.from || (a.from == b.from && a.to < b.to);
   });

@@ -27,12 +27,11 @@ struct PieceLoop {
 
 /// Links the pieces of one face (all with the face on their left seen from `view` times the
 /// plane's normal) into loops.
-/// @param[in] points  the point of every vertex id
-/// @param[in] view    +1: the face is seen from the plane's positive side, -1: negative
+/// @param[in]     view    +1: the face is seen from the plane's positive side, -1: negative
+/// @param[in,out] points  the points, by vertex id (a cache of their exact coordinates)
 /// @return the loops. O(n log n) for n pieces, plus angular sorts at shared vertices.
 /// @throws PreconditionError (internal) if a loop does not close.
-[[nodiscard]] std::vector<PieceLoop> link_loops(const PlaneSet& set, PlaneRef plane, int view,
-                                                std::vector<DirectedPiece> pieces,
-                                                const std::vector<XPoint>& points);
+[[nodiscard]] std::vector<PieceLoop> link_loops(PlaneRef plane, int view, std::vector<DirectedPiece> pieces,
+                                                PointCache& points);
 
 }  // namespace roomcad::detail

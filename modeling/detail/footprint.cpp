@@ -27,13 +27,24 @@ std::optional<std::array<Point2, 4>> find_exact_corners_fast(const Plan& plan, c
   }
 }
 
+// a + b rounded to the nearest double, ties to the lower one (as exact::round_to_nearest
+// rounds: a mitre's shared corner must come out the same from either wall, whichever way
+// each wall's corners are found). IEEE addition rounds ties to even: the tie is undone.
+double add_ties_down(double a, double b) {
+  const double s = a + b, bb = s - a;
+  const double e = (a - (s - bb)) + (b - bb);  // a + b = s + e exactly (TwoSum)
+  if (e >= 0.0) return s;                       // s is the lower neighbour already (or exact)
+  const double below = std::nextafter(s, -INFINITY);
+  return below - s == 2.0 * e ? below : s;      // a tie (the exact sum halfway): take the lower
+}
+
 // The side line of an axis-aligned wall: x[axis] = (the end point's coordinate) + offset,
 // offset +-half the thickness (exact: a double's sign flipped, halved).
 struct AxisSide {
   int axis = 0;       // the coordinate the line fixes: 1 for a wall along x, 0 along y
   double at = 0.0;    // the end point's coordinate on that axis
   double offset = 0.0;
-  double value() const { return at + offset; }  // IEEE addition: the exact sum, rounded to nearest
+  double value() const { return add_ties_down(at, offset); }  // the exact sum, rounded
 };
 
 // Wall w along an axis (-1 if it is not): 0 along x, 1 along y.
@@ -53,8 +64,8 @@ AxisSide axis_side(const Wall& w, WallEnd end, int side) {
 
 /// An axis-aligned wall mitred only to axis-aligned walls has corners whose coordinates are
 /// each an end point's coordinate or the sum of one and +-half a thickness: the nearest
-/// doubles are those sums rounded, as IEEE addition rounds them (what wall_corner<Radical>
-/// would give, exactly, at a thousandth of its cost). @return them, or nothing otherwise.
+/// doubles are those sums rounded (what wall_corner<Radical> rounded by round_to_nearest
+/// gives, bit for bit, at a thousandth of its cost). @return them, or nothing otherwise.
 std::optional<std::array<Point2, 4>> find_axis_aligned_corners(const Plan& plan, const Joins& joins,
                                                                std::size_t wall) {
   const Wall& w = plan.walls[wall];

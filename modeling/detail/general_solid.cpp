@@ -161,6 +161,11 @@ SoupFace label_face(const Primitive& prim, const PlaneSet& set, PlaneRef plane,
   if (prim.kind == Primitive::Kind::solid) {
     face.kind = wall_face_kind(f, n);
     face.object = static_cast<int>(f.wall);
+  } else if (std::abs(n[0] * f.normal.x + n[1] * f.normal.y) > 0.9) {
+    // A hole's face across its wall is its mouth where other material closes it (a wall in
+    // front of a window): that material's face, the host wall's as classify_face has it.
+    face.kind = FaceKind::wall_face;
+    face.object = static_cast<int>(f.wall);
   } else {
     face.kind = n[2] > 0.5 ? FaceKind::sill : n[2] < -0.5 ? FaceKind::lintel : FaceKind::jamb;
     face.object = first_opening_object + static_cast<int>(prim.opening);

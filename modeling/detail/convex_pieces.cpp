@@ -101,6 +101,25 @@ Primitive make_prism(const PlaneSet& set, const PlanePolygon& base, PlaneRef c0,
   return p;
 }
 
+// The convex polyhedron on the negative side of every plane (outward), for shapes that are not
+// prisms: each plane's face is the box's square in it clipped by every other plane. O(m^2)
+// polygon clips for m planes.
+std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box, const std::vector<PlaneRef>& planes) {
+  Primitive p;
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    PlanePolygon face = box_polygon(set, box, planes[i]);
+    bool kept = true;
+    for (std::size_t j = 0; j < planes.size() && kept; ++j)
+      if (j != i) kept = clip_polygon(set, face, planes[j]);
+    if (!kept) continue;
+    p.vertices.insert(p.vertices.end(), face.vertices.begin(), face.vertices.end());
+    p.faces.push_back(std::move(face));
+  }
+  if (p.faces.size() < 4) return std::nullopt;  // no volume
+  p.box = box_of(p.vertices);
+  return p;
+}
+
 // The convex polygon in `plane` on the negative side of every line, clipped from the box.
 // @return nullopt when it has no area. @throws if it is unbounded (cannot happen for a wall).
 std::optional<PlanePolygon> intersect_half_planes(const PlaneSet& set, const BoxPlanes& box,
@@ -160,13 +179,34 @@ std::optional<Primitive> make_hole_piece(PlaneSet& set, const BoxPlanes& box, co
                                       from_cap ? sides[3] : plane_at_u(set, f, h.u0, -1),
                                       plane_at_z(set, h.z1, 1),
                                       to_cap ? sides[1] : plane_at_u(set, f, h.u1, 1)};
-  const PlaneRef c0 = sides[0], c1 = sides[2];
-  auto poly = intersect_half_planes(set, box, {c0.id, -c0.sign}, outline, name);
-  if (!poly) return std::nullopt;
-  Primitive p = make_prism(set, *poly, c0, c1);
+  // The hole lies between the wall's two side lines, on the side of each where the wall's
+  // centre line is: the corners' order does not say which when a mitre overshoots the other
+  // end (a "bow-tie" wall; exact_hole_footprint spans the same lines). A wall thinner than
+  // the doubles (both side lines through its centre line) holds no hole.
+  auto inward = [&](PlaneRef side_plane) -> std::optional<PlaneRef> {
+    int s = side(set, side_plane, make_point(f.from.x, f.from.y, 0.0));
+    if (s == 0) s = side(set, side_plane, make_point(f.to.x, f.to.y, 0.0));
+    if (s == 0) return std::nullopt;
+    return PlaneRef{side_plane.id, s < 0 ? side_plane.sign : -side_plane.sign};
+  };
+  const auto right = inward(sides[0]), left = inward(sides[2]);
+  if (!right || !left) return std::nullopt;
+  const PlaneRef c0 = *right, c1 = *left;
+  std::optional<Primitive> made;
+  if (from_cap || to_cap) {
+    // An end's plane is not parallel to the jambs (its corners are rounded): over the
+    // thickness it may cross the other jamb, so the hole is no prism between the sides.
+    std::vector<PlaneRef> planes = outline;
+    planes.push_back(c0), planes.push_back(c1);
+    made = make_convex(set, box, planes);
+  } else if (auto poly = intersect_half_planes(set, box, {c0.id, -c0.sign}, outline, name)) {
+    made = make_prism(set, *poly, c0, c1);
+  }
+  if (!made) return std::nullopt;
+  Primitive& p = *made;
   p.kind = Primitive::Kind::hole;
   p.opening = h.opening;
-  return p;
+  return made;
 }
 
 }  // namespace

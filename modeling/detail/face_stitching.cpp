@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <unordered_map>
 
 namespace roomcad::detail {
@@ -25,24 +26,44 @@ Key coordinates_key(const OpenMesh::Vec3d& p) {
           std::bit_cast<std::uint64_t>(p[2] + 0.0)};
 }
 
-// The distinct rounded points of the faces, one exact representative each.
+// A point's representation (explicit doubles or its three planes) as a hash key.
+Key representation(const XPoint& p) {
+  if (p.is_explicit())
+    return {std::bit_cast<std::uint64_t>(p.approx[0].inf() + 0.0), std::bit_cast<std::uint64_t>(p.approx[1].inf() + 0.0),
+            std::bit_cast<std::uint64_t>(p.approx[2].inf() + 0.0)};
+  auto ids = p.planes;
+  std::sort(ids.begin(), ids.end());
+  return {ids[0] | (std::uint64_t(1) << 63), ids[1], ids[2]};
+}
+
+// The distinct rounded points of the faces and the exact points behind each (distinct exact
+// points may round to one double point, where features are thinner than an ulp).
 struct PointTable {
   explicit PointTable(const PlaneSet& set) : exact(set) {}
   std::vector<OpenMesh::Vec3d> points;
-  PointCache exact;  // by point index
-  std::vector<std::vector<std::size_t>> polygons;  // per face, point indices
+  std::vector<std::vector<std::size_t>> exact_of;  // per point, indices into `exact`
+  PointCache exact;                                 // every distinct exact point
+  std::vector<std::vector<std::size_t>> polygons;   // per face, point indices
+  std::vector<std::vector<std::size_t>> exact_polygons;  // per face, its own exact points
 };
 
 PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
   PointTable t(set);
-  std::unordered_map<Key, std::size_t, KeyHash> by_coordinates;
+  std::unordered_map<Key, std::size_t, KeyHash> by_coordinates, by_representation;
   for (const SolidFace& f : faces) {
     std::vector<std::size_t>& poly = t.polygons.emplace_back();
+    std::vector<std::size_t>& exact_poly = t.exact_polygons.emplace_back();
     for (std::size_t k = 0; k < f.vertices.size(); ++k) {
       const OpenMesh::Vec3d p(f.rounded[k][0], f.rounded[k][1], f.rounded[k][2]);
       const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), t.points.size());
-      if (added) t.points.push_back(p), t.exact.add(f.vertices[k]);
+      if (added) t.points.push_back(p), t.exact_of.emplace_back();
+      const auto [rep, fresh] = by_representation.try_emplace(representation(f.vertices[k]), t.exact.size());
+      if (fresh) {
+        t.exact.add(f.vertices[k]);
+        t.exact_of[at->second].push_back(rep->second);
+      }
       poly.push_back(at->second);
+      exact_poly.push_back(rep->second);
     }
   }
   return t;
@@ -123,29 +144,33 @@ IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& face
   for (std::size_t fi = 0; fi < faces.size(); ++fi) {
     const SolidFace& f = faces[fi];
     const std::vector<std::size_t>& poly = t.polygons[fi];
+    const std::vector<std::size_t>& exact_poly = t.exact_polygons[fi];
     std::vector<std::size_t> result;
     for (std::size_t k = 0; k < poly.size(); ++k) {
-      const std::size_t ui = poly[k], vi = poly[(k + 1) % poly.size()];
+      const std::size_t next = (k + 1) % poly.size();
+      const std::size_t ui = poly[k], vi = poly[next], eu = exact_poly[k], ev = exact_poly[next];
       result.push_back(ui);
       const OpenMesh::Vec3d& u = t.points[ui];
       const OpenMesh::Vec3d& v = t.points[vi];
-      std::vector<std::size_t> on_edge;
+      // Candidates near the edge in doubles; each decided on its exact points: on the face's
+      // plane and the edge's line, strictly between the face's own exact ends.
+      std::vector<std::pair<std::size_t, std::size_t>> on_edge;  // (point, its exact point)
+      int axis = -1, dir = 0;
       grid.for_each_near(u, v, 1e-9 * (1.0 + u.norm()), [&](std::size_t wi) {
         if (wi == ui || wi == vi || !is_near_segment(u, v, t.points[wi])) return;
         if (std::find(poly.begin(), poly.end(), wi) != poly.end()) return;
-        if (t.exact.side(f.plane, wi) == 0 && t.exact.side(f.lines[k], wi) == 0) on_edge.push_back(wi);
+        for (const std::size_t w : t.exact_of[wi]) {
+          if (t.exact.side(f.plane, w) != 0 || t.exact.side(f.lines[k], w) != 0) continue;
+          if (axis < 0) std::tie(axis, dir) = edge_axis(t.exact, eu, ev, v - u);
+          if (t.exact.compare(w, eu, axis) != dir || t.exact.compare(ev, w, axis) != dir) continue;
+          on_edge.emplace_back(wi, w);
+          break;
+        }
       });
-      if (on_edge.empty()) continue;
-      const auto [axis, dir] = edge_axis(t.exact, ui, vi, v - u);
-      auto between = [&](std::size_t wi) {
-        return t.exact.compare(wi, ui, axis) == dir && t.exact.compare(vi, wi, axis) == dir;
-      };
-      on_edge.erase(std::remove_if(on_edge.begin(), on_edge.end(), [&](std::size_t wi) { return !between(wi); }),
-                    on_edge.end());
-      std::sort(on_edge.begin(), on_edge.end(), [&](std::size_t a, std::size_t b) {
-        return t.exact.compare(a, b, axis) * dir < 0;
+      std::sort(on_edge.begin(), on_edge.end(), [&](const auto& a, const auto& b) {
+        return t.exact.compare(a.second, b.second, axis) * dir < 0;
       });
-      result.insert(result.end(), on_edge.begin(), on_edge.end());
+      for (const auto& [wi, w] : on_edge) result.push_back(wi);
     }
     out.polygons.push_back(std::move(result));
     out.tags.push_back(fi);

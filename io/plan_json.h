@@ -1,4 +1,4 @@
-// Reading and writing plans as JSON (../shared/spec/plan-format.md, version 1).
+// Reading and writing plans as JSON (docs/plan-format.md, versions 1 and 2).
 //
 // Reading never throws and never crashes: every problem becomes a Diagnostic with the file,
 // line, column and JSON pointer (parse_error for malformed JSON and wrong types, invalid_value

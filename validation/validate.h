@@ -1,4 +1,4 @@
-// Validation of a plan: every error code and warning of ../shared/spec/plan-format.md, all
+// Validation of a plan: every error code and warning of docs/plan-format.md, all
 // problems in one run, verdicts exact for the coordinates as read.
 #pragma once
 

@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_roomcad;
 
-const fs::path kHomes = test::source_dir() / ".." / "shared" / "realdata" / "sweethome3d";
+const fs::path kHomes = test::source_dir() / "examples" / "sweethome3d" / "homes";
 
 TEST(ImportCommand, WritesThePlanTheImporterBuilds) {
   const test::TempDir dir;

@@ -185,7 +185,7 @@ TEST(HostileInput, TooManyObjectsIsAnInvalidValueNamingTheArrayAndCount) {
   EXPECT_EQ(d.code, Code::invalid_value);
   EXPECT_EQ(d.message,
             "many.json:1:51: /walls: 1000001 objects; a plan may hold at most 1000000 of each "
-            "kind (walls, openings, lights, cameras)");
+            "kind (levels, walls, openings, slabs, lights, cameras)");
 }
 
 TEST(HostileInput, FilesOverTheSizeLimitAreRefusedUnread) {

@@ -176,7 +176,7 @@ TEST(PlanWrite, NonFiniteNumbersAreRefusedAndNothingIsWritten) {
   plan.walls.push_back(w);
   const Status s = write_plan_file(plan, dir / "p.json");
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.message().find("wall \"w1\""), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("wall 'w1' field 'thickness'"), std::string::npos) << s.message();
   EXPECT_NE(s.message().find("p.json"), std::string::npos) << s.message();
   EXPECT_EQ(test::read_bytes(dir / "p.json"), "old");
 }

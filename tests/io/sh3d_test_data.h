@@ -1,5 +1,6 @@
-// Test data for the Sweet Home 3D importer: the real homes beside the repository, and a
-// plain-text reading of their XML that does not share code with the importer.
+// Test data for the Sweet Home 3D importer: the real homes bundled in examples/sweethome3d/homes
+// (THIRD_PARTY.md), and a plain-text reading of their XML that does not share code with the
+// importer.
 #pragma once
 
 #include <algorithm>
@@ -18,7 +19,7 @@ namespace roomcad::sh3d_test {
 
 namespace fs = std::filesystem;
 
-inline const fs::path kData = test::source_dir() / ".." / "shared" / "realdata" / "sweethome3d";
+inline const fs::path kData = test::source_dir() / "examples" / "sweethome3d" / "homes";
 
 inline std::vector<fs::path> all_homes() {
   std::vector<fs::path> homes;

@@ -1,4 +1,4 @@
-// The Sweet Home 3D importer on the real homes of ../shared/realdata/sweethome3d: counts, units,
+// The Sweet Home 3D importer on the real homes of examples/sweethome3d/homes: counts, units,
 // frame and placement are checked against the XML itself, read here with plain text matching
 // (independently of the importer's XML parser).
 #include <cmath>

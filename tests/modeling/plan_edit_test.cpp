@@ -202,31 +202,33 @@ TEST(PlanEdit, SetFieldIsTypeChecked) {
 }
 
 /// @return the message of the PreconditionError that `edit` throws, or "" if none.
+/// The error an edit throws (Code::internal with no message if it throws none).
 template <class Edit>
-std::string refusal(Edit edit) {
+Error refusal(Edit edit) {
   try {
     edit();
   } catch (const PreconditionError& e) {
-    return e.what();
+    return e.error();
   }
-  return "";
+  return {};
 }
 
 TEST(PlanEdit, SetFieldErrorsNameObjectKeyAndValue) {
   Plan plan = sample_plan();
   const Plan before = plan;
   EXPECT_EQ(refusal([&] { set_field(plan, "south", "colour", "#ffffff"); }),
-            "set: wall 'south' has no field 'colour' (did you mean 'color'?)");
+            Error(Code::usage_error, "set: wall 'south' has no field 'colour' (did you mean 'color'?)"));
   EXPECT_EQ(refusal([&] { set_field(plan, "south", "thickness", "thick"); }),
-            "set: wall 'south' field 'thickness' wants a finite number, got 'thick'");
+            Error(Code::usage_error, "set: wall 'south' field 'thickness' wants metres, got 'thick'"));
   EXPECT_EQ(refusal([&] { set_field(plan, "entry", "swing", "sideways"); }),
-            "set: door 'entry' field 'swing' wants in or out, got 'sideways'");
-  EXPECT_NE(refusal([&] { set_field(plan, "view", "zzzz", "1"); }).find("fields: id, projection"),
+            Error(Code::usage_error, "set: door 'entry' field 'swing' wants in or out, got 'sideways'"));
+  EXPECT_NE(refusal([&] { set_field(plan, "view", "zzzz", "1"); }).message.find("fields: id, projection"),
             std::string::npos);
-  EXPECT_NE(refusal([&] { set_field(plan, "nobody", "id", "x"); }).find("no object has id 'nobody'"),
-            std::string::npos);
-  EXPECT_NE(refusal([&] { set_field(plan, "south", "height", "nan"); }), "");
-  EXPECT_NE(refusal([&] { set_field(plan, "south", "from", "1,2,3"); }), "");
+  const Error nobody = refusal([&] { set_field(plan, "nobody", "id", "x"); });
+  EXPECT_EQ(nobody.code, Code::precondition);
+  EXPECT_NE(nobody.message.find("no object has id 'nobody'"), std::string::npos);
+  EXPECT_EQ(refusal([&] { set_field(plan, "south", "height", "nan"); }).code, Code::usage_error);
+  EXPECT_EQ(refusal([&] { set_field(plan, "south", "from", "1,2,3"); }).code, Code::usage_error);
   EXPECT_EQ(plan, before);
 }
 
@@ -239,8 +241,11 @@ TEST(PlanEdit, RenamingAWallRenamesItsOpeningsReferences) {
 }
 
 TEST(PlanEdit, FieldNamesFollowTheFormat) {
-  EXPECT_EQ(field_names("wall"), (std::vector<std::string_view>{"id", "from", "to", "thickness",
-                                                                "height", "base", "color"}));
+  EXPECT_EQ(field_names("wall"),
+            (std::vector<std::string_view>{"id", "level", "from", "to", "thickness", "height", "base",
+                                           "height_at_end", "arc_extent", "color"}));
+  EXPECT_EQ(field_names("slab"), (std::vector<std::string_view>{"id", "level", "outline", "holes",
+                                                                "top", "thickness", "color"}));
   EXPECT_EQ(object_kind(sample_plan(), "win"), "window");
   EXPECT_EQ(object_kind(sample_plan(), "nothing"), std::nullopt);
 }

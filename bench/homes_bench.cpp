@@ -122,7 +122,7 @@ Options parse_options(int& argc, char** argv) {
 class CsvReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& r : runs) rows_[r.benchmark_name()] = r.counters;
+    for (const Run& r : runs) rows_[r.run_name.function_name] = r.counters;  // "nef/Studio"
     ConsoleReporter::ReportRuns(runs);
   }
   [[nodiscard]] std::string csv() const {

@@ -1,5 +1,5 @@
 // `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|general|nef] [--check] [--force]
-// [--threads N] [--stats] [--format text|json]`: the plan's 3D model, exported and checked.
+// [--threads N] [--stats] [--format text|json] [--level ID]`: the plan's 3D model, exported and checked.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -13,6 +13,7 @@
 #include "io/mesh_export.h"
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
+#include "modeling/plan_levels.h"
 
 namespace roomcad::cli {
 namespace {
@@ -23,6 +24,7 @@ struct BuildCommandOptions {
   std::string parts = "walls,floor,fixtures";
   std::string boolean = "auto";
   std::string format = "text";
+  std::string level;  ///< empty: every level
   int threads = 0;
   bool check = false;
   bool force = false;
@@ -107,12 +109,16 @@ int run_build(const BuildCommandOptions& options) {
   // The validation gate: errors stop the build unless --force.
   const LoadedPlan loaded = load_valid_plan("build", options.plan, options.force);
   if (!loaded.plan) return loaded.exit_status;
+  if (!options.level.empty() && find_level(*loaded.plan, options.level) == nullptr)
+    return report_failure("build", Error(Code::usage_error, fmt::format("--level '{}': {} has no level '{}'",
+                                                                         options.level, options.plan, options.level)));
+  const Plan plan = options.level.empty() ? *loaded.plan : plan_of_level(*loaded.plan, options.level);
   build.boolean = parse_boolean_path(options.boolean);
   build.threads = options.threads;
   const bool export_walls = build.parts.walls;
   if (options.check) build.parts.walls = true;  // checked even when not written
   BuildStats stats;
-  Model model = build_model(*loaded.plan, build, &stats);  // PreconditionError: main reports it
+  Model model = build_model(plan, build, &stats);  // PreconditionError: main reports it
   if (options.stats) print_stats(model, stats);
   if (!options.out.empty()) {
     if (!export_walls) model.walls = SolidMesh{}, add_face_properties(model.walls);
@@ -121,7 +127,7 @@ int run_build(const BuildCommandOptions& options) {
       return report_failure("build", written.error());
   }
   if (!options.check) return kExitOk;
-  const CheckVerdict verdict = check_walls(model, *loaded.plan);
+  const CheckVerdict verdict = check_walls(model, plan);
   std::fputs((options.format == "json" ? check_json(verdict) : check_text(verdict)).c_str(), stdout);
   return verdict.ok ? kExitOk : kExitPlanErrors;
 }
@@ -157,6 +163,9 @@ void add_build_command(CLI::App& root, Commands& commands) {
                 "doubles that .obj, .off and .ply store exactly (.stl rounds them to float32)");
   add_format_option(*app, options->format, "format of the --check report");
   app->add_flag("--force", options->force, "build even if the plan has validation errors");
+  app->add_option("--level", options->level,
+                  "build only the walls of this level (and their openings), where they stand")
+      ->type_name("ID");
   app->add_option("--threads", options->threads, "worker threads, 0 for all cores (same output)")
       ->check(CLI::Range(0, 256))  // as render/renderer.h kMaxThreads: no thread storm
       ->capture_default_str();

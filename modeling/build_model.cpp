@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "modeling/detail/cgal_booleans.h"
+#include "modeling/detail/buildable_plan.h"
 #include "modeling/detail/clusters.h"
 #include "modeling/detail/face_soup.h"
 #include "modeling/detail/fast_wall.h"
@@ -75,27 +76,32 @@ void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStat
 
 }  // namespace
 
-Model build_model(const Plan& plan, const BuildOptions& options, BuildStats* stats) {
+Model build_model(const Plan& input, const BuildOptions& options, BuildStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<tbb::global_control> limit;
   if (options.threads > 0)
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
   Model model;
-  model.objects = object_ids(plan);
+  model.objects = object_ids(input);
+  const detail::BuildablePlan buildable = detail::make_buildable(input);
+  const Plan& plan = buildable.plan;
   const Joins joins = find_joins(plan);
-  const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins);
+  const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins, buildable.through_mitre);
   BuildStats local;
   if (options.parts.walls) {
     const detail::Work work = detail::plan_work(frames, joins, options.boolean);
     count_paths(work.items, options.boolean, local);
-    model.walls = detail::assemble_mesh(build_walls(plan, frames, work, options.boolean), model.objects);
+    std::vector<FaceSoup> walls = build_walls(plan, frames, work, options.boolean);
+    detail::label_input_objects(buildable, walls);
+    model.walls = detail::assemble_mesh(walls, model.objects);
   } else {
     add_face_properties(model.walls);
   }
   const FaceSoup floor = options.parts.floor ? detail::build_floor(plan.site) : FaceSoup{};
   model.floor = detail::assemble_mesh({&floor, 1}, model.objects);
-  const std::vector<FaceSoup> fixtures =
+  std::vector<FaceSoup> fixtures =
       options.parts.fixtures ? detail::build_fixtures(plan, frames) : std::vector<FaceSoup>{};
+  detail::label_input_objects(buildable, fixtures);
   model.fixtures = detail::assemble_mesh(fixtures, model.objects, false);
   local.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats != nullptr) *stats = local;

@@ -4,6 +4,7 @@
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Polygon_set_2.h>
 
+#include "modeling/detail/buildable_plan.h"
 #include "modeling/detail/exact_wall.h"
 #include "modeling/mesh_check.h"
 
@@ -44,8 +45,11 @@ EK::FT area_of(const PolygonSet& set) {
 
 }  // namespace
 
-double analytic_wall_volume(const Plan& plan) {
-  const std::vector<detail::WallFrame> frames = detail::make_wall_frames(plan, find_joins(plan));
+double analytic_wall_volume(const Plan& input) {
+  const detail::BuildablePlan buildable = detail::make_buildable(input);
+  const Plan& plan = buildable.plan;
+  const std::vector<detail::WallFrame> frames =
+      detail::make_wall_frames(plan, find_joins(plan), buildable.through_mitre);
   std::vector<Prism> walls, holes;
   std::vector<double> levels;
   for (const detail::WallFrame& f : frames) {

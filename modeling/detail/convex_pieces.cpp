@@ -173,7 +173,7 @@ std::optional<Primitive> make_hole_piece(PlaneSet& set, const BoxPlanes& box, co
                                          const std::string& name) {
   if (!(h.u0 < h.u1) || !(h.z0 < h.z1)) return std::nullopt;
   // A notch at a capped end takes the end's own plane (exact_hole_footprint does the same).
-  const bool from_cap = !f.capless[0] && h.u0 <= 0.0, to_cap = !f.capless[1] && h.u1 >= f.length;
+  const bool from_cap = hole_reaches_end_line(f, h, 0), to_cap = hole_reaches_end_line(f, h, 1);
   // Counter-clockwise seen along +normal, from the right side plane (sides[0]) to the left one.
   const std::vector<PlaneRef> outline{plane_at_z(set, h.z0, -1),
                                       from_cap ? sides[3] : plane_at_u(set, f, h.u0, -1),

@@ -74,13 +74,14 @@ inline EK::Point_2 exact_side_point(const WallFrame& f, const Point2& a, const P
 
 /// @return the footprint of a hole through the full thickness, counter-clockwise: its
 ///         corners lie exactly on the wall's side lines, at u0 and u1. A hole that reaches a
-///         capped end (u0 = 0 or u1 = length: a notch) takes that end's cap corners instead:
+///         capped end (u0 = 0 or u1 = length: a notch), or runs on through a mitre there, takes
+///         that end's corners instead (hole_reaches_end_line):
 ///         the cap's rounded corners lie at u = 0 (or length) only within rounding, so the
 ///         point at u0 could fall a hair inside the wall and leave a sliver that no mesh in
 ///         doubles can hold (random-plan finding S4). Cost: O(1) exact operations.
 inline std::vector<EK::Point_2> exact_hole_footprint(const WallFrame& f, const Hole& h) {
   const auto& q = f.footprint;
-  const bool from_cap = !f.capless[0] && h.u0 <= 0.0, to_cap = !f.capless[1] && h.u1 >= f.length;
+  const bool from_cap = hole_reaches_end_line(f, h, 0), to_cap = hole_reaches_end_line(f, h, 1);
   auto exact = [](const Point2& p) { return EK::Point_2(p.x, p.y); };
   return convex_part({from_cap ? exact(q[0]) : exact_side_point(f, q[0], q[1], h.u0),
                       to_cap ? exact(q[1]) : exact_side_point(f, q[0], q[1], h.u1),

@@ -109,7 +109,8 @@ Joins with_hairline_mitres(const Plan& plan, Joins joins) {
 
 }  // namespace
 
-std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_joins) {
+std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_joins,
+                                        std::span<const std::array<bool, 2>> through_mitre) {
   const Joins joins = with_hairline_mitres(plan, plan_joins);
   // Frames are independent (a skewed wall's exact corners cost tens of microseconds): built
   // in parallel, the first wall that cannot be built (in plan order) reported.
@@ -132,7 +133,8 @@ std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_join
       throw PreconditionError(fmt::format("build_model: opening '{}' cannot be cut: its wall '{}' "
                                           "does not exist",
                                           plan.openings[i].id, plan.openings[i].wall), Code::not_buildable);
-    frames[it->second].holes.push_back(make_hole(plan, i, frames[it->second]));
+    Hole& hole = frames[it->second].holes.emplace_back(make_hole(plan, i, frames[it->second]));
+    if (i < through_mitre.size()) hole.through_mitre = through_mitre[i];
   }
   for (WallFrame& f : frames)
     std::sort(f.holes.begin(), f.holes.end(),

@@ -99,6 +99,7 @@ void expect_paths_agree(const Plan& plan, long genus, double expected_volume) {
     EXPECT_NEAR(c.volume, nef.volume, 2 * volume_tolerance(nef_model.walls, nef.volume));
     const auto a = area_by_kind(model.walls);
     for (const auto& [kind, area] : b) EXPECT_TRUE(a.count(kind)) << "only nef has " << to_string(kind);
+    for (const auto& [kind, area] : a) EXPECT_TRUE(b.count(kind)) << "only this path has " << to_string(kind) << " " << area;
     ASSERT_EQ(a.size(), b.size());
     for (const auto& [kind, area] : a) {
       ASSERT_TRUE(b.count(kind)) << to_string(kind);

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "grid_plan.h"
+#include "testing/grid_plan.h"
 #include "io/plan_json.h"
 #include "validation/validate.h"
 
@@ -18,7 +18,7 @@ using namespace roomcad;
 const std::string& grid_text(int n) {
   static std::map<int, std::string> texts;
   auto [it, added] = texts.try_emplace(n);
-  if (added) it->second = write_plan_text(bench::make_grid_plan({.n = n}));
+  if (added) it->second = write_plan_text(samples::make_grid_plan({.n = n}));
   return it->second;
 }
 

@@ -7,7 +7,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <ctime>
 
-#include "grid_plan.h"
+#include "testing/grid_plan.h"
 #include "validation/validate.h"
 
 namespace {
@@ -60,9 +60,9 @@ int main(int argc, char** argv) {
   std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   for (const int n : sides) {
     if (quick && n > 22) break;
-    roomcad::bench::GridSpec spec;
+    roomcad::samples::GridSpec spec;
     spec.n = n;
-    const roomcad::Plan plan = roomcad::bench::make_grid_plan(spec);
+    const roomcad::Plan plan = roomcad::samples::make_grid_plan(spec);
     const int runs = plan.walls.size() > 20000 ? 3 : 10;
     roomcad::ValidateOptions no_rooms;
     no_rooms.room_warnings = false;

@@ -1,10 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Levels (plan format version 2, docs/plan-format.md "Version 2"): where a wall or slab stands
-// in absolute z, and the part of a plan that belongs to one level. One place for the rule
-// "a wall's `base` (a slab's `top`) is measured from its level's elevation; without a level,
-// or naming a level the plan does not have, from z = 0", so that the build, validation and
-// render agree on it. An unknown level is validation's `unknown_reference`; here it places
-// the object as version 1 does, so that `--force` builds what it can.
+// Levels (plan format version 2) resolved to absolute heights: where a wall's base and a slab's
+// top are, and the part of a plan on one level. What every module that places objects in z
+// (the build, validation, drawings per level) reads, so that they agree to the bit.
 #pragma once
 
 #include <string_view>
@@ -13,27 +10,28 @@
 
 namespace roomcad {
 
-/// @return the level with this id, or nullptr (also for an empty id). O(levels).
+/// @return the level named `id`, or nullptr when `id` is empty or names no level. O(levels).
 [[nodiscard]] const Level* find_level(const Plan& plan, std::string_view id);
 
-/// @return the elevation of the level named `id` in metres; 0 for no level or an unknown one.
-///         O(levels).
+/// @return the elevation (m) of the level named `id`; 0 when `id` is empty or names no level
+///         (an unknown_reference that validation reports). O(levels).
 [[nodiscard]] double level_elevation(const Plan& plan, std::string_view id);
 
-/// @return the absolute z of the wall's base, metres (its level's elevation + base). O(levels).
-[[nodiscard]] double wall_base_z(const Plan& plan, const Wall& wall);
+/// @return the z (m) of the wall's base: its level's elevation plus its `base`, rounded once to
+///         the nearest double (docs/plan-format.md, "Levels"). O(levels).
+[[nodiscard]] double base_z(const Plan& plan, const Wall& wall);
 
-/// @return the absolute z of the slab's top face, metres (its level's elevation + top).
-///         O(levels).
-[[nodiscard]] double slab_top_z(const Plan& plan, const Slab& slab);
+/// @return the z (m) of the slab's top: its level's elevation plus its `top`, rounded once.
+[[nodiscard]] double top_z(const Plan& plan, const Slab& slab);
 
-/// The plan with every wall's `base` and slab's `top` made absolute and their `level`
-/// cleared: what the build works on. Levels themselves are kept (for names). O(n + levels).
-[[nodiscard]] Plan with_levels_resolved(const Plan& plan);
+/// The plan with every wall's `base` and every slab's `top` made absolute (base_z, top_z) and
+/// their `level` cleared, levels kept: what code written for version 1's single storey reads.
+/// O(levels * (walls + slabs)).
+[[nodiscard]] Plan with_absolute_heights(Plan plan);
 
-/// The plan with only the walls and slabs of level `id` and the openings in those walls
-/// (positions unchanged: the level keeps its elevation). For `build --level`.
-/// @pre find_level(plan, id) != nullptr. O(n log n).
-[[nodiscard]] Plan plan_of_level(const Plan& plan, std::string_view id);
+/// The objects of one level: its walls and slabs, the openings of those walls, every light and
+/// camera, the site and the levels. For drawings and exports of one storey (`--level ID`).
+/// @pre find_level(plan, level) != nullptr (else PreconditionError). O(walls + openings + slabs).
+[[nodiscard]] Plan plan_of_level(const Plan& plan, std::string_view level);
 
 }  // namespace roomcad

@@ -36,7 +36,7 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   // so the report does not depend on timing.
   std::future<std::vector<Room>> rooms;
   if (options.room_warnings)
-    rooms = std::async(std::launch::async, [&plan, &joins] { return detail::find_rooms(plan, joins); });
+    rooms = std::async(std::launch::async, [&plan, &joins] { return find_rooms(plan, joins); });
   if (all_walls_usable) {
     detail::check_geometry(plan, joins, usable, report);
   } else {

@@ -11,6 +11,7 @@
 
 #include "io/detail/json_text.h"
 #include "io/detail/positioned_json.h"
+#include "io/plan_json.h"
 #include "modeling/nearest_name.h"
 #include "modeling/plan_fields.h"
 #include "modeling/value_text.h"

@@ -16,11 +16,6 @@
 
 namespace roomcad::io_detail {
 
-/// Most objects of one kind (walls, openings, ...) a plan may hold; more is an invalid_value
-/// error on the array. A real building has hundreds; the bound stops one file from asking
-/// unbounded memory and time of everything that reads, validates or builds it.
-inline constexpr std::size_t kMaxPlanObjects = 1'000'000;
-
 /// Reads the plan in `text` (named `file` in messages), appending every problem to `report` in
 /// file order: malformed JSON (one parse_error, with line, column and pointer), wrong types and
 /// missing required fields (parse_error), unknown enum values, unsupported format, version or

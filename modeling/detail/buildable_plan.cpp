@@ -64,7 +64,7 @@ BuildablePlan make_buildable(const Plan& plan) {
   refuse_unbuilt(plan);
   BuildablePlan b;
   b.input_walls = plan.walls.size();
-  const Plan resolved = with_levels_resolved(plan);
+  const Plan resolved = with_absolute_heights(plan);
   b.plan = resolved;
   b.plan.walls.clear();
   b.plan.openings.clear();

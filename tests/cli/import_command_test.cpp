@@ -6,7 +6,7 @@
 
 #include "support/plan_reading.h"
 #include "io/plan_json.h"
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 #include "support/run_command.h"
 
 namespace roomcad {

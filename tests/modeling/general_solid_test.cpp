@@ -120,13 +120,7 @@ TEST(GeneralPath, WallsTouchingAlongAnEdgeAreRefusedNamingThem) {
   Plan plan = empty_plan();
   add_wall(plan, "a", {0, 0.125}, {2, 0.125}).thickness = 0.25;
   add_wall(plan, "b", {2, 0.375}, {4, 0.375}).thickness = 0.25;
-  try {
-    (void)build_model(plan, test::options_for(BooleanPath::general));
-    FAIL() << "expected PreconditionError";
-  } catch (const PreconditionError& e) {
-    EXPECT_EQ(e.code(), Code::not_buildable);
-    EXPECT_NE(std::string(e.what()).find("#0, #1"), std::string::npos) << e.what();
-  }
+  test::expect_build_refused(plan, test::options_for(BooleanPath::general), Code::not_buildable, "#0, #1");
 }
 
 }  // namespace

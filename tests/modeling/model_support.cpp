@@ -45,6 +45,16 @@ Plan transformed(const Plan& plan, double degrees, double dx, double dy) {
   return out;
 }
 
+void expect_build_refused(const Plan& plan, const BuildOptions& options, Code code, const std::string& names) {
+  try {
+    (void)build_model(plan, options);
+    ADD_FAILURE() << "built; expected a refusal naming " << names;
+  } catch (const PreconditionError& e) {
+    EXPECT_EQ(e.code(), code) << e.what();
+    EXPECT_NE(std::string(e.what()).find(names), std::string::npos) << e.what();
+  }
+}
+
 BuildOptions options_for(BooleanPath path, int threads) {
   BuildOptions options;
   options.boolean = path;

@@ -23,6 +23,10 @@ void add_room(Plan& plan, const std::string& prefix, double x, double y, double 
 /// Rotates every wall of the plan by `degrees` about the origin, then moves it by (dx, dy).
 Plan transformed(const Plan& plan, double degrees, double dx, double dy);
 
+/// Expects build_model(plan, options) to throw a PreconditionError with this code whose message
+/// holds `names` (the objects and reason it must name).
+void expect_build_refused(const Plan& plan, const BuildOptions& options, Code code, const std::string& names);
+
 /// Build options for one path and thread count.
 BuildOptions options_for(BooleanPath path, int threads = 0);
 

@@ -4,22 +4,16 @@
 #include <gtest/gtest.h>
 
 #include "modeling/build_model.h"
+#include "testing/plan_builders.h"
 
 namespace roomcad {
 namespace {
 
-Wall make_wall(std::string id, Point2 from, Point2 to) {
-  Wall w;
-  w.id = std::move(id);
-  w.from = from;
-  w.to = to;
-  return w;
-}
-
 /// A small room with decimal coordinates: two walls, a door, a window, a light, a camera.
 Plan sample_plan() {
   Plan plan;
-  plan.walls = {make_wall("south", {1.1, 1.3}, {9.7, 1.3}), make_wall("west", {1.1, 1.3}, {1.1, 6.45})};
+  plan.walls = {samples::make_wall("south", {1.1, 1.3}, {9.7, 1.3}, 0.25, 2.8),
+                samples::make_wall("west", {1.1, 1.3}, {1.1, 6.45}, 0.25, 2.8)};
   Opening door = default_opening(OpeningType::door);
   door.id = "entry";
   door.wall = "south";
@@ -45,7 +39,7 @@ TEST(PlanEdit, AddGeneratesIdsUniqueAcrossAllObjects) {
   Light l;
   l.id = "wall-1";  // an id of the wall pattern held by another kind still counts
   add_light(plan, l);
-  const EditSummary s = add_wall(plan, make_wall("", {2, 2}, {3, 2}));
+  const EditSummary s = add_wall(plan, samples::make_wall("", {2, 2}, {3, 2}, 0.25, 2.8));
   EXPECT_EQ(s.added, std::vector<std::string>{"wall-2"});
   EXPECT_EQ(plan.walls.back().id, "wall-2");
   Opening d = default_opening(OpeningType::window);
@@ -58,7 +52,8 @@ TEST(PlanEdit, AddGeneratesIdsUniqueAcrossAllObjects) {
 TEST(PlanEdit, AddRefusesUsedIdsAndUnknownWalls) {
   Plan plan = sample_plan();
   const Plan before = plan;
-  EXPECT_THROW(add_wall(plan, make_wall("entry", {0, 0}, {1, 0})), PreconditionError);
+  EXPECT_THROW(add_wall(plan, samples::make_wall("entry", {0, 0}, {1, 0}, 0.25, 2.8)),
+               PreconditionError);
   Opening d = default_opening(OpeningType::door);
   d.wall = "nowhere";
   try {

@@ -87,6 +87,13 @@ bool write_bytes(const std::filesystem::path& path, const std::string& bytes) {
   return static_cast<bool>(out.flush());
 }
 
+bool make_sparse_file(const std::filesystem::path& path, std::uintmax_t size) {
+  if (!write_bytes(path, "")) return false;
+  std::error_code error;
+  std::filesystem::resize_file(path, size, error);  // truncate(2): a hole, no blocks
+  return !error;
+}
+
 std::string read_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;

@@ -1,6 +1,7 @@
 // Running the roomcad binary from tests and capturing what it prints.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -36,6 +37,9 @@ class TempDir {
 
 /// Writes `bytes` to `path` (plain write, for setting up tests). @return false on failure.
 bool write_bytes(const std::filesystem::path& path, const std::string& bytes);
+/// Makes `path` a sparse file of `size` bytes (no disk space used), for size limits.
+/// @return false on failure.
+bool make_sparse_file(const std::filesystem::path& path, std::uintmax_t size);
 /// @return the bytes of `path`, or "" if it cannot be read.
 [[nodiscard]] std::string read_bytes(const std::filesystem::path& path);
 

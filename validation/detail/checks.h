@@ -38,7 +38,4 @@ void check_warnings(const Plan& plan, const ValidateOptions& options, Report& re
 /// room_without_door and room_without_window warnings for rooms found by find_rooms. O(n).
 void warn_about_rooms(const std::vector<Room>& rooms, Report& report);
 
-/// find_rooms with the plan's joins already found (rooms.cpp).
-[[nodiscard]] std::vector<Room> find_rooms(const Plan& plan, const Joins& joins);
-
 }  // namespace roomcad::detail

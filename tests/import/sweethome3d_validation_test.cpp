@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/sh3d_test_data.h"
+#include "import/sh3d_test_data.h"
 #include "validation/validate.h"
 
 namespace roomcad {

@@ -1,5 +1,5 @@
-#include "io/detail/sh3d_arcs.h"
-#include "io/detail/sh3d_walls.h"
+#include "import/detail/sh3d_arcs.h"
+#include "import/detail/sh3d_walls.h"
 
 #include <algorithm>
 #include <cmath>

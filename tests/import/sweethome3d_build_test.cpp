@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/sh3d_test_data.h"
+#include "import/sh3d_test_data.h"
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
 

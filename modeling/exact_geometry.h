@@ -7,7 +7,8 @@
 // So wall corners, which involve the square root of a wall's squared length, are compared
 // exactly for the coordinates as read at the cost of double arithmetic in all but touching
 // cases, and never for long (CORE::Expr, used before, took minutes near degenerate shapes).
-// This header includes CGAL: include it only from the few detail/*.cpp files that need it.
+// Public for the modules that judge shapes (validation). This header includes CGAL: include it
+// only from the few .cpp files that need it.
 #pragma once
 
 #include <array>

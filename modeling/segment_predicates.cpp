@@ -1,13 +1,13 @@
 // Exact segment predicates: CGAL's filtered Epick predicates and exact::decide.
-#include "modeling/detail/segment_predicates.h"
+#include "modeling/segment_predicates.h"
 
 #include <algorithm>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include "modeling/detail/exact_geometry.h"
+#include "modeling/exact_geometry.h"
 
-namespace roomcad::detail {
+namespace roomcad {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -81,4 +81,4 @@ bool are_parallel(Point2 a, Point2 b, Point2 c, Point2 d) {
   });
 }
 
-}  // namespace roomcad::detail
+}  // namespace roomcad

@@ -5,8 +5,8 @@
 #include <optional>
 #include <vector>
 
-#include "io/detail/sh3d_home.h"
-#include "io/detail/sh3d_walls.h"
+#include "import/detail/sh3d_home.h"
+#include "import/detail/sh3d_walls.h"
 #include "validation/report.h"
 
 namespace roomcad::sh3d {

@@ -1,10 +1,10 @@
-#include "validation/detail/centre_lines.h"
+#include "modeling/detail/centre_lines.h"
 
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
-#include "modeling/detail/segment_predicates.h"
+#include "modeling/segment_predicates.h"
 
 namespace roomcad::detail {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "modeling/plan.h"
 
-namespace roomcad::bench {
+namespace roomcad::samples {
 
 struct GridSpec {
   int n = 10;
@@ -49,4 +49,4 @@ inline Plan make_grid_plan(const GridSpec& g) {
   return plan;
 }
 
-}  // namespace roomcad::bench
+}  // namespace roomcad::samples

@@ -1,4 +1,4 @@
-#include "validation/detail/arrangement.h"
+#include "modeling/detail/arrangement.h"
 
 #include <algorithm>
 #include <cmath>

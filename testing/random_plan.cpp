@@ -1,4 +1,4 @@
-#include "support/random_plan.h"
+#include "testing/random_plan.h"
 
 #include <algorithm>
 #include <bit>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-namespace roomcad::test {
+namespace roomcad::samples {
 namespace {
 
 /// SplitMix64: tiny, and the same sequence everywhere (std:: distributions are not).
@@ -185,4 +185,4 @@ Plan random_plan(std::uint64_t seed, const RandomPlanOptions& options) {
   return Generator(seed, options).plan();
 }
 
-}  // namespace roomcad::test
+}  // namespace roomcad::samples

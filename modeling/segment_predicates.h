@@ -1,11 +1,12 @@
-// Exact predicates on centre-line segments, behind a plain header (no CGAL here).
+// Exact predicates on centre-line segments, behind a plain header (no CGAL here): what joins,
+// validation and the importers decide contacts with.
 // All are exact for the doubles given, including the tolerance comparisons (the distance
 // is compared with the tolerance exactly, not after rounding).
 #pragma once
 
 #include "modeling/plan.h"
 
-namespace roomcad::detail {
+namespace roomcad {
 
 /// @return true if the closed segments a-b and c-d share a point. Exact. O(1).
 [[nodiscard]] bool segments_meet(Point2 a, Point2 b, Point2 c, Point2 d);
@@ -28,4 +29,4 @@ namespace roomcad::detail {
 /// @return true if a-b and c-d are parallel (exactly: cross(b - a, d - c) == 0). O(1).
 [[nodiscard]] bool are_parallel(Point2 a, Point2 b, Point2 c, Point2 d);
 
-}  // namespace roomcad::detail
+}  // namespace roomcad

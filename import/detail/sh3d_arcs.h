@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "io/detail/sh3d_home.h"
+#include "import/detail/sh3d_home.h"
 
 namespace roomcad::sh3d {
 

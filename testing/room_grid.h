@@ -10,7 +10,7 @@
 
 #include "scene_support.h"
 
-namespace roomcad::bench {
+namespace roomcad::samples {
 
 inline constexpr double kRoom = 4.0;      // metres between wall centres
 inline constexpr double kThick = 0.2;
@@ -69,4 +69,4 @@ inline Model make_room_grid(int n) {
   return m;
 }
 
-}  // namespace roomcad::bench
+}  // namespace roomcad::samples

@@ -13,10 +13,9 @@
 #include <unordered_map>
 
 #include "modeling/joins.h"
-#include "validation/detail/arrangement.h"
-#include "validation/detail/centre_lines.h"
-#include "validation/detail/checks.h"
-#include "validation/validate.h"
+#include "modeling/detail/arrangement.h"
+#include "modeling/detail/centre_lines.h"
+#include "modeling/rooms.h"
 
 namespace roomcad {
 namespace {
@@ -110,16 +109,14 @@ Room room_of(const Plan& plan, const OpeningsByWall& by_wall, const detail::Face
 
 }  // namespace
 
-std::vector<Room> find_rooms(const Plan& plan) { return detail::find_rooms(plan, find_joins(plan)); }
-
-namespace detail {
+std::vector<Room> find_rooms(const Plan& plan) { return find_rooms(plan, find_joins(plan)); }
 
 std::vector<Room> find_rooms(const Plan& plan, const Joins& joins) {
   const OpeningsByWall by_wall = openings_by_wall(plan);
-  const CentreLines lines = build_centre_lines(plan, joins);
+  const detail::CentreLines lines = detail::build_centre_lines(plan, joins);
   std::vector<Room> rooms;
-  for (Face& face : find_bounded_faces(lines.segments)) {
-    for (FaceEdge& e : face.boundary) e.wall = lines.walls[e.wall];
+  for (detail::Face& face : detail::find_bounded_faces(lines.segments)) {
+    for (detail::FaceEdge& e : face.boundary) e.wall = lines.walls[e.wall];
     rooms.push_back(room_of(plan, by_wall, face));
   }
   // Number rooms from the south-west: by the lowest, then leftmost, corner of the outline.
@@ -134,5 +131,4 @@ std::vector<Room> find_rooms(const Plan& plan, const Joins& joins) {
   return rooms;
 }
 
-}  // namespace detail
 }  // namespace roomcad

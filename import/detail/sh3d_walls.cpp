@@ -1,7 +1,7 @@
-#include "io/detail/sh3d_walls.h"
+#include "import/detail/sh3d_walls.h"
 
-#include "io/detail/sh3d_arcs.h"
-#include "io/detail/sh3d_junctions.h"
+#include "import/detail/sh3d_arcs.h"
+#include "import/detail/sh3d_junctions.h"
 
 #include <algorithm>
 #include <cmath>

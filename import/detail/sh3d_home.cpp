@@ -1,4 +1,4 @@
-#include "io/detail/sh3d_home.h"
+#include "import/detail/sh3d_home.h"
 
 #include <charconv>
 #include <cmath>

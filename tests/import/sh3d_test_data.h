@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 #include "support/run_command.h"
 
 namespace roomcad::sh3d_test {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "io/detail/sh3d_home.h"
+#include "import/detail/sh3d_home.h"
 #include "validation/report.h"
 
 namespace roomcad::sh3d {

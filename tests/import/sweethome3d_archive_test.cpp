@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 #include <zip.h>
 
-#include "io/sh3d_test_data.h"
-#include "io/sweethome3d_import.h"
+#include "import/sh3d_test_data.h"
+#include "import/sweethome3d_import.h"
 
 namespace roomcad {
 namespace {

@@ -1,4 +1,4 @@
-#include "io/detail/sh3d_archive.h"
+#include "import/detail/sh3d_archive.h"
 
 #include <memory>
 

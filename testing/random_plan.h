@@ -5,7 +5,7 @@
 
 #include "modeling/plan.h"
 
-namespace roomcad::test {
+namespace roomcad::samples {
 
 struct RandomPlanOptions {
   std::size_t max_walls = 12;
@@ -23,4 +23,4 @@ struct RandomPlanOptions {
 /// to this one.
 [[nodiscard]] Plan random_plan(std::uint64_t seed, const RandomPlanOptions& options = {});
 
-}  // namespace roomcad::test
+}  // namespace roomcad::samples

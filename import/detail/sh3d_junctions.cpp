@@ -1,4 +1,4 @@
-#include "io/detail/sh3d_junctions.h"
+#include "import/detail/sh3d_junctions.h"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "io/detail/sh3d_walls.h"
+#include "import/detail/sh3d_walls.h"
 
 namespace roomcad::sh3d {
 namespace {

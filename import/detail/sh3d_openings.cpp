@@ -1,4 +1,4 @@
-#include "io/detail/sh3d_openings.h"
+#include "import/detail/sh3d_openings.h"
 
 #include <algorithm>
 #include <cctype>

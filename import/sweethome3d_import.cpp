@@ -1,4 +1,4 @@
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,11 @@
 
 #include <fmt/format.h>
 
-#include "io/detail/plan_reader.h"
-#include "io/detail/sh3d_archive.h"
-#include "io/detail/sh3d_home.h"
-#include "io/detail/sh3d_openings.h"
-#include "io/detail/sh3d_walls.h"
+#include "io/plan_json.h"
+#include "import/detail/sh3d_archive.h"
+#include "import/detail/sh3d_home.h"
+#include "import/detail/sh3d_openings.h"
+#include "import/detail/sh3d_walls.h"
 #include "io/text_file.h"
 
 namespace roomcad {
@@ -101,7 +101,7 @@ std::vector<Camera> make_cameras(const sh3d::Home& home, const Box& box, double 
 std::string too_many_objects(std::string_view file, std::size_t walls, std::size_t items,
                              std::string_view walls_are, std::string_view items_are) {
   return fmt::format("{}: {} {} {} {}; a plan may hold at most {} of each kind", file, walls,
-                     walls_are, items, items_are, io_detail::kMaxPlanObjects);
+                     walls_are, items, items_are, kMaxPlanObjects);
 }
 
 /// The level id selected by name, "" for all levels.
@@ -132,7 +132,7 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   std::erase_if(home.items, [&](const sh3d::ItemRecord& i) { return !on_level(i.level); });
   if (home.walls.empty())
     return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format("{}: no <wall> to import", file));
-  if (home.walls.size() > io_detail::kMaxPlanObjects || home.items.size() > io_detail::kMaxPlanObjects)
+  if (home.walls.size() > kMaxPlanObjects || home.items.size() > kMaxPlanObjects)
     return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(file, home.walls.size(), home.items.size(),
                                                         "<wall> and", "<doorOrWindow> elements"));
   // Matching is O(walls x (items + levels)): bounded, so that no file can make it hang.
@@ -163,7 +163,7 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
         file, home.walls.size()));
   out.plan.openings = sh3d::place_openings(home, home.items, walls, z_shift_cm, out.warnings);
   // Arcs become up to 256 chords each: the plan itself must stay readable.
-  if (out.plan.walls.size() > io_detail::kMaxPlanObjects)
+  if (out.plan.walls.size() > kMaxPlanObjects)
     return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(file, out.plan.walls.size(),
                                                         out.plan.openings.size(),
                                                         "straight walls (arcs cut into chords) and",

@@ -14,9 +14,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/detail/sh3d_arcs.h"
-#include "io/sweethome3d_import.h"
-#include "io/sh3d_test_data.h"
+#include "import/detail/sh3d_arcs.h"
+#include "import/sweethome3d_import.h"
+#include "import/sh3d_test_data.h"
 
 namespace roomcad {
 namespace {

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "model_support.h"
-#include "modeling/detail/exact_geometry.h"
+#include "modeling/exact_geometry.h"
 #include "modeling/joins.h"
 
 namespace roomcad {

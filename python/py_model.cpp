@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad.Model: what Plan.build returns, as numpy arrays, checked and saved as the command does.
 #include <array>
-#include <span>
+#include <filesystem>
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "io/mesh_export.h"
 #include "io/wall_check_format.h"
@@ -89,7 +90,7 @@ void register_model(py::module_& m) {
       }, "Checks the wall solid as `roomcad build --check` does (closed, 2-manifold, no\n"
          "self-intersection or degenerate face, outward, genus, volume against the plan's\n"
          "analytic volume). @return the dict `--check --format json` prints; ['ok'] is the verdict.")
-      .def("save", [](const PyModel& self, const std::string& path) {
+      .def("save", [](const PyModel& self, const std::filesystem::path& path) {
         const MeshParts parts{{&self.model.walls, &self.model.floor, &self.model.fixtures},
                               &self.model.objects};
         Status written;

@@ -4,11 +4,13 @@
 // modeling/plan_edit.h, modeling/build_model.h, render/render_request.h, io/plan_drawing.h).
 #include <filesystem>
 #include <optional>
+#include <type_traits>
 #include <utility>
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "io/plan_check.h"
 #include "io/plan_drawing.h"

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <pybind11/stl.h>
+
 #include "validation/report_format.h"
 
 namespace py = pybind11;
@@ -16,6 +18,13 @@ py::object where_of(const Diagnostic& d) {
   const auto point = [](Point2 p) { return py::make_tuple(p.x, p.y); };
   if (!d.where->max) return point(d.where->min);
   return py::make_tuple(point(d.where->min), point(*d.where->max));
+}
+
+std::vector<Diagnostic> of_severity(const Report& report, Severity severity) {
+  std::vector<Diagnostic> out;
+  for (const Diagnostic& d : report.items)
+    if (d.severity == severity) out.push_back(d);
+  return out;
 }
 
 }  // namespace
@@ -45,18 +54,10 @@ void register_report(py::module_& m) {
       .def_property_readonly("ok", &Report::ok, "True when there is no error (warnings allowed)")
       .def_property_readonly("findings", [](const Report& r) { return r.items; },
                              "every finding, errors first")
-      .def_property_readonly("errors", [](const Report& r) {
-        std::vector<Diagnostic> out;
-        for (const Diagnostic& d : r.items)
-          if (d.severity == Severity::error) out.push_back(d);
-        return out;
-      }, "the findings that are errors")
-      .def_property_readonly("warnings", [](const Report& r) {
-        std::vector<Diagnostic> out;
-        for (const Diagnostic& d : r.items)
-          if (d.severity == Severity::warning) out.push_back(d);
-        return out;
-      }, "the findings that are warnings")
+      .def_property_readonly("errors", [](const Report& r) { return of_severity(r, Severity::error); },
+                             "the findings that are errors")
+      .def_property_readonly("warnings", [](const Report& r) { return of_severity(r, Severity::warning); },
+                             "the findings that are warnings")
       .def("to_json", &format_report_json,
            "The JSON text `roomcad validate --format json` prints for the same plan.")
       .def("to_dict", [](const Report& r) {

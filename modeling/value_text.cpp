@@ -114,13 +114,21 @@ std::string format_vec3(Vec3 v) {
 
 std::string format_polygon(const Polygon& polygon) {
   std::string out;
-  for (const Point2& p : polygon) out += (out.empty() ? "" : ";") + format_point2(p);
+  // Appended piece by piece: `"x" + std::string&&` draws a false -Wrestrict from GCC 12 when
+  // compiled position-independent (the Python module's build).
+  for (const Point2& p : polygon) {
+    if (!out.empty()) out += ';';
+    out += format_point2(p);
+  }
   return out;
 }
 
 std::string format_polygons(const std::vector<Polygon>& polygons) {
   std::string out;
-  for (std::size_t i = 0; i < polygons.size(); ++i) out += (i ? "|" : "") + format_polygon(polygons[i]);
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    if (i > 0) out += '|';
+    out += format_polygon(polygons[i]);
+  }
   return out;
 }
 

@@ -30,10 +30,13 @@ def test_save_writes_the_bytes_of_fmt(roomcad_exe, path, tmp_path):
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
 def test_obj_is_the_bytes_of_build(roomcad_exe, path, tmp_path):
-    run_cli(roomcad_exe, "build", path, "-o", tmp_path / "cli.obj")
-    roomcad.Plan.load(path).build().save(tmp_path / "py.obj")
-    assert (tmp_path / "py.obj").read_bytes() == (tmp_path / "cli.obj").read_bytes()
-    assert (tmp_path / "py.mtl").read_bytes() == (tmp_path / "cli.mtl").read_bytes()
+    # The same name in two folders: the OBJ names its .mtl.
+    (tmp_path / "cli").mkdir()
+    (tmp_path / "py").mkdir()
+    run_cli(roomcad_exe, "build", path, "-o", tmp_path / "cli" / "model.obj")
+    roomcad.Plan.load(path).build().save(tmp_path / "py" / "model.obj")
+    for name in ("model.obj", "model.mtl"):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes()
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)

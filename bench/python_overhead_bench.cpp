@@ -49,7 +49,8 @@ int main(int argc, char** argv) {
   Report reading;
   const Plan plan = read_plan_file(argv[2], &reading).value();
   const double validate_ms = best_ms(repeats, [&] { (void)check_plan(plan, &reading); });
-  const BuildOptions options{.threads = threads};
+  BuildOptions options;
+  options.threads = threads;
   const double build_ms = best_ms(repeats, [&] { (void)build_model(plan, options); });
   std::printf("{\"walls\": %zu, \"validate_ms\": %.3f, \"build_ms\": %.3f}\n", plan.walls.size(),
               validate_ms, build_ms);

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # `cmake --install build --prefix P`: the `roomcad` command in P/bin, the public headers in
 # P/include/roomcad/<module>/ (the include lines of the tree, e.g. "modeling/plan.h", work
-# against -I P/include/roomcad), the static module libraries in P/lib, and a CMake package
+# against -I P/include/roomcad), the static module libraries in P/lib/roomcad (their names,
+# libcore.a, libio.a, ..., are the project's own, not for the shared lib folder), a CMake package
 # (P/lib/cmake/roomcad) exporting roomcad::<module> per module and roomcad::roomcad for all.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -16,7 +17,7 @@ set_target_properties(roomcad_all PROPERTIES EXPORT_NAME roomcad)
 
 install(TARGETS roomcad RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 install(TARGETS ${roomcad_modules} roomcad_all EXPORT roomcadTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/roomcad COMPONENT development
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/roomcad)
 
 # Public headers only: never detail/. modeling/exact_geometry.h is left out too: it is the

@@ -8,10 +8,9 @@ set(CPACK_PACKAGE_VENDOR "roomcad")
 set(CPACK_PACKAGE_CONTACT "roomcad maintainers <roomcad@users.noreply.github.com>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
     "Room plans validated exactly, built as exact solids, rendered and drawn")
-set(CPACK_PACKAGE_DESCRIPTION
-    "roomcad validates room plans (JSON) with exact geometry, builds their 3D solids, exports\n"
-    "meshes, renders on the CPU, draws SVG plans and edits plans; from the command line, from\n"
-    "C++ (find_package(roomcad)) and from Python (import roomcad).")
+set(CPACK_PACKAGE_DESCRIPTION "roomcad validates room plans (JSON) with exact geometry, \
+builds their 3D solids, exports meshes, renders on the CPU, draws SVG plans and edits plans; \
+from the command line, from C++ (find_package(roomcad)) and from Python (import roomcad).")
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)

@@ -54,32 +54,38 @@ void add_mesh(PyModel& out, const SolidMesh& mesh, bool is_walls) {
 
 }  // namespace
 
-void triangulate_model(PyModel& model) {
+PyModel& triangulated(PyModel& model) {
+  if (model.triangulated) return model;
   add_mesh(model, model.model.walls, true);
   add_mesh(model, model.model.floor, false);
   add_mesh(model, model.model.fixtures, false);
+  model.triangulated = true;
+  return model;
 }
 
 void register_model(py::module_& m) {
   py::class_<PyModel>(m, "Model",
                       "A plan's 3D model (Plan.build): the wall solid, the floor and the fixtures,\n"
                       "as triangles. Coordinates in metres, x east, y north, z up.")
-      .def_property_readonly("vertices", [](const PyModel& self) {
+      .def_property_readonly("vertices", [](PyModel& model) {
+        const PyModel& self = triangulated(model);
         py::array_t<double> out({static_cast<py::ssize_t>(self.vertices.size() / 3), py::ssize_t{3}});
         std::copy(self.vertices.begin(), self.vertices.end(), out.mutable_data());
         return out;
       }, "N x 3 float64 array: the vertices of the walls, then the floor, then the fixtures")
-      .def_property_readonly("faces", [](const PyModel& self) {
+      .def_property_readonly("faces", [](PyModel& model) {
+        const PyModel& self = triangulated(model);
         py::array_t<std::int32_t> out({static_cast<py::ssize_t>(self.faces.size() / 3), py::ssize_t{3}});
         std::copy(self.faces.begin(), self.faces.end(), out.mutable_data());
         return out;
       }, "M x 3 int32 array: triangles, counter-clockwise seen from outside")
-      .def_readonly("face_objects", &PyModel::face_objects,
+      .def_property_readonly("face_objects", [](PyModel& m) { return triangulated(m).face_objects; },
                     "the id of the object each triangle belongs to ('' for none)")
-      .def_readonly("face_kinds", &PyModel::face_kinds,
+      .def_property_readonly("face_kinds", [](PyModel& m) { return triangulated(m).face_kinds; },
                     "what each triangle is: wall_face, wall_top, wall_bottom, wall_end, jamb,\n"
                     "sill, lintel, floor, door, window")
-      .def_readonly("volume", &PyModel::volume, "the wall solid's volume, cubic metres")
+      .def_property_readonly("volume", [](PyModel& m) { return triangulated(m).volume; },
+                             "the wall solid's volume from its triangles, cubic metres")
       .def("check", [](const PyModel& self) {
         std::string json;
         {
@@ -104,8 +110,9 @@ void register_model(py::module_& m) {
          "it, .off, .ply, .stl), atomically: the same bytes as `roomcad build -o path`.\n"
          "@raise roomcad.Error (unsupported, io_error)")
       .def("__repr__", [](const PyModel& self) {
-        return "<Model: " + std::to_string(self.vertices.size() / 3) + " vertices, " +
-               std::to_string(self.faces.size() / 3) + " triangles>";
+        return "<Model: " + std::to_string(self.model.walls.n_faces()) + " wall faces, " +
+               std::to_string(self.model.floor.n_faces()) + " floor faces, " +
+               std::to_string(self.model.fixtures.n_faces()) + " fixture faces>";
       });
 }
 

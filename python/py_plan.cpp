@@ -108,7 +108,6 @@ PyModel build(const PyPlan& self, bool force, const std::string& parts, int thre
   const BuildOptions options{.parts = parts_of(parts), .threads = threads};
   py::gil_scoped_release free;
   out.model = build_model(self.plan, options);
-  triangulate_model(out);
   return out;
 }
 
@@ -181,7 +180,12 @@ void register_plan(py::module_& m) {
       .def_static("from_json", [](const std::string& text) { return read_text(text, "<json>", "plan"); },
                   py::arg("text"), "Reads a plan from its JSON text. @raise roomcad.Error as load")
       .def_static("from_dict", [](const py::dict& d) {
-        const std::string text = py::module_::import("json").attr("dumps")(d).cast<std::string>();
+        // Compact, unchecked for cycles: the dict's text costs more than reading it.
+        const std::string text = py::module_::import("json")
+                                     .attr("dumps")(d, py::arg("separators") = py::make_tuple(",", ":"),
+                                                    py::arg("check_circular") = false,
+                                                    py::arg("ensure_ascii") = false)
+                                     .cast<std::string>();
         return read_text(text, "<dict>", "plan");
       }, py::arg("d"), "Reads a plan from a dict shaped like its JSON (as to_dict() gives).\n"
                        "@raise roomcad.Error as load (.file is '<dict>')")

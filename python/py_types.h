@@ -27,10 +27,12 @@ struct PyPlan {
 };
 
 /// roomcad.Model: a built model, its plan (for the analytic volume of check()) and its
-/// triangles, computed once.
+/// triangles, computed on the first use of an array (so that build() costs what the C++
+/// build costs).
 struct PyModel {
   Model model;
   Plan plan;
+  bool triangulated = false;
   std::vector<double> vertices;      ///< x, y, z per vertex: walls, then floor, then fixtures
   std::vector<std::int32_t> faces;   ///< three vertex indices per triangle
   std::vector<std::string> face_objects;
@@ -38,8 +40,9 @@ struct PyModel {
   double volume = 0.0;  ///< the wall solid's, from its triangles
 };
 
-/// Triangulates the model's faces into `model`'s arrays. Cost O(faces * corners^2).
-void triangulate_model(PyModel& model);
+/// Triangulates the model's faces into `model`'s arrays, once (the GIL held: two threads may
+/// share a Model). @return `model`. Cost O(faces * corners^2) the first time.
+PyModel& triangulated(PyModel& model);
 
 void register_report(pybind11::module_& m);
 void register_model(pybind11::module_& m);

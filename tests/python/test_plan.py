@@ -130,3 +130,29 @@ def test_help_explains_every_parameter_of_build():
     doc = roomcad.Plan.build.__doc__
     for parameter in ("force", "parts", "threads"):
         assert parameter in doc
+
+
+@pytest.mark.parametrize("call", [
+    lambda p: roomcad.Plan.from_dict({"version": 1, "walls": 5}),
+    lambda p: roomcad.Plan.from_json("\x00"),
+    lambda p: p.render(width=0),
+    lambda p: p.render(width=100000, height=100000),
+    lambda p: p.render(camera="nowhere"),
+    lambda p: p.render(eye=(1, 2), target=(0, 0, 0)),
+    lambda p: p.draw(view="bogus"),
+    lambda p: p.draw(view="camera:"),
+    lambda p: p.draw(scale="huge"),
+    lambda p: p.set("s", "from", object()),
+    lambda p: p.set("nothing", "height", 2),
+    lambda p: p.add("wall", **{"from": (float("nan"), 0)}, to=(1, 0)),
+    lambda p: p.move("d", 1, 0),
+    lambda p: p.scale("s", -1),
+    lambda p: p.build(parts=""),
+], ids=lambda call: "")
+def test_hostile_calls_raise_roomcad_error(call):
+    plan = roomcad.Plan.from_dict(ROOM)
+    before = plan.to_json()
+    with pytest.raises(roomcad.Error) as caught:
+        call(plan)
+    assert caught.value.code and str(caught.value)
+    assert plan.to_json() == before

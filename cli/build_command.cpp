@@ -1,6 +1,8 @@
 // `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|cgal] [--check] [--force]
 // [--threads N] [--stats] [--format text|json]`: the plan's 3D model, exported and checked.
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,6 +11,8 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "io/gltf_export.h"
+#include "io/ifc_export.h"
 #include "io/mesh_export.h"
 #include "io/wall_check_format.h"
 #include "modeling/build_model.h"
@@ -37,17 +41,47 @@ void print_stats(const Model& model, const BuildStats& stats) {
                model.floor.n_faces(), model.fixtures.n_faces());
 }
 
+/// What -o writes: a mesh file, an IFC model (no mesh needed) or a glTF scene.
+enum class OutputKind { none, mesh, ifc, gltf };
+
+Result<OutputKind> output_kind(const std::string& out) {
+  if (out.empty()) return OutputKind::none;
+  std::string extension = std::filesystem::path(out).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".ifc") return OutputKind::ifc;
+  if (extension == ".glb" || extension == ".gltf") return OutputKind::gltf;
+  if (const auto format = mesh_format_of(out); !format)
+    return Error{format.error().code, format.error().message + ", .ifc, .glb or .gltf"};
+  return OutputKind::mesh;
+}
+
+/// Writes the plan as IFC and prints what was written.
+int export_ifc(const Plan& plan, const std::string& out) {
+  IfcExportSummary summary;
+  if (const Status written = write_ifc_file(out, plan, &summary); !written)
+    return report_failure("build", written.error());
+  std::fprintf(stderr,
+               "roomcad build: wrote %s: %zu storeys, %zu walls, %zu openings (%zu doors, %zu "
+               "windows), %zu slabs, %zu spaces\n",
+               out.c_str(), summary.storeys, summary.walls, summary.openings, summary.doors,
+               summary.windows, summary.slabs, summary.spaces);
+  return kExitOk;
+}
+
 int run_build(const BuildCommandOptions& options) {
   BuildOptions build;
   const Result<Parts> parts = parse_parts(options.parts);
   if (!parts) return report_failure("build", parts.error());
   build.parts = parts.value();
-  if (!options.out.empty())
-    if (const auto format = mesh_format_of(options.out); !format)
-      return report_failure("build", format.error());
+  const Result<OutputKind> kind = output_kind(options.out);
+  if (!kind) return report_failure("build", kind.error());
   // The validation gate: errors stop the build unless --force.
   const LoadedPlan loaded = load_valid_plan("build", options.plan, options.force);
   if (!loaded.plan) return loaded.exit_status;
+  if (kind.value() == OutputKind::ifc) {
+    if (const int status = export_ifc(*loaded.plan, options.out); status != kExitOk || !options.check)
+      return status;
+  }
   build.boolean = options.boolean == "cgal" ? BooleanPath::cgal : BooleanPath::automatic;
   build.threads = options.threads;
   const bool export_walls = build.parts.walls;
@@ -55,8 +89,12 @@ int run_build(const BuildCommandOptions& options) {
   BuildStats stats;
   Model model = build_model(*loaded.plan, build, &stats);  // PreconditionError: main reports it
   if (options.stats) print_stats(model, stats);
-  if (!options.out.empty()) {
-    if (!export_walls) model.walls = SolidMesh{}, add_face_properties(model.walls);
+  const bool meshed = kind.value() == OutputKind::gltf || kind.value() == OutputKind::mesh;
+  if (meshed && !export_walls) model.walls = SolidMesh{}, add_face_properties(model.walls);
+  if (kind.value() == OutputKind::gltf) {
+    if (const Status written = write_gltf_file(options.out, model, *loaded.plan); !written)
+      return report_failure("build", written.error());
+  } else if (kind.value() == OutputKind::mesh) {
     const MeshParts mesh{{&model.walls, &model.floor, &model.fixtures}, &model.objects};
     if (const Status written = write_mesh_file(options.out, mesh); !written)
       return report_failure("build", written.error());
@@ -76,11 +114,14 @@ void add_build_command(CLI::App& root, Commands& commands) {
       "Build the plan's 3D model: the wall solid (walls joined, every opening cut through),\n"
       "the tiled floor and the fixtures (door leaves, window panes), and write it to OUT in the\n"
       "format of its extension: .obj (+ .mtl beside it, one group per object, one material per\n"
-      "colour), .off (face colours), .ply (ASCII, double coordinates, face colours) or .stl\n"
-      "(binary, float32 by the format). Coordinates are written so they read back to the same\n"
-      "doubles (except STL). The plan is validated first: errors stop the build unless --force.");
+      "colour), .off (face colours), .ply (ASCII, double coordinates, face colours), .stl\n"
+      "(binary, float32 by the format), .glb or .gltf (+ .bin; glTF 2.0, one node per object,\n"
+      "float32 by the format) or .ifc (IFC4: storeys, walls, openings with their doors and\n"
+      "windows, slabs and spaces, written from the plan without meshing). Coordinates are\n"
+      "written so they read back to the same doubles (except STL and glTF). The plan is\n"
+      "validated first: errors stop the build unless --force.");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
-  app->add_option("-o,--output", options->out, "the mesh file to write (.obj .off .ply .stl)")
+  app->add_option("-o,--output", options->out, "the file to write (.obj .off .ply .stl .glb .gltf .ifc)")
       ->type_name("OUT");
   app->add_option("--parts", options->parts, "what to build and write: any of walls,floor,fixtures")
       ->capture_default_str();
@@ -105,6 +146,8 @@ void add_build_command(CLI::App& root, Commands& commands) {
       "2 could not run (bad arguments, unreadable PLAN, OUT not writable).\n"
       "Examples:\n"
       "  roomcad build examples/house.json -o house.obj\n"
+      "  roomcad build examples/house.json -o house.ifc\n"
+      "  roomcad build examples/house.json -o house.glb\n"
       "  roomcad build examples/house.json --parts walls --check -o walls.ply");
   app->callback([app] {
     if (app->count("-o") == 0 && app->count("--check") == 0)

@@ -12,8 +12,10 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "io/floor_plan_dxf.h"
 #include "io/plan_drawing.h"
 #include "io/svg_writer.h"
+#include "render/floor_plan.h"
 
 namespace roomcad::cli {
 namespace {
@@ -30,11 +32,20 @@ int run_draw(const DrawOptions& o) {
   request.title = o.plan_file.filename().string();
   if (const Status checked = check_draw_request(request); !checked)
     return report_failure("draw", checked.error());
-  if (o.output.extension() != ".svg")
-    return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are "
-                                                                  "written as .svg", o.output.string())});
+  const bool dxf = o.output.extension() == ".dxf";
+  if (o.output.extension() != ".svg" && !(dxf && request.view == "plan"))
+    return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are written "
+                                                                  "as .svg (and the plan view as .dxf too)",
+                                                                  o.output.string())});
   const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
   if (!loaded.plan) return loaded.exit_status;
+  if (dxf) {
+    const FloorPlanDrawing drawing = draw_floor_plan(*loaded.plan, floor_plan_options(request));
+    if (const Status written = write_floor_plan_dxf(drawing, o.output); !written)
+      return report_failure("draw", written.error());
+    std::printf("wrote %s\n", o.output.string().c_str());
+    return kExitOk;
+  }
   // A model that cannot be built throws PreconditionError (not_buildable): main reports it.
   const Result<SvgDocument> document = draw_plan_svg(*loaded.plan, request);
   if (!document) return report_failure("draw", document.error());
@@ -50,7 +61,7 @@ void add_draw_command(CLI::App& root, Commands& commands) {
   auto o = std::make_shared<DrawOptions>();
   CLI::App* app = root.add_subcommand(
       "draw",
-      "Draw a plan as an SVG line drawing on paper at a scale.\n"
+      "Draw a plan as an SVG line drawing on paper at a scale (the plan view also as DXF).\n"
       "  plan: the architectural floor plan, a horizontal section at --cut-height: cut walls\n"
       "        filled, windows as three lines, doors with leaf and swing, rooms with name and\n"
       "        area, per-wall and overall dimensions (metres), a scale bar.\n"
@@ -58,6 +69,9 @@ void add_draw_command(CLI::App& root, Commands& commands) {
       "        standing north, looking south); iso: isometric from the south-west;\n"
       "        camera:ID: the plan camera's view. Feature edges only; hidden lines removed\n"
       "        exactly, drawn dashed (--hidden dashed) or left out (--hidden off).\n"
+      "  -o OUT.dxf (plan view): the same drawing for CAD programs (AutoCAD 2000 DXF), in model\n"
+      "        space at true size in metres, on layers WALLS_CUT (with solid hatches),\n"
+      "        WALLS_BELOW, WALLS_ABOVE, WINDOWS, DOORS, DIMENSIONS and ROOMS.\n"
       "Example: roomcad draw house.json --view plan --scale 1:50 -o house-plan.svg");
   app->add_option("PLAN", o->plan_file, "the plan file (JSON)")->required();
   std::vector<std::string> names;
@@ -81,7 +95,7 @@ void add_draw_command(CLI::App& root, Commands& commands) {
       ->capture_default_str();
   app->add_option("--cut-height", o->request.cut_height, "height of the plan's section, metres")
       ->capture_default_str();
-  app->add_option("-o,--output", o->output, "OUT.svg (written atomically)")->required();
+  app->add_option("-o,--output", o->output, "OUT.svg, or OUT.dxf for the plan view (written atomically)")->required();
   app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
   commands.push_back({app, [o] { return run_draw(*o); }});
 }

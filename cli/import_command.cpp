@@ -1,12 +1,18 @@
-// `roomcad import HOME.xml|HOME.sh3d -o PLAN.json`: a Sweet Home 3D home as a plan.
+// `roomcad import HOME.xml|HOME.sh3d|MODEL.ifc -o PLAN.json`: a Sweet Home 3D home or an IFC
+// model as a plan.
+#include <cctype>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "cli/command.h"
-#include "io/plan_json.h"
+#include "import/ifc_import.h"
 #include "import/sweethome3d_import.h"
+#include "io/plan_json.h"
 
 namespace roomcad::cli {
 namespace {
@@ -18,7 +24,46 @@ struct ImportArgs {
   double chord_tolerance = 0.01;
 };
 
+void print_warnings(const Report& warnings) {
+  for (const Diagnostic& d : warnings.items)
+    fmt::print(stderr, "roomcad import: warning [{}]: {}\n", to_string(d.code), d.message);
+}
+
+/// @return true for a file named .ifc or starting as a STEP file does.
+bool is_ifc_file(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".ifc") return true;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(64, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return is_step_text(head);
+}
+
+int run_ifc_import(const ImportArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const Result<IfcImport> imported = import_ifc_file(args.home);
+  if (!imported) {
+    report_failure("import", imported.error());
+    return kExitCannotRun;  // a model that cannot be read is not a plan with errors: no plan yet
+  }
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const IfcImport& r = imported.value();
+  print_warnings(r.warnings);
+  if (const Status written = write_plan_file(r.plan, args.output); !written)
+    return report_failure("import", written.error());
+  fmt::print(stderr,
+             "roomcad import: {} ({}): {} of {} walls, {} of {} openings, {} of {} slabs, {} levels; "
+             "{} other elements skipped; {} warnings; {:.0f} ms; written to {}\n",
+             args.home, r.schema, r.plan.walls.size(), r.source_walls, r.plan.openings.size(),
+             r.source_openings, r.plan.slabs.size(), r.source_slabs, r.storeys, r.skipped,
+             r.warnings.items.size(), ms, args.output);
+  return kExitOk;
+}
+
 int run_import(const ImportArgs& args) {
+  if (is_ifc_file(args.home)) return run_ifc_import(args);
   Sh3dImportOptions options;
   if (!args.level.empty()) options.level = args.level;
   options.chord_tolerance = args.chord_tolerance;
@@ -27,8 +72,7 @@ int run_import(const ImportArgs& args) {
     report_failure("import", imported.error());
     return kExitCannotRun;  // a home that cannot be read is not a plan with errors: no plan yet
   }
-  for (const Diagnostic& d : imported.value().warnings.items)
-    fmt::print(stderr, "roomcad import: warning [{}]: {}\n", to_string(d.code), d.message);
+  print_warnings(imported.value().warnings);
   const Plan& plan = imported.value().plan;
   if (const Status written = write_plan_file(plan, args.output); !written)
     return report_failure("import", written.error());
@@ -43,10 +87,12 @@ void add_import_command(CLI::App& root, Commands& commands) {
   auto args = std::make_shared<ImportArgs>();
   CLI::App* app = root.add_subcommand(
       "import",
-      "Import a Sweet Home 3D home (its Home.xml, or a .sh3d file) as a plan. Approximations "
-      "(curved and sloped walls, round cut-outs, doors and windows that fit no wall) are "
-      "reported as warnings naming the wall or item.");
-  app->add_option("home", args->home, "Sweet Home 3D Home.xml or .sh3d file")->required();
+      "Import a Sweet Home 3D home (its Home.xml, or a .sh3d file) or an IFC model (.ifc, IFC2X3 "
+      "or IFC4: storeys, walls, openings with their doors and windows, slabs) as a plan. "
+      "Approximations (curved and sloped walls, round cut-outs, doors and windows that fit no "
+      "wall, IFC bodies that are not extrusions) and elements left out are reported as warnings "
+      "naming the wall, item or entity (\"#1234 IFCCURTAINWALL\").");
+  app->add_option("home", args->home, "Sweet Home 3D Home.xml or .sh3d file, or an .ifc file")->required();
   app->add_option("-o,--output", args->output, "plan JSON file to write")->required();
   app->add_option("--level", args->level, "import only the level with this name");
   app->add_option("--chord-tolerance", args->chord_tolerance,

@@ -41,6 +41,7 @@ constexpr std::array kNames = {
     "import_cut_out_shape",
     "import_curved_wall",
     "import_skipped_element",
+    "import_approximated",
     "usage_error",
     "io_error",
     "unsupported",

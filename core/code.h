@@ -50,6 +50,7 @@ enum class Code : std::uint8_t {
   import_cut_out_shape,
   import_curved_wall,
   import_skipped_element,
+  import_approximated,  ///< an element read with a simpler shape than it has (IFC import)
   // Why a command or a call could not do its work.
   usage_error,    ///< a bad argument or option (exit 2)
   io_error,       ///< a file could not be read or written (exit 2)

@@ -102,6 +102,10 @@ Status check_draw_request(const DrawRequest& request) {
   return check_floor_plan_options({.scale = scale, .cut_height = request.cut_height});
 }
 
+FloorPlanOptions floor_plan_options(const DrawRequest& request) {
+  return {.scale = parse_scale(request.scale), .cut_height = request.cut_height};
+}
+
 Result<SvgDocument> draw_plan_svg(const Plan& plan, const DrawRequest& request) {
   if (const Status checked = check_draw_request(request); !checked) return checked.error();
   const Result<ViewDrawer> drawer = find_view(request.view, plan);

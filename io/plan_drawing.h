@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "io/svg_writer.h"
 #include "modeling/plan.h"
+#include "render/floor_plan.h"
 
 namespace roomcad {
 
@@ -33,6 +34,9 @@ struct DrawRequest {
 /// Checks what needs no plan: the scale, the cut height, `hidden`.
 /// @return success, or a usage_error naming the option and its value.
 [[nodiscard]] Status check_draw_request(const DrawRequest& request);
+
+/// @return the floor plan's options `request` asks for. @pre check_draw_request(request) ok.
+[[nodiscard]] FloorPlanOptions floor_plan_options(const DrawRequest& request);
 
 /// Draws `plan` (validated: errors are drawn as they are) as `request` asks.
 /// @return the document, or a usage_error (unknown view or camera, bad options or parts).

@@ -114,10 +114,8 @@ std::string format_vec3(Vec3 v) {
 
 std::string format_polygon(const Polygon& polygon) {
   std::string out;
-  // Appended piece by piece: `"x" + std::string&&` draws a false -Wrestrict from GCC 12 when
-  // compiled position-independent (the Python module's build).
   for (const Point2& p : polygon) {
-    if (!out.empty()) out += ';';
+    if (!out.empty()) out += ';';  // appended, not `";" + ...`: GCC 12 warns (-Wrestrict) on that
     out += format_point2(p);
   }
   return out;
@@ -126,7 +124,7 @@ std::string format_polygon(const Polygon& polygon) {
 std::string format_polygons(const std::vector<Polygon>& polygons) {
   std::string out;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
-    if (i > 0) out += '|';
+    if (i) out += '|';
     out += format_polygon(polygons[i]);
   }
   return out;

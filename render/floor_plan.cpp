@@ -129,6 +129,7 @@ void fit_page(FloorPlanDrawing& d) {
   if (box.empty()) box.add({0.0, 0.0});
   const Point2 shift{kMarginMm - box.x0, kMarginMm - box.y0};
   for_each_point(d, [shift](Point2& p, double) { p = p + shift; });
+  d.origin = d.origin + shift;
   d.width = box.x1 - box.x0 + 2.0 * kMarginMm;
   d.height = box.y1 - box.y0 + 2.0 * kMarginMm + kFooterMm;
 }
@@ -152,6 +153,8 @@ FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& optio
   // Placed anywhere for now: fit_page moves everything onto the page once it is all drawn.
   const PaperMap map{.mm_per_m = 1000.0 / options.scale, .x_min = box.x0, .y_max = box.y1};
   FloorPlanDrawing out;
+  out.mm_per_m = map.mm_per_m;
+  out.origin = map.to_paper({0.0, 0.0});
   const std::vector<Room> rooms = find_rooms(plan);
   add_rooms(rooms, map, out);
   detail::draw_plan_walls(plan, joins, options, map, out);

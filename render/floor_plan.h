@@ -64,6 +64,10 @@ struct FloorPlanDrawing {
   std::vector<PaperPolygon> scale_bar_black;  ///< filled cells of the scale bar
   std::vector<PaperPolygon> scale_bar_white;  ///< outlined cells
   std::vector<PaperText> labels;              ///< scale bar figures and the title
+  /// The map back to the plan (for drawings at true size, io/floor_plan_dxf.h): the plan point
+  /// (x, y) metres is at paper (origin.x + x * mm_per_m, origin.y - y * mm_per_m).
+  double mm_per_m = 20.0;
+  Point2 origin{};
 };
 
 /// Checks the options. @return success, or a usage_error naming the option and its value.

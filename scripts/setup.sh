@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs, from Debian's packages, whatever roomcad needs that this machine lacks (toolchain
-# included). Idempotent and non-interactive: packages already installed are left alone, and
-# nothing is fetched when nothing is missing. Run as root, or as a user with sudo.
+# included), then the npm readers of the export tests (tests/readers: web-ifc, gltf-validator,
+# at the versions of its package-lock.json). Idempotent and non-interactive: packages already
+# installed are left alone, and nothing is fetched when nothing is missing. Run as root, or as
+# a user with sudo (npm runs as the caller).
 # Usage: scripts/setup.sh [EXTRA_PACKAGE...]   (e.g. the sanitized build's clang)
 set -euo pipefail
 
@@ -18,8 +20,24 @@ packages=(
   # tests and benchmarks (Xvfb: a screen for the window tests of `roomcad view`; gnuplot draws
   # bench/report.sh's plots; admesh: an independent STL reader for the export tests)
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth gnuplot-nox admesh
+  # the independent readers of the IFC, glTF and DXF export tests: ezdxf reads the DXF, Node.js
+  # runs web-ifc and the Khronos glTF validator (tests/readers)
+  python3-ezdxf
   "$@"
 )
+# Node.js from Debian unless a node and npm are already on the PATH (a newer one, e.g. nvm's).
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
+
+# The npm readers, when tests/readers/node_modules does not hold its lock file's versions.
+install_readers() {
+  local readers
+  readers="$(dirname "$0")/../tests/readers"
+  if ! cmp -s <(sed -n '/"node_modules\//,$p' "$readers/package-lock.json") \
+              <(sed -n '/"node_modules\//,$p' "$readers/node_modules/.package-lock.json" 2>/dev/null); then
+    echo "setup: installing the test readers (npm ci in tests/readers)"
+    npm ci --prefix "$readers" --no-audit --no-fund --loglevel=error
+  fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -29,6 +47,7 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "setup: all ${#packages[@]} packages present"
+  install_readers
   exit 0
 fi
 
@@ -41,3 +60,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -qq
 "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_readers

@@ -278,6 +278,7 @@ TEST_F(EditCommands, BadArgumentsExitTwoWithAClearMessage) {
   expect_untouched(2, "set", plan, "south thickness", "not key=value");
   const CommandResult missing = edit("move", dir_ / "none.json", "south --by 1,1");
   EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(test::failure_code(missing), Code::io_error);
   EXPECT_NE(missing.err.find("none.json"), std::string::npos) << missing.err;
   EXPECT_FALSE(fs::exists(dir_ / "none.json"));
 }

@@ -83,6 +83,7 @@ TEST(HostileInput, FilesOverTheSizeLimitAreRefusedUnread) {
   // The command exits 2 (could not run), naming the file.
   const auto r = test::run_roomcad({"info", (dir / "big.json").string()});
   EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(test::failure_code(r), Code::too_large);
   EXPECT_NE(r.err.find("big.json" + why), std::string::npos) << r.err;
 }
 

@@ -3,8 +3,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/code.h"
 
 namespace roomcad::test {
 
@@ -19,6 +22,10 @@ struct CommandResult {
 
 /// Runs `roomcad args...` (each argument shell-quoted), with stdin from /dev/null.
 [[nodiscard]] CommandResult run_roomcad(const std::vector<std::string>& args);
+
+/// @return the code of the failure the command reported ("roomcad CMD: error[CODE]: ..." on
+///         stderr, cli/command.h), or nullopt when it reported none or a name no Code has.
+[[nodiscard]] std::optional<Code> failure_code(const CommandResult& result);
 
 /// A fresh empty directory under the system temporary directory, removed with its contents
 /// when the object is destroyed.

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every bundled example's exports as independent readers see them (tests/readers, installed by
+// scripts/setup.sh; a missing reader fails these tests): the IFC in web-ifc, the GLB and glTF
+// in the Khronos glTF validator, the DXF floor plan in ezdxf.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "io/floor_plan_dxf.h"
+#include "io/plan_json.h"
+#include "modeling/mesh_check.h"
+#include "readers_support.h"
+#include "render/floor_plan.h"
+#include "support/run_command.h"
+#include "validation/validate.h"
+
+namespace roomcad {
+namespace {
+
+using test::run_reader;
+using test::run_roomcad;
+using test::TempDir;
+
+Plan read_example(const std::filesystem::path& path) {
+  const Result<Plan> plan = read_plan_file(path);
+  EXPECT_TRUE(plan.ok()) << path;
+  return plan.ok() ? plan.value() : Plan{};
+}
+
+std::size_t count_openings(const Plan& plan, OpeningType type) {
+  return static_cast<std::size_t>(std::count_if(plan.openings.begin(), plan.openings.end(),
+                                                [type](const Opening& o) { return o.type == type; }));
+}
+
+TEST(IndependentReaders, WebIfcOpensEveryExampleWithItsCountsAndWallVolume) {
+  TempDir dir;
+  for (const auto& path : test::example_plans()) {
+    SCOPED_TRACE(path.filename().string());
+    const Plan plan = read_example(path);
+    const auto ifc = dir / (path.stem().string() + ".ifc");
+    const auto built = run_roomcad({"build", path.string(), "-o", ifc.string()});
+    ASSERT_EQ(built.status, 0) << built.err;
+    const auto run = run_reader("ifc_check.cjs", ifc);
+    ASSERT_TRUE(run);
+    EXPECT_EQ(run->status, 0) << run->report.dump() << run->err;
+    const auto& counts = run->report["counts"];
+    EXPECT_EQ(run->report["schema"], "IFC4");
+    EXPECT_EQ(counts["IFCBUILDINGSTOREY"], std::max<std::size_t>(plan.levels.size(), 1));
+    EXPECT_EQ(counts["IFCWALL"], plan.walls.size());
+    EXPECT_EQ(counts["IFCOPENINGELEMENT"], plan.openings.size());
+    EXPECT_EQ(counts["IFCRELVOIDSELEMENT"], plan.openings.size());
+    EXPECT_EQ(counts["IFCRELFILLSELEMENT"], plan.openings.size());
+    EXPECT_EQ(counts["IFCDOOR"], count_openings(plan, OpeningType::door));
+    EXPECT_EQ(counts["IFCWINDOW"], count_openings(plan, OpeningType::window));
+    EXPECT_EQ(counts["IFCSLAB"], plan.slabs.size());
+    EXPECT_EQ(counts["IFCSPACE"], find_rooms(plan).size());
+    // web-ifc cuts each opening from its wall (float32 vertices): the walls' volumes add up to
+    // the plan's wall solid.
+    double volume = 0.0;
+    std::size_t walls = 0;
+    for (const auto& product : run->report["products"]) {
+      if (product["type"] != "IFCWALL") continue;
+      volume += product["volume"].get<double>();
+      ++walls;
+    }
+    EXPECT_EQ(walls, plan.walls.size());
+    const double expected = analytic_wall_volume(plan);
+    EXPECT_NEAR(volume, expected, 1e-5 * expected);
+  }
+}
+
+TEST(IndependentReaders, GltfValidatorFindsNoErrorOrWarningInAnyExample) {
+  TempDir dir;
+  for (const auto& path : test::example_plans()) {
+    for (const char* extension : {".glb", ".gltf"}) {
+      const auto file = dir / (path.stem().string() + extension);
+      SCOPED_TRACE(file.filename().string());
+      const auto built = run_roomcad({"build", path.string(), "-o", file.string()});
+      ASSERT_EQ(built.status, 0) << built.err;
+      const auto run = run_reader("gltf_check.cjs", file);
+      ASSERT_TRUE(run);
+      EXPECT_EQ(run->status, 0) << run->report.dump(1);
+      EXPECT_EQ(run->report["errors"], 0);
+      EXPECT_EQ(run->report["warnings"], 0);
+      EXPECT_GT(run->report["info"]["drawCallCount"].get<int>(), 0);
+    }
+  }
+}
+
+TEST(IndependentReaders, EzdxfReadsEveryExamplePlanWithItsLayersAndEntities) {
+  TempDir dir;
+  for (const auto& path : test::example_plans()) {
+    SCOPED_TRACE(path.filename().string());
+    const Plan plan = read_example(path);
+    const auto dxf = dir / (path.stem().string() + ".dxf");
+    const auto drawn = run_roomcad({"draw", path.string(), "--view", "plan", "-o", dxf.string()});
+    ASSERT_EQ(drawn.status, 0) << drawn.err;
+    const auto run = run_reader("dxf_check.py", dxf);
+    ASSERT_TRUE(run);
+    EXPECT_EQ(run->status, 0) << run->report.dump(1);
+    EXPECT_EQ(run->report["version"], "AC1015");
+    EXPECT_EQ(run->report["insunits"], 6);  // metres
+    EXPECT_TRUE(run->report["audit_errors"].empty()) << run->report["audit_errors"].dump(1);
+    for (const char* layer : kDxfLayers)
+      EXPECT_NE(std::find(run->report["layers"].begin(), run->report["layers"].end(), layer),
+                run->report["layers"].end()) << layer;
+    // The same drawing as `draw --view plan` makes by default (1:50, cut at 1 m).
+    const FloorPlanDrawing d = draw_floor_plan(plan, {});
+    std::map<std::string, std::map<std::string, std::size_t>> expected;
+    auto add = [&expected](const char* layer, const char* type, std::size_t n) {
+      if (n) expected[layer][type] += n;
+    };
+    add("WALLS_CUT", "LWPOLYLINE", d.cut_walls.size()), add("WALLS_CUT", "HATCH", d.cut_walls.size());
+    add("WALLS_BELOW", "LWPOLYLINE", d.walls_below.size()), add("WALLS_ABOVE", "LWPOLYLINE", d.walls_above.size());
+    add("WINDOWS", "LINE", d.windows.size());
+    add("DOORS", "LINE", d.door_leaves.size()), add("DOORS", "ARC", d.door_swings.size());
+    add("DIMENSIONS", "LINE", d.dimension_lines.size()), add("DIMENSIONS", "TEXT", d.dimension_texts.size());
+    add("ROOMS", "LWPOLYLINE", d.rooms.size()), add("ROOMS", "TEXT", d.room_labels.size());
+    EXPECT_EQ(run->report["entities"], nlohmann::json(expected));
+    // True size in metres: the extent holds every wall end and lies within a few metres of them
+    // (dimensions reach out), where paper millimetres at 1:50 would be 20 times larger.
+    const auto& extent = run->report["extent"];
+    for (const Wall& w : plan.walls) {
+      for (const Point2 p : {w.from, w.to}) {
+        EXPECT_LE(extent[0][0].get<double>(), p.x); EXPECT_GE(extent[1][0].get<double>(), p.x);
+        EXPECT_LE(extent[0][1].get<double>(), p.y); EXPECT_GE(extent[1][1].get<double>(), p.y);
+      }
+    }
+    const Site& s = plan.site;
+    EXPECT_GE(extent[0][0].get<double>(), s.origin.x - 5.0);
+    EXPECT_LE(extent[1][0].get<double>(), s.origin.x + s.cells[0] * s.cell_size + 5.0);
+  }
+}
+
+// The checks above mean something only if the readers refuse bad files.
+TEST(IndependentReaders, RejectBrokenFiles) {
+  TempDir dir;
+  const auto examples = test::example_plans();
+  ASSERT_FALSE(examples.empty());
+  const auto glb = dir / "cut.glb";
+  ASSERT_EQ(run_roomcad({"build", examples.front().string(), "-o", glb.string()}).status, 0);
+  const std::string bytes = test::read_bytes(glb);
+  ASSERT_TRUE(test::write_bytes(glb, bytes.substr(0, bytes.size() / 2)));
+  const auto gltf = run_reader("gltf_check.cjs", glb);
+  ASSERT_TRUE(gltf);
+  EXPECT_EQ(gltf->status, 1);
+  EXPECT_GT(gltf->report["errors"].get<int>(), 0);
+  const auto dxf = dir / "bad.dxf";
+  ASSERT_TRUE(test::write_bytes(dxf, "  0\nSECTION\n  2\nENTITIES\n  0\nLINE\n 10\nnot a number\n"));
+  const auto ezdxf = run_reader("dxf_check.py", dxf);
+  ASSERT_TRUE(ezdxf);
+  EXPECT_EQ(ezdxf->status, 1);
+}
+
+}  // namespace
+}  // namespace roomcad

@@ -166,13 +166,11 @@ std::string draw(const PyPlan& self, DrawRequest request, bool force) {
   return take(std::move(*document)).to_string();
 }
 
-}  // namespace
+using PlanClass = py::class_<PyPlan>;
 
-void register_plan(py::module_& m) {
-  using About = std::optional<std::pair<double, double>>;
-  py::class_<PyPlan>(m, "Plan",
-                     "A room plan (docs/plan-format.md): read, validated, edited, built, rendered\n"
-                     "and drawn by the same functions as the `roomcad` command.")
+/// Plan.load, from_json, from_dict, to_dict, to_json, save, validate.
+void register_reading(PlanClass& plan) {
+  plan
       .def_static("load", &load, py::arg("path"),
                   "Reads a plan file (JSON).\n"
                   "@raise roomcad.Error io_error (unreadable), parse_error or invalid_value\n"
@@ -204,7 +202,13 @@ void register_plan(py::module_& m) {
       }, py::arg("rules") = "default",
          "Checks the plan: every problem at once, exact for the numbers as written.\n"
          "@param rules  the rule set: 'default' (the checks of `roomcad validate`)\n"
-         "@return a Report; report.to_dict() is what `roomcad validate --format json` prints")
+         "@return a Report; report.to_dict() is what `roomcad validate --format json` prints");
+}
+
+/// Plan.add, remove, move, rotate, scale, set: the edits of `roomcad add` ... `set`.
+void register_edits(PlanClass& plan) {
+  using About = std::optional<std::pair<double, double>>;
+  plan
       .def("add", [](PyPlan& self, const std::string& kind, const std::optional<std::string>& id,
                      bool force, const py::kwargs& fields) {
         FieldValues values;
@@ -260,7 +264,12 @@ void register_plan(py::module_& m) {
         apply_edit(self, force, [&](Plan& plan) { return set_field(plan, id, field, text); });
       }, py::arg("id"), py::arg("field"), py::arg("value"), py::kw_only(), py::arg("force") = false,
          "Sets one field of an object ('site' for the site's), type-checked, as `roomcad set`.\n"
-         "@raise roomcad.Error usage_error (unknown object or field, bad value), edit_refused")
+         "@raise roomcad.Error usage_error (unknown object or field, bad value), edit_refused");
+}
+
+/// plan[id], `id in plan`, ids(), import_warnings.
+void register_objects(PlanClass& plan) {
+  plan
       .def_property_readonly("import_warnings", [](const PyPlan& self) {
         return self.import_warnings.items;
       }, "What import_sweethome3d approximated or left out, as Findings (else empty)")
@@ -270,7 +279,12 @@ void register_plan(py::module_& m) {
         return find_object(self.plan, id).has_value();
       })
       .def("ids", &ids, py::arg("kind") = py::none(),
-           "The ids of the plan's objects in file order, or of one kind ('wall', 'door', ...).")
+           "The ids of the plan's objects in file order, or of one kind ('wall', 'door', ...).");
+}
+
+/// Plan.build, render, draw, _repr_svg_, __repr__.
+void register_pictures(PlanClass& plan) {
+  plan
       .def("build", &build, py::arg("force") = false, py::arg("parts") = "all",
            py::arg("threads") = 0,
            "Builds the 3D model, as `roomcad build`: exact walls with their openings cut, the\n"
@@ -335,6 +349,18 @@ void register_plan(py::module_& m) {
         return fmt::format("<Plan {}: {} walls, {} openings>", self.name, self.plan.walls.size(),
                            self.plan.openings.size());
       });
+}
+
+}  // namespace
+
+void register_plan(py::module_& m) {
+  PlanClass plan(m, "Plan",
+                 "A room plan (docs/plan-format.md): read, validated, edited, built, rendered\n"
+                 "and drawn by the same functions as the `roomcad` command.");
+  register_reading(plan);
+  register_edits(plan);
+  register_objects(plan);
+  register_pictures(plan);
 }
 
 }  // namespace roomcad::python

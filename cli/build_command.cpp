@@ -2,7 +2,6 @@
 // [--threads N] [--stats] [--format text|json] [--level ID]`: the plan's 3D model, exported
 // (OBJ, OFF, PLY, STL, glTF, IFC) and checked.
 #include <cctype>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -16,9 +15,10 @@
 #include "io/gltf_export.h"
 #include "io/ifc_export.h"
 #include "io/mesh_export.h"
+#include "io/wall_check_format.h"
 #include "modeling/build_model.h"
-#include "modeling/mesh_check.h"
 #include "modeling/plan_levels.h"
+#include "modeling/wall_check.h"
 
 namespace roomcad::cli {
 namespace {
@@ -36,62 +36,10 @@ struct BuildCommandOptions {
   bool stats = false;
 };
 
-struct CheckVerdict {
-  SolidCheck solid;
-  double analytic = 0.0;
-  double relative = 0.0;  ///< |volume - analytic| / analytic
-  bool ok = false;
-};
-
 BooleanPath parse_boolean_path(const std::string& name) {
   if (name == "general") return BooleanPath::general;
   if (name == "nef" || name == "cgal") return BooleanPath::nef;
   return BooleanPath::automatic;
-}
-
-CheckVerdict check_walls(const Model& model, const Plan& plan) {
-  CheckVerdict v;
-  v.solid = check_solid(model.walls);
-  v.analytic = analytic_wall_volume(plan);
-  const double diff = std::abs(v.solid.volume - v.analytic);
-  v.relative = v.analytic != 0.0 ? diff / std::abs(v.analytic) : diff;
-  v.ok = v.solid.is_valid() && v.relative <= 1e-9;
-  return v;
-}
-
-std::string yes_no(bool b) { return b ? "yes" : "NO"; }
-
-std::string check_text(const CheckVerdict& v) {
-  const SolidCheck& c = v.solid;
-  std::string out = fmt::format("wall solid: {} vertices, {} faces ({} triangles), {} component{}\n",
-                                c.vertices, c.faces, c.triangles, c.components,
-                                c.components == 1 ? "" : "s");
-  out += fmt::format("  closed              {} ({} border edges)\n", yes_no(c.is_closed()), c.border_edges);
-  out += fmt::format("  2-manifold          {} ({} non-manifold vertices, {} rejected triangles)\n",
-                     yes_no(c.is_manifold()), c.non_manifold_vertices, c.rejected_triangles);
-  out += fmt::format("  self-intersections  {}\n", c.self_intersections);
-  out += fmt::format("  degenerate faces    {}\n", c.degenerate_triangles);
-  out += fmt::format("  outward oriented    {} ({} inward components)\n",
-                     yes_no(c.inward_components == 0), c.inward_components);
-  out += fmt::format("  genus               {}\n", c.genus);
-  out += fmt::format("  volume              {} m^3\n", c.volume);
-  out += fmt::format("  analytic volume     {} m^3 (relative difference {:.3g}, limit 1e-09)\n",
-                     v.analytic, v.relative);
-  out += fmt::format("check: {}\n", v.ok ? "ok" : "FAILED");
-  return out;
-}
-
-std::string check_json(const CheckVerdict& v) {
-  const SolidCheck& c = v.solid;
-  return fmt::format(
-      "{{\"ok\": {}, \"vertices\": {}, \"faces\": {}, \"triangles\": {}, \"components\": {}, "
-      "\"closed\": {}, \"border_edges\": {}, \"manifold\": {}, \"non_manifold_vertices\": {}, "
-      "\"rejected_triangles\": {}, \"self_intersections\": {}, \"degenerate_faces\": {}, "
-      "\"outward\": {}, \"genus\": {}, \"volume\": {}, \"analytic_volume\": {}, "
-      "\"relative_difference\": {}}}\n",
-      v.ok, c.vertices, c.faces, c.triangles, c.components, c.is_closed(), c.border_edges,
-      c.is_manifold(), c.non_manifold_vertices, c.rejected_triangles, c.self_intersections,
-      c.degenerate_triangles, c.inward_components == 0, c.genus, c.volume, v.analytic, v.relative);
 }
 
 void print_stats(const Model& model, const BuildStats& stats) {
@@ -168,8 +116,10 @@ int run_build(const BuildCommandOptions& options) {
       return report_failure("build", written.error());
   }
   if (!options.check) return kExitOk;
-  const CheckVerdict verdict = check_walls(model, plan);
-  std::fputs((options.format == "json" ? check_json(verdict) : check_text(verdict)).c_str(), stdout);
+  const WallCheck verdict = check_walls(model, plan);
+  std::fputs((options.format == "json" ? format_wall_check_json(verdict)
+                                       : format_wall_check_text(verdict)).c_str(),
+             stdout);
   return verdict.ok ? kExitOk : kExitPlanErrors;
 }
 

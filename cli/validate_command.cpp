@@ -1,15 +1,13 @@
 // `roomcad validate PLAN [--format text|json]`: every problem of a plan, in one run.
-#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
-#include "io/plan_json.h"
+#include "io/plan_check.h"
 #include "io/text_file.h"
 #include "validation/report_format.h"
-#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -18,22 +16,6 @@ struct ValidateCommandOptions {
   std::string plan;
   std::string format = "text";
 };
-
-/// Reading problems (with their lines and columns) then, if the plan could be read, what
-/// validation finds; unknown fields come from the reader only.
-Report check_plan_text(const std::string& text, const std::string& file) {
-  Report report;
-  const Result<Plan> read = read_plan_text(text, file, &report);
-  if (read) {
-    ValidateOptions options;
-    options.unknown_field_warnings = false;
-    report.append(validate(read.value(), options));
-  }
-  // Errors first (the JSON lists them apart anyway), each group in the order found.
-  std::stable_partition(report.items.begin(), report.items.end(),
-                        [](const Diagnostic& d) { return d.severity == Severity::error; });
-  return report;
-}
 
 int run_validate(const ValidateCommandOptions& options) {
   const Result<std::string> text = read_text_file(options.plan);

@@ -4,11 +4,14 @@
 // Columns: wall-clock time; CPU time of all threads; the critical path (the longer of the
 // two threads validate() runs: rooms beside the other checks), which is the wall-clock time
 // on two idle cores; and the same without room warnings (one thread). Best of 3 to 10 runs.
+// Then `--rules all` (every rule of the rule sets, two threads) on grids with an entrance.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <map>
+#include <string>
 
 #include "grid_plan.h"
 #include "validation/validate.h"
@@ -52,6 +55,31 @@ Timing time_validate(const roomcad::Plan& plan, const roomcad::ValidateOptions& 
 
 }  // namespace
 
+/// The rule sets' cost: `--rules all` on grids with an entrance (so that walks to the outside
+/// exist), findings counted per code.
+void print_rules_table(bool quick) {
+  std::printf("\n| rules all: grid | walls | openings | wall ms | cpu ms | findings |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: | --- |\n");
+  for (const int n : {7, 22, 70, 223}) {
+    if (quick && n > 22) break;
+    roomcad::bench::GridSpec spec;
+    spec.n = n;
+    spec.entrance = true;
+    const roomcad::Plan plan = roomcad::bench::make_grid_plan(spec);
+    roomcad::ValidateOptions options;
+    options.rules = *roomcad::builtin_rule_set("all");
+    const Timing t = time_validate(plan, options, n > 100 ? 3 : 5);
+    const roomcad::Report report = roomcad::validate(plan, options);
+    std::map<std::string, int> counts;
+    for (const roomcad::Diagnostic& d : report.items) ++counts[std::string(roomcad::to_string(d.code))];
+    std::string findings;
+    for (const auto& [code, count] : counts) findings += (findings.empty() ? "" : ", ") + code + " " + std::to_string(count);
+    std::printf("| %d x %d | %zu | %zu | %.1f | %.1f | %s |\n", n, n, plan.walls.size(), plan.openings.size(), t.wall_ms,
+                t.cpu_ms, findings.empty() ? "none" : findings.c_str());
+    std::fflush(stdout);
+  }
+}
+
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   const int sides[] = {2, 7, 22, 70, 223};
@@ -72,5 +100,6 @@ int main(int argc, char** argv) {
                 plan.walls.size(), plan.openings.size(), all.wall_ms, all.cpu_ms, all.critical_ms,
                 without.wall_ms, without.cpu_ms, all.errors + without.errors);
   }
+  print_rules_table(quick);
   return 0;
 }

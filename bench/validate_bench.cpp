@@ -53,32 +53,59 @@ Timing time_validate(const roomcad::Plan& plan, const roomcad::ValidateOptions& 
   return best;
 }
 
-}  // namespace
+/// @return the entrance grid plan n x n (a door to the outside, so that walks out exist).
+roomcad::Plan entrance_grid(int n) {
+  roomcad::bench::GridSpec spec;
+  spec.n = n;
+  spec.entrance = true;
+  return roomcad::bench::make_grid_plan(spec);
+}
 
-/// The rule sets' cost: `--rules all` on grids with an entrance (so that walks to the outside
-/// exist), findings counted per code.
+/// @return "code count, ..." of the report's items.
+std::string count_codes(const roomcad::Report& report) {
+  std::map<std::string, int> counts;
+  for (const roomcad::Diagnostic& d : report.items) ++counts[std::string(roomcad::to_string(d.code))];
+  std::string out;
+  for (const auto& [code, count] : counts) out += (out.empty() ? "" : ", ") + code + " " + std::to_string(count);
+  return out.empty() ? "none" : out;
+}
+
+/// The rule sets' cost: `--rules all` on grids with an entrance, findings counted per code.
 void print_rules_table(bool quick) {
   std::printf("\n| rules all: grid | walls | openings | wall ms | cpu ms | findings |\n");
   std::printf("| --- | ---: | ---: | ---: | ---: | --- |\n");
   for (const int n : {7, 22, 70, 223}) {
     if (quick && n > 22) break;
-    roomcad::bench::GridSpec spec;
-    spec.n = n;
-    spec.entrance = true;
-    const roomcad::Plan plan = roomcad::bench::make_grid_plan(spec);
+    const roomcad::Plan plan = entrance_grid(n);
     roomcad::ValidateOptions options;
     options.rules = *roomcad::builtin_rule_set("all");
     const Timing t = time_validate(plan, options, n > 100 ? 3 : 5);
-    const roomcad::Report report = roomcad::validate(plan, options);
-    std::map<std::string, int> counts;
-    for (const roomcad::Diagnostic& d : report.items) ++counts[std::string(roomcad::to_string(d.code))];
-    std::string findings;
-    for (const auto& [code, count] : counts) findings += (findings.empty() ? "" : ", ") + code + " " + std::to_string(count);
-    std::printf("| %d x %d | %zu | %zu | %.1f | %.1f | %s |\n", n, n, plan.walls.size(), plan.openings.size(), t.wall_ms,
-                t.cpu_ms, findings.empty() ? "none" : findings.c_str());
+    std::printf("| %d x %d | %zu | %zu | %.1f | %.1f | %s |\n", n, n, plan.walls.size(), plan.openings.size(),
+                t.wall_ms, t.cpu_ms, count_codes(roomcad::validate(plan, options)).c_str());
     std::fflush(stdout);
   }
 }
+
+/// Each rule alone on one grid: its time beyond the format's checks (which it needs), so
+/// that a slow rule shows by name.
+void print_rule_costs(int n) {
+  const roomcad::Plan plan = entrance_grid(n);
+  const Timing base = time_validate(plan, {}, 3);
+  std::printf("\n| %d x %d grid, one rule | wall ms beyond validate (%.1f ms) | cpu ms beyond (%.1f ms) | findings |\n",
+              n, n, base.wall_ms, base.cpu_ms);
+  std::printf("| --- | ---: | ---: | ---: |\n");
+  for (const roomcad::Code code : roomcad::kRuleCodes) {
+    roomcad::ValidateOptions options;
+    options.rules.enabled[*roomcad::rule_index(code)] = true;
+    const Timing t = time_validate(plan, options, 3);
+    std::printf("| %s | %.1f | %.1f | %zu |\n", std::string(roomcad::to_string(code)).c_str(),
+                t.wall_ms - base.wall_ms, t.cpu_ms - base.cpu_ms, roomcad::validate(plan, options).items.size() -
+                roomcad::validate(plan).items.size());
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
@@ -101,5 +128,6 @@ int main(int argc, char** argv) {
                 without.wall_ms, without.cpu_ms, all.errors + without.errors);
   }
   print_rules_table(quick);
+  print_rule_costs(quick ? 22 : 70);
   return 0;
 }

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "modeling/plan_edit.h"
 #include "validation/rules/scene.h"
 #include "validation/rules/written_number.h"
 
@@ -28,8 +29,6 @@ double polygon_area(const std::vector<Point2>& pts) {
   return std::fabs(twice) / 2;
 }
 
-/// The distinct bases of the usable walls, each with its walls; a base whose walls are those
-/// of the base below (a wall on a plinth) adds no storey.
 }  // namespace
 
 std::vector<Storey> find_storeys(const Plan& plan, const std::vector<bool>& usable) {
@@ -55,7 +54,8 @@ std::vector<Storey> find_storeys(const Plan& plan, const std::vector<bool>& usab
 namespace {
 
 /// The doors hosted by the storey's walls, and the room on each side of each.
-void find_door_rooms(const Plan& plan, const std::vector<std::optional<std::size_t>>& host, Storey& s) {
+void find_door_rooms(const Plan& plan, const std::vector<std::optional<std::size_t>>& host,
+                     const RoomLocator& locator, Storey& s) {
   std::vector<bool> in_storey(plan.walls.size(), false);
   for (const std::size_t w : s.walls) in_storey[w] = true;
   std::vector<Point2> probes;
@@ -72,15 +72,15 @@ void find_door_rooms(const Plan& plan, const std::vector<std::optional<std::size
     }
     s.doors.push_back(i);
   }
-  const std::vector<std::optional<std::size_t>> rooms = locate_rooms(s.rooms, probes);
-  for (std::size_t d = 0; d < s.doors.size(); ++d) s.door_rooms.push_back({rooms[2 * d], rooms[2 * d + 1]});
+  for (std::size_t d = 0; d < s.doors.size(); ++d)
+    s.door_rooms.push_back({locator.locate(probes[2 * d]), locator.locate(probes[2 * d + 1])});
 }
 
-void mark_accessible(const RuleSet& rules, Storey& s) {
+void mark_accessible(const RuleSet& rules, const RoomLocator& locator, Storey& s) {
   s.accessible.assign(s.rooms.size(), !rules.accessible_rooms.has_value());
   if (!rules.accessible_rooms) return;
-  for (const std::optional<std::size_t>& r : locate_rooms(s.rooms, *rules.accessible_rooms))
-    if (r) s.accessible[*r] = true;
+  for (const Point2& p : *rules.accessible_rooms)
+    if (const std::optional<std::size_t> r = locator.locate(p)) s.accessible[*r] = true;
 }
 
 }  // namespace
@@ -93,6 +93,17 @@ bool is_inside_outline(const std::vector<Point2>& outline, Point2 p) {
     if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
   }
   return inside;
+}
+
+bool is_segment_inside_outline(const std::vector<Point2>& outline, Point2 a, Point2 b) {
+  const auto cross = [](Point2 o, Point2 p, Point2 q) { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+    const Point2 c = outline[j], d = outline[i];
+    const double d1 = cross(a, b, c), d2 = cross(a, b, d), d3 = cross(c, d, a), d4 = cross(c, d, b);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return false;
+  }
+  return is_inside_outline(outline, a) && is_inside_outline(outline, b) &&
+         is_inside_outline(outline, {(a.x + b.x) / 2, (a.y + b.y) / 2});
 }
 
 Box2 room_box(const Room& room) {
@@ -164,12 +175,15 @@ Context::Context(const Plan& plan, const Joins& joins, const detail::Usable& usa
                  const RuleSet& rules, const std::vector<Room>* whole_rooms)
     : plan(plan), joins(joins), rules(rules), wall_usable(usable.walls), host(usable.host) {
   storeys = find_storeys(plan, wall_usable);
+  locators_.reserve(storeys.size());  // no reallocation: each locator refers to its storey's rooms
   for (Storey& s : storeys) {
     const bool whole = s.walls.size() == plan.walls.size();
     s.rooms = whole && whole_rooms ? *whole_rooms : find_rooms(plan_with_walls(plan, s.walls));
-    find_door_rooms(plan, host, s);
-    mark_accessible(rules, s);
+    locators_.emplace_back(s.rooms);
+    find_door_rooms(plan, host, locators_.back(), s);
+    mark_accessible(rules, locators_.back(), s);
   }
+  new_door_id = generate_id(plan, "door");
   accessible_door.assign(plan.openings.size(), false);
   for (const Storey& s : storeys)
     for (std::size_t d = 0; d < s.doors.size(); ++d)
@@ -182,6 +196,10 @@ const Storey* Context::entrance_storey() const {
     for (const auto& sides : s.door_rooms)
       if (!sides[0] || !sides[1]) return &s;
   return storeys.empty() ? nullptr : &storeys.front();
+}
+
+const RoomLocator& Context::locator(const Storey& storey) const {
+  return locators_[static_cast<std::size_t>(&storey - storeys.data())];
 }
 
 Severity Context::severity(Code code) const { return rules.severity[*rule_index(code)]; }

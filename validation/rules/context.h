@@ -38,32 +38,6 @@ struct Storey {
   std::vector<std::array<std::optional<std::size_t>, 2>> door_rooms;
 };
 
-class Context {
- public:
-  /// @param[in] whole_rooms  find_rooms of the whole plan if already found, reused for a
-  ///                         storey that holds every wall (nullptr: found here)
-  /// Cost: O(n log n) per storey (find_rooms) plus O(n log n) for the door sides.
-  Context(const Plan& plan, const Joins& joins, const detail::Usable& usable, const RuleSet& rules,
-          const std::vector<Room>* whole_rooms);
-
-  const Plan& plan;
-  const Joins& joins;
-  const RuleSet& rules;
-  std::vector<bool> wall_usable;                  ///< by wall
-  std::vector<std::optional<std::size_t>> host;   ///< by opening: its usable host wall
-  std::vector<Storey> storeys;                    ///< by rising floor
-  /// By opening: a door with an accessible room (or the outside) on a side, in some storey.
-  std::vector<bool> accessible_door;
-
-  /// @return the storey people enter: the lowest with a door to the outside (the lowest if
-  ///         none has one), or nullptr for a plan without walls.
-  [[nodiscard]] const Storey* entrance_storey() const;
-  /// @return the severity the rule set gives `code`.
-  [[nodiscard]] Severity severity(Code code) const;
-  /// @return "room 3" (with " on the floor at z = 2.50 m" when the plan has several storeys).
-  [[nodiscard]] std::string room_name(const Storey& storey, std::size_t room) const;
-};
-
 /// Finds the room a point lies in: the innermost room whose clear outline contains it.
 class RoomLocator {
  public:
@@ -77,6 +51,41 @@ class RoomLocator {
   BoxGrid grid_;
 };
 
+class Context {
+ public:
+  /// @param[in] whole_rooms  find_rooms of the whole plan if already found, reused for a
+  ///                         storey that holds every wall (nullptr: found here)
+  /// Cost: O(n log n) per storey (find_rooms) plus O(n log n) for the door sides.
+  Context(const Plan& plan, const Joins& joins, const detail::Usable& usable, const RuleSet& rules,
+          const std::vector<Room>* whole_rooms);
+  Context(const Context&) = delete;  // the locators refer to the storeys' rooms
+  Context& operator=(const Context&) = delete;
+
+  const Plan& plan;
+  const Joins& joins;
+  const RuleSet& rules;
+  std::vector<bool> wall_usable;                  ///< by wall
+  std::vector<std::optional<std::size_t>> host;   ///< by opening: its usable host wall
+  std::vector<Storey> storeys;                    ///< by rising floor
+  /// By opening: a door with an accessible room (or the outside) on a side, in some storey.
+  std::vector<bool> accessible_door;
+  /// An id no object of the plan has, for the door a fix adds ("door-1").
+  std::string new_door_id;
+
+  /// @return the storey people enter: the lowest with a door to the outside (the lowest if
+  ///         none has one), or nullptr for a plan without walls.
+  [[nodiscard]] const Storey* entrance_storey() const;
+  /// @return the severity the rule set gives `code`.
+  [[nodiscard]] Severity severity(Code code) const;
+  /// @return "room 3" (with " on the floor at z = 2.50 m" when the plan has several storeys).
+  [[nodiscard]] std::string room_name(const Storey& storey, std::size_t room) const;
+  /// @return the locator of the rooms of `storey` (one of `storeys`), built once. O(1).
+  [[nodiscard]] const RoomLocator& locator(const Storey& storey) const;
+
+ private:
+  std::vector<RoomLocator> locators_;  ///< by storey
+};
+
 /// @return RoomLocator(rooms).locate(p) for each point. O(n + m) for n points and m rooms.
 [[nodiscard]] std::vector<std::optional<std::size_t>> locate_rooms(const std::vector<Room>& rooms,
                                                                    const std::vector<Point2>& points);
@@ -84,6 +93,10 @@ class RoomLocator {
 /// @return true if p lies inside the polygon (crossing number, doubles: for points well
 ///         inside or outside, such as door sides 1 cm off a wall face). O(n).
 [[nodiscard]] bool is_inside_outline(const std::vector<Point2>& outline, Point2 p);
+
+/// @return true if the segment a-b lies inside the polygon: its ends and middle inside, and no
+///         edge crossed properly (doubles, as is_inside_outline). O(n).
+[[nodiscard]] bool is_segment_inside_outline(const std::vector<Point2>& outline, Point2 a, Point2 b);
 
 /// @return the bounding box of a room's clear outline (index 0).
 [[nodiscard]] Box2 room_box(const Room& room);
@@ -94,7 +107,9 @@ class RoomLocator {
                                                       const std::vector<std::size_t>& candidates,
                                                       double floor);
 
-/// @return the storeys of the usable walls (by wall), without rooms yet. O(n * storeys).
+/// @return the storeys of the usable walls (by wall), without rooms yet: one per distinct
+///         base, but a base whose walls are those of the base below (a wall on a plinth) adds
+///         none. O(n * storeys).
 [[nodiscard]] std::vector<Storey> find_storeys(const Plan& plan, const std::vector<bool>& usable);
 
 /// @return a copy of `plan` with only `walls` (indices) and the openings they host, for

@@ -112,6 +112,31 @@ Pt<NT> closest_point(const Pt<NT>& q, const Poly<NT>& p) {
   return best;
 }
 
+/// @return whether q is nearer than sqrt(r2) to the closed segment a-b, as a truth that is
+///         uncertain only near the boundary: no branch on intermediate values (closest-point
+///         branches compare equal distances at a shared corner, which intervals cannot decide).
+template <class NT>
+Truth<NT> is_nearer_than(const Pt<NT>& q, const Pt<NT>& a, const Pt<NT>& b, const NT& r2) {
+  const Pt<NT> d = b - a;
+  const NT c = exact::cross(d, q - a);
+  return (squared_distance(q, a) < r2) |
+         ((exact::dot(q - a, d) > NT(0)) & (exact::dot(q - b, d) < NT(0)) & (c * c < r2 * exact::dot(d, d)));
+}
+
+/// @return whether q is nearer than sqrt(r2) to the closed convex polygon p (n >= 1): inside
+///         it, or near one of its edges. O(p.n).
+template <class NT>
+Truth<NT> is_nearer_than(const Pt<NT>& q, const Poly<NT>& p, const NT& r2) {
+  Truth<NT> inside = p.n >= 3;
+  Truth<NT> near = false;
+  for (std::size_t i = 0; i < p.n; ++i) {
+    inside = inside & (exact::cross(p.next(i) - p[i], q - p[i]) >= NT(0));
+    near = near | is_nearer_than(q, p[i], p.next(i), r2);
+    if (is_surely(near)) return near;
+  }
+  return inside | near;
+}
+
 /// @return whether the line through a with normal `axis` has p and q on its two sides:
 /// strictly (`strict`, the closed sets do not meet) or weakly (the interiors do not meet).
 template <class NT>
@@ -172,7 +197,7 @@ bool is_closer_than(const Poly<NT>& p, const Poly<NT>& q, const NT& w2) {
 ///         convex polygon k. O(k.n).
 template <class NT>
 bool disc_meets_interior(const Pt<NT>& h, const NT& r2, const Poly<NT>& k) {
-  return has_interior(k) && squared_distance(h, closest_point(h, k)) < r2;
+  return has_interior(k) && static_cast<bool>(is_nearer_than(h, k, r2));
 }
 
 /// @return true if the open discs (h1, r1^2) and (h2, r2^2) and the interior of convex k have

@@ -78,16 +78,17 @@ DoorFix describe(const Opening& o, const Opening& c, const Wall& host) {
 
 }  // namespace
 
-DoorFixer::DoorFixer(const Context& cx, const Scene& scene) : cx_(cx), scene_(scene) {
+const BoxGrid& DoorFixer::leaves() const {
+  if (leaves_) return *leaves_;
   std::vector<Box2> boxes;
-  for (std::size_t i = 0; i < scene.plan().openings.size(); ++i) {
-    const Opening& o = scene.plan().openings[i];
-    if (o.type != OpeningType::door || !scene.host(i)) continue;
-    Box2 b = leaf_box(scene, o, *scene.host(i));
+  for (std::size_t i = 0; i < scene_.plan().openings.size(); ++i) {
+    const Opening& o = scene_.plan().openings[i];
+    if (o.type != OpeningType::door || !scene_.host(i)) continue;
+    Box2 b = leaf_box(scene_, o, *scene_.host(i));
     b.index = i;
     boxes.push_back(b);
   }
-  leaves_ = BoxGrid(std::move(boxes));
+  return leaves_.emplace(std::move(boxes));
 }
 
 DoorFixer::Needs DoorFixer::all_needs(std::size_t door) const {
@@ -100,7 +101,7 @@ bool DoorFixer::passes(std::size_t door, const Opening& c, Needs needs, Precisio
   if (needs.clearance && !walls_in_clearance(scene_, c, host, cx_.rules.thresholds, precision).empty()) return false;
   if (!needs.swing) return true;
   if (!walls_hit_by_leaf(scene_, c, host, precision).empty()) return false;
-  for (const std::size_t other : leaves_.find(leaf_box(scene_, c, host)))
+  for (const std::size_t other : leaves().find(leaf_box(scene_, c, host)))
     if (other != door && leaves_meet(scene_, c, host, scene_.plan().openings[other], *scene_.host(other), precision))
       return false;
   return true;

@@ -22,8 +22,8 @@ struct DoorFix {
 
 class DoorFixer {
  public:
-  /// Indexes the leaves of the doors as they are. O(n log n).
-  DoorFixer(const Context& cx, const Scene& scene);
+  /// O(1): the leaves of the doors are indexed on the first search (O(n)).
+  DoorFixer(const Context& cx, const Scene& scene) : cx_(cx), scene_(scene) {}
 
   /// A fix for door `door` (an opening index) under rule `code` (door_swing_blocked or
   /// door_clearance): the first candidate, in order (hinge side, swing, both; then places
@@ -46,9 +46,11 @@ class DoorFixer {
   [[nodiscard]] std::optional<DoorFix> first_fix(std::size_t door, const std::vector<Opening>& candidates,
                                                  Needs own) const;
 
+  [[nodiscard]] const BoxGrid& leaves() const;
+
   const Context& cx_;
   const Scene& scene_;
-  BoxGrid leaves_;  ///< the leaf boxes of the doors (index: opening)
+  mutable std::optional<BoxGrid> leaves_;  ///< the leaf boxes of the doors (index: opening)
 };
 
 }  // namespace roomcad::rules

@@ -9,7 +9,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "modeling/plan_edit.h"
 #include "validation/detail/diagnostics.h"
 #include "validation/rules/escape_walks.h"
 #include "validation/rules/fix_search.h"
@@ -21,21 +20,41 @@ namespace {
 
 constexpr double kCoarse = 1.0;  ///< sample spacing, metres, refined to kFine near the limit
 constexpr double kFine = 0.25;
+constexpr double kBeyond = 0.01;  ///< metres beyond a wall's far face where the outside is probed
+
+/// @return true if every place of a door `width` wide in the side has one room beyond it, so
+///         that no door there leads outside. O(outline of that room).
+bool faces_one_room(const Plan& plan, const Storey& s, const RoomLocator& locator, const RoomSide& side,
+                    double width) {
+  const double lo = side.lo + 0.05 + width / 2, hi = side.hi - 0.05 - width / 2;  // as door_offsets
+  if (hi < lo) return false;
+  const Point2 a = beyond_side(plan, side, lo, kBeyond), b = beyond_side(plan, side, hi, kBeyond);
+  const std::optional<std::size_t> room = locator.locate({(a.x + b.x) / 2, (a.y + b.y) / 2});
+  return room && is_segment_inside_outline(s.rooms[*room].outline, a, b);
+}
 
 std::optional<FixEdit> exterior_door(const Context& cx, const Scene& scene, const Storey& s, const EscapeWalks& walks,
                                      std::size_t r, double limit) {
   const Plan& plan = scene.plan();
-  const RoomLocator locator(s.rooms);
+  const RoomLocator& locator = cx.locator(s);
   const double width = std::max(0.9, centimetres_up(cx.rules.thresholds.door_min_width));
-  const std::string id = generate_id(plan, "door");
-  for (const RoomSide& side : room_sides(plan, s.rooms[r])) {
+  const std::string& id = cx.new_door_id;
+  for (const RoomSide& side : room_sides(scene, s.rooms[r])) {
+    if (faces_one_room(plan, s, locator, side, width)) continue;
     const Wall& w = plan.walls[side.wall];
-    for (const double offset : door_offsets(plan, side, width)) {
-      if (locator.locate(beyond_side(plan, side, offset + width / 2, 0.01))) continue;  // not the outside
+    std::optional<Neighbourhood> near;  // built for the first place worth trying
+    std::optional<std::size_t> beyond;  // the room beyond the last place tried
+    for (const double offset : door_offsets(scene, side, width)) {
+      // Not the outside: inside the room beyond the last place (checked first: the places
+      // are a few centimetres apart), or inside any room.
+      const Point2 p = beyond_side(plan, side, offset + width / 2, kBeyond);
+      if (beyond && is_inside_outline(s.rooms[*beyond].outline, p)) continue;
+      if ((beyond = locator.locate(p))) continue;
       const std::vector<Point2> exits = EscapeWalks::door_points(w, offset, offset + width, side.side);
       if (walks.walk_to(r, exits, w.thickness + 0.02, kFine) > limit) continue;
       std::vector<FixEdit> edits{add_door_edit(id, w.id, offset, width)};
-      if (Neighbourhood(scene, scene.wall_box(side.wall)).try_edits(edits)) return edits.front();
+      if (!near) near.emplace(scene, scene.wall_box(side.wall));
+      if (near->try_edits(edits)) return edits.front();
     }
   }
   return std::nullopt;

@@ -115,11 +115,7 @@ void EscapeWalks::add_door_points(std::size_t d, std::size_t wall) {
 }
 
 bool EscapeWalks::is_visible(std::size_t room, Point2 a, Point2 b) const {
-  if (convex_[room]) return true;
-  const std::vector<Point2>& o = storey_.rooms[room].outline;
-  for (std::size_t i = 0; i < o.size(); ++i)
-    if (cross_properly(a, b, o[i], o[(i + 1) % o.size()])) return false;
-  return is_inside_outline(o, {(a.x + b.x) / 2, (a.y + b.y) / 2});
+  return convex_[room] || is_segment_inside_outline(storey_.rooms[room].outline, a, b);
 }
 
 void EscapeWalks::link_rooms() {

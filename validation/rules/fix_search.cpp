@@ -1,5 +1,6 @@
 #include "validation/rules/fix_search.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <set>
@@ -31,13 +32,13 @@ Neighbourhood::Neighbourhood(const Scene& scene, const Box2& box) {
       if (scene.joins().are_joined(w, partner)) walls.insert(partner);
   }
   plan_.site = plan.site;
-  std::set<std::string_view> ids;
+  std::vector<std::size_t> openings;
   for (const std::size_t w : walls) {
     plan_.walls.push_back(plan.walls[w]);
-    ids.insert(plan.walls[w].id);
+    openings.insert(openings.end(), scene.openings_of(w).begin(), scene.openings_of(w).end());
   }
-  for (const Opening& o : plan.openings)
-    if (ids.count(o.wall)) plan_.openings.push_back(o);
+  std::sort(openings.begin(), openings.end());  // in plan order, as validation would see them
+  for (const std::size_t i : openings) plan_.openings.push_back(plan.openings[i]);
   before_ = validate(plan_, local_options());
 }
 

@@ -125,8 +125,7 @@ bool is_clear(const Scene& scene, const std::vector<std::size_t>& walls, Point2 
     const Pt<NT> p{computed<NT>(c.x), computed<NT>(c.y)};
     const NT r = NT(diameter) / NT(2);
     for (const std::size_t w : walls)
-      if (squared_distance(p, closest_point(p, wall_polygon<NT>(scene.plan(), scene.joins(), w))) < r * r)
-        return false;
+      if (is_nearer_than(p, wall_polygon<NT>(scene.plan(), scene.joins(), w), r * r)) return false;
     return true;
   });
 }
@@ -141,7 +140,7 @@ bool is_clear_rebuilt(const Scene& scene, const std::vector<std::size_t>& walls,
                             line_of<NT>(plan.walls[l.second.wall], l.second, r));
     if (!p) return false;
     for (const std::size_t w : walls)
-      if (squared_distance(*p, closest_point(*p, wall_polygon<NT>(plan, scene.joins(), w))) < r * r) return false;
+      if (is_nearer_than(*p, wall_polygon<NT>(plan, scene.joins(), w), r * r)) return false;
     return true;
   });
 }

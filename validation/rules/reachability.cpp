@@ -9,7 +9,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "modeling/plan_edit.h"
 #include "validation/rules/fix_search.h"
 #include "validation/rules/room_sides.h"
 #include "validation/rules/rules.h"
@@ -50,17 +49,20 @@ struct RoomGraph {
 std::optional<FixEdit> connecting_door(const Context& cx, const Scene& scene, const Storey& s,
                                        const std::vector<std::size_t>& component, const std::vector<bool>& reached) {
   const Plan& plan = scene.plan();
-  const RoomLocator locator(s.rooms);
+  const RoomLocator& locator = cx.locator(s);
   const double width = std::max(0.9, centimetres_up(cx.rules.thresholds.door_min_width));
-  const std::string id = generate_id(plan, "door");
+  const std::string& id = cx.new_door_id;
   for (const std::size_t r : component)
-    for (const RoomSide& side : room_sides(plan, s.rooms[r]))
-      for (const double offset : door_offsets(plan, side, width)) {
+    for (const RoomSide& side : room_sides(scene, s.rooms[r])) {
+      std::optional<Neighbourhood> near;  // built for the first place worth trying
+      for (const double offset : door_offsets(scene, side, width)) {
         const std::optional<std::size_t> other = locator.locate(beyond_side(plan, side, offset + width / 2, kProbe));
         if (other && !reached[*other]) continue;
         std::vector<FixEdit> edits{add_door_edit(id, plan.walls[side.wall].id, offset, width)};
-        if (Neighbourhood(scene, scene.wall_box(side.wall)).try_edits(edits)) return edits.front();
+        if (!near) near.emplace(scene, scene.wall_box(side.wall));
+        if (near->try_edits(edits)) return edits.front();
       }
+    }
   return std::nullopt;
 }
 

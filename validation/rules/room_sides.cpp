@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "validation/rules/fix_search.h"
 
@@ -24,24 +23,23 @@ Frame frame_of(const Wall& w) {
 
 }  // namespace
 
-std::vector<RoomSide> room_sides(const Plan& plan, const Room& room) {
-  std::unordered_map<std::string_view, std::size_t> index;
-  for (std::size_t w = plan.walls.size(); w-- > 0;) index[plan.walls[w].id] = w;
+std::vector<RoomSide> room_sides(const Scene& scene, const Room& room) {
+  const Plan& plan = scene.plan();
   std::vector<RoomSide> out;
   const std::size_t n = room.outline.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Point2 p = room.outline[k], q = room.outline[(k + 1) % n];
     const double tol = 1e-6 + 1e-9 * std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)});
     for (const std::string& id : room.walls) {
-      const auto it = index.find(id);
-      if (it == index.end()) continue;
-      const Wall& w = plan.walls[it->second];
+      const std::optional<std::size_t> index = scene.wall_named(id);
+      if (!index) continue;
+      const Wall& w = plan.walls[*index];
       const Frame f = frame_of(w);
       const double half = w.thickness / 2;
       for (const int side : {1, -1}) {
         if (std::fabs(f.across(p) - side * half) > tol || std::fabs(f.across(q) - side * half) > tol) continue;
         const double lo = std::min(f.along(p), f.along(q)), hi = std::max(f.along(p), f.along(q));
-        if (hi - lo > tol && hi > -tol && lo < f.length + tol) out.push_back({it->second, side, lo, hi});
+        if (hi - lo > tol && hi > -tol && lo < f.length + tol) out.push_back({*index, side, lo, hi});
       }
     }
   }
@@ -56,7 +54,8 @@ Point2 beyond_side(const Plan& plan, const RoomSide& s, double along, double acr
   return {w.from.x + along * f.u.x - v * f.u.y, w.from.y + along * f.u.y + v * f.u.x};
 }
 
-std::vector<double> door_offsets(const Plan& plan, const RoomSide& s, double width) {
+std::vector<double> door_offsets(const Scene& scene, const RoomSide& s, double width) {
+  const Plan& plan = scene.plan();
   const double length = frame_of(plan.walls[s.wall]).length;
   const double lo = std::max(s.lo, 0.0) + 0.05, hi = std::min(s.hi, length) - 0.05 - width;
   if (hi < lo) return {};
@@ -66,7 +65,14 @@ std::vector<double> door_offsets(const Plan& plan, const RoomSide& s, double wid
   std::stable_sort(out.begin() + 1, out.end(), [&](double a, double b) {
     return std::fabs(a - out[0]) < std::fabs(b - out[0]);
   });
-  out.erase(std::remove_if(out.begin(), out.end(), [&](double o) { return o < lo - 1e-9 || o > hi + 1e-9; }), out.end());
+  const auto is_taken = [&](double offset) {
+    for (const std::size_t i : scene.openings_of(s.wall)) {
+      const Opening& o = plan.openings[i];
+      if (offset < o.offset + o.width && o.offset < offset + width) return true;
+    }
+    return false;
+  };
+  std::erase_if(out, [&](double o) { return o < lo - 1e-9 || o > hi + 1e-9 || is_taken(o); });
   return out;
 }
 

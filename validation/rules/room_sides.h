@@ -10,6 +10,7 @@
 #include "modeling/plan.h"
 #include "validation/report.h"
 #include "validation/rules/context.h"
+#include "validation/rules/scene.h"
 
 namespace roomcad::rules {
 
@@ -24,15 +25,17 @@ struct RoomSide {
 
 /// @return the stretches of the room's walls along its outline, in outline order.
 ///         O(outline * walls of the room).
-[[nodiscard]] std::vector<RoomSide> room_sides(const Plan& plan, const Room& room);
+[[nodiscard]] std::vector<RoomSide> room_sides(const Scene& scene, const Room& room);
 
 /// @return the point `across` metres beyond the face of a room side, at `along` on its wall
 ///         (positive: away from the room).
 [[nodiscard]] Point2 beyond_side(const Plan& plan, const RoomSide& s, double along, double across);
 
 /// A place for a new door of `width` in a room side: offsets along the wall on a 5 cm grid,
-/// the middle of the stretch first, at least 5 cm from its ends.
-[[nodiscard]] std::vector<double> door_offsets(const Plan& plan, const RoomSide& s, double width);
+/// the middle of the stretch first, at least 5 cm from its ends, and clear of the wall's
+/// openings (in doubles: a fix is then verified on the neighbourhood). O(places * openings
+/// of the wall).
+[[nodiscard]] std::vector<double> door_offsets(const Scene& scene, const RoomSide& s, double width);
 
 /// @return an add edit for a door `id` in wall `wall` at `offset`, `width` wide.
 [[nodiscard]] FixEdit add_door_edit(const std::string& id, const std::string& wall, double offset, double width);

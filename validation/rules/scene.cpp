@@ -33,23 +33,20 @@ Scene::Scene(const Plan& plan, const Joins& joins, std::vector<bool> usable,
              std::vector<std::optional<std::size_t>> host)
     : plan_(plan), joins_(&joins), usable_(std::move(usable)), host_(std::move(host)) {
   index_walls();
+  index_doors();
 }
 
 Scene::Scene(const Plan& plan) : plan_(plan) {
   owned_joins_ = std::make_unique<Joins>(find_joins(plan));
   joins_ = owned_joins_.get();
   usable_.resize(plan.walls.size());
-  std::unordered_map<std::string_view, std::size_t> by_id;
-  for (std::size_t w = plan.walls.size(); w-- > 0;) {
-    usable_[w] = is_testable(plan.walls[w]);
-    by_id[plan.walls[w].id] = w;
-  }
+  for (std::size_t w = 0; w < plan.walls.size(); ++w) usable_[w] = is_testable(plan.walls[w]);
+  index_walls();
   host_.resize(plan.openings.size());
   for (std::size_t i = 0; i < plan.openings.size(); ++i)
-    if (const auto it = by_id.find(plan.openings[i].wall); it != by_id.end() && usable_[it->second] &&
-                                                          is_testable(plan.openings[i]))
-      host_[i] = it->second;
-  index_walls();
+    if (const auto w = wall_named(plan.openings[i].wall); w && usable_[*w] && is_testable(plan.openings[i]))
+      host_[i] = w;
+  index_doors();
 }
 
 void Scene::index_walls() {
@@ -63,9 +60,22 @@ void Scene::index_walls() {
     usable_boxes_.push_back(b);
   }
   grid_ = BoxGrid(usable_boxes_);
+  for (std::size_t w = plan_.walls.size(); w-- > 0;) wall_ids_[plan_.walls[w].id] = w;
+}
+
+void Scene::index_doors() {
+  openings_of_.assign(plan_.walls.size(), {});
+  for (std::size_t i = 0; i < plan_.openings.size(); ++i)
+    if (const auto w = wall_named(plan_.openings[i].wall)) openings_of_[*w].push_back(i);
   doors_of_.assign(plan_.walls.size(), {});
   for (std::size_t i = 0; i < plan_.openings.size(); ++i)
     if (host_[i] && plan_.openings[i].type == OpeningType::door) doors_of_[*host_[i]].push_back(i);
+}
+
+std::optional<std::size_t> Scene::wall_named(std::string_view id) const {
+  const auto it = wall_ids_.find(id);
+  if (it == wall_ids_.end()) return std::nullopt;
+  return it->second;
 }
 
 std::vector<Span> Scene::door_holes(std::size_t wall) const {

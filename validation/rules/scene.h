@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "modeling/broad_phase.h"
@@ -37,18 +39,25 @@ class Scene {
   [[nodiscard]] std::vector<std::size_t> walls_near(const Box2& box) const { return grid_.find(box); }
   /// @return the boxes of the usable walls (index = wall), for batch broad phases.
   [[nodiscard]] const std::vector<Box2>& usable_boxes() const { return usable_boxes_; }
+  /// @return the index of the wall with this id (the first, if ids repeat), or nullopt. O(1).
+  [[nodiscard]] std::optional<std::size_t> wall_named(std::string_view id) const;
+  /// @return the openings that name wall `wall` as theirs (usable or not), in plan order.
+  [[nodiscard]] const std::vector<std::size_t>& openings_of(std::size_t wall) const { return openings_of_[wall]; }
   /// @return the door holes of a wall, sorted along it.
   [[nodiscard]] std::vector<Span> door_holes(std::size_t wall) const;
 
  private:
   void index_walls();
+  void index_doors();
 
   const Plan& plan_;
   std::unique_ptr<Joins> owned_joins_;
   const Joins* joins_;
   std::vector<bool> usable_;
   std::vector<std::optional<std::size_t>> host_;
-  std::vector<std::vector<std::size_t>> doors_of_;  ///< by wall: hosted doors
+  std::unordered_map<std::string_view, std::size_t> wall_ids_;
+  std::vector<std::vector<std::size_t>> openings_of_;  ///< by wall: openings naming it
+  std::vector<std::vector<std::size_t>> doors_of_;     ///< by wall: hosted doors  ///< by wall: hosted doors
   std::vector<Box2> boxes_;
   std::vector<Box2> usable_boxes_;
   BoxGrid grid_;

@@ -60,7 +60,7 @@ std::optional<WallMove> widen_room(const Scene& scene, const Storey& s, const Ro
   const double step = centimetres_up(lacking + 0.01);
   const Neighbourhood near(scene, grown(room_box(room), step + 2.0));
   std::vector<std::size_t> tried;
-  for (const RoomSide& side : room_sides(plan, room)) {
+  for (const RoomSide& side : room_sides(scene, room)) {
     if (std::find(tried.begin(), tried.end(), side.wall) != tried.end()) continue;
     tried.push_back(side.wall);
     const Wall& w = plan.walls[side.wall];

@@ -184,11 +184,11 @@ Context::Context(const Plan& plan, const Joins& joins, const detail::Usable& usa
     mark_accessible(rules, locators_.back(), s);
   }
   new_door_id = generate_id(plan, "door");
-  accessible_door.assign(plan.openings.size(), false);
+  accessible_door.assign(plan.openings.size(), !rules.accessible_rooms.has_value());
   for (const Storey& s : storeys)
     for (std::size_t d = 0; d < s.doors.size(); ++d)
       for (const std::optional<std::size_t>& r : s.door_rooms[d])
-        if (!r || s.accessible[*r]) accessible_door[s.doors[d]] = true;
+        if (r && s.accessible[*r]) accessible_door[s.doors[d]] = true;
 }
 
 const Storey* Context::entrance_storey() const {

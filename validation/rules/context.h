@@ -67,7 +67,8 @@ class Context {
   std::vector<bool> wall_usable;                  ///< by wall
   std::vector<std::optional<std::size_t>> host;   ///< by opening: its usable host wall
   std::vector<Storey> storeys;                    ///< by rising floor
-  /// By opening: a door with an accessible room (or the outside) on a side, in some storey.
+  /// By opening: a door the accessibility rules apply to: every door when the rule set names
+  /// no accessible rooms, else the doors with a named room on a side (in some storey).
   std::vector<bool> accessible_door;
   /// An id no object of the plan has, for the door a fix adds ("door-1").
   std::string new_door_id;

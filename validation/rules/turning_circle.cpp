@@ -1,7 +1,8 @@
 // no_turning_circle: an accessible room with a door must hold a free circle of the turning
 // diameter (free_disc.h decides it). The fix moves one of the room's walls outward, with the
-// ends of the walls that meet it, by what the room lacks; it is tried on the neighbourhood
-// (the room found again there must hold the circle, and no error may appear).
+// ends of the walls that meet it, by what the room lacks, or two walls across each other when
+// one is not enough; it is tried on the neighbourhood (the room found again there must hold
+// the circle, and no error may appear).
 #include <algorithm>
 #include <cmath>
 
@@ -52,31 +53,69 @@ struct WallMove {
   std::vector<FixEdit> edits;
 };
 
+/// A wall of the room moved `step` metres away from it, with the ends that meet it.
+struct SideMove {
+  std::size_t wall;
+  Point2 by;
+};
+
+/// @return the walls of the room, each once, with the move that takes it away from the room.
+std::vector<SideMove> side_moves(const Scene& scene, const Room& room, double step) {
+  std::vector<SideMove> out;
+  for (const RoomSide& side : room_sides(scene, room)) {
+    if (std::any_of(out.begin(), out.end(), [&](const SideMove& m) { return m.wall == side.wall; })) continue;
+    const Wall& w = scene.plan().walls[side.wall];
+    const double length = std::hypot(w.to.x - w.from.x, w.to.y - w.from.y);
+    out.push_back({side.wall, {side.side * (w.to.y - w.from.y) / length * step,
+                               -side.side * (w.to.x - w.from.x) / length * step}});
+  }
+  return out;
+}
+
+std::string move_words(const Scene& scene, const SideMove& m, const std::vector<FixEdit>& edits, double step) {
+  std::string text = fmt::format("move wall '{}' {} {} (away from the room)", scene.plan().walls[m.wall].id,
+                                 detail::metres(step), detail::direction_text({m.by.x / step, m.by.y / step}));
+  if (edits.size() > 1) {
+    std::vector<std::string> ends;
+    for (std::size_t k = 1; k < edits.size(); ++k) ends.push_back("'" + edits[k].id + "'");
+    text += fmt::format(", with the ends of {} that meet it", fmt::join(ends, ", "));
+  }
+  return text;
+}
+
+/// One wall moved out, or failing that two walls across each other (a room short both ways):
+/// the second move is made on the plan with the first one applied.
 std::optional<WallMove> widen_room(const Scene& scene, const Storey& s, const Room& room, double lacking,
                                    double diameter) {
   const std::optional<Point2> inside = interior_point(room);
   if (!inside) return std::nullopt;
-  const Plan& plan = scene.plan();
   const double step = centimetres_up(lacking + 0.01);
   const Neighbourhood near(scene, grown(room_box(room), step + 2.0));
-  std::vector<std::size_t> tried;
-  for (const RoomSide& side : room_sides(scene, room)) {
-    if (std::find(tried.begin(), tried.end(), side.wall) != tried.end()) continue;
-    tried.push_back(side.wall);
-    const Wall& w = plan.walls[side.wall];
-    const double length = std::hypot(w.to.x - w.from.x, w.to.y - w.from.y);
-    const Point2 out{side.side * (w.to.y - w.from.y) / length * step, -side.side * (w.to.x - w.from.x) / length * step};
-    std::vector<FixEdit> edits = move_wall_edits(scene, side.wall, out);
+  const std::vector<SideMove> moves = side_moves(scene, room, step);
+  for (const SideMove& m : moves) {
+    std::vector<FixEdit> edits = move_wall_edits(scene, m.wall, m.by);
     const std::optional<Plan> edited = near.try_edits(edits);
-    if (!edited || !holds_circle(*edited, s.floor, *inside, diameter)) continue;
-    std::string text = fmt::format("move wall '{}' {} {} (away from the room)", w.id, detail::metres(step),
-                                   detail::direction_text({out.x / step, out.y / step}));
-    if (edits.size() > 1) {
-      std::vector<std::string> ends;
-      for (std::size_t k = 1; k < edits.size(); ++k) ends.push_back("'" + edits[k].id + "'");
-      text += fmt::format(", with the ends of {} that meet it", fmt::join(ends, ", "));
+    if (edited && holds_circle(*edited, s.floor, *inside, diameter))
+      return WallMove{move_words(scene, m, edits, step), std::move(edits)};
+  }
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const std::vector<FixEdit> first = move_wall_edits(scene, moves[i].wall, moves[i].by);
+    const std::optional<Plan> once = near.try_edits(first);
+    if (!once) continue;
+    const Scene moved(*once);
+    for (std::size_t j = i + 1; j < moves.size(); ++j) {
+      const SideMove& m = moves[j];
+      if (std::fabs(moves[i].by.x * m.by.y - moves[i].by.y * m.by.x) < 1e-9 * step * step) continue;  // parallel
+      const std::optional<std::size_t> wall = moved.wall_named(scene.plan().walls[m.wall].id);
+      if (!wall) continue;
+      std::vector<FixEdit> edits = first;
+      const std::vector<FixEdit> second = move_wall_edits(moved, *wall, m.by);
+      edits.insert(edits.end(), second.begin(), second.end());
+      const std::optional<Plan> twice = near.try_edits(edits);
+      if (twice && holds_circle(*twice, s.floor, *inside, diameter))
+        return WallMove{move_words(scene, moves[i], first, step) + "; and " + move_words(moved, {*wall, m.by}, second, step),
+                        std::move(edits)};
     }
-    return WallMove{std::move(text), std::move(edits)};
   }
   return std::nullopt;
 }
@@ -100,7 +139,7 @@ void check_turning_circles(const Context& cx, const Scene& scene, Report& report
           fmt::format("{} ({:.2f} m², walls {}) has no free circle {} across to turn a wheelchair in: the "
                       "largest is about {}.", cx.room_name(s, r), room.area, fmt::join(room.walls, ", "),
                       detail::metres(diameter), detail::metres(largest)),
-          move ? move->text : "enlarge the room: no single wall of it can move outward far enough",
+          move ? move->text : "enlarge the room: no wall of it, or two, can move outward far enough",
           move ? move->edits : std::vector<FixEdit>{}, room_where(room)));
     }
   }

@@ -17,9 +17,11 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "cli/rule_loading.h"
 #include "io/floor_plan_svg.h"
 #include "render/floor_plan.h"
 #include "render/line_drawing.h"
+#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -33,6 +35,8 @@ struct DrawOptions {
   std::string parts = "walls,floor,fixtures";
   std::filesystem::path output;
   bool force = false;
+  bool findings = false;
+  std::string rules = "all";
 };
 
 constexpr std::string_view kCameraPrefix = "camera:";
@@ -41,8 +45,29 @@ constexpr std::string_view kCameraPrefix = "camera:";
 /// @return the document, or why this view cannot draw this plan.
 using ViewDrawer = std::function<Result<SvgDocument>(const Plan&, const DrawOptions&, double)>;
 
+/// @return the places of what `validate --rules` finds (errors, warnings, rule findings),
+///         each with its code; items without a place are left out.
+Result<std::vector<PlanMark>> find_marks(const Plan& plan, const std::string& rules) {
+  const Result<RuleSet> set = load_rule_set(rules);
+  if (!set) return set.error();
+  if (const Status rooms = check_accessible_rooms(plan, set.value()); !rooms) return rooms.error();
+  ValidateOptions options;
+  options.rules = set.value();
+  std::vector<PlanMark> marks;
+  for (const Diagnostic& d : validate(plan, options).items)
+    if (d.where) marks.push_back({std::string(to_string(d.code)), d.where->min, d.where->max});
+  return marks;
+}
+
 Result<SvgDocument> draw_plan_view(const Plan& plan, const DrawOptions& o, double scale) {
-  const FloorPlanOptions options{.scale = scale, .cut_height = o.cut_height};
+  FloorPlanOptions options;
+  options.scale = scale;
+  options.cut_height = o.cut_height;
+  if (o.findings) {
+    Result<std::vector<PlanMark>> marks = find_marks(plan, o.rules);
+    if (!marks) return marks.error();
+    options.marks = std::move(marks).value();
+  }
   return make_floor_plan_svg(draw_floor_plan(plan, options),
                              fmt::format("{}: floor plan", o.plan_file.filename().string()));
 }
@@ -107,12 +132,17 @@ int run_draw(const DrawOptions& o) {
   if (std::isnan(scale))
     return report_failure("draw", {Code::usage_error,
                                    fmt::format("--scale \"{}\": expected 1:N, e.g. 1:50", o.scale)});
-  if (const Status options = check_floor_plan_options({.scale = scale, .cut_height = o.cut_height});
-      !options)
+  FloorPlanOptions plan_options;
+  plan_options.scale = scale;
+  plan_options.cut_height = o.cut_height;
+  if (const Status options = check_floor_plan_options(plan_options); !options)
     return report_failure("draw", options.error());
   if (o.output.extension() != ".svg")
     return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are "
                                                                   "written as .svg", o.output.string())});
+  if (o.findings && o.view != "plan")
+    return report_failure("draw", {Code::usage_error, fmt::format("--findings: only the plan view marks "
+                                                                  "findings, not --view {}", o.view)});
   const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
   if (!loaded.plan) return loaded.exit_status;
   const Result<ViewDrawer> drawer = find_view(o.view, *loaded.plan);
@@ -139,7 +169,8 @@ void add_draw_command(CLI::App& root, Commands& commands) {
       "        standing north, looking south); iso: isometric from the south-west;\n"
       "        camera:ID: the plan camera's view. Feature edges only; hidden lines removed\n"
       "        exactly, drawn dashed (--hidden dashed) or left out (--hidden off).\n"
-      "Example: roomcad draw house.json --view plan --scale 1:50 -o house-plan.svg");
+      "Examples: roomcad draw house.json --view plan --scale 1:50 -o house-plan.svg\n"
+      "          roomcad draw house.json --findings --rules accessibility -o findings.svg");
   app->add_option("PLAN", o->plan_file, "the plan file (JSON)")->required();
   std::vector<std::string> names;
   for (const auto& [name, drawer] : views()) names.push_back(name);
@@ -164,6 +195,11 @@ void add_draw_command(CLI::App& root, Commands& commands) {
       ->capture_default_str();
   app->add_option("-o,--output", o->output, "OUT.svg (written atomically)")->required();
   app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
+  app->add_flag("--findings", o->findings,
+                "plan view: mark what validate --rules finds in red, with its code");
+  app->add_option("--rules", o->rules, "the rule set of --findings: default, accessibility, all or a rules file")
+      ->type_name("NAME|FILE")
+      ->capture_default_str();
   commands.push_back({app, [o] { return run_draw(*o); }});
 }
 

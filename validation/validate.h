@@ -16,8 +16,9 @@ struct ValidateOptions {
   /// and column), so commands that read a file turn this off.
   bool unknown_field_warnings = true;
   /// The rules beyond the plan format's checks (validation/rule_set.h); the default set has
-  /// none. Rule findings are warnings unless the set says "error" for a rule.
-  RuleSet rules;
+  /// none. Rule findings are warnings unless the set says "error" for a rule. ({}: may be left
+  /// out of designated initializers without a warning.)
+  RuleSet rules{};
 };
 
 /// Checks a plan. Never throws on any Plan value (NaN, negative sizes, dangling references

@@ -89,6 +89,19 @@ TEST(ExamplesRules, RandomPlansNeverBreakTheRules) {
   }
 }
 
+TEST(ExamplesRules, BundledRulesFilesRunOnTheHouse) {
+  const fs::path house = test::source_dir() / "examples" / "house.json";
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(test::source_dir() / "examples" / "rules")) {
+    if (entry.path().extension() != ".json") continue;
+    ++files;
+    const auto r = test::run_roomcad({"validate", "--rules", entry.path().string(), house.string()});
+    EXPECT_NE(r.status, 2) << entry.path() << r.err;  // read, and every accessible room found
+    EXPECT_NE(r.out.find("warning"), std::string::npos) << r.out;
+  }
+  EXPECT_GE(files, 2u);
+}
+
 TEST(ExamplesRules, CommandLineRulesAndBaselineOnABundledHome) {
   const fs::path home = test::source_dir() / "examples" / "sweethome3d" / "Studio.json";
   const auto r = test::run_roomcad({"validate", "--rules", "all", "--baseline", home.string(), home.string()});

@@ -20,7 +20,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "bench/modeling_table.h"
 #include "bench/nef_reference.h"
 #include "bench/openscad_reference.h"
@@ -40,9 +40,9 @@ const Scene& grid_scene(int n) {
   static std::map<int, Scene> scenes;
   auto [it, added] = scenes.try_emplace(n);
   if (added) {
-    GridSpec spec;
+    samples::GridSpec spec;
     spec.n = n;
-    it->second.plan = make_grid_plan(spec);
+    it->second.plan = samples::make_grid_plan(spec);
     it->second.analytic = analytic_wall_volume(it->second.plan);
   }
   return it->second;

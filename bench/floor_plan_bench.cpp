@@ -1,7 +1,7 @@
 // Speed of the floor-plan drawing on the bundled house (21 walls) and on grids of rooms.
 #include <benchmark/benchmark.h>
 
-#include "bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "io/floor_plan_svg.h"
 #include "io/plan_json.h"
 #include "render/floor_plan.h"
@@ -24,7 +24,7 @@ BENCHMARK(BM_FloorPlanHouse)->Unit(benchmark::kMillisecond);
 
 /// n x n rooms (bench/grid_plan.h): 2 n (n + 1) walls, with doors and windows; rooms included.
 void BM_FloorPlanGrid(benchmark::State& state) {
-  const Plan plan = bench::make_grid_plan({.n = static_cast<int>(state.range(0))});
+  const Plan plan = samples::make_grid_plan({.n = static_cast<int>(state.range(0))});
   for (auto _ : state) benchmark::DoNotOptimize(draw_floor_plan(plan, {}).cut_walls.size());
   state.counters["walls"] = static_cast<double>(plan.walls.size());
 }

@@ -15,7 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "render/renderer.h"
-#include "room_grid.h"
+#include "testing/room_grid.h"
 
 namespace roomcad {
 namespace {
@@ -89,7 +89,7 @@ void load_camera(const Scene& scene) {
 /// Arg: rooms per side (the same grids as render_bench's BM_Frame1080p).
 void BM_LlvmpipeFrame1080p(benchmark::State& state) {
   static Context context;
-  const Scene scene = flatten_model(bench::make_room_grid(static_cast<int>(state.range(0))));
+  const Scene scene = flatten_model(samples::make_room_grid(static_cast<int>(state.range(0))));
   const GLsizei vertices = upload(scene);
   load_camera(scene);
   for (auto _ : state) {

@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "render/renderer.h"
-#include "room_grid.h"
+#include "testing/room_grid.h"
 
 namespace roomcad {
 namespace {
@@ -18,7 +18,7 @@ namespace {
 const Scene& grid_scene(int n) {
   static std::map<int, std::unique_ptr<Scene>> cache;
   auto& slot = cache[n];
-  if (!slot) slot = std::make_unique<Scene>(flatten_model(bench::make_room_grid(n)));
+  if (!slot) slot = std::make_unique<Scene>(flatten_model(samples::make_room_grid(n)));
   return *slot;
 }
 
@@ -78,7 +78,7 @@ const RgbImage& aa_reference(const Scene& scene) {
 /// (0-255 levels, all pixels and channels), share of pixels off by more than 8 levels in some
 /// channel (edges), and the frame time.
 void BM_AntiAliasingError(benchmark::State& state) {
-  static const Scene scene = flatten_model(bench::make_room_grid(3));
+  static const Scene scene = flatten_model(samples::make_room_grid(3));
   const RenderOptions options = aa_options(1, static_cast<int>(state.range(0)));
   FrameBuffers out;
   RenderStats stats;
@@ -135,7 +135,7 @@ const std::vector<int>& reference_classes(const Model& m, const CameraMatrices& 
 /// whose shadow (darker than half the floor colour) differs from the ray-traced one, and the
 /// shadow pass time.
 void BM_ShadowResolutionError(benchmark::State& state) {
-  static const Model model = bench::make_room_grid(3);
+  static const Model model = samples::make_room_grid(3);
   const Scene scene = flatten_model(model);
   RenderOptions options{.width = 800, .height = 800, .shading = ShadingMode::unlit,
                         .shadows = state.range(1) ? ShadowFilter::pcf : ShadowFilter::hard,

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "io/plan_json.h"
 #include "modeling/build_model.h"
 #include "render/renderer.h"
@@ -39,7 +39,7 @@ Camera camera_at(Vec3 eye, Vec3 target) {
 /// east through its door, and in the house's south-west room looking along the day side.
 const std::array<View, 4>& views() {
   static const std::array<View, 4> all = [] {
-    const Scene grid = flatten_plan(bench::make_grid_plan({.n = 10}));
+    const Scene grid = flatten_plan(samples::make_grid_plan({.n = 10}));
     Result<Plan> read = read_plan_file(ROOMCAD_SOURCE_DIR "/examples/house.json");
     if (!read) throw std::runtime_error("skipping_bench: examples/house.json does not load");
     const Scene house = flatten_plan(read.value());

@@ -7,14 +7,13 @@
 
 #include <benchmark/benchmark.h>
 
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 
 namespace {
 
 std::string read_home() {
-  const std::filesystem::path home = std::filesystem::path(ROOMCAD_SOURCE_DIR) / ".." /
-                                     "shared" / "realdata" / "sweethome3d" /
-                                     "eteks-example-homes" /
+  const std::filesystem::path home = std::filesystem::path(ROOMCAD_SOURCE_DIR) / "examples" /
+                                     "sweethome3d" / "homes" / "eteks-example-homes" /
                                      "3-BedroomHouseWithMezzanine.Home.xml";
   std::ifstream in(home, std::ios::binary);
   std::stringstream text;

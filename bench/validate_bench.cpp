@@ -13,7 +13,7 @@
 #include <map>
 #include <string>
 
-#include "grid_plan.h"
+#include "testing/grid_plan.h"
 #include "validation/validate.h"
 
 namespace {
@@ -55,10 +55,10 @@ Timing time_validate(const roomcad::Plan& plan, const roomcad::ValidateOptions& 
 
 /// @return the entrance grid plan n x n (a door to the outside, so that walks out exist).
 roomcad::Plan entrance_grid(int n) {
-  roomcad::bench::GridSpec spec;
+  roomcad::samples::GridSpec spec;
   spec.n = n;
   spec.entrance = true;
-  return roomcad::bench::make_grid_plan(spec);
+  return roomcad::samples::make_grid_plan(spec);
 }
 
 /// @return "code count, ..." of the report's items.
@@ -115,9 +115,9 @@ int main(int argc, char** argv) {
   std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   for (const int n : sides) {
     if (quick && n > 22) break;
-    roomcad::bench::GridSpec spec;
+    roomcad::samples::GridSpec spec;
     spec.n = n;
-    const roomcad::Plan plan = roomcad::bench::make_grid_plan(spec);
+    const roomcad::Plan plan = roomcad::samples::make_grid_plan(spec);
     const int runs = plan.walls.size() > 20000 ? 3 : 10;
     roomcad::ValidateOptions no_rooms;
     no_rooms.room_warnings = false;

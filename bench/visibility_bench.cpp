@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "io/plan_json.h"
 #include "modeling/build_model.h"
 #include "render/line_drawing.h"
@@ -42,7 +42,7 @@ std::vector<BenchScene> load_scenes() {
     out.push_back({std::filesystem::path(file).stem().string(), std::move(read).value(), {}, {}});
   }
   for (const int n : {5, 10, 20}) {
-    out.push_back({"grid" + std::to_string(n), bench::make_grid_plan({.n = n}), {}, {}});
+    out.push_back({"grid" + std::to_string(n), samples::make_grid_plan({.n = n}), {}, {}});
   }
   for (BenchScene& s : out) {
     s.model = build_model(s.plan);

@@ -1,6 +1,7 @@
-// roomcad add PLAN KIND [--id ID] [--<field> VALUE ...]: adds a wall, door, window, light or
-// camera. Its options are the fields of the plan format (--from, --thickness, --fov-deg, ...),
-// each type-checked by modeling's set_field; ids are generated when --id is not given.
+// roomcad add PLAN KIND [--id ID] [--<field> VALUE ...]: adds a level, wall, door, window, slab,
+// light or camera. Its options are the fields of the plan format, from the field tables
+// (modeling/plan_fields.h): --from, --thickness, --fov-deg, ...; each type-checked by
+// modeling's set_field; ids are generated when --id is not given.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,12 +13,13 @@
 #include "cli/command.h"
 #include "cli/edit_session.h"
 #include "modeling/plan_edit.h"
+#include "modeling/plan_fields.h"
 #include "modeling/value_text.h"
 
 namespace roomcad::cli {
 namespace {
 
-const std::vector<std::string> kKinds{"wall", "door", "window", "light", "camera"};
+const std::vector<std::string> kKinds{"level", "wall", "door", "window", "slab", "light", "camera"};
 
 struct AddArgs {
   std::string path;
@@ -41,12 +43,25 @@ std::string option_name(std::string_view key) {
   return name;
 }
 
-/// The fields a kind cannot do without (the others have the format's defaults).
+/// Calls visit(Object{}) with a default object of the kind ("door" and "window": an Opening).
+template <class Visit>
+decltype(auto) with_kind(std::string_view kind, Visit&& visit) {
+  if (kind == "level") return visit(Level{});
+  if (kind == "wall") return visit(Wall{});
+  if (kind == "door" || kind == "window") return visit(Opening{});
+  if (kind == "slab") return visit(Slab{});
+  if (kind == "light") return visit(Light{});
+  return visit(Camera{});
+}
+
+/// The fields a kind cannot do without (the others have the format's defaults), but its id.
 std::vector<std::string_view> required_fields(std::string_view kind) {
-  if (kind == "wall") return {"from", "to"};
-  if (kind == "door" || kind == "window") return {"wall", "offset"};
-  if (kind == "camera") return {"eye", "target"};
-  return {};
+  return with_kind(kind, [](const auto& object) {
+    std::vector<std::string_view> names;
+    for (const auto& f : fields_of<std::decay_t<decltype(object)>>())
+      if (f.presence == Presence::required && f.name != "id") names.push_back(f.name);
+    return names;
+  });
 }
 
 /// @return the given field options as (key, value), checked against the kind.
@@ -83,43 +98,35 @@ Object build(std::vector<Object> Plan::*list, Object object, const std::string& 
 
 EditSummary add_object(Plan& plan, const AddArgs& args,
                        const std::vector<std::pair<std::string, std::string>>& given) {
+  if (args.kind == "level") return add_level(plan, build(&Plan::levels, Level{}, args.id, given));
   if (args.kind == "wall") return add_wall(plan, build(&Plan::walls, Wall{}, args.id, given));
+  if (args.kind == "slab") return add_slab(plan, build(&Plan::slabs, Slab{}, args.id, given));
   if (args.kind == "light") return add_light(plan, build(&Plan::lights, Light{}, args.id, given));
   if (args.kind == "camera")
     return add_camera(plan, build(&Plan::cameras, Camera{}, args.id, given));
-  const Opening base = default_opening(*parse_opening_type(args.kind));
+  const Opening base = default_opening(*parse_enum<OpeningType>(args.kind));
   return add_opening(plan, build(&Plan::openings, base, args.id, given));
 }
 
-/// @return what a field's value looks like, for --help.
-std::string_view value_hint(std::string_view key) {
-  if (key == "from" || key == "to") return "x,y in metres";
-  if (key == "direction" || key == "eye" || key == "target" || key == "up") return "x,y,z";
-  if (key == "color") return "#rrggbb";
-  if (key == "wall") return "id of the host wall";
-  if (key == "hinge") return "left or right";
-  if (key == "swing") return "in or out";
-  if (key == "projection") return "perspective or orthographic";
-  if (key == "fov_deg") return "degrees";
-  if (key == "intensity" || key == "ambient") return "a number";
-  return "metres";
-}
-
-/// "--height: wall, door, window" style help, built from the format's field lists.
+/// "level: floor to floor, metres; wall: metres (at from); ..." help, from the field tables.
 std::string field_help(std::string_view key) {
-  std::vector<std::string_view> kinds;
+  std::vector<std::string> uses;
   for (const std::string& kind : kKinds) {
-    const auto fields = settable_fields(kind);
-    if (std::find(fields.begin(), fields.end(), key) != fields.end()) kinds.push_back(kind);
+    if (kind == "window") continue;  // a door's fields
+    with_kind(kind, [&](const auto& object) {
+      if (const auto* f = find_field<std::decay_t<decltype(object)>>(key))
+        uses.push_back(fmt::format("{}{}: {}", kind, kind == "door" ? "/window" : "", f->hint));
+    });
   }
-  return fmt::format("{} of a {}: {}", key, fmt::join(kinds, "/"), value_hint(key));
+  return fmt::format("{}", fmt::join(uses, "; "));
 }
 
 }  // namespace
 
 void add_add_command(CLI::App& root, Commands& commands) {
   auto args = std::make_shared<AddArgs>();
-  CLI::App* app = root.add_subcommand("add", "Add a wall, door, window, light or camera to a plan");
+  CLI::App* app =
+      root.add_subcommand("add", "Add a level, wall, door, window, slab, light or camera to a plan");
   app->footer(
       "Examples:\n"
       "  roomcad add plan.json wall --from 1,1 --to 11,1 --thickness 0.2\n"
@@ -127,11 +134,13 @@ void add_add_command(CLI::App& root, Commands& commands) {
       "  roomcad add plan.json window --id w3 --wall north --offset 4 --sill 1.0\n"
       "  roomcad add plan.json light --direction -0.4,0.5,-1 --ambient 0.3\n"
       "  roomcad add plan.json camera --eye 16,-9,10 --target 6,4,1\n"
+      "  roomcad add plan.json level --id first --elevation 3 --height 2.6\n"
+      "  roomcad add plan.json slab --level first --outline \"0,0;6,0;6,4;0,4\"\n"
       "Ids are generated (wall-1, door-2, ...) unless --id is given. The edited plan is\n"
       "validated: an edit that introduces errors is refused (exit 1, file untouched)\n"
       "unless --force.");
   app->add_option("PLAN", args->path, "plan file to edit")->required();
-  app->add_option("KIND", args->kind, "wall, door, window, light or camera")
+  app->add_option("KIND", args->kind, "level, wall, door, window, slab, light or camera")
       ->required()
       ->check(CLI::IsMember(kKinds));
   app->add_option("--id", args->id, "id of the new object (default: generated, e.g. wall-3)");

@@ -18,9 +18,14 @@
 
 namespace roomcad::cli {
 
-/// Prints "roomcad <command>: error: <message>" on stderr.
+/// Prints "roomcad <command>: error[<code>]: <message>" on stderr ("roomcad: ..." when
+/// `command` is empty), the code as core/code.h names it.
 /// @return the exit status of the error's code (exit_status_of in core/code.h).
 int report_failure(std::string_view command, const Error& error);
+
+/// report_failure for a command line CLI11 could not parse (a usage_error naming the deepest
+/// subcommand given), then "Run with --help for more information." @return 2.
+int report_usage_error(const CLI::App& app, const CLI::ParseError& error);
 
 /// Throws PreconditionError(usage_error): a bad flag found inside a helper; main reports it
 /// and ends with exit status 2.

@@ -6,7 +6,7 @@
 
 #include "cli/command.h"
 #include "io/plan_json.h"
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 
 namespace roomcad::cli {
 namespace {

@@ -31,7 +31,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? roomcad::kExitOk : roomcad::kExitCannotRun;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    return report_usage_error(app, e);
   }
   for (const Command& c : commands) {
     if (!c.app->parsed()) continue;
@@ -49,9 +50,25 @@ int main(int argc, char** argv) {
 namespace roomcad::cli {
 
 int report_failure(std::string_view command, const Error& error) {
-  std::fprintf(stderr, "roomcad %.*s: error: %s\n", static_cast<int>(command.size()),
-               command.data(), error.message.c_str());
+  // error[CODE], as findings are printed, so that scripts and tests read the code.
+  const std::string code(to_string(error.code));
+  const std::string who = command.empty() ? "roomcad" : "roomcad " + std::string(command);
+  std::fprintf(stderr, "%s: error[%s]: %s\n", who.c_str(), code.c_str(), error.message.c_str());
   return exit_status_of(error.code);
+}
+
+int report_usage_error(const CLI::App& app, const CLI::ParseError& error) {
+  // The deepest subcommand given names the command (its --help is the one to read).
+  const CLI::App* command = &app;
+  for (bool deeper = true; deeper;) {
+    deeper = false;
+    for (const CLI::App* sub : command->get_subcommands())
+      if (sub->parsed()) command = sub, deeper = true;
+  }
+  const std::string name = command == &app ? std::string() : command->get_name();
+  const int status = report_failure(name, {Code::usage_error, error.what()});
+  std::fprintf(stderr, "Run with --help for more information.\n");
+  return status;
 }
 
 }  // namespace roomcad::cli

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "io/plan_json.h"
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view xml(reinterpret_cast<const char*>(data), size);

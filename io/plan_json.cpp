@@ -2,28 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "io/atomic_write.h"
 #include "io/detail/json_text.h"
 #include "io/detail/plan_reader.h"
-#include "io/detail/positioned_json.h"
 #include "io/text_file.h"
+#include "modeling/plan_fields.h"
+#include "modeling/plan_objects.h"
 
 namespace roomcad {
 namespace {
 
 using io_detail::append_number;
 using io_detail::append_string;
-using KnownKeys = std::initializer_list<std::string_view>;
 
-/// The unknown fields to write, sorted by key. Keys the format knows, or repeated ones, are
-/// left out: writing them would make a duplicate key.
-std::vector<const ExtraField*> writable_extras(const ExtraFields& extra, KnownKeys known) {
+/// The unknown fields to write, sorted by key. A key written already as a field, or repeated,
+/// is left out: writing it would make a duplicate key.
+std::vector<const ExtraField*> writable_extras(const ExtraFields& extra,
+                                               const std::vector<std::string_view>& written) {
   std::vector<const ExtraField*> sorted;
   for (const ExtraField& e : extra)
-    if (std::find(known.begin(), known.end(), e.key) == known.end()) sorted.push_back(&e);
+    if (std::find(written.begin(), written.end(), e.key) == written.end()) sorted.push_back(&e);
   std::stable_sort(sorted.begin(), sorted.end(),
                    [](const ExtraField* a, const ExtraField* b) { return a->key < b->key; });
   sorted.erase(std::unique(sorted.begin(), sorted.end(),
@@ -32,102 +33,73 @@ std::vector<const ExtraField*> writable_extras(const ExtraFields& extra, KnownKe
   return sorted;
 }
 
-/// Writes the members of one line of canonical JSON: `"key": value, ...`.
+/// Writes one object of canonical JSON on one line: `"key": value, ...`, the fields of its
+/// table in order (a version-2 field only when present), then its unknown fields by key.
 class LineWriter {
  public:
   explicit LineWriter(std::string& out) : out_(out) {}
+
+  template <class Object>
+  void object(const Object& o) {
+    std::vector<std::string_view> written;
+    for (const Field<Object>& f : fields_of<Object>()) {
+      if (!is_present(o, f)) continue;
+      key(f.name);
+      written.push_back(f.name);
+      std::visit([&](auto member) { value(o.*member); }, f.member);
+    }
+    extras(o.extra, written);
+  }
+
+  /// Unknown fields, after the known ones (writable_extras).
+  void extras(const ExtraFields& extra, const std::vector<std::string_view>& written) {
+    for (const ExtraField* e : writable_extras(extra, written)) key(e->key), out_ += e->json;
+  }
+
+ private:
   void key(std::string_view k) {
     if (!first_) out_ += ", ";
     first_ = false;
     append_string(out_, k);
     out_ += ": ";
   }
-  void number(std::string_view k, double x) { key(k), append_number(out_, x); }
-  void integer(std::string_view k, std::int64_t n) { key(k), out_ += std::to_string(n); }
-  void string(std::string_view k, std::string_view s) { key(k), append_string(out_, s); }
-  void point(std::string_view k, Point2 p) {
-    key(k), out_ += '[', append_number(out_, p.x), out_ += ", ", append_number(out_, p.y), out_ += ']';
+  void value(double x) { append_number(out_, x); }
+  void value(const std::optional<double>& x) { append_number(out_, x.value_or(0.0)); }
+  void value(const std::string& s) { append_string(out_, s); }
+  void value(Color c) { append_string(out_, to_string(c)); }
+  void value(Point2 p) {
+    out_ += '[', append_number(out_, p.x), out_ += ", ", append_number(out_, p.y), out_ += ']';
   }
-  void vec(std::string_view k, Vec3 v) {
-    key(k), out_ += '[', append_number(out_, v.x), out_ += ", ", append_number(out_, v.y);
+  void value(Vec3 v) {
+    out_ += '[', append_number(out_, v.x), out_ += ", ", append_number(out_, v.y);
     out_ += ", ", append_number(out_, v.z), out_ += ']';
   }
-  /// Unknown fields, after the known ones.
-  void extras(const ExtraFields& extra, KnownKeys known) {
-    for (const ExtraField* e : writable_extras(extra, known)) key(e->key), out_ += e->json;
+  void value(const std::array<std::int64_t, 2>& cells) {
+    out_ += '[' + std::to_string(cells[0]) + ", " + std::to_string(cells[1]) + ']';
+  }
+  void value(const Polygon& polygon) {
+    out_ += '[';
+    for (std::size_t i = 0; i < polygon.size(); ++i) out_ += i ? ", " : "", value(polygon[i]);
+    out_ += ']';
+  }
+  void value(const std::vector<Polygon>& polygons) {
+    out_ += '[';
+    for (std::size_t i = 0; i < polygons.size(); ++i) out_ += i ? ", " : "", value(polygons[i]);
+    out_ += ']';
+  }
+  template <class E>
+    requires std::is_enum_v<E>
+  void value(E e) {
+    append_string(out_, to_string(e));
   }
 
- private:
   std::string& out_;
   bool first_ = true;
 };
 
-void write_site(std::string& out, const Site& s) {
-  out += '{';
-  LineWriter w(out);
-  w.point("origin", s.origin);
-  w.key("cells");
-  out += '[' + std::to_string(s.cells[0]) + ", " + std::to_string(s.cells[1]) + ']';
-  w.number("cell_size", s.cell_size);
-  w.number("max_height", s.max_height);
-  w.number("tolerance", s.tolerance);
-  w.string("floor_color", to_string(s.floor_color));
-  w.extras(s.extra, {"origin", "cells", "cell_size", "max_height", "tolerance", "floor_color"});
-  out += '}';
-}
-
-void write_one(std::string& out, const Wall& x) {
-  LineWriter w(out);
-  w.string("id", x.id);
-  w.point("from", x.from);
-  w.point("to", x.to);
-  w.number("thickness", x.thickness);
-  w.number("height", x.height);
-  w.number("base", x.base);
-  w.string("color", to_string(x.color));
-  w.extras(x.extra, {"id", "from", "to", "thickness", "height", "base", "color"});
-}
-
-void write_one(std::string& out, const Opening& x) {
-  LineWriter w(out);
-  w.string("id", x.id);
-  w.string("type", to_string(x.type));
-  w.string("wall", x.wall);
-  w.number("offset", x.offset);
-  w.number("width", x.width);
-  w.number("height", x.height);
-  w.number("sill", x.sill);
-  w.string("hinge", to_string(x.hinge));
-  w.string("swing", to_string(x.swing));
-  w.extras(x.extra,
-           {"id", "type", "wall", "offset", "width", "height", "sill", "hinge", "swing"});
-}
-
-void write_one(std::string& out, const Light& x) {
-  LineWriter w(out);
-  w.string("id", x.id);
-  w.string("type", to_string(x.type));
-  w.vec("direction", x.direction);
-  w.number("intensity", x.intensity);
-  w.number("ambient", x.ambient);
-  w.extras(x.extra, {"id", "type", "direction", "intensity", "ambient"});
-}
-
-void write_one(std::string& out, const Camera& x) {
-  LineWriter w(out);
-  w.string("id", x.id);
-  w.string("projection", to_string(x.projection));
-  w.vec("eye", x.eye);
-  w.vec("target", x.target);
-  w.vec("up", x.up);
-  w.number("fov_deg", x.fov_deg);
-  w.number("view_height", x.view_height);
-  w.extras(x.extra, {"id", "projection", "eye", "target", "up", "fov_deg", "view_height"});
-}
-
-template <class T>
-void write_array(std::string& out, std::string_view key, const std::vector<T>& items) {
-  out += "  ";
+template <class Object>
+void write_array(std::string& out, std::string_view key, const std::vector<Object>& items) {
+  out += ",\n  ";
   append_string(out, key);
   if (items.empty()) {
     out += ": []";
@@ -136,31 +108,48 @@ void write_array(std::string& out, std::string_view key, const std::vector<T>& i
   out += ": [\n";
   for (std::size_t i = 0; i < items.size(); ++i) {
     out += "    {";
-    write_one(out, items[i]);
+    LineWriter(out).object(items[i]);
     out += i + 1 < items.size() ? "},\n" : "}\n";
   }
   out += "  ]";
 }
 
-/// @return the first number of the plan that JSON cannot hold, as "walls/2/thickness", or "".
+/// Appends "<kind> '<id>' field '<name>'" for the first number of `o` JSON cannot hold.
+template <class Object>
+void find_non_finite(const Object& o, std::string_view kind, std::string& where) {
+  auto bad = [](double x) { return !std::isfinite(x); };
+  for (const Field<Object>& f : fields_of<Object>()) {
+    if (!where.empty()) return;
+    const bool found = std::visit(
+        [&](auto member) {
+          const auto& v = o.*member;
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, double>) return bad(v);
+          else if constexpr (std::is_same_v<T, std::optional<double>>) return v && bad(*v);
+          else if constexpr (std::is_same_v<T, Point2>) return bad(v.x) || bad(v.y);
+          else if constexpr (std::is_same_v<T, Vec3>) return bad(v.x) || bad(v.y) || bad(v.z);
+          else if constexpr (std::is_same_v<T, Polygon>)
+            return std::any_of(v.begin(), v.end(), [&](Point2 p) { return bad(p.x) || bad(p.y); });
+          else if constexpr (std::is_same_v<T, std::vector<Polygon>>)
+            return std::any_of(v.begin(), v.end(), [&](const Polygon& polygon) {
+              return std::any_of(polygon.begin(), polygon.end(),
+                                 [&](Point2 p) { return bad(p.x) || bad(p.y); });
+            });
+          else return false;
+        },
+        f.member);
+    if (found) where = std::string(kind) + " field '" + std::string(f.name) + "'";
+  }
+}
+
+/// @return where the first number of the plan that JSON cannot hold is, or "".
 std::string first_non_finite(const Plan& plan) {
   std::string where;
-  auto check = [&](std::string_view path, std::initializer_list<double> values) {
-    for (double v : values)
-      if (where.empty() && !std::isfinite(v)) where = path;
-  };
-  const Site& s = plan.site;
-  check("site", {s.origin.x, s.origin.y, s.cell_size, s.max_height, s.tolerance});
-  for (const Wall& w : plan.walls)
-    check("wall \"" + w.id + '"', {w.from.x, w.from.y, w.to.x, w.to.y, w.thickness, w.height, w.base});
-  for (const Opening& o : plan.openings)
-    check("opening \"" + o.id + '"', {o.offset, o.width, o.height, o.sill});
-  for (const Light& l : plan.lights)
-    check("light \"" + l.id + '"',
-          {l.direction.x, l.direction.y, l.direction.z, l.intensity, l.ambient});
-  for (const Camera& c : plan.cameras)
-    check("camera \"" + c.id + '"', {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y,
-                                     c.target.z, c.up.x, c.up.y, c.up.z, c.fov_deg, c.view_height});
+  find_non_finite(plan.site, "the site", where);
+  for_each_list(plan, [&](const auto& objects, ObjectKind kind) {
+    for (const auto& o : objects)
+      find_non_finite(o, std::string(to_string(kind)) + " '" + o.id + "'", where);
+  });
   return where;
 }
 
@@ -168,21 +157,7 @@ std::string first_non_finite(const Plan& plan) {
 
 Result<Plan> read_plan_text(std::string_view text, std::string_view file, Report* report) {
   Report found;
-  const io_detail::PositionedJson doc = io_detail::parse_positioned_json(text);
-  Plan plan;
-  if (doc.error) {
-    const io_detail::LineColumn at = io_detail::line_column_at(text, doc.error->offset);
-    Diagnostic d;
-    d.code = doc.error->not_finite ? Code::invalid_value : Code::parse_error;
-    d.message = std::string(file) + ':' + std::to_string(at.line) + ':' +
-                std::to_string(at.column) + ": " +
-                (doc.error->pointer.empty() ? "" : doc.error->pointer + ": ") + doc.error->message;
-    if (doc.error->not_finite) d.fix = "write a finite number (metres, or the file's units)";
-    d.location = Location{std::string(file), doc.error->pointer, at.line, at.column};
-    found.add(std::move(d));
-  } else {
-    plan = io_detail::read_plan_document(doc, text, file, found);
-  }
+  Plan plan = io_detail::read_plan_document(text, file, found);
   if (report) report->append(found);
   for (const Diagnostic& d : found.items)
     if (d.severity == Severity::error) return Error{d.code, d.message, d.location};
@@ -196,20 +171,22 @@ Result<Plan> read_plan_file(const std::filesystem::path& path, Report* report) {
 }
 
 std::string write_plan_text(const Plan& plan) {
-  std::string out = "{\n  \"format\": \"roomcad-plan\",\n  \"version\": 1,\n  \"units\": \"m\",\n";
-  out += "  \"site\": ";
-  write_site(out, plan.site);
-  out += ",\n";
+  const bool v2 = uses_version2(plan);
+  std::string out = "{\n  \"format\": \"roomcad-plan\",\n  \"version\": ";
+  out += v2 ? "2" : "1";
+  out += ",\n  \"units\": \"m\",\n  \"site\": {";
+  LineWriter(out).object(plan.site);
+  out += '}';
+  if (v2) write_array(out, "levels", plan.levels);
   write_array(out, "walls", plan.walls);
-  out += ",\n";
   write_array(out, "openings", plan.openings);
-  out += ",\n";
+  if (v2) write_array(out, "slabs", plan.slabs);
   write_array(out, "lights", plan.lights);
-  out += ",\n";
   write_array(out, "cameras", plan.cameras);
   // Top-level unknown fields: one per line after the known ones.
-  for (const ExtraField* e : writable_extras(plan.extra, {"format", "version", "units", "site",
-                                                          "walls", "openings", "lights", "cameras"})) {
+  std::vector<std::string_view> written{kTopLevelKeys.begin(), kTopLevelKeys.end()};
+  if (!v2) std::erase_if(written, [](std::string_view k) { return k == "levels" || k == "slabs"; });
+  for (const ExtraField* e : writable_extras(plan.extra, written)) {
     out += ",\n  ";
     append_string(out, e->key);
     out += ": " + e->json;
@@ -219,10 +196,10 @@ std::string write_plan_text(const Plan& plan) {
 }
 
 Status write_plan_file(const Plan& plan, const std::filesystem::path& path) {
-  if (const std::string where = first_non_finite(plan); !where.empty()) {
-    return Status::failure(Code::invalid_value, "cannot write " + path.string() + ": " + where +
-                           " has a number that is not finite (JSON cannot hold it)");
-  }
+  if (const std::string where = first_non_finite(plan); !where.empty())
+    return Status::failure(Code::invalid_value,
+                           "cannot write " + path.string() + ": " + where +
+                               " holds a number that is not finite (JSON cannot hold it)");
   return write_file_atomically(path, write_plan_text(plan));
 }
 

@@ -1,4 +1,4 @@
-// Reading and writing plans as JSON (../shared/spec/plan-format.md, version 1).
+// Reading and writing plans as JSON (docs/plan-format.md, versions 1 and 2).
 //
 // Reading never throws and never crashes: every problem becomes a Diagnostic with the file,
 // line, column and JSON pointer (parse_error for malformed JSON and wrong types, invalid_value
@@ -8,6 +8,7 @@
 // that reads back to the same double. Saving a canonical file reproduces it byte for byte.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -17,6 +18,11 @@
 #include "validation/report.h"
 
 namespace roomcad {
+
+/// Most objects of one kind (walls, openings, ...) a plan may hold; more is an invalid_value
+/// error on the array. A real building has hundreds; the bound stops one file from asking
+/// unbounded memory and time of everything that reads, validates or builds it.
+inline constexpr std::size_t kMaxPlanObjects = 1'000'000;
 
 /// Parses a plan from JSON text; `file` names the source in messages.
 /// @param[out] report  if given, every problem found is appended to it, errors and warnings

@@ -18,7 +18,7 @@
 #include <cmath>
 
 #include "modeling/broad_phase.h"
-#include "modeling/detail/segment_predicates.h"
+#include "modeling/segment_predicates.h"
 
 namespace roomcad {
 namespace {
@@ -54,7 +54,7 @@ PairContact touch_ends(const Plan& plan, std::size_t a, std::size_t b, double to
     const Wall& v = plan.walls[walls[1 - k]];
     for (int e = 0; e < 2; ++e) {
       const Point2 p = end_point(w, e);
-      if (!detail::is_near_segment(p, v.from, v.to, tol)) continue;
+      if (!is_near_segment(p, v.from, v.to, tol)) continue;
       contact.joined = true;
       if (!contact.point) contact.point = p;
       EndNeighbours& n = ends[walls[k]][e];
@@ -62,7 +62,7 @@ PairContact touch_ends(const Plan& plan, std::size_t a, std::size_t b, double to
       n.wall = walls[1 - k];
       n.matched_ends = 0;
       for (int f = 0; f < 2; ++f)
-        if (detail::is_near_point(p, end_point(v, f), tol)) {
+        if (is_near_point(p, end_point(v, f), tol)) {
           ++n.matched_ends;
           n.matched_end = f;
         }
@@ -91,7 +91,7 @@ bool is_mitre_end(const Plan& plan, const std::vector<std::array<EndNeighbours, 
     return false;
   const Wall& a = plan.walls[w];
   const Wall& b = plan.walls[mine.wall];
-  return !detail::overlap_collinearly(a.from, a.to, b.from, b.to);
+  return !overlap_collinearly(a.from, a.to, b.from, b.to);
 }
 
 std::vector<Box2> centre_line_boxes(const Plan& plan, double tol) {
@@ -118,9 +118,9 @@ Joins find_joins(const Plan& plan) {
   for (const auto& [a, b] : find_meeting_boxes(centre_line_boxes(plan, tol))) {
     const Wall& wa = plan.walls[a];
     const Wall& wb = plan.walls[b];
-    if (!detail::share_heights(wa, wb)) continue;  // one above the other: they cannot meet
+    if (!share_heights(wa, wb)) continue;  // one above the other: they cannot meet
     const PairContact contact = touch_ends(plan, a, b, tol, ends);
-    if (contact.joined || detail::segments_meet(wa.from, wa.to, wb.from, wb.to))
+    if (contact.joined || segments_meet(wa.from, wa.to, wb.from, wb.to))
       joins.pairs.push_back(
           Join{a, b, JoinKind::unite, contact.point.value_or(crossing_point(wa, wb))});
   }

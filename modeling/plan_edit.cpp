@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "modeling/build_model.h"
-#include "modeling/detail/plan_objects.h"
+#include "modeling/plan_objects.h"
 
 namespace roomcad {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 /// Gives `id` a generated value when empty, else checks it is free; @return the final id.
 std::string claim_id(const Plan& plan, std::string id, std::string_view prefix) {
   if (id.empty()) return generate_id(plan, prefix);
-  detail::require_unused_id(plan, id, "add");
+  require_unused_id(plan, id, "add");
   return id;
 }
 
@@ -34,22 +34,32 @@ EditSummary append_object(const Plan& plan, std::vector<Object>& objects, Object
 }  // namespace
 
 std::optional<std::string_view> object_kind(const Plan& plan, std::string_view id) {
-  const auto ref = detail::find_object(plan, id);
+  const auto ref = find_object(plan, id);
   if (!ref) return std::nullopt;
-  return detail::kind_name(plan, *ref);
+  return kind_name(plan, *ref);
 }
 
 std::string generate_id(const Plan& plan, std::string_view prefix) {
   for (std::size_t n = 1;; ++n) {
     std::string id = fmt::format("{}-{}", prefix, n);
-    if (!detail::find_object(plan, id)) return id;
+    if (!find_object(plan, id)) return id;
   }
 }
 
-std::vector<std::string> hosted_openings(const Plan& plan, std::string_view wall_id) {
+std::vector<std::string> dependent_objects(const Plan& plan, std::string_view id) {
   std::vector<std::string> ids;
-  for (const Opening& o : plan.openings)
-    if (o.wall == wall_id) ids.push_back(o.id);
+  auto add_openings_of = [&](std::string_view wall) {
+    for (const Opening& o : plan.openings)
+      if (o.wall == wall) ids.push_back(o.id);
+  };
+  add_openings_of(id);
+  for (const Wall& w : plan.walls) {
+    if (w.level != id || w.level.empty()) continue;
+    ids.push_back(w.id);
+    add_openings_of(w.id);
+  }
+  for (const Slab& s : plan.slabs)
+    if (s.level == id && !s.level.empty()) ids.push_back(s.id);
   return ids;
 }
 
@@ -75,6 +85,19 @@ EditSummary add_opening(Plan& plan, Opening opening) {
   return append_object(plan, plan.openings, std::move(opening), prefix);
 }
 
+EditSummary add_level(Plan& plan, Level level) {
+  return append_object(plan, plan.levels, std::move(level), "level");
+}
+
+EditSummary add_slab(Plan& plan, Slab slab) {
+  if (!slab.level.empty() &&
+      std::none_of(plan.levels.begin(), plan.levels.end(),
+                   [&](const Level& l) { return l.id == slab.level; }))
+    throw PreconditionError(fmt::format("add: slab '{}' names level '{}', and the plan has no "
+                                        "such level", slab.id, slab.level));
+  return append_object(plan, plan.slabs, std::move(slab), "slab");
+}
+
 EditSummary add_light(Plan& plan, Light light) {
   return append_object(plan, plan.lights, std::move(light), "light");
 }
@@ -84,24 +107,25 @@ EditSummary add_camera(Plan& plan, Camera camera) {
 }
 
 EditSummary remove_object(Plan& plan, std::string_view id, const RemoveOptions& options) {
-  const detail::ObjectRef ref = detail::require_object(plan, id, "rm");
+  const ObjectRef ref = require_object(plan, id, "rm");
+  std::vector<std::string> dependents = dependent_objects(plan, id);
+  if (!dependents.empty() && !options.cascade)
+    throw PreconditionError(fmt::format("{} '{}' has {} ({}); --cascade removes them too",
+                                        kind_name(plan, ref), id,
+                                        ref.kind == ObjectKind::wall ? "openings"
+                                                                             : "objects on it",
+                                        fmt::join(dependents, ", ")),
+                            Code::edit_refused);
   EditSummary summary;
-  if (ref.kind == detail::ObjectKind::wall) {
-    std::vector<std::string> hosted = hosted_openings(plan, id);
-    if (!hosted.empty() && !options.cascade)
-      throw PreconditionError(fmt::format(
-          "rm: wall '{}' has openings ({}); remove them first or use --cascade", id,
-          fmt::join(hosted, ", ")));
-    std::erase_if(plan.openings, [&](const Opening& o) { return o.wall == id; });
-    summary.removed = std::move(hosted);
-  }
-  summary.removed.insert(summary.removed.begin(), std::string(id));
-  switch (ref.kind) {
-    case detail::ObjectKind::wall: plan.walls.erase(plan.walls.begin() + ref.index); break;
-    case detail::ObjectKind::opening: plan.openings.erase(plan.openings.begin() + ref.index); break;
-    case detail::ObjectKind::light: plan.lights.erase(plan.lights.begin() + ref.index); break;
-    case detail::ObjectKind::camera: plan.cameras.erase(plan.cameras.begin() + ref.index); break;
-  }
+  summary.removed.push_back(std::string(id));
+  summary.removed.insert(summary.removed.end(), dependents.begin(), dependents.end());
+  // The object itself by its index (a plan being repaired may hold its id twice), then what
+  // depends on it: never in the same list, so the index still holds.
+  erase_object(plan, ref);
+  auto depends = [&](const auto& o) {
+    return std::find(dependents.begin(), dependents.end(), o.id) != dependents.end();
+  };
+  for_each_list(plan, [&](auto& objects, ObjectKind) { std::erase_if(objects, depends); });
   return summary;
 }
 

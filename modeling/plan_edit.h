@@ -24,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.h"
 #include "modeling/plan.h"
 
 namespace roomcad {
@@ -36,15 +37,12 @@ struct EditSummary {
   friend bool operator==(const EditSummary&, const EditSummary&) = default;
 };
 
-/// @return the kind of the object with this id: "wall", "door", "window", "light",
-///         "camera", or nullopt if no object has it. O(n).
+/// @return the kind of the object with this id: "level", "wall", "door", "window", "slab",
+///         "light", "camera", or nullopt if no object has it. O(n).
 [[nodiscard]] std::optional<std::string_view> object_kind(const Plan& plan, std::string_view id);
 
 /// @return `<prefix>-N` with the smallest N >= 1 that no object of the plan uses. O(n) per try.
 [[nodiscard]] std::string generate_id(const Plan& plan, std::string_view prefix);
-
-/// @return the ids of the openings hosted by wall `wall_id`, in plan order. O(n).
-[[nodiscard]] std::vector<std::string> hosted_openings(const Plan& plan, std::string_view wall_id);
 
 /// @return an opening of this type with the spec's defaults (width, height, sill).
 [[nodiscard]] Opening default_opening(OpeningType type);
@@ -57,6 +55,13 @@ EditSummary add_wall(Plan& plan, Wall wall);
 /// @throws PreconditionError if the id is used or `opening.wall` names no wall of the plan.
 EditSummary add_opening(Plan& plan, Opening opening);
 
+/// Appends a level (`level-N` when the id is empty). @throws PreconditionError on a used id.
+EditSummary add_level(Plan& plan, Level level);
+
+/// Appends a slab (`slab-N` when the id is empty).
+/// @throws PreconditionError if the id is used or `slab.level` names no level of the plan.
+EditSummary add_slab(Plan& plan, Slab slab);
+
 /// Appends a light (`light-N` when the id is empty). @throws PreconditionError on a used id.
 EditSummary add_light(Plan& plan, Light light);
 
@@ -64,11 +69,17 @@ EditSummary add_light(Plan& plan, Light light);
 EditSummary add_camera(Plan& plan, Camera camera);
 
 struct RemoveOptions {
-  bool cascade = false;  ///< removing a wall also removes its openings
+  bool cascade = false;  ///< removing a wall (a level) also removes its openings (its walls,
+                         ///< their openings and its slabs)
 };
 
+/// @return the ids of the objects that depend on object `id` and go with it under cascade: a
+///         wall's openings; a level's walls, their openings and its slabs. O(n).
+[[nodiscard]] std::vector<std::string> dependent_objects(const Plan& plan, std::string_view id);
+
 /// Removes the object with this id.
-/// @throws PreconditionError if there is none, or it is a wall with openings and not cascade.
+/// @throws PreconditionError if there is none; with Code::edit_refused if others depend on it
+///         (dependent_objects) and not cascade.
 EditSummary remove_object(Plan& plan, std::string_view id, const RemoveOptions& options = {});
 
 /// Moves an object by `by` metres: a wall (its openings ride along), a camera (eye and target).
@@ -121,8 +132,9 @@ EditSummary set_field(Plan& plan, std::string_view id, std::string_view key,
 ///         EditSummary's `changed`. @pre same numbers of walls, openings, lights, cameras.
 [[nodiscard]] EditSummary changed_objects(const Plan& before, const Plan& after);
 
-/// @return the names of the fields set_field accepts for an object kind ("wall", "door",
-///         "window", "light", "camera", "site"), in file order.
+/// @return the names of the fields set_field accepts for an object kind ("level", "wall",
+///         "door", "window", "slab", "light", "camera", "site"), in file order (the field
+///         tables of modeling/plan_fields.h).
 [[nodiscard]] std::vector<std::string_view> field_names(std::string_view kind);
 
 }  // namespace roomcad

@@ -10,15 +10,13 @@
 #include <utility>
 
 #include "modeling/build_model.h"
-#include "modeling/detail/plan_objects.h"
+#include "modeling/plan_objects.h"
 #include "modeling/plan_edit.h"
 #include "modeling/transform2d.h"
 
 namespace roomcad {
 namespace {
 
-using detail::ObjectKind;
-using detail::ObjectRef;
 
 /// How one plan transform acts on each kind of quantity.
 struct PlanMap {
@@ -46,6 +44,13 @@ Vec3 map_direction(const Transform2d& t, Vec3 v) {
 void map_wall(Wall& wall, const PlanMap& map) {
   wall.from = map_point(map, wall.from);
   wall.to = map_point(map, wall.to);
+}
+
+/// A slab's outline and holes go through the map; its top and thickness are vertical sizes.
+void map_slab(Slab& slab, const PlanMap& map) {
+  for (Point2& p : slab.outline) p = map_point(map, p);
+  for (Polygon& hole : slab.holes)
+    for (Point2& p : hole) p = map_point(map, p);
 }
 
 /// Scales the along-wall lengths of the openings hosted by `wall_id`, or of all openings
@@ -98,10 +103,13 @@ Point2 site_centre(const Site& s) {
           exact_dot(std::array{s.origin.y, double(s.cells[1])}, std::array{1.0, half})};
 }
 
-/// The default centre of a turn or scale of one object: a wall's midpoint, a camera's target.
+/// The default centre of a turn or scale of one object: a wall's midpoint, a slab's first
+/// corner, a camera's target.
 Point2 default_centre(const Plan& plan, ObjectRef ref) {
   if (ref.kind == ObjectKind::wall)
     return midpoint(plan.walls[ref.index].from, plan.walls[ref.index].to);
+  if (ref.kind == ObjectKind::slab && !plan.slabs[ref.index].outline.empty())
+    return plan.slabs[ref.index].outline.front();
   if (ref.kind == ObjectKind::camera)
     return {plan.cameras[ref.index].target.x, plan.cameras[ref.index].target.y};
   return {};
@@ -115,8 +123,13 @@ EditSummary map_object(Plan& plan, ObjectRef ref, const PlanMap& map, std::strin
       map_wall(plan.walls[ref.index], map);
       map_openings(plan, plan.walls[ref.index].id, map);
       break;
+    case ObjectKind::slab: map_slab(plan.slabs[ref.index], map); break;
     case ObjectKind::camera: map_camera(plan.cameras[ref.index], map); break;
     case ObjectKind::light: map_light(plan.lights[ref.index], map); break;
+    case ObjectKind::level:
+      throw PreconditionError(fmt::format(
+          "{}: '{}' is a level, which has no position in plan; {} its walls and slabs, or the "
+          "whole plan with --all", verb, plan.levels[ref.index].id, verb));
     case ObjectKind::opening:
       throw PreconditionError(fmt::format(
           "{}: '{}' is an opening; it goes with its wall '{}' (move it along the wall with "
@@ -129,6 +142,7 @@ EditSummary map_object(Plan& plan, ObjectRef ref, const PlanMap& map, std::strin
 EditSummary map_everything(Plan& plan, const PlanMap& map) {
   const Plan before = plan;
   for (Wall& w : plan.walls) map_wall(w, map);
+  for (Slab& s : plan.slabs) map_slab(s, map);
   map_openings(plan, std::nullopt, map);
   for (Camera& c : plan.cameras) map_camera(c, map);
   for (Light& l : plan.lights) map_light(l, map);
@@ -180,25 +194,27 @@ EditSummary changed_objects(const Plan& before, const Plan& after) {
     for (std::size_t i = 0; i < old_objects.size(); ++i)
       if (old_objects[i] != new_objects[i]) summary.changed.push_back(new_objects[i].id);
   };
+  compare(before.levels, after.levels);
   compare(before.walls, after.walls);
   compare(before.openings, after.openings);
+  compare(before.slabs, after.slabs);
   compare(before.lights, after.lights);
   compare(before.cameras, after.cameras);
   return summary;
 }
 
 EditSummary move_object(Plan& plan, std::string_view id, Point2 by) {
-  const ObjectRef ref = detail::require_object(plan, id, "move");
+  const ObjectRef ref = require_object(plan, id, "move");
   require_not_light(plan, ref, "move");
   return map_object(plan, ref, translation_map(by), "move");
 }
 
 EditSummary slide_opening(Plan& plan, std::string_view id, double du) {
-  const ObjectRef ref = detail::require_object(plan, id, "move");
+  const ObjectRef ref = require_object(plan, id, "move");
   if (ref.kind != ObjectKind::opening)
     throw PreconditionError(fmt::format(
         "move: {} '{}' moves in the plan: give --by dx,dy (one number moves an opening along "
-        "its wall)", detail::kind_name(plan, ref), id));
+        "its wall)", kind_name(plan, ref), id));
   require_finite(du, "move", "--by du");
   Opening& opening = plan.openings[ref.index];
   const double offset = exact_add(opening.offset, du);
@@ -210,14 +226,14 @@ EditSummary slide_opening(Plan& plan, std::string_view id, double du) {
 
 EditSummary rotate_object(Plan& plan, std::string_view id, double degrees,
                           std::optional<Point2> about) {
-  const ObjectRef ref = detail::require_object(plan, id, "rotate");
+  const ObjectRef ref = require_object(plan, id, "rotate");
   return map_object(plan, ref, rotation_map(degrees, about.value_or(default_centre(plan, ref))),
                     "rotate");
 }
 
 EditSummary scale_object(Plan& plan, std::string_view id, double factor,
                          std::optional<Point2> about) {
-  const ObjectRef ref = detail::require_object(plan, id, "scale");
+  const ObjectRef ref = require_object(plan, id, "scale");
   require_not_light(plan, ref, "scale");
   return map_object(plan, ref, scale_map(factor, about.value_or(default_centre(plan, ref))),
                     "scale");

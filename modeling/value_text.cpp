@@ -2,7 +2,8 @@
 
 #include <charconv>
 #include <cmath>
-#include <initializer_list>
+#include <algorithm>
+#include <string>
 #include <vector>
 
 namespace roomcad {
@@ -25,14 +26,6 @@ std::vector<std::string_view> split_exactly(std::string_view text, std::size_t c
   }
   if (parts.size() != count) parts.clear();
   return parts;
-}
-
-/// @return the enum value whose to_string is `text`, or nullopt.
-template <class Enum>
-std::optional<Enum> parse_enum(std::string_view text, std::initializer_list<Enum> values) {
-  for (const Enum value : values)
-    if (to_string(value) == text) return value;
-  return std::nullopt;
 }
 
 }  // namespace
@@ -83,20 +76,52 @@ std::optional<std::array<std::int64_t, 2>> parse_cells(std::string_view text) {
   return std::array<std::int64_t, 2>{*nx, *ny};
 }
 
-std::optional<OpeningType> parse_opening_type(std::string_view text) {
-  return parse_enum(text, {OpeningType::door, OpeningType::window});
+std::optional<Polygon> parse_polygon(std::string_view text) {
+  Polygon polygon;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    const auto p = parse_point2(text.substr(start, end - start));
+    if (!p) return std::nullopt;
+    polygon.push_back(*p);
+    start = end + 1;
+  }
+  return polygon;
 }
-std::optional<Hinge> parse_hinge(std::string_view text) {
-  return parse_enum(text, {Hinge::left, Hinge::right});
+
+std::optional<std::vector<Polygon>> parse_polygons(std::string_view text) {
+  std::vector<Polygon> polygons;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find('|', start), text.size());
+    auto polygon = parse_polygon(text.substr(start, end - start));
+    if (!polygon) return std::nullopt;
+    polygons.push_back(std::move(*polygon));
+    start = end + 1;
+  }
+  return polygons;
 }
-std::optional<Swing> parse_swing(std::string_view text) {
-  return parse_enum(text, {Swing::in, Swing::out});
+
+std::string format_number(double x) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x + 0.0).ptr;  // -0 -> 0
+  return std::string(buffer, end);
 }
-std::optional<LightType> parse_light_type(std::string_view text) {
-  return parse_enum(text, {LightType::directional});
+
+std::string format_point2(Point2 p) { return format_number(p.x) + ',' + format_number(p.y); }
+
+std::string format_vec3(Vec3 v) {
+  return format_number(v.x) + ',' + format_number(v.y) + ',' + format_number(v.z);
 }
-std::optional<Projection> parse_projection(std::string_view text) {
-  return parse_enum(text, {Projection::perspective, Projection::orthographic});
+
+std::string format_polygon(const Polygon& polygon) {
+  std::string out;
+  for (const Point2& p : polygon) out += (out.empty() ? "" : ";") + format_point2(p);
+  return out;
+}
+
+std::string format_polygons(const std::vector<Polygon>& polygons) {
+  std::string out;
+  for (std::size_t i = 0; i < polygons.size(); ++i) out += (i ? "|" : "") + format_polygon(polygons[i]);
+  return out;
 }
 
 }  // namespace roomcad

@@ -1,11 +1,14 @@
-// Strict parsing of the values typed on the command line and given to set_field: a whole
-// string or nothing, never a prefix ("1.5m" is not 1.5), never NaN or infinity.
+// The values of plan fields as text, as typed on the command line (`set`, `add`) and shown in
+// the window: strict parsing (a whole string or nothing, never a prefix: "1.5m" is not 1.5;
+// never NaN or infinity) and the formatting that reads back to the same value.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "modeling/plan.h"
 
@@ -26,11 +29,26 @@ namespace roomcad {
 /// @return `nx,ny` as two integers (site cells), or nullopt.
 [[nodiscard]] std::optional<std::array<std::int64_t, 2>> parse_cells(std::string_view text);
 
-/// The enums of the format, by the names the format writes (to_string in modeling/plan.h).
-[[nodiscard]] std::optional<OpeningType> parse_opening_type(std::string_view text);
-[[nodiscard]] std::optional<Hinge> parse_hinge(std::string_view text);
-[[nodiscard]] std::optional<Swing> parse_swing(std::string_view text);
-[[nodiscard]] std::optional<LightType> parse_light_type(std::string_view text);
-[[nodiscard]] std::optional<Projection> parse_projection(std::string_view text);
+/// @return the value of an enum of the format whose name (to_string) is `text`, or nullopt.
+template <class E>
+[[nodiscard]] std::optional<E> parse_enum(std::string_view text) {
+  for (const E value : EnumValues<E>::all)
+    if (to_string(value) == text) return value;
+  return std::nullopt;
+}
+
+/// @return `x,y;x,y;...` as a polygon (at least one point), or nullopt.
+[[nodiscard]] std::optional<Polygon> parse_polygon(std::string_view text);
+
+/// @return polygons separated by `|` (`x,y;x,y;x,y|x,y;...`), or nullopt.
+[[nodiscard]] std::optional<std::vector<Polygon>> parse_polygons(std::string_view text);
+
+/// The same values as text the parsers above read back exactly: numbers as the shortest
+/// decimal that reads back to the same double (no "-0").
+[[nodiscard]] std::string format_number(double x);
+[[nodiscard]] std::string format_point2(Point2 p);
+[[nodiscard]] std::string format_vec3(Vec3 v);
+[[nodiscard]] std::string format_polygon(const Polygon& polygon);
+[[nodiscard]] std::string format_polygons(const std::vector<Polygon>& polygons);
 
 }  // namespace roomcad

@@ -9,7 +9,7 @@
 
 #include "render/detail/plan_paper.h"
 #include "render/detail/scale_bar.h"
-#include "validation/validate.h"
+#include "modeling/rooms.h"
 
 namespace roomcad {
 namespace {

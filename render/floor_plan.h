@@ -84,7 +84,7 @@ struct FloorPlanDrawing {
 [[nodiscard]] Status check_floor_plan_options(const FloorPlanOptions& options);
 
 /// Draws the floor plan of a plan.
-/// @param[in] plan  a plan that validates without errors (validation/validate.h)
+/// @param[in] plan  a plan that validates without errors (roomcad validate)
 /// @pre check_floor_plan_options(options).ok() && validate(plan).ok()
 /// @return the drawing; a plan with no walls gives a page with the title only. Deterministic.
 ///   Cost O(n log n) in walls and openings plus find_rooms.

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# Regenerates examples/sweethome3d/*.json from the Sweet Home 3D homes in
-# ../shared/realdata/sweethome3d with `roomcad import` (build first: scripts/build.sh).
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Regenerates examples/sweethome3d/*.json from the Sweet Home 3D homes bundled in
+# examples/sweethome3d/homes (the eTeks example homes and the edge case; THIRD_PARTY.md) with
+# `roomcad import` (build first: scripts/build.sh).
 # Warnings about approximations go to examples/sweethome3d/<Name>.import.txt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-data=../shared/realdata/sweethome3d
+data=examples/sweethome3d/homes
 out=examples/sweethome3d
 roomcad=${ROOMCAD:-}
 if [[ -z "$roomcad" ]]; then

@@ -11,7 +11,7 @@ packages=(
   # geometry, meshes, maths
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenmesh-dev libglm-dev libeigen3-dev
   # formats, command line, threads, images, windows, archives
-  nlohmann-json3-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libsdl2-dev libzip-dev libpugixml-dev
+  nlohmann-json3-dev libsimdjson-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libsdl2-dev libzip-dev libpugixml-dev
   # tests and benchmarks (Xvfb: a screen for the window tests of `roomcad view`; gnuplot draws
   # bench/report.sh's plots; admesh: an independent STL reader for the export tests)
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth gnuplot-nox admesh

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Builds roomcad and runs the whole test suite through CTest.
+# Builds everything (roomcad, the tests, the benchmarks; warnings are errors) and runs the
+# tests through CTest. Extra arguments go to ctest: `scripts/test.sh -L fast` runs the tests
+# labelled fast only (the labels: README, "Tests").
+# Usage: scripts/test.sh [CTEST_ARGS...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-ctest --test-dir build --output-on-failure -j"$(nproc)"
+ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"

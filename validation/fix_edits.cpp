@@ -29,7 +29,7 @@ void apply_add(Plan& plan, const FixEdit& edit) {
     return nullptr;
   };
   const std::string* type = field("type");
-  const std::optional<OpeningType> kind = type ? parse_opening_type(*type) : std::nullopt;
+  const std::optional<OpeningType> kind = type ? parse_enum<OpeningType>(*type) : std::nullopt;
   if (!kind || !field("wall"))
     throw PreconditionError("apply_fix_edits: an add edit needs a door or window type and a wall",
                             Code::precondition);

@@ -1,5 +1,5 @@
 // A report of problems found in a plan: what reading and validation return, printed by the CLI
-// as text or as the JSON of ../shared/spec/plan-format.md ("Validation codes").
+// as text or as the JSON of docs/plan-format.md ("Validation codes").
 #pragma once
 
 #include <cstddef>

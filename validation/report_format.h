@@ -1,4 +1,4 @@
-// Printing a Report: the JSON object of ../shared/spec/plan-format.md ("Validation codes") for
+// Printing a Report: the JSON object of docs/plan-format.md ("Validation codes") for
 // tools, and plain text for people.
 #pragma once
 

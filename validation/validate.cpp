@@ -38,7 +38,7 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   // so the report does not depend on timing.
   std::future<std::vector<Room>> rooms;
   if (options.room_warnings || (rules && all_walls_usable))
-    rooms = std::async(std::launch::async, [&plan, &joins] { return detail::find_rooms(plan, joins); });
+    rooms = std::async(std::launch::async, [&plan, &joins] { return find_rooms(plan, joins); });
   // The geometry checks and the rules see only usable walls: the others are made to join
   // nothing (geometry_plan).
   std::optional<Plan> geometry;

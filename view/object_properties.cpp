@@ -1,53 +1,36 @@
 #include "view/object_properties.h"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include "modeling/plan_objects.h"
+#include "modeling/field_text.h"
 
 namespace roomcad {
 namespace {
 
-template <class T>
-const T* find_by_id(const std::vector<T>& items, std::string_view id) {
-  const auto it = std::find_if(items.begin(), items.end(), [&](const T& t) { return t.id == id; });
-  return it == items.end() ? nullptr : &*it;
-}
-
-std::string point(const Point2& p) { return fmt::format("{}, {}", p.x, p.y); }
-std::string point(const Vec3& p) { return fmt::format("{}, {}, {}", p.x, p.y, p.z); }
-
-std::vector<std::string> describe(const Wall& w) {
-  return {fmt::format("wall {}", w.id), fmt::format("from {}  to {} m", point(w.from), point(w.to)),
-          fmt::format("thickness {} m  height {} m  base {} m", w.thickness, w.height, w.base),
-          fmt::format("color {}", to_string(w.color))};
-}
-
-std::vector<std::string> describe(const Opening& o) {
-  return {fmt::format("{} {} in wall {}", to_string(o.type), o.id, o.wall),
-          fmt::format("offset {} m  width {} m  height {} m  sill {} m", o.offset, o.width,
-                      o.height, o.sill),
-          fmt::format("hinge {}  swing {}", to_string(o.hinge), to_string(o.swing))};
-}
-
-std::vector<std::string> describe(const Light& l) {
-  return {fmt::format("light {}", l.id), fmt::format("direction {}", point(l.direction)),
-          fmt::format("intensity {}  ambient {}", l.intensity, l.ambient)};
-}
-
-std::vector<std::string> describe(const Camera& c) {
-  return {fmt::format("camera {} ({})", c.id, to_string(c.projection)),
-          fmt::format("eye {}  target {} m", point(c.eye), point(c.target)),
-          fmt::format("fov {} deg  view height {} m", c.fov_deg, c.view_height)};
+/// "name value unit" for each field of an object but its id, from its field table; absent
+/// version-2 fields are left out.
+template <class Object>
+std::vector<std::string> field_lines(const Object& object) {
+  std::vector<std::string> lines;
+  for (const Field<Object>& f : fields_of<Object>()) {
+    if (f.name == "id" || !is_present(object, f)) continue;
+    const std::string_view unit = f.unit == Unit::metre ? " m" : f.unit == Unit::degree ? " deg" : "";
+    lines.push_back(fmt::format("{} {}{}", f.name, field_text(object, f), unit));
+  }
+  return lines;
 }
 
 }  // namespace
 
 std::vector<std::string> describe_object(const Plan& plan, std::string_view id) {
-  if (const Wall* w = find_by_id(plan.walls, id)) return describe(*w);
-  if (const Opening* o = find_by_id(plan.openings, id)) return describe(*o);
-  if (const Light* l = find_by_id(plan.lights, id)) return describe(*l);
-  if (const Camera* c = find_by_id(plan.cameras, id)) return describe(*c);
-  return {};
+  const auto ref = find_object(plan, id);
+  if (!ref) return {};
+  std::vector<std::string> lines{fmt::format("{} {}", kind_name(plan, *ref), id)};
+  visit_object(plan, *ref, [&](const auto& object) {
+    for (std::string& line : field_lines(object)) lines.push_back(std::move(line));
+  });
+  return lines;
 }
 
 }  // namespace roomcad

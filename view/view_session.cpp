@@ -149,12 +149,12 @@ bool ViewSession::rotate_selection(double degrees) {
 bool ViewSession::delete_selection() {
   if (!selected_) return false;
   const std::string id = *selected_;
-  const std::vector<std::string> hosted = hosted_openings(plan_, id);
+  const std::vector<std::string> hosted = dependent_objects(plan_, id);
   const bool confirmed = pending_cascade_ == id;
   pending_cascade_.reset();
   if (!hosted.empty() && !confirmed) {
     pending_cascade_ = id;
-    set_message(fmt::format("wall {} holds {}: press Delete again to delete them with it", id,
+    set_message(fmt::format("{} holds {}: press Delete again to delete them with it", id,
                             fmt::join(hosted, ", ")));
     return false;
   }

@@ -1,407 +1,603 @@
 #include "io/detail/plan_reader.h"
 
+#include <simdjson.h>
+
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "io/detail/json_text.h"
+#include "io/detail/positioned_json.h"
+#include "io/plan_json.h"
 #include "modeling/nearest_name.h"
+#include "modeling/plan_fields.h"
+#include "modeling/value_text.h"
 
 namespace roomcad::io_detail {
 namespace {
 
-template <class E>
-struct EnumName {
-  std::string_view name;
-  E value;
+namespace od = simdjson::ondemand;
+using JsonType = od::json_type;
+
+/// Thrown when the text is not the JSON the reader accepts (malformed, or a duplicate key):
+/// read_plan_document then reports the positioned parser's precise message instead.
+struct Malformed {};
+
+/// Rejects what simdjson lets through but a plan must not hold: a key twice in one object.
+/// Fields of the table are tracked by bit, others by name (rare).
+class SeenKeys {
+ public:
+  void add(std::size_t field_index) {
+    if (seen_ >> field_index & 1u) throw Malformed{};
+    seen_ |= std::uint64_t{1} << field_index;
+  }
+  void add(std::string_view key) {
+    if (std::find(others_.begin(), others_.end(), key) != others_.end()) throw Malformed{};
+    others_.emplace_back(key);
+  }
+  [[nodiscard]] bool has(std::size_t field_index) const { return seen_ >> field_index & 1u; }
+
+ private:
+  std::uint64_t seen_ = 0;
+  std::vector<std::string> others_;
 };
 
-constexpr EnumName<OpeningType> kOpeningTypes[] = {{"door", OpeningType::door},
-                                                   {"window", OpeningType::window}};
-constexpr EnumName<Hinge> kHinges[] = {{"left", Hinge::left}, {"right", Hinge::right}};
-constexpr EnumName<Swing> kSwings[] = {{"in", Swing::in}, {"out", Swing::out}};
-constexpr EnumName<LightType> kLightTypes[] = {{"directional", LightType::directional}};
-constexpr EnumName<Projection> kProjections[] = {{"perspective", Projection::perspective},
-                                                 {"orthographic", Projection::orthographic}};
-
-/// How a found value is shown in a message.
-std::string describe(const Json& v) {
-  switch (v.type()) {
-    case Json::value_t::object: return "an object";
-    case Json::value_t::array:
-      return v.empty() ? "an empty array"
-                       : "an array of " + std::to_string(v.size()) + (v.size() == 1 ? " item" : " items");
-    case Json::value_t::string: {
-      std::string s = canonical_text(v);
-      if (s.size() > 42) {
-        std::size_t cut = 40;
-        while (cut > 1 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // whole characters
-        s = s.substr(0, cut) + "...\"";
-      }
-      return s;
-    }
-    default: return canonical_text(v);
+/// A string as a message shows it: quoted, escaped, cut after 40 bytes (whole characters).
+std::string quote_for_message(std::string_view text) {
+  std::string s;
+  append_string(s, text);
+  if (s.size() > 42) {
+    std::size_t cut = 40;
+    while (cut > 1 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;
+    s = s.substr(0, cut) + "...\"";
   }
+  return s;
 }
 
-/// Reads one JSON document into a Plan; every problem goes to the report.
+std::string count_text(std::size_t n) {
+  return n == 0 ? "an empty array"
+                : "an array of " + std::to_string(n) + (n == 1 ? " item" : " items");
+}
+
+/// "an object", "an array of 3 items", "\"abc\"", "12.5": how a found value is shown.
+std::string describe(od::value& v) {
+  switch (v.type().value()) {
+    case JsonType::object: return "an object";
+    case JsonType::array: {
+      std::size_t n = 0;
+      for (auto item : v.get_array()) ++n, (void)item;
+      return count_text(n);
+    }
+    case JsonType::string: return quote_for_message(v.get_string().value());
+    default: break;
+  }
+  const PositionedJson scalar = parse_positioned_json(v.raw_json_token());
+  if (scalar.error) throw Malformed{};
+  return canonical_text(scalar.root);
+}
+
+/// describe, for a whole document read by the positioned parser.
+std::string describe_json(const Json& v) {
+  if (v.is_object()) return "an object";
+  if (v.is_array()) return count_text(v.size());
+  return v.is_string() ? quote_for_message(v.get_ref<const std::string&>()) : canonical_text(v);
+}
+
+/// @return the whole text of a value (consuming it).
+std::string_view raw_json(od::value& v) {
+  switch (v.type().value()) {
+    case JsonType::object: return v.get_object().value().raw_json().value();
+    case JsonType::array: return v.get_array().value().raw_json().value();
+    default: break;
+  }
+  std::string_view token = v.raw_json_token();  // a scalar, with the spaces after it
+  while (!token.empty() && (token.back() == ' ' || token.back() == '\t' || token.back() == '\n' ||
+                            token.back() == '\r'))
+    token.remove_suffix(1);
+  return token;
+}
+
+/// The names of an enum's values as a message lists them: "\"door\" or \"window\"".
+template <class E>
+std::string expected_names() {
+  std::string out;
+  const std::size_t n = std::size(EnumValues<E>::all);
+  for (std::size_t i = 0; i < n; ++i)
+    out += (i == 0 ? "\"" : i + 1 == n ? " or \"" : ", \"") +
+           std::string(to_string(EnumValues<E>::all[i])) + '"';
+  return out;
+}
+
 class PlanReader {
  public:
-  PlanReader(const PositionedJson& doc, std::string_view text, std::string_view file,
-             Report& report)
-      : doc_(doc), text_(text), file_(file), report_(report), cursor_(text) {}
+  /// @param[in] json_begin  where the JSON (text from byte `base` on, padded for simdjson) starts
+  PlanReader(const char* json_begin, std::size_t base) : json_begin_(json_begin), base_(base) {}
 
-  Plan read() {
+  Plan read(od::document& doc) {
     Plan plan;
-    const Json& root = doc_.root;
-    if (!root.is_object()) {
-      wrong_type("", "an object (a roomcad plan)", root);
+    if (doc.type().value() != JsonType::object) {
+      const PositionedJson whole = parse_positioned_json(doc.raw_json().value());
+      if (whole.error) throw Malformed{};
+      report(Severity::error, Code::parse_error, offset_of(doc.raw_json_token().value().data()),
+             "expected an object (a roomcad plan), found " + describe_json(whole.root));
+      flush({});
       return plan;
     }
-    scale_ = units_scale(root);
-    for (auto it = root.begin(); it != root.end(); ++it) {
-      const std::string& key = it.key();
-      const Json& v = *it;
-      const std::string p = pointer_child("", key);
-      if (key == "format") {
-        read_format(v, p);
-      } else if (key == "version") {
-        read_version(v, p);
-      } else if (key == "units") {
-        read_units(v, p);
-      } else if (key == "site") {
-        read_site(v, p, plan.site);
-      } else if (key == "walls") {
-        read_array(v, p, plan.walls, &PlanReader::read_wall);
-      } else if (key == "openings") {
-        read_array(v, p, plan.openings, &PlanReader::read_opening);
-      } else if (key == "lights") {
-        read_array(v, p, plan.lights, &PlanReader::read_light);
-      } else if (key == "cameras") {
-        read_array(v, p, plan.cameras, &PlanReader::read_camera);
-      } else {
-        unknown(key, v, p, plan.extra,
-                {"format", "version", "units", "site", "walls", "openings", "lights", "cameras"});
-      }
-    }
+    od::object root = doc.get_object().value();
+    read_preamble(root);
+    for (od::field field : root) read_top_level(std::move(field), plan);
+    if (doc.current_location().error() != simdjson::OUT_OF_BOUNDS) throw Malformed{};
+    complete_wall_heights(plan);
     return plan;
   }
 
  private:
+  // ---- where we are: a JSON pointer kept as tokens, turned into text only for a message ----
+
+  struct Token {
+    std::string_view key;  ///< into the text or simdjson's string buffer: both outlive the read
+    std::size_t index = 0;
+    bool is_index = false;
+  };
+
+  std::string pointer() const {
+    std::string p;
+    for (const Token& t : path_) p = t.is_index ? pointer_child(p, t.index) : pointer_child(p, t.key);
+    return p;
+  }
+
+  /// Steps into a key or index for the duration of a scope.
+  class Step {
+   public:
+    Step(PlanReader& r, std::string_view key) : r_(r) { r_.path_.push_back({key, 0, false}); }
+    Step(PlanReader& r, std::size_t index) : r_(r) { r_.path_.push_back({{}, index, true}); }
+    ~Step() { r_.path_.pop_back(); }
+    Step(const Step&) = delete;
+    Step& operator=(const Step&) = delete;
+
+   private:
+    PlanReader& r_;
+  };
+
+  std::size_t offset_of(const char* at) const {
+    return static_cast<std::size_t>(at - json_begin_) + base_;
+  }
+  std::size_t offset_of(od::value& v) { return offset_of(v.raw_json_token().data()); }
+
   // ---- diagnostics ----
 
-  void report(Severity severity, Code code, const std::string& pointer, bool at_key,
-              const std::string& what, std::string fix = {}) {
-    const auto& offsets = at_key ? doc_.key_offsets : doc_.value_offsets;
-    const auto found = offsets.find(pointer);
-    const std::size_t offset = found == offsets.end() ? 0 : found->second;
-    const LineColumn at = cursor_.at(offset);
-    Diagnostic d;
-    d.severity = severity;
-    d.code = code;
-    d.objects = objects_;
-    d.message = std::string(file_) + ':' + std::to_string(at.line) + ':' +
-                std::to_string(at.column) + ": " + (pointer.empty() ? "" : pointer + ": ") + what;
-    d.fix = std::move(fix);
-    d.location = Location{std::string(file_), pointer, at.line, at.column};
-    report_.add(std::move(d));
+ public:
+  /// A problem found, placed by byte offset; its line, column and message are made at the end,
+  /// in one pass over the text (problems arrive out of order: a missing field is reported at its
+  /// object's start after the object's fields).
+  struct Problem {
+    std::size_t offset = 0;
+    std::string pointer;
+    std::string what;
+    Diagnostic diagnostic;  ///< severity, code, objects and fix so far
+  };
+  std::vector<Problem> take_problems() { return std::move(problems_); }
+
+ private:
+  void report(Severity severity, Code code, std::size_t offset, std::string what,
+              std::string fix = {}) {
+    Problem p{offset, pointer(), std::move(what), {}};
+    p.diagnostic.severity = severity;
+    p.diagnostic.code = code;
+    p.diagnostic.fix = std::move(fix);
+    pending_.push_back(std::move(p));
+  }
+  void wrong_type(od::value& v, std::string_view expected) {
+    const std::size_t at = offset_of(v);
+    report(Severity::error, Code::parse_error, at,
+           "expected " + std::string(expected) + ", found " + describe(v));
+  }
+  void invalid(std::size_t at, std::string what, std::string fix = {}) {
+    report(Severity::error, Code::invalid_value, at, std::move(what), std::move(fix));
+  }
+  /// Keeps the problems of one object, naming the object by its id.
+  void flush(const std::string& id) {
+    for (Problem& p : pending_) {
+      if (!id.empty()) p.diagnostic.objects = {id};
+      problems_.push_back(std::move(p));
+    }
+    pending_.clear();
   }
 
-  void wrong_type(const std::string& p, std::string_view expected, const Json& found) {
-    report(Severity::error, Code::parse_error, p, false,
-           "expected " + std::string(expected) + ", found " + describe(found));
-  }
-
-  void invalid(const std::string& p, const std::string& what, std::string fix = {}) {
-    report(Severity::error, Code::invalid_value, p, false, what, std::move(fix));
-  }
-
-  void missing(const std::string& object_pointer, std::string_view key, std::string_view what) {
-    report(Severity::error, Code::parse_error, object_pointer, false,
-           "missing required field \"" + std::string(key) + "\" (" + std::string(what) + ")");
-  }
-
-  void unknown(const std::string& key, const Json& v, const std::string& p, ExtraFields& extra,
-               std::initializer_list<std::string_view> known) {
-    std::string what = "unknown field \"" + key + "\"; its value is kept as is";
+  void unknown(std::string_view key, od::value& v, std::size_t key_offset, ExtraFields& extra,
+               const std::vector<std::string_view>& known, std::string_view why = {}) {
+    std::string what = "unknown field \"" + std::string(key) + "\"; its value is kept as is";
     std::string fix = "remove the field if it is a mistake";
-    if (const auto best = nearest_name(key, {known.begin(), known.size()})) {
+    if (!why.empty()) {
+      what = "\"" + std::string(key) + "\" " + std::string(why) + "; its value is kept as is";
+      fix = "set \"version\": 2 to use it";
+    } else if (const auto best = nearest_name(key, known)) {
       what += " (did you mean \"" + std::string(*best) + "\"?)";
       fix = "rename it to \"" + std::string(*best) + "\"";
     }
-    report(Severity::warning, Code::unknown_field, p, true, what, std::move(fix));
-    extra.push_back(ExtraField{key, canonical_text(v)});
+    report(Severity::warning, Code::unknown_field, key_offset, what, std::move(fix));
+    const PositionedJson value = parse_positioned_json(raw_json(v), path_.size());
+    if (value.error) throw Malformed{};
+    extra.push_back(ExtraField{std::string(key), canonical_text(value.root)});
   }
 
-  // ---- top level ----
+  // ---- the top level ----
 
-  double units_scale(const Json& root) const {
-    const auto it = root.find("units");
-    if (it == root.end() || !it->is_string()) return 1.0;
-    if (*it == "cm") return 100.0;
-    if (*it == "mm") return 1000.0;
-    return 1.0;
+  /// Reads `version` and `units` first: they decide how every other field is read.
+  void read_preamble(od::object& root) {
+    od::value v;
+    if (find(root, "version", v) && v.type().value() == JsonType::number && v.get_double().value() == 2.0)
+      version_ = 2;
+    if (find(root, "units", v) && v.type().value() == JsonType::string) {
+      const std::string_view units = v.get_string().value();
+      scale_ = units == "cm" ? 100.0 : units == "mm" ? 1000.0 : 1.0;
+    }
+    root.reset().value();
   }
 
-  void read_format(const Json& v, const std::string& p) {
-    if (!v.is_string()) return wrong_type(p, "the string \"roomcad-plan\"", v);
-    if (v != "roomcad-plan")
-      invalid(p, "unsupported format " + describe(v) + "; roomcad reads \"roomcad-plan\"",
+  /// @return whether `root` has the key (then `out` is its value). Malformed JSON throws.
+  static bool find(od::object& root, std::string_view key, od::value& out) {
+    const simdjson::error_code error = root.find_field_unordered(key).get(out);
+    if (error == simdjson::NO_SUCH_FIELD) return false;
+    if (error) throw Malformed{};
+    return true;
+  }
+
+  void read_top_level(od::field field, Plan& plan) {
+    const std::size_t key_offset = offset_of(field.key().raw()) - 1;  // before unescaping it
+    const std::string_view key = field.unescaped_key().value();
+    top_keys_.add(key);
+    od::value v = field.value();
+    Step step(*this, key);
+    const bool v2 = version_ == 2;
+    if (key == "format") read_format(v);
+    else if (key == "version") read_version(v);
+    else if (key == "units") read_units(v);
+    else if (key == "site") read_site(v, plan.site);
+    else if (key == "walls") read_list(v, plan.walls);
+    else if (key == "openings") read_list(v, plan.openings);
+    else if (key == "lights") read_list(v, plan.lights);
+    else if (key == "cameras") read_list(v, plan.cameras);
+    else if (v2 && key == "levels") read_list(v, plan.levels);
+    else if (v2 && key == "slabs") read_list(v, plan.slabs);
+    else {
+      const bool later = key == "levels" || key == "slabs";
+      unknown(key, v, key_offset, plan.extra, {kTopLevelKeys.begin(), kTopLevelKeys.end()},
+              later ? "is a version 2 field and this file is version 1" : "");
+    }
+    flush({});
+  }
+
+  void read_format(od::value& v) {
+    std::string_view s;
+    if (v.type().value() != JsonType::string) return wrong_type(v, "the string \"roomcad-plan\"");
+    const std::size_t at = offset_of(v);
+    if (v.get_string().get(s) || s != "roomcad-plan")
+      invalid(at, "unsupported format " + quote_for_message(s) + "; roomcad reads \"roomcad-plan\"",
               "set \"format\": \"roomcad-plan\"");
   }
 
-  void read_version(const Json& v, const std::string& p) {
-    if (!v.is_number()) return wrong_type(p, "the number 1", v);
-    if (v.get<double>() != 1.0)
-      invalid(p, "unsupported version " + describe(v) + "; this roomcad reads version 1");
+  void read_version(od::value& v) {
+    if (v.type().value() != JsonType::number) return wrong_type(v, "the number 1 or 2");
+    const std::size_t at = offset_of(v);
+    const std::string token = describe(v);
+    const double version = v.get_double().value();
+    if (version != 1.0 && version != 2.0)
+      invalid(at, "unsupported version " + token + "; this roomcad reads versions 1 and 2");
   }
 
-  void read_units(const Json& v, const std::string& p) {
-    if (!v.is_string()) return wrong_type(p, "\"m\", \"cm\" or \"mm\"", v);
-    if (v != "m" && v != "cm" && v != "mm")
-      invalid(p, "unsupported units " + describe(v) + "; expected \"m\", \"cm\" or \"mm\"");
+  void read_units(od::value& v) {
+    if (v.type().value() != JsonType::string) return wrong_type(v, "\"m\", \"cm\" or \"mm\"");
+    const std::size_t at = offset_of(v);
+    const std::string_view s = v.get_string().value();
+    if (s != "m" && s != "cm" && s != "mm")
+      invalid(at, "unsupported units " + quote_for_message(s) + "; expected \"m\", \"cm\" or \"mm\"");
   }
 
-  template <class T>
-  void read_array(const Json& v, const std::string& p, std::vector<T>& out,
-                  T (PlanReader::*read_one)(const Json&, const std::string&)) {
-    if (!v.is_array()) return wrong_type(p, "an array", v);
-    if (v.size() > kMaxPlanObjects)
-      return invalid(p, std::to_string(v.size()) + " objects; a plan may hold at most " +
-                            std::to_string(kMaxPlanObjects) +
-                            " of each kind (walls, openings, lights, cameras)",
-                     "split the plan into several files");
-    out.reserve(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      const std::string ip = pointer_child(p, i);
-      if (!v[i].is_object()) {
-        wrong_type(ip, "an object", v[i]);
+
+  // ---- objects, through the field tables ----
+
+  template <class Object>
+  void read_list(od::value& v, std::vector<Object>& out) {
+    if (v.type().value() != JsonType::array) return wrong_type(v, "an array");
+    const std::size_t at = offset_of(v);
+    const std::size_t problems_before = problems_.size();
+    std::size_t i = 0;
+    for (auto item : v.get_array()) {
+      Step step(*this, i++);
+      od::value object = item.value();
+      if (i > kMaxPlanObjects) continue;  // counted, not read: the whole array is refused
+      if (object.type().value() != JsonType::object) {
+        wrong_type(object, "an object");
+        flush({});
         continue;
       }
-      objects_.clear();
-      if (const auto id = v[i].find("id"); id != v[i].end() && id->is_string())
-        objects_.push_back(id->get<std::string>());
-      out.push_back((this->*read_one)(v[i], ip));
-      objects_.clear();
+      out.push_back(read_object<Object>(object));
+    }
+    if (i <= kMaxPlanObjects) return;
+    out.clear();
+    problems_.resize(problems_before);  // one problem for the array, not one per object
+    invalid(at, std::to_string(i) + " objects; a plan may hold at most " +
+                    std::to_string(kMaxPlanObjects) +
+                    " of each kind (levels, walls, openings, slabs, lights, cameras)",
+            "split the plan into several files");
+    flush({});
+  }
+
+  void read_site(od::value& v, Site& site) {
+    if (v.type().value() != JsonType::object) return wrong_type(v, "an object");
+    site = read_object<Site>(v, std::move(site));
+  }
+
+  template <class Object>
+  Object read_object(od::value& v, Object object = {}) {
+    const auto fields = fields_of<Object>();
+    const std::size_t at = offset_of(v);
+    SeenKeys seen;
+    for (od::field member : v.get_object()) {
+      const std::size_t key_offset = offset_of(member.key().raw()) - 1;  // before unescaping it
+      const std::string_view key = member.unescaped_key().value();
+      od::value value = member.value();
+      Step step(*this, key);
+      const Field<Object>* field = find_field<Object>(key);
+      const bool v1_only = field && field->presence == Presence::version2 && version_ == 1;
+      if (field && !v1_only) {
+        seen.add(static_cast<std::size_t>(field - fields.data()));
+        const bool length = field->unit == Unit::metre;
+        std::visit([&](auto m) { read_value(value, object.*m, length); }, field->member);
+        continue;
+      }
+      seen.add(key);
+      unknown(key, value, key_offset, object.extra, field_names_of<Object>(),
+              v1_only ? "is a version 2 field and this file is version 1" : "");
+    }
+    for (const Field<Object>& f : fields)
+      if (f.presence == Presence::required && !seen.has(static_cast<std::size_t>(&f - fields.data())))
+        report(Severity::error, Code::parse_error, at,
+               "missing required field \"" + std::string(f.name) + "\" (" + std::string(f.hint) + ")");
+    complete_defaults(object, seen);
+    flush(object_id(object));
+    return object;
+  }
+
+  static std::string object_id(const Site&) { return {}; }
+  template <class Object>
+  static std::string object_id(const Object& o) { return o.id; }
+
+  /// Defaults that depend on another field: an opening's size and sill depend on its type.
+  void complete_defaults(Opening& o, const SeenKeys& seen) {
+    const OpeningDefaults d = opening_defaults(o.type);
+    auto field_index = [](std::string_view name) {
+      return static_cast<std::size_t>(find_field<Opening>(name) - fields_of<Opening>().data());
+    };
+    if (!seen.has(field_index("width"))) o.width = d.width;
+    if (!seen.has(field_index("height"))) o.height = d.height;
+    if (!seen.has(field_index("sill"))) o.sill = d.sill;
+  }
+  void complete_defaults(Wall& w, const SeenKeys& seen) {
+    const auto height = static_cast<std::size_t>(find_field<Wall>("height") - fields_of<Wall>().data());
+    if (!w.level.empty() && !seen.has(height)) walls_without_height_.push_back(wall_count_);
+    ++wall_count_;
+  }
+  template <class Object>
+  void complete_defaults(Object&, const SeenKeys&) {}
+
+  /// A wall of a level that gives no height of its own takes the level's (version 2).
+  void complete_wall_heights(Plan& plan) const {
+    for (const std::size_t i : walls_without_height_) {
+      Wall& w = plan.walls[i];
+      for (const Level& l : plan.levels)
+        if (l.id == w.level) w.height = l.height;
     }
   }
 
-  // ---- fields ----
+  // ---- values, by the member's type ----
 
-  /// Reads a number; lengths are converted to metres.
-  void number(const Json& v, const std::string& p, double& out, bool length) {
-    if (!v.is_number()) return wrong_type(p, "a number", v);
-    out = v.get<double>();
+  /// Reads a number (lengths converted to metres). @return whether it was one.
+  bool read_number(od::value& v, double& out, bool length) {
+    if (v.type().value() != JsonType::number) {
+      wrong_type(v, "a number");
+      return false;
+    }
+    out = v.get_double().value();  // a number too large for a double throws: Malformed
     if (length && scale_ != 1.0) out /= scale_;
-  }
-  void length(const Json& v, const std::string& p, double& out) { number(v, p, out, true); }
-
-  /// Reads an array of exactly n numbers.
-  void numbers(const Json& v, const std::string& p, double* out, std::size_t n, bool length,
-               std::string_view shape) {
-    if (!v.is_array() || v.size() != n) return wrong_type(p, shape, v);
-    for (std::size_t i = 0; i < n; ++i) number(v[i], pointer_child(p, i), out[i], length);
-  }
-  void point2(const Json& v, const std::string& p, Point2& out) {
-    double xy[2] = {out.x, out.y};
-    numbers(v, p, xy, 2, true, "an array of 2 numbers [x, y]");
-    out = {xy[0], xy[1]};
-  }
-  void vec3(const Json& v, const std::string& p, Vec3& out, bool length) {
-    double xyz[3] = {out.x, out.y, out.z};
-    numbers(v, p, xyz, 3, length, "an array of 3 numbers [x, y, z]");
-    out = {xyz[0], xyz[1], xyz[2]};
+    return true;
   }
 
-  void color(const Json& v, const std::string& p, Color& out) {
-    if (!v.is_string()) return wrong_type(p, "a colour string \"#rrggbb\"", v);
-    if (const auto c = parse_color(v.get_ref<const std::string&>())) {
-      out = *c;
+  /// Reads an array of exactly n numbers into out[0..n). A wrong count is one problem on the
+  /// array; otherwise each element that is not a number is one. @return whether it was one.
+  bool read_numbers(od::value& v, double* out, std::size_t n, bool length, std::string_view shape) {
+    if (v.type().value() != JsonType::array) {
+      wrong_type(v, shape);
+      return false;
+    }
+    const std::size_t at = offset_of(v);
+    const std::size_t problems_before = pending_.size();
+    std::vector<double> values;
+    for (auto item : v.get_array()) {
+      od::value e = item.value();
+      Step step(*this, values.size());
+      double x = 0.0;
+      values.push_back(values.size() < n && read_number(e, x, length) ? x : 0.0);
+    }
+    if (values.size() != n) {
+      pending_.resize(problems_before);
+      report(Severity::error, Code::parse_error, at,
+             "expected " + std::string(shape) + ", found " + count_text(values.size()));
+      return false;
+    }
+    if (pending_.size() != problems_before) return false;
+    std::copy(values.begin(), values.end(), out);
+    return true;
+  }
+
+
+  void read_value(od::value& v, double& out, bool length) { read_number(v, out, length); }
+  void read_value(od::value& v, std::optional<double>& out, bool length) {
+    double x = 0.0;
+    if (read_number(v, x, length)) out = x;
+  }
+  void read_value(od::value& v, Point2& out, bool length) {
+    double xy[2];
+    if (read_numbers(v, xy, 2, length, "an array of 2 numbers [x, y]")) out = {xy[0], xy[1]};
+  }
+  void read_value(od::value& v, Vec3& out, bool length) {
+    double xyz[3];
+    if (read_numbers(v, xyz, 3, length, "an array of 3 numbers [x, y, z]"))
+      out = {xyz[0], xyz[1], xyz[2]};
+  }
+  void read_value(od::value& v, Color& out, bool) {
+    if (v.type().value() != JsonType::string) return wrong_type(v, "a colour string \"#rrggbb\"");
+    const std::size_t at = offset_of(v);
+    const std::string_view text = v.get_string().value();
+    if (const auto c = parse_color(text)) out = *c;
+    else invalid(at, "expected a colour \"#rrggbb\" (6 hexadecimal digits), found " + quote_for_message(text));
+  }
+  void read_value(od::value& v, std::string& out, bool) {
+    if (v.type().value() != JsonType::string) return wrong_type(v, "a string id");
+    out = std::string(v.get_string().value());
+  }
+  template <class E>
+    requires std::is_enum_v<E>
+  void read_value(od::value& v, E& out, bool) {
+    if (v.type().value() != JsonType::string) return wrong_type(v, expected_names<E>());
+    const std::size_t at = offset_of(v);
+    const std::string_view text = v.get_string().value();
+    if (const auto e = parse_enum<E>(text)) out = *e;
+    else invalid(at, "unknown value " + quote_for_message(text) + "; expected " + expected_names<E>());
+  }
+  void read_value(od::value& v, std::array<std::int64_t, 2>& out, bool) {
+    if (v.type().value() != JsonType::array)
+      return wrong_type(v, "an array of 2 positive integers [nx, ny]");
+    const std::size_t at = offset_of(v);
+    std::size_t i = 0;
+    for (auto item : v.get_array()) {
+      od::value c = item.value();
+      if (i < 2) read_cell(c, out[i], i);
+      ++i;
+    }
+    if (i != 2)
+      report(Severity::error, Code::parse_error, at,
+             "expected an array of 2 positive integers [nx, ny], found " + count_text(i));
+  }
+  void read_cell(od::value& c, std::int64_t& out, std::size_t i) {
+    Step step(*this, i);
+    const std::size_t at = offset_of(c);
+    double x = 0.0;
+    const bool number = c.type().value() == JsonType::number;
+    if (number) x = c.get_double().value();
+    if (!number || std::trunc(x) != x) {
+      report(Severity::error, Code::parse_error, at,
+             "expected a positive integer, found " + describe_number_token(c, x, number));
+    } else if (x > 1e9) {
+      invalid(at, "cell count " + describe_number_token(c, x, true) +
+                      " is too large (at most 1000000000)");
+    } else if (x < 1) {
+      invalid(at, "expected a positive integer, found " + describe_number_token(c, x, true),
+              "give the site at least one cell along each axis");
     } else {
-      invalid(p, "expected a colour \"#rrggbb\" (6 hexadecimal digits), found " + describe(v));
+      out = static_cast<std::int64_t>(x);
     }
   }
-
-  template <class E, std::size_t N>
-  void enumeration(const Json& v, const std::string& p, E& out, const EnumName<E> (&names)[N]) {
-    std::string expected;
-    for (std::size_t i = 0; i < N; ++i)
-      expected += (i == 0 ? "\"" : i + 1 == N ? " or \"" : ", \"") + std::string(names[i].name) + '"';
-    if (!v.is_string()) return wrong_type(p, expected, v);
-    for (const auto& n : names) {
-      if (v == n.name) {
-        out = n.value;
-        return;
-      }
+  /// A number as the message shows it (canonical), or the value described when not a number.
+  std::string describe_number_token(od::value& c, double x, bool number) {
+    if (!number) return describe(c);
+    std::string out;
+    append_number(out, x);
+    return out;
+  }
+  void read_value(od::value& v, Polygon& out, bool length) {
+    if (v.type().value() != JsonType::array)
+      return wrong_type(v, "an array of points [[x, y], ...]");
+    Polygon polygon;
+    bool ok = true;
+    for (auto item : v.get_array()) {
+      od::value p = item.value();
+      Step step(*this, polygon.size());
+      double xy[2] = {0.0, 0.0};
+      ok = read_numbers(p, xy, 2, length, "an array of 2 numbers [x, y]") && ok;
+      polygon.push_back({xy[0], xy[1]});
     }
-    invalid(p, "unknown value " + describe(v) + "; expected " + expected);
+    if (ok) out = std::move(polygon);
   }
-
-  void cells(const Json& v, const std::string& p, std::array<std::int64_t, 2>& out) {
-    if (!v.is_array() || v.size() != 2)
-      return wrong_type(p, "an array of 2 positive integers [nx, ny]", v);
-    for (std::size_t i = 0; i < 2; ++i) {
-      const Json& c = v[i];
-      const std::string cp = pointer_child(p, i);
-      const bool integral = c.is_number_integer() ||
-                            (c.is_number_float() && std::trunc(c.get<double>()) == c.get<double>());
-      if (!integral) {
-        wrong_type(cp, "a positive integer", c);
-      } else if (c.is_number_unsigned() ? c.get<std::uint64_t>() > 1'000'000'000
-                                        : c.get<double>() > 1e9) {
-        invalid(cp, "cell count " + describe(c) + " is too large (at most 1000000000)");
-      } else if (c.get<double>() < 1) {
-        invalid(cp, "expected a positive integer, found " + describe(c),
-                "give the site at least one cell along each axis");
-      } else {
-        out[i] = static_cast<std::int64_t>(c.get<double>());
-      }
+  void read_value(od::value& v, std::vector<Polygon>& out, bool length) {
+    if (v.type().value() != JsonType::array)
+      return wrong_type(v, "an array of polygons [[[x, y], ...], ...]");
+    std::vector<Polygon> polygons;
+    for (auto item : v.get_array()) {
+      od::value p = item.value();
+      Step step(*this, polygons.size());
+      read_value(p, polygons.emplace_back(), length);
     }
+    out = std::move(polygons);
   }
 
-  // ---- objects ----
 
-  void read_site(const Json& v, const std::string& p, Site& site) {
-    objects_.clear();
-    if (!v.is_object()) return wrong_type(p, "an object", v);
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      const std::string& k = it.key();
-      const std::string fp = pointer_child(p, k);
-      if (k == "origin") point2(*it, fp, site.origin);
-      else if (k == "cells") cells(*it, fp, site.cells);
-      else if (k == "cell_size") length(*it, fp, site.cell_size);
-      else if (k == "max_height") length(*it, fp, site.max_height);
-      else if (k == "tolerance") length(*it, fp, site.tolerance);
-      else if (k == "floor_color") color(*it, fp, site.floor_color);
-      else unknown(k, *it, fp, site.extra,
-                   {"origin", "cells", "cell_size", "max_height", "tolerance", "floor_color"});
-    }
-  }
-
-  Wall read_wall(const Json& v, const std::string& p) {
-    Wall w;
-    bool has[3] = {};
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      const std::string& k = it.key();
-      const std::string fp = pointer_child(p, k);
-      if (k == "id") has[0] = true, id(*it, fp, w.id);
-      else if (k == "from") has[1] = true, point2(*it, fp, w.from);
-      else if (k == "to") has[2] = true, point2(*it, fp, w.to);
-      else if (k == "thickness") length(*it, fp, w.thickness);
-      else if (k == "height") length(*it, fp, w.height);
-      else if (k == "base") length(*it, fp, w.base);
-      else if (k == "color") color(*it, fp, w.color);
-      else unknown(k, *it, fp, w.extra,
-                   {"id", "from", "to", "thickness", "height", "base", "color"});
-    }
-    if (!has[0]) missing(p, "id", "a unique string");
-    if (!has[1]) missing(p, "from", "the start of the centre line, [x, y]");
-    if (!has[2]) missing(p, "to", "the end of the centre line, [x, y]");
-    return w;
-  }
-
-  Opening read_opening(const Json& v, const std::string& p) {
-    Opening o;
-    bool has_id = false, has_wall = false, has_offset = false;
-    std::optional<double> width, height, sill;
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      const std::string& k = it.key();
-      const std::string fp = pointer_child(p, k);
-      if (k == "id") has_id = true, id(*it, fp, o.id);
-      else if (k == "type") enumeration(*it, fp, o.type, kOpeningTypes);
-      else if (k == "wall") has_wall = true, id(*it, fp, o.wall);
-      else if (k == "offset") has_offset = true, length(*it, fp, o.offset);
-      else if (k == "width") length(*it, fp, width.emplace(o.width));
-      else if (k == "height") length(*it, fp, height.emplace(o.height));
-      else if (k == "sill") length(*it, fp, sill.emplace(o.sill));
-      else if (k == "hinge") enumeration(*it, fp, o.hinge, kHinges);
-      else if (k == "swing") enumeration(*it, fp, o.swing, kSwings);
-      else unknown(k, *it, fp, o.extra,
-                   {"id", "type", "wall", "offset", "width", "height", "sill", "hinge", "swing"});
-    }
-    const OpeningDefaults defaults = opening_defaults(o.type);
-    o.width = width.value_or(defaults.width);
-    o.height = height.value_or(defaults.height);
-    o.sill = sill.value_or(defaults.sill);
-    if (!has_id) missing(p, "id", "a unique string");
-    if (!has_wall) missing(p, "wall", "the id of the wall it is cut in");
-    if (!has_offset) missing(p, "offset", "its start along the wall, metres from the wall's \"from\"");
-    return o;
-  }
-
-  Light read_light(const Json& v, const std::string& p) {
-    Light l;
-    bool has_id = false;
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      const std::string& k = it.key();
-      const std::string fp = pointer_child(p, k);
-      if (k == "id") has_id = true, id(*it, fp, l.id);
-      else if (k == "type") enumeration(*it, fp, l.type, kLightTypes);
-      else if (k == "direction") vec3(*it, fp, l.direction, false);
-      else if (k == "intensity") number(*it, fp, l.intensity, false);
-      else if (k == "ambient") number(*it, fp, l.ambient, false);
-      else unknown(k, *it, fp, l.extra, {"id", "type", "direction", "intensity", "ambient"});
-    }
-    if (!has_id) missing(p, "id", "a unique string");
-    return l;
-  }
-
-  Camera read_camera(const Json& v, const std::string& p) {
-    Camera c;
-    bool has[3] = {};
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      const std::string& k = it.key();
-      const std::string fp = pointer_child(p, k);
-      if (k == "id") has[0] = true, id(*it, fp, c.id);
-      else if (k == "projection") enumeration(*it, fp, c.projection, kProjections);
-      else if (k == "eye") has[1] = true, vec3(*it, fp, c.eye, true);
-      else if (k == "target") has[2] = true, vec3(*it, fp, c.target, true);
-      else if (k == "up") vec3(*it, fp, c.up, false);
-      else if (k == "fov_deg") number(*it, fp, c.fov_deg, false);
-      else if (k == "view_height") length(*it, fp, c.view_height);
-      else unknown(k, *it, fp, c.extra,
-                   {"id", "projection", "eye", "target", "up", "fov_deg", "view_height"});
-    }
-    if (!has[0]) missing(p, "id", "a unique string");
-    if (!has[1]) missing(p, "eye", "where the camera is, [x, y, z]");
-    if (!has[2]) missing(p, "target", "the point it looks at, [x, y, z]");
-    return c;
-  }
-
-  void id(const Json& v, const std::string& p, std::string& out) {
-    if (!v.is_string()) return wrong_type(p, "a string id", v);
-    out = v.get<std::string>();
-  }
-
-  const PositionedJson& doc_;
-  std::string_view text_;
-  std::string_view file_;
-  Report& report_;
-  LineColumnCursor cursor_;  ///< diagnostics come in file order, mostly
-  double scale_ = 1.0;                ///< divisor from the file's units to metres
-  std::vector<std::string> objects_;  ///< id of the object being read, for diagnostics
+  const char* json_begin_;
+  const std::size_t base_;  ///< offset of json_begin_ in the file (past a byte-order mark)
+  std::vector<Token> path_;
+  std::vector<Problem> pending_;   ///< the current object's problems, until its id is known
+  std::vector<Problem> problems_;  ///< all the others
+  SeenKeys top_keys_;
+  int version_ = 1;
+  double scale_ = 1.0;  ///< divisor from the file's units to metres
+  std::vector<std::size_t> walls_without_height_;
+  std::size_t wall_count_ = 0;
 };
+
+/// The one problem of a text that is not the JSON the reader accepts, as the positioned
+/// parser words it (line, column, pointer; a number too large for a double is invalid_value).
+Diagnostic malformed_json(std::string_view text, std::string_view file) {
+  const PositionedJson doc = parse_positioned_json(text);
+  JsonSyntaxError error = doc.error.value_or(JsonSyntaxError{0, "", "not a JSON document", false});
+  const LineColumn at = line_column_at(text, error.offset);
+  Diagnostic d;
+  d.code = error.not_finite ? Code::invalid_value : Code::parse_error;
+  d.message = std::string(file) + ':' + std::to_string(at.line) + ':' + std::to_string(at.column) +
+              ": " + (error.pointer.empty() ? "" : error.pointer + ": ") + error.message;
+  if (error.not_finite) d.fix = "write a finite number (metres, or the file's units)";
+  d.location = Location{std::string(file), error.pointer, at.line, at.column};
+  return d;
+}
+
+/// The reader's problems in file order, each given its line, column and message: one forward
+/// pass over the text for all of them.
+void place_problems(std::vector<PlanReader::Problem> problems, std::string_view text,
+                    std::string_view file, Report& report) {
+  std::stable_sort(problems.begin(), problems.end(),
+                   [](const auto& a, const auto& b) { return a.offset < b.offset; });
+  LineColumnCursor cursor(text);
+  for (PlanReader::Problem& p : problems) {
+    const LineColumn at = cursor.at(p.offset);
+    Diagnostic& d = p.diagnostic;
+    d.message = std::string(file) + ':' + std::to_string(at.line) + ':' +
+                std::to_string(at.column) + ": " + (p.pointer.empty() ? "" : p.pointer + ": ") +
+                p.what;
+    d.location = Location{std::string(file), p.pointer, at.line, at.column};
+    report.add(std::move(d));
+  }
+}
 
 }  // namespace
 
-Plan read_plan_document(const PositionedJson& doc, std::string_view text, std::string_view file,
-                        Report& report) {
-  Report found;
-  Plan plan = PlanReader(doc, text, file, found).read();
-  // Errors of one object come in field order, then its missing fields: sort by position.
-  std::vector<std::size_t> index(found.items.size());
-  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
-  auto position = [&](std::size_t i) {
-    const Location& at = *found.items[i].location;
-    return std::pair(at.line, at.column);
-  };
-  std::stable_sort(index.begin(), index.end(),
-                   [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
-  for (std::size_t i : index) report.add(std::move(found.items[i]));
-  return plan;
+Plan read_plan_document(std::string_view text, std::string_view file, Report& report) {
+  const std::size_t base = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;  // a UTF-8 byte-order mark
+  try {
+    simdjson::padded_string json(text.substr(base));
+    od::parser parser;
+    od::document doc = parser.iterate(json).value();
+    PlanReader reader(json.data(), base);
+    Plan plan = reader.read(doc);
+    place_problems(reader.take_problems(), text, file, report);
+    return plan;
+  } catch (const simdjson::simdjson_error&) {
+  } catch (const Malformed&) {
+  }
+  report.add(malformed_json(text, file));
+  return {};
 }
 
 }  // namespace roomcad::io_detail

@@ -47,8 +47,9 @@ bool is_separator(char c) {
 /// Builds an ordered_json DOM from SAX events, recording where each key and value starts.
 class PositionedBuilder {
  public:
-  PositionedBuilder(std::string_view text, const std::size_t* consumed, PositionedJson* out)
-      : text_(text), consumed_(consumed), out_(out) {}
+  PositionedBuilder(std::string_view text, const std::size_t* consumed, std::size_t depth,
+                    PositionedJson* out)
+      : text_(text), consumed_(consumed), depth_(depth), out_(out) {}
 
   bool null() { return add_value(Json(nullptr)); }
   bool boolean(bool b) { return add_value(Json(b)); }
@@ -158,7 +159,7 @@ class PositionedBuilder {
   }
 
   bool open(Json container) {
-    if (stack_.size() >= kMaxJsonDepth) {
+    if (depth_ + stack_.size() >= kMaxJsonDepth) {
       return fail(token_start(), "nesting deeper than " + std::to_string(kMaxJsonDepth) +
                                      " arrays and objects", next_pointer());
     }
@@ -180,6 +181,7 @@ class PositionedBuilder {
 
   std::string_view text_;
   const std::size_t* consumed_;
+  std::size_t depth_;  ///< containers enclosing the text
   PositionedJson* out_;
   std::vector<Frame> stack_;
   std::size_t previous_end_ = 0;
@@ -187,10 +189,10 @@ class PositionedBuilder {
 
 }  // namespace
 
-PositionedJson parse_positioned_json(std::string_view text) {
+PositionedJson parse_positioned_json(std::string_view text, std::size_t depth) {
   PositionedJson out;
   std::size_t consumed = 0;
-  PositionedBuilder builder(text, &consumed, &out);
+  PositionedBuilder builder(text, &consumed, depth, &out);
   try {
     const bool ok = Json::sax_parse(CountingIterator(text.data(), &consumed),
                                     CountingIterator(text.data() + text.size(), &consumed),

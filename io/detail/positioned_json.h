@@ -37,7 +37,9 @@ struct PositionedJson {
 
 /// Parses `text` (strict JSON, UTF-8; duplicate keys and nesting deeper than kMaxJsonDepth are
 /// errors). Never throws on any input. O(n) in the text length.
-[[nodiscard]] PositionedJson parse_positioned_json(std::string_view text);
+/// @param[in] depth  how many arrays and objects enclose `text` in its document (for a value
+///                   cut out of one): they count towards kMaxJsonDepth.
+[[nodiscard]] PositionedJson parse_positioned_json(std::string_view text, std::size_t depth = 0);
 
 /// A 1-based line and column (columns count characters, not bytes).
 struct LineColumn {

@@ -3,7 +3,7 @@
 #include <limits>
 #include <optional>
 
-#include "modeling/detail/exact_geometry.h"
+#include "modeling/exact_geometry.h"
 #include "modeling/joins.h"
 
 namespace roomcad {

@@ -109,13 +109,16 @@ TEST(BuildCommand, BadArgumentsExitTwoAndWriteNothing) {
   const std::string plan = write_plan(dir, two_rooms());
   auto r = run_roomcad({"build", plan, "-o", (dir / "model.txt").string()});
   EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(test::failure_code(r), Code::unsupported);
   EXPECT_NE(r.err.find("model.txt"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "model.txt"));
   r = run_roomcad({"build", plan, "--parts", "roof", "-o", (dir / "m.obj").string()});
   EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(test::failure_code(r), Code::usage_error);
   EXPECT_NE(r.err.find("roof"), std::string::npos) << r.err;
   r = run_roomcad({"build", (dir / "missing.json").string(), "-o", (dir / "m.obj").string()});
   EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(test::failure_code(r), Code::io_error);
   EXPECT_FALSE(std::filesystem::exists(dir / "m.obj"));
 }
 

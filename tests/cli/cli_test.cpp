@@ -99,11 +99,13 @@ TEST(Cli, InfoExitStatuses) {
   test::TempDir dir;
   const auto missing = run_roomcad({"info", (dir / "nope.json").string()});
   EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(test::failure_code(missing), Code::io_error);
   EXPECT_NE(missing.err.find("nope.json"), std::string::npos) << missing.err;
   EXPECT_NE(missing.err.find("No such file"), std::string::npos) << missing.err;
 
   const auto directory = run_roomcad({"info", dir.path().string()});
   EXPECT_EQ(directory.status, 2);
+  EXPECT_EQ(test::failure_code(directory), Code::io_error);
   EXPECT_NE(directory.err.find("directory"), std::string::npos) << directory.err;
 
   ASSERT_TRUE(test::write_bytes(dir / "bad.json", "{\"walls\": [{\"id\": 1}]}"));
@@ -182,6 +184,7 @@ TEST(Cli, FmtLeavesBadPlansAlone) {
   ASSERT_TRUE(test::write_bytes(dir / "ok.json", "{}"));
   const auto unwritable = run_roomcad({"fmt", (dir / "ok.json").string(), "-o", (dir / "no" / "x.json").string()});
   EXPECT_EQ(unwritable.status, 2);
+  EXPECT_EQ(test::failure_code(unwritable), Code::io_error);
   EXPECT_NE(unwritable.err.find("cannot write"), std::string::npos) << unwritable.err;
   // The worst status over several files.
   EXPECT_EQ(run_roomcad({"fmt", "--check", (dir / "bad.json").string(), (dir / "missing.json").string()}).status, 2);

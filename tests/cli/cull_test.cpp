@@ -48,6 +48,7 @@ TEST(Cull, UnknownModeExitsTwo) {
   const auto r = run_roomcad({"render", (test::source_dir() / "examples/studio.json").string(),
                               "--cull", "sometimes", "-o", (dir / "p.png").string()});
   EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(test::failure_code(r), Code::usage_error);
   EXPECT_NE((r.out + r.err).find("--cull"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "p.png"));
 }
@@ -57,6 +58,7 @@ TEST(Cull, UnknownFrustumSwitchExitsTwo) {
   const auto r = run_roomcad({"render", (test::source_dir() / "examples/studio.json").string(),
                               "--frustum-cull", "maybe", "-o", (dir / "p.png").string()});
   EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(test::failure_code(r), Code::usage_error);
   EXPECT_NE((r.out + r.err).find("--frustum-cull"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "p.png"));
 }

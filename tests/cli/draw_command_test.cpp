@@ -69,6 +69,7 @@ TEST(DrawCommand, BadOptionsExitTwo) {
   const struct {
     std::vector<std::string> args;
     std::string message;
+    Code code = Code::usage_error;
   } cases[] = {
       {{plan, "--view", "sideways", "-o", out}, "--view"},
       {{plan, "--view", "camera:nope", "-o", out}, "no camera \"nope\""},
@@ -77,12 +78,13 @@ TEST(DrawCommand, BadOptionsExitTwo) {
       {{plan, "--scale", "1:x", "-o", out}, "--scale \"1:x\""},
       {{plan, "--scale", "1:0", "-o", out}, "scale 1:0"},
       {{plan, "--cut-height", "-1", "-o", out}, "cut height"},
-      {{plan, "-o", (dir / "out.png").string()}, ".svg"},
-      {{(dir / "missing.json").string(), "-o", out}, "missing.json"},
+      {{plan, "-o", (dir / "out.png").string()}, ".svg", Code::unsupported},
+      {{(dir / "missing.json").string(), "-o", out}, "missing.json", Code::io_error},
   };
   for (const auto& c : cases) {
     const CommandResult run = draw(c.args);
     EXPECT_EQ(run.status, 2) << c.message << "\n" << run.err;
+    EXPECT_EQ(test::failure_code(run), c.code) << c.message << "\n" << run.err;
     EXPECT_NE((run.out + run.err).find(c.message), std::string::npos) << run.out << run.err;
   }
   EXPECT_FALSE(fs::exists(out));

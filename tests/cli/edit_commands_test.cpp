@@ -251,7 +251,7 @@ TEST_F(EditCommands, SetFieldsTypeCheckedAndValidated) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(load(plan).walls[0].height, 3.0);
   expect_untouched(2, "set", plan, "south colour=#ffffff", "did you mean 'color'?");
-  expect_untouched(2, "set", plan, "south thickness=thick", "wants a finite number, got 'thick'");
+  expect_untouched(2, "set", plan, "south thickness=thick", "wants metres, got 'thick'");
   expect_untouched(1, "set", plan, "south thickness=-1", "invalid_value");
   EXPECT_EQ(edit("set", plan, "south id=front").status, 0);
   EXPECT_EQ(load(plan).openings[0].wall, "front");
@@ -278,6 +278,7 @@ TEST_F(EditCommands, BadArgumentsExitTwoWithAClearMessage) {
   expect_untouched(2, "set", plan, "south thickness", "not key=value");
   const CommandResult missing = edit("move", dir_ / "none.json", "south --by 1,1");
   EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(test::failure_code(missing), Code::io_error);
   EXPECT_NE(missing.err.find("none.json"), std::string::npos) << missing.err;
   EXPECT_FALSE(fs::exists(dir_ / "none.json"));
 }

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "support/plan_reading.h"
-#include "support/random_plan.h"
+#include "testing/random_plan.h"
 #include "support/run_command.h"
 #include "validation/rule_cases.h"
 
@@ -64,10 +64,10 @@ TEST(ExamplesRules, EveryFixOnTheBundledPlansClearsItsFinding) {
 TEST(ExamplesRules, GridOfRoomsWithOneEntrance) {
   // 7 x 7 rooms of 4 m: the farthest rooms are more than 30 m from the one exterior door;
   // every door is 0.9 m wide with clear space, every room holds a 1.5 m circle.
-  bench::GridSpec spec;
+  samples::GridSpec spec;
   spec.n = 7;
   spec.entrance = true;
-  const Plan plan = bench::make_grid_plan(spec);
+  const Plan plan = samples::make_grid_plan(spec);
   const RuleSet all = *builtin_rule_set("all");
   const Report report = check(plan, all);
   EXPECT_TRUE(report.ok());
@@ -82,7 +82,7 @@ TEST(ExamplesRules, RandomPlansNeverBreakTheRules) {
   const RuleSet all = *builtin_rule_set("all");
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     SCOPED_TRACE(seed);
-    const Plan plan = test::random_plan(seed);
+    const Plan plan = samples::random_plan(seed);
     Report report;
     ASSERT_NO_THROW(report = check(plan, all));
     check_every_fix(plan, all, report);

@@ -6,7 +6,7 @@
 
 #include "support/plan_reading.h"
 #include "io/plan_json.h"
-#include "io/sweethome3d_import.h"
+#include "import/sweethome3d_import.h"
 #include "support/run_command.h"
 
 namespace roomcad {
@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_roomcad;
 
-const fs::path kHomes = test::source_dir() / ".." / "shared" / "realdata" / "sweethome3d";
+const fs::path kHomes = test::source_dir() / "examples" / "sweethome3d" / "homes";
 
 TEST(ImportCommand, WritesThePlanTheImporterBuilds) {
   const test::TempDir dir;
@@ -51,17 +51,20 @@ TEST(ImportCommand, BadInputExitsTwoNamingTheFileAndWritesNothing) {
   const std::string plan = dir / "out.json";
   test::CommandResult run = run_roomcad({"import", dir / "broken.xml", "-o", plan});
   EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(test::failure_code(run), Code::parse_error);
   EXPECT_NE(run.err.find("broken.xml: malformed XML"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(plan));
 
   run = run_roomcad({"import", dir / "absent.sh3d", "-o", plan});
   EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(test::failure_code(run), Code::io_error);
   EXPECT_NE(run.err.find("absent.sh3d"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(plan));
 
   const fs::path sample = kHomes / "edge-cases" / "Sample.Home.xml";
   run = run_roomcad({"import", sample.string(), "-o", plan, "--level", "Attic"});
   EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(test::failure_code(run), Code::usage_error);
   EXPECT_NE(run.err.find("--level 'Attic' names no level"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(plan));
 }
@@ -72,6 +75,7 @@ TEST(ImportCommand, UnwritableOutputExitsTwo) {
   const test::CommandResult run =
       run_roomcad({"import", home.string(), "-o", dir / "no-such-dir" / "p.json"});
   EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(test::failure_code(run), Code::io_error);
   EXPECT_NE(run.err.find("no-such-dir"), std::string::npos) << run.err;
 }
 

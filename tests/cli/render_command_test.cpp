@@ -99,6 +99,7 @@ TEST(RenderCommand, BadInputsNameFlagAndValueAndWriteNothing) {
     args.insert(args.end(), extra.begin(), extra.end());
     const auto r = run_roomcad(args);
     EXPECT_EQ(r.status, 2) << extra[0] << ": " << r.err;
+    EXPECT_EQ(test::failure_code(r), Code::usage_error) << extra[0] << ": " << r.err;
     EXPECT_NE(r.err.find(extra[0]), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << extra[0];
   }
@@ -114,10 +115,12 @@ TEST(RenderCommand, PlanErrorsExitOneMissingFileExitsTwo) {
   EXPECT_FALSE(std::filesystem::exists(out));
   const auto missing = run_roomcad({"render", (dir / "none.json").string(), "-o", out});
   EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(test::failure_code(missing), Code::io_error);
   EXPECT_NE(missing.err.find("none.json"), std::string::npos) << missing.err;
   const auto unwritable = run_roomcad({"render", write_plan(dir, window_wall()), "-o",
                                        (dir / "no" / "dir.png").string()});
   EXPECT_EQ(unwritable.status, 2);
+  EXPECT_EQ(test::failure_code(unwritable), Code::io_error);
   EXPECT_NE(unwritable.err.find("dir.png"), std::string::npos) << unwritable.err;
 }
 

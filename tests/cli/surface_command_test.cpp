@@ -76,6 +76,7 @@ TEST(SurfaceCommand, BadExpressionNamesTheColumn) {
   const CommandResult run =
       surface({"x^", "--x", "-2:2", "--z", "-2:2", "-o", (dir / "bad.svg").string()});
   EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(test::failure_code(run), Code::usage_error);
   EXPECT_NE(run.err.find("EXPR \"x^\": expected a number, variable or '(' at column 3"),
             std::string::npos)
       << run.err;
@@ -88,6 +89,7 @@ TEST(SurfaceCommand, BadOptionsExitTwoAndWriteNothing) {
   const struct {
     std::vector<std::string> args;
     std::string message;
+    Code code = Code::usage_error;
   } cases[] = {
       {{"x", "--x", "2", "--z", "-1:1", "-o", out}, "--x \"2\": expected A:B"},
       {{"x", "--x", "-1:1", "--z", "q:1", "-o", out}, "--z \"q:1\""},
@@ -97,12 +99,14 @@ TEST(SurfaceCommand, BadOptionsExitTwoAndWriteNothing) {
       {{"x", "--x", "1:-1", "--z", "-1:1", "-o", out}, "x range 1:-1 is empty"},
       {{"x", "--x", "-1:1", "--z", "-1:1", "--dx", "1e-7", "-o", out}, "samples"},
       {{"x", "--x", "-1:1", "--z", "-1:1", "--width", "5", "-o", out}, "--width"},
-      {{"x", "--x", "-1:1", "--z", "-1:1", "-o", (dir / "out.txt").string()}, ".svg or .png"},
+      {{"x", "--x", "-1:1", "--z", "-1:1", "-o", (dir / "out.txt").string()}, ".svg or .png",
+       Code::unsupported},
       {{"x", "--x", "-1:1", "--z", "-1:1"}, "--output is required"},
   };
   for (const auto& c : cases) {
     const CommandResult run = surface(c.args);
     EXPECT_EQ(run.status, 2) << c.message << "\n" << run.err;
+    EXPECT_EQ(test::failure_code(run), c.code) << c.message << "\n" << run.err;
     EXPECT_NE((run.out + run.err).find(c.message), std::string::npos) << run.out << run.err;
   }
   EXPECT_TRUE(fs::is_empty(dir.path()));
@@ -113,6 +117,7 @@ TEST(SurfaceCommand, UnwritableOutputExitsTwo) {
   const fs::path out = dir / "no" / "such" / "dir" / "out.svg";
   const CommandResult run = surface({"x", "--x", "-1:1", "--z", "-1:1", "-o", out.string()});
   EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(test::failure_code(run), Code::io_error);
   EXPECT_NE(run.err.find("out.svg"), std::string::npos) << run.err;
 }
 

@@ -70,6 +70,7 @@ TEST(Threads, RenderRefusesFramesThreadsAndShadowMapsPastTheLimits) {
     args.insert(args.end(), flags.begin(), flags.end());
     const auto r = run_roomcad(args);
     EXPECT_EQ(r.status, 2) << flags[0];
+    EXPECT_EQ(test::failure_code(r), Code::usage_error) << flags[0];
     EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
   }
@@ -82,6 +83,7 @@ TEST(Threads, BuildRefusesAThreadCountOutOfRange) {
     const auto r =
         run_roomcad({"build", plan, "--threads", threads, "-o", (dir / "m.obj").string()});
     EXPECT_EQ(r.status, 2) << threads;
+    EXPECT_EQ(test::failure_code(r), Code::usage_error) << threads;
     EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "m.obj"));
   }

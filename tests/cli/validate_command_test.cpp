@@ -95,6 +95,7 @@ TEST(ValidateCommand, UnreadableFileIsExit2AndBadJsonIsAParseError) {
   TempDir dir;
   const auto missing = run_roomcad({"validate", (dir / "none.json").string()});
   EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(test::failure_code(missing), Code::io_error);
   EXPECT_NE(missing.err.find("none.json"), std::string::npos);
   const auto bad = run_roomcad({"validate", "--format", "json", write_plan(dir, "bad.json", "{\"walls\": [")});
   EXPECT_EQ(bad.status, 1);

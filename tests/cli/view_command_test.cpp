@@ -159,25 +159,31 @@ TEST_F(ViewCommand, BadInputsAreNamedWithExitStatus2) {
   const auto keys = run_roomcad({"view", studio(), "--keys", "1,nokey", "--screenshot",
                                  (dir_ / "x.png").string()});
   EXPECT_EQ(keys.status, 2);
+  EXPECT_EQ(test::failure_code(keys), Code::usage_error);
   EXPECT_NE(keys.err.find("input 2 'nokey'"), std::string::npos) << keys.err;
   const auto camera = run_roomcad({"view", studio(), "--camera", "nope"});
   EXPECT_EQ(camera.status, 2);
+  EXPECT_EQ(test::failure_code(camera), Code::usage_error);
   EXPECT_NE(camera.err.find("--camera 'nope'"), std::string::npos) << camera.err;
   const auto huge = run_roomcad({"view", studio(), "--width", "16384", "--height", "16384"});
   EXPECT_EQ(huge.status, 2);
+  EXPECT_EQ(test::failure_code(huge), Code::usage_error);
   EXPECT_NE(huge.err.find("--width, --height: width x height is 16384 x 16384"), std::string::npos)
       << huge.err;
   const auto missing = run_roomcad({"view", (dir_ / "missing.json").string()});
   EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(test::failure_code(missing), Code::io_error);
   const auto quits = run_roomcad({"view", studio(), "--keys", "1,q", "--screenshot",
                                   (dir_ / "q.png").string()});
   EXPECT_EQ(quits.status, 2);
+  EXPECT_EQ(test::failure_code(quits), Code::usage_error);
   EXPECT_NE(quits.err.find("before the screenshot"), std::string::npos) << quits.err;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "q.png"));
   unsetenv("DISPLAY");  // no screen: SDL's invisible fallback is refused
   unsetenv("SDL_VIDEODRIVER");
   const auto no_screen = run_roomcad({"view", studio(), "--screenshot", (dir_ / "y.png").string()});
   EXPECT_EQ(no_screen.status, 2);
+  EXPECT_EQ(test::failure_code(no_screen), Code::io_error);
   EXPECT_NE(no_screen.err.find("Xvfb"), std::string::npos) << no_screen.err;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "x.png"));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "y.png"));

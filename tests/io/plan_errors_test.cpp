@@ -99,7 +99,7 @@ TEST(PlanErrors, WrongTypeOfEveryKindOfField) {
   expect_one_error(R"({"cameras": ["c"]})", {Code::parse_error, "/cameras/0", 1, 14, "expected an object, found \"c\""});
   // format, version, units
   expect_one_error(R"({"format": 1})", {Code::parse_error, "/format", 1, 12, "expected the string \"roomcad-plan\""});
-  expect_one_error(R"({"version": "1"})", {Code::parse_error, "/version", 1, 13, "expected the number 1, found \"1\""});
+  expect_one_error(R"({"version": "1"})", {Code::parse_error, "/version", 1, 13, "expected the number 1 or 2, found \"1\""});
   expect_one_error(R"({"units": ["m"]})", {Code::parse_error, "/units", 1, 11, "expected \"m\", \"cm\" or \"mm\""});
 }
 
@@ -136,7 +136,7 @@ TEST(PlanErrors, BadColours) {
 
 TEST(PlanErrors, UnsupportedFormatVersionUnits) {
   expect_one_error(R"({"format": "roomcad"})", {Code::invalid_value, "/format", 1, 12, "unsupported format \"roomcad\""});
-  expect_one_error(R"({"version": 2})", {Code::invalid_value, "/version", 1, 13, "unsupported version 2"});
+  expect_one_error(R"({"version": 3})", {Code::invalid_value, "/version", 1, 13, "unsupported version 3"});
   expect_one_error(R"({"version": 1.5})", {Code::invalid_value, "/version", 1, 13, "unsupported version 1.5"});
   expect_one_error(R"({"units": "ft"})", {Code::invalid_value, "/units", 1, 11, "unsupported units \"ft\""});
   expect_one_error(R"({"units": "M"})", {Code::invalid_value, "/units", 1, 11, "unsupported units \"M\""});

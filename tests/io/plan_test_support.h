@@ -11,7 +11,7 @@
 
 namespace roomcad::test {
 
-/// The example document of ../shared/spec/plan-format.md, as written there.
+/// The example document of docs/plan-format.md, as written there.
 inline constexpr std::string_view kSpecExample = R"({
   "format": "roomcad-plan",
   "version": 1,

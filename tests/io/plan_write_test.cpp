@@ -9,7 +9,7 @@
 #include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "plan_test_support.h"
-#include "support/random_plan.h"
+#include "testing/random_plan.h"
 #include "support/run_command.h"
 
 namespace roomcad {
@@ -122,7 +122,7 @@ TEST(PlanWrite, UnknownFieldValuesAreKeptCanonically) {
 TEST(PlanWrite, RandomPlansRoundTrip) {
   for (std::uint64_t seed = 1; seed <= 400; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const Plan plan = test::random_plan(seed);
+    const Plan plan = samples::random_plan(seed);
     const std::string text = write_plan_text(plan);
     const test::PlanReading r = test::read_plan(text, "random.json");
     ASSERT_TRUE(r.plan.has_value()) << r.report.items[0].message << "\n" << text;
@@ -133,8 +133,8 @@ TEST(PlanWrite, RandomPlansRoundTrip) {
 }
 
 TEST(PlanWrite, RandomPlansDifferBySeed) {
-  EXPECT_EQ(test::random_plan(7), test::random_plan(7));
-  EXPECT_NE(test::random_plan(7), test::random_plan(8));
+  EXPECT_EQ(samples::random_plan(7), samples::random_plan(7));
+  EXPECT_NE(samples::random_plan(7), samples::random_plan(8));
 }
 
 TEST(PlanWrite, ExamplesRoundTrip) {
@@ -158,7 +158,7 @@ TEST(PlanWrite, ExamplesRoundTrip) {
 
 TEST(PlanWrite, FileIsWrittenAndReadBack) {
   test::TempDir dir;
-  const Plan plan = test::random_plan(42);
+  const Plan plan = samples::random_plan(42);
   ASSERT_TRUE(write_plan_file(plan, dir / "p.json").ok());
   const test::PlanReading r = test::read_plan_at(dir / "p.json");
   ASSERT_TRUE(r.plan.has_value());
@@ -176,7 +176,7 @@ TEST(PlanWrite, NonFiniteNumbersAreRefusedAndNothingIsWritten) {
   plan.walls.push_back(w);
   const Status s = write_plan_file(plan, dir / "p.json");
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.message().find("wall \"w1\""), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("wall 'w1' field 'thickness'"), std::string::npos) << s.message();
   EXPECT_NE(s.message().find("p.json"), std::string::npos) << s.message();
   EXPECT_EQ(test::read_bytes(dir / "p.json"), "old");
 }

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "../../bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "model_support.h"
 
 namespace roomcad {
@@ -210,9 +210,9 @@ TEST(Modeling, WallsEndingAtATeeMeetOnAHub) {
 }
 
 TEST(Modeling, GridOfRoomsIsBuiltOnTheFastPath) {
-  bench::GridSpec spec;
+  samples::GridSpec spec;
   spec.n = 3;
-  const Plan plan = bench::make_grid_plan(spec);
+  const Plan plan = samples::make_grid_plan(spec);
   BuildStats stats;
   (void)build_model(plan, {}, &stats);
   EXPECT_EQ(stats.fast_path_walls, plan.walls.size());

@@ -1,7 +1,7 @@
 // The fast path fuses faces across the seams where two collinear walls meet a stem at a hub.
 #include <gtest/gtest.h>
 
-#include "../../bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "model_support.h"
 
 namespace roomcad {
@@ -38,7 +38,7 @@ TEST(Modeling, SeamOfWallsOfTwoColoursKeepsItsVertex) {
 
 // The target: no more triangles than CGAL's Nef polyhedra (7,292 for 10 x 10).
 TEST(Modeling, TenByTenGridHasNoMoreTrianglesThanNef) {
-  const Plan plan = bench::make_grid_plan(bench::GridSpec{});
+  const Plan plan = samples::make_grid_plan(samples::GridSpec{});
   const SolidCheck check = check_solid(build_model(plan).walls);
   EXPECT_TRUE(check.is_valid());
   EXPECT_LE(check.triangles, 7292u);

@@ -4,17 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/plan_builders.h"
+
 namespace roomcad {
 namespace {
 
-Wall wall(std::string id, Point2 from, Point2 to, double thickness = 0.2) {
-  Wall w;
-  w.id = std::move(id);
-  w.from = from;
-  w.to = to;
-  w.thickness = thickness;
-  return w;
-}
+using samples::make_wall;
 
 Plan plan_of(std::vector<Wall> walls) {
   Plan p;
@@ -23,7 +18,7 @@ Plan plan_of(std::vector<Wall> walls) {
 }
 
 TEST(Joins, LCornerIsMitredWithCornersOnTheBisector) {
-  const Plan p = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {0, 0}, {0, 3})});
+  const Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::mitre);
@@ -43,9 +38,9 @@ TEST(Joins, LCornerIsMitredWithCornersOnTheBisector) {
 }
 
 TEST(Joins, WallsOnTheStoreyAboveDoNotJoinOrBreakAMitre) {
-  Wall above = wall("c", {0, 0}, {0, 3});
+  Wall above = make_wall("c", {0, 0}, {0, 3}, 0.2);
   above.base = 2.8;  // exactly on top of the ground floor's 2.8 m walls
-  const Plan p = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {0, 0}, {0, 3}), above});
+  const Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2), above});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::mitre) << "the wall above is not a third wall at the corner";
@@ -54,7 +49,7 @@ TEST(Joins, WallsOnTheStoreyAboveDoNotJoinOrBreakAMitre) {
 }
 
 TEST(Joins, MitreOfDifferentThicknessesPassesThroughSideLineCrossings) {
-  const Plan p = plan_of({wall("a", {0, 0}, {4, 0}, 0.2), wall("b", {0, 3}, {0, 0}, 0.4)});
+  const Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 3}, {0, 0}, 0.4)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   ASSERT_EQ(j.pairs[0].kind, JoinKind::mitre);
@@ -70,8 +65,8 @@ TEST(Joins, MitreOfDifferentThicknessesPassesThroughSideLineCrossings) {
 TEST(Joins, RotatedMitreCornersAreBitIdenticalForBothWalls) {
   const double c = std::cos(71.3 * M_PI / 180), s = std::sin(71.3 * M_PI / 180);
   const Point2 o{1048576.3, -1048576.7};
-  const Plan p = plan_of({wall("a", o, {o.x + 3 * c, o.y + 3 * s}, 0.25),
-                          wall("b", {o.x - 2 * s, o.y + 2 * c}, o, 0.3)});
+  const Plan p = plan_of({make_wall("a", o, {o.x + 3 * c, o.y + 3 * s}, 0.25),
+                          make_wall("b", {o.x - 2 * s, o.y + 2 * c}, o, 0.3)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   ASSERT_EQ(j.pairs[0].kind, JoinKind::mitre);
@@ -84,7 +79,7 @@ TEST(Joins, RotatedMitreCornersAreBitIdenticalForBothWalls) {
 }
 
 TEST(Joins, CollinearContinuationIsMitredWithSquareEnds) {
-  const Plan p = plan_of({wall("a", {0, 0}, {2, 0}), wall("b", {2, 0}, {5, 0})});
+  const Plan p = plan_of({make_wall("a", {0, 0}, {2, 0}, 0.2), make_wall("b", {2, 0}, {5, 0}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::mitre);
@@ -94,27 +89,27 @@ TEST(Joins, CollinearContinuationIsMitredWithSquareEnds) {
 }
 
 TEST(Joins, CollinearOverlapUnitesAndIsNotAMitre) {
-  const Plan p = plan_of({wall("a", {0, 0}, {3, 0}), wall("b", {0, 0}, {2, 0})});
+  const Plan p = plan_of({make_wall("a", {0, 0}, {3, 0}, 0.2), make_wall("b", {0, 0}, {2, 0}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::unite);
 }
 
 TEST(Joins, TAndXAndThreeWayMeetingsUnite) {
-  const Plan t = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {2, 0}, {2, 3})});
+  const Plan t = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, 0}, {2, 3}, 0.2)});
   const Joins jt = find_joins(t);
   ASSERT_EQ(jt.pairs.size(), 1u);
   EXPECT_EQ(jt.pairs[0].kind, JoinKind::unite);
   EXPECT_EQ(jt.pairs[0].point, (Point2{2, 0}));
 
-  const Plan x = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {2, -2}, {2, 3})});
+  const Plan x = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, -2}, {2, 3}, 0.2)});
   const Joins jx = find_joins(x);
   ASSERT_EQ(jx.pairs.size(), 1u);
   EXPECT_EQ(jx.pairs[0].kind, JoinKind::unite);
   EXPECT_EQ(jx.pairs[0].point, (Point2{2, 0}));
 
-  const Plan three = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {0, 0}, {0, 3}),
-                              wall("c", {0, 0}, {-2, -2})});
+  const Plan three = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2),
+                              make_wall("c", {0, 0}, {-2, -2}, 0.2)});
   const Joins j3 = find_joins(three);
   ASSERT_EQ(j3.pairs.size(), 3u);
   for (const Join& join : j3.pairs) EXPECT_EQ(join.kind, JoinKind::unite);
@@ -126,21 +121,21 @@ TEST(Joins, TAndXAndThreeWayMeetingsUnite) {
 TEST(Joins, EndWithinToleranceJoinsAndBeyondDoesNot) {
   // The tolerance is 1e-6 m; at 2^20 m from the origin the gaps are still exact doubles.
   const double x0 = 1048576.0;
-  const Plan near = plan_of({wall("a", {x0, 0}, {x0 + 4, 0}), wall("b", {x0 + 2, 0.5e-6}, {x0 + 2, 3})});
+  const Plan near = plan_of({make_wall("a", {x0, 0}, {x0 + 4, 0}, 0.2), make_wall("b", {x0 + 2, 0.5e-6}, {x0 + 2, 3}, 0.2)});
   EXPECT_TRUE(find_joins(near).are_joined(0, 1));
   // Exactly at the tolerance (2^-20 m, an exact double) still joins; one ulp more does not.
-  Plan edge = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {2, 0x1p-20}, {2, 3})});
+  Plan edge = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, 0x1p-20}, {2, 3}, 0.2)});
   edge.site.tolerance = 0x1p-20;
   EXPECT_TRUE(find_joins(edge).are_joined(1, 0));
   edge.walls[1].from.y = std::nextafter(0x1p-20, 1.0);
   EXPECT_FALSE(find_joins(edge).are_joined(1, 0));
-  const Plan far = plan_of({wall("a", {x0, 0}, {x0 + 4, 0}), wall("b", {x0 + 2, 2e-6}, {x0 + 2, 3})});
+  const Plan far = plan_of({make_wall("a", {x0, 0}, {x0 + 4, 0}, 0.2), make_wall("b", {x0 + 2, 2e-6}, {x0 + 2, 3}, 0.2)});
   EXPECT_FALSE(find_joins(far).are_joined(0, 1));
   EXPECT_EQ(find_joins(far).find(0, 1), nullptr);
 }
 
 TEST(Joins, EndPointsWithinToleranceAreMitred) {
-  Plan p = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {0.5e-6, 0.5e-6}, {0, 3})});
+  Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0.5e-6, 0.5e-6}, {0, 3}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_TRUE(j.are_joined(0, 1));
   EXPECT_EQ(j.find(1, 0)->kind, JoinKind::mitre);
@@ -150,8 +145,8 @@ TEST(Joins, EndPointsWithinToleranceAreMitred) {
 
 TEST(Joins, ChainOfEndsWithinToleranceUnitesAll) {
   // Ends at x = 0, 0.8e-6 and 1.6e-6: neighbours are within 1e-6, the outer two are not.
-  const Plan p = plan_of({wall("a", {0, 0}, {0, -3}), wall("b", {0.8e-6, 0}, {3, 3}),
-                          wall("c", {1.6e-6, 0}, {3, -3})});
+  const Plan p = plan_of({make_wall("a", {0, 0}, {0, -3}, 0.2), make_wall("b", {0.8e-6, 0}, {3, 3}, 0.2),
+                          make_wall("c", {1.6e-6, 0}, {3, -3}, 0.2)});
   const Joins j = find_joins(p);
   for (const Join& join : j.pairs) EXPECT_EQ(join.kind, JoinKind::unite);
   for (const auto& m : j.mitre) {
@@ -161,16 +156,16 @@ TEST(Joins, ChainOfEndsWithinToleranceUnitesAll) {
 }
 
 TEST(Joins, WallsApartAndDegenerateWallsJoinNothing) {
-  const Plan p = plan_of({wall("a", {0, 0}, {4, 0}), wall("b", {0, 1}, {4, 1}),
-                          wall("z", {2, 0}, {2, 0}), wall("n", {NAN, 0}, {2, 0})});
+  const Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 1}, {4, 1}, 0.2),
+                          make_wall("z", {2, 0}, {2, 0}, 0.2), make_wall("n", {NAN, 0}, {2, 0}, 0.2)});
   const Joins j = find_joins(p);
   EXPECT_TRUE(j.pairs.empty());
   EXPECT_EQ(j.mitre.size(), 4u);
 }
 
 TEST(Joins, ClosedRingOfFourWallsIsFourMitres) {
-  const Plan p = plan_of({wall("s", {0, 0}, {4, 0}), wall("e", {4, 0}, {4, 3}),
-                          wall("n", {4, 3}, {0, 3}), wall("w", {0, 3}, {0, 0})});
+  const Plan p = plan_of({make_wall("s", {0, 0}, {4, 0}, 0.2), make_wall("e", {4, 0}, {4, 3}, 0.2),
+                          make_wall("n", {4, 3}, {0, 3}, 0.2), make_wall("w", {0, 3}, {0, 0}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 4u);
   for (const Join& join : j.pairs) EXPECT_EQ(join.kind, JoinKind::mitre);

@@ -4,22 +4,16 @@
 #include <gtest/gtest.h>
 
 #include "modeling/build_model.h"
+#include "testing/plan_builders.h"
 
 namespace roomcad {
 namespace {
 
-Wall make_wall(std::string id, Point2 from, Point2 to) {
-  Wall w;
-  w.id = std::move(id);
-  w.from = from;
-  w.to = to;
-  return w;
-}
-
 /// A small room with decimal coordinates: two walls, a door, a window, a light, a camera.
 Plan sample_plan() {
   Plan plan;
-  plan.walls = {make_wall("south", {1.1, 1.3}, {9.7, 1.3}), make_wall("west", {1.1, 1.3}, {1.1, 6.45})};
+  plan.walls = {samples::make_wall("south", {1.1, 1.3}, {9.7, 1.3}, 0.25, 2.8),
+                samples::make_wall("west", {1.1, 1.3}, {1.1, 6.45}, 0.25, 2.8)};
   Opening door = default_opening(OpeningType::door);
   door.id = "entry";
   door.wall = "south";
@@ -45,7 +39,7 @@ TEST(PlanEdit, AddGeneratesIdsUniqueAcrossAllObjects) {
   Light l;
   l.id = "wall-1";  // an id of the wall pattern held by another kind still counts
   add_light(plan, l);
-  const EditSummary s = add_wall(plan, make_wall("", {2, 2}, {3, 2}));
+  const EditSummary s = add_wall(plan, samples::make_wall("", {2, 2}, {3, 2}, 0.25, 2.8));
   EXPECT_EQ(s.added, std::vector<std::string>{"wall-2"});
   EXPECT_EQ(plan.walls.back().id, "wall-2");
   Opening d = default_opening(OpeningType::window);
@@ -58,7 +52,8 @@ TEST(PlanEdit, AddGeneratesIdsUniqueAcrossAllObjects) {
 TEST(PlanEdit, AddRefusesUsedIdsAndUnknownWalls) {
   Plan plan = sample_plan();
   const Plan before = plan;
-  EXPECT_THROW(add_wall(plan, make_wall("entry", {0, 0}, {1, 0})), PreconditionError);
+  EXPECT_THROW(add_wall(plan, samples::make_wall("entry", {0, 0}, {1, 0}, 0.25, 2.8)),
+               PreconditionError);
   Opening d = default_opening(OpeningType::door);
   d.wall = "nowhere";
   try {
@@ -202,31 +197,33 @@ TEST(PlanEdit, SetFieldIsTypeChecked) {
 }
 
 /// @return the message of the PreconditionError that `edit` throws, or "" if none.
+/// The error an edit throws (Code::internal with no message if it throws none).
 template <class Edit>
-std::string refusal(Edit edit) {
+Error refusal(Edit edit) {
   try {
     edit();
   } catch (const PreconditionError& e) {
-    return e.what();
+    return e.error();
   }
-  return "";
+  return {};
 }
 
 TEST(PlanEdit, SetFieldErrorsNameObjectKeyAndValue) {
   Plan plan = sample_plan();
   const Plan before = plan;
   EXPECT_EQ(refusal([&] { set_field(plan, "south", "colour", "#ffffff"); }),
-            "set: wall 'south' has no field 'colour' (did you mean 'color'?)");
+            Error(Code::usage_error, "set: wall 'south' has no field 'colour' (did you mean 'color'?)"));
   EXPECT_EQ(refusal([&] { set_field(plan, "south", "thickness", "thick"); }),
-            "set: wall 'south' field 'thickness' wants a finite number, got 'thick'");
+            Error(Code::usage_error, "set: wall 'south' field 'thickness' wants metres, got 'thick'"));
   EXPECT_EQ(refusal([&] { set_field(plan, "entry", "swing", "sideways"); }),
-            "set: door 'entry' field 'swing' wants in or out, got 'sideways'");
-  EXPECT_NE(refusal([&] { set_field(plan, "view", "zzzz", "1"); }).find("fields: id, projection"),
+            Error(Code::usage_error, "set: door 'entry' field 'swing' wants in or out, got 'sideways'"));
+  EXPECT_NE(refusal([&] { set_field(plan, "view", "zzzz", "1"); }).message.find("fields: id, projection"),
             std::string::npos);
-  EXPECT_NE(refusal([&] { set_field(plan, "nobody", "id", "x"); }).find("no object has id 'nobody'"),
-            std::string::npos);
-  EXPECT_NE(refusal([&] { set_field(plan, "south", "height", "nan"); }), "");
-  EXPECT_NE(refusal([&] { set_field(plan, "south", "from", "1,2,3"); }), "");
+  const Error nobody = refusal([&] { set_field(plan, "nobody", "id", "x"); });
+  EXPECT_EQ(nobody.code, Code::precondition);
+  EXPECT_NE(nobody.message.find("no object has id 'nobody'"), std::string::npos);
+  EXPECT_EQ(refusal([&] { set_field(plan, "south", "height", "nan"); }).code, Code::usage_error);
+  EXPECT_EQ(refusal([&] { set_field(plan, "south", "from", "1,2,3"); }).code, Code::usage_error);
   EXPECT_EQ(plan, before);
 }
 
@@ -239,8 +236,11 @@ TEST(PlanEdit, RenamingAWallRenamesItsOpeningsReferences) {
 }
 
 TEST(PlanEdit, FieldNamesFollowTheFormat) {
-  EXPECT_EQ(field_names("wall"), (std::vector<std::string_view>{"id", "from", "to", "thickness",
-                                                                "height", "base", "color"}));
+  EXPECT_EQ(field_names("wall"),
+            (std::vector<std::string_view>{"id", "level", "from", "to", "thickness", "height", "base",
+                                           "height_at_end", "arc_extent", "color"}));
+  EXPECT_EQ(field_names("slab"), (std::vector<std::string_view>{"id", "level", "outline", "holes",
+                                                                "top", "thickness", "color"}));
   EXPECT_EQ(object_kind(sample_plan(), "win"), "window");
   EXPECT_EQ(object_kind(sample_plan(), "nothing"), std::nullopt);
 }

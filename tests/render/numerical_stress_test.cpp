@@ -14,6 +14,7 @@
 #include "modeling/build_model.h"
 #include "render/renderer.h"
 #include "scene_support.h"
+#include "testing/plan_builders.h"
 
 namespace roomcad {
 namespace {
@@ -32,19 +33,13 @@ std::vector<Placement> placements(std::initializer_list<double> distances) {
   return out;
 }
 
-/// A wall 0.2 m thick and 2.5 m high.
-Wall make_wall(std::string id, Point2 from, Point2 to) {
-  Wall w;
-  w.id = std::move(id), w.from = from, w.to = to, w.thickness = 0.2, w.height = 2.5;
-  return w;
-}
-
 /// A plain wall 6 m long, 0.2 m thick, 2.5 m high, on a site that holds it.
 Plan wall_plan(const Placement& p) {
   const double a = p.degrees * std::numbers::pi / 180.0;
   Plan plan;
-  plan.walls.push_back(make_wall("w", {p.from.x, p.from.y},
-                                  {p.from.x + 6.0 * std::cos(a), p.from.y + 6.0 * std::sin(a)}));
+  plan.walls.push_back(samples::make_wall(
+      "w", {p.from.x, p.from.y},
+      {p.from.x + 6.0 * std::cos(a), p.from.y + 6.0 * std::sin(a)}, 0.2));
   plan.site.origin = {p.from.x - 10.0, p.from.y - 10.0};
   plan.site.cells = {20, 20};
   return plan;
@@ -106,7 +101,7 @@ TEST(NumericalStress, RoomFarAwayAndTurnedHasNoBadDepth) {
     SCOPED_TRACE(fmt::format("{} deg at ({}, {})", p.degrees, p.from.x, p.from.y));
     Plan plan = wall_plan(p);
     const Point2 corner = plan.walls[0].to;
-    plan.walls.push_back(make_wall("back", corner, {corner.x - 1, corner.y + 4}));
+    plan.walls.push_back(samples::make_wall("back", corner, {corner.x - 1, corner.y + 4}, 0.2));
     FrameBuffers frame;
     RenderStats stats;
     render_model(build_model(plan), RenderOptions{.width = 128, .height = 96}, frame, &stats);

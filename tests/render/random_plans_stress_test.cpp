@@ -19,7 +19,7 @@
 #include "modeling/mesh_check.h"
 #include "render/renderer.h"
 #include "scene_support.h"
-#include "support/random_plan.h"
+#include "testing/random_plan.h"
 #include "support/solid_tolerance.h"
 #include "support/stress_plans.h"
 #include "validation/validate.h"
@@ -33,8 +33,8 @@ namespace {
 /// polyhedra, several times slower) on the first 1 in 25 of them (40 of 1000).
 std::uint64_t cgal_plan_count(std::uint64_t plans) { return std::max<std::uint64_t>(1, plans / 25); }
 
-test::RandomPlanOptions plain_options() {
-  test::RandomPlanOptions o;
+samples::RandomPlanOptions plain_options() {
+  samples::RandomPlanOptions o;
   o.awkward_numbers = false;  // awkward values are the reader's and validation's robustness tests
   o.awkward_strings = false;
   o.extras = false;
@@ -75,7 +75,7 @@ TEST(RandomPlans, VerdictsAreTheSameUnderExactMotions) {
   std::size_t errors = 0;
   for (std::uint64_t seed = 1; seed <= plans; ++seed) {
     SCOPED_TRACE(seed);
-    const Plan plan = test::random_plan(seed, plain_options());
+    const Plan plan = samples::random_plan(seed, plain_options());
     const auto expected = verdicts(plan);
     errors += expected.size();
     EXPECT_EQ(verdicts(swapped_xy(plan)), expected);
@@ -141,7 +141,7 @@ TEST(RandomPlans, ValidPartsBuildClosedWithTheirVolumeOnBothPaths) {
   std::size_t openings = 0;
   for (std::uint64_t seed = 1; seed <= plans; ++seed) {
     SCOPED_TRACE(seed);
-    const Plan plan = valid_part(test::random_plan(seed, plain_options()));
+    const Plan plan = valid_part(samples::random_plan(seed, plain_options()));
     openings += plan.openings.size();
     const double volume = expect_valid_build(plan, BooleanPath::automatic, fast);
     if (seed > cgal_plans) continue;

@@ -9,7 +9,7 @@
 
 #include <tbb/task_arena.h>
 
-#include "bench/grid_plan.h"
+#include "testing/grid_plan.h"
 #include "modeling/build_model.h"
 #include "render/detail/geometry_pass.h"
 #include "render/renderer.h"
@@ -65,7 +65,7 @@ std::size_t expect_equal(const Scene& scene, const Camera& camera, int width, in
 }
 
 Scene grid_scene(int n) {
-  const Plan plan = bench::make_grid_plan({.n = n});
+  const Plan plan = samples::make_grid_plan({.n = n});
   return flatten_model(build_model(plan), Parts{});
 }
 

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <stdexcept>
 
 #include <sys/wait.h>
@@ -85,6 +86,28 @@ bool write_bytes(const std::filesystem::path& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   return static_cast<bool>(out.flush());
+}
+
+std::optional<Code> failure_code(const CommandResult& result) {
+  // The first line of the form "roomcad ...: error[CODE]: ...".
+  for (std::size_t line = 0; line < result.err.size();) {
+    const std::size_t end = std::min(result.err.find('\n', line), result.err.size());
+    const std::string_view text(result.err.data() + line, end - line);
+    const std::size_t open = text.find(": error[");
+    if (text.starts_with("roomcad") && open != std::string_view::npos) {
+      const std::size_t from = open + 8, close = text.find(']', from);
+      if (close != std::string_view::npos) return parse_code(text.substr(from, close - from));
+    }
+    line = end + 1;
+  }
+  return std::nullopt;
+}
+
+bool make_sparse_file(const std::filesystem::path& path, std::uintmax_t size) {
+  if (!write_bytes(path, "")) return false;
+  std::error_code error;
+  std::filesystem::resize_file(path, size, error);  // truncate(2): a hole, no blocks
+  return !error;
 }
 
 std::string read_bytes(const std::filesystem::path& path) {

@@ -1,9 +1,13 @@
 // Running the roomcad binary from tests and capturing what it prints.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/code.h"
 
 namespace roomcad::test {
 
@@ -18,6 +22,10 @@ struct CommandResult {
 
 /// Runs `roomcad args...` (each argument shell-quoted), with stdin from /dev/null.
 [[nodiscard]] CommandResult run_roomcad(const std::vector<std::string>& args);
+
+/// @return the code of the failure the command reported ("roomcad CMD: error[CODE]: ..." on
+///         stderr, cli/command.h), or nullopt when it reported none or a name no Code has.
+[[nodiscard]] std::optional<Code> failure_code(const CommandResult& result);
 
 /// A fresh empty directory under the system temporary directory, removed with its contents
 /// when the object is destroyed.
@@ -36,6 +44,9 @@ class TempDir {
 
 /// Writes `bytes` to `path` (plain write, for setting up tests). @return false on failure.
 bool write_bytes(const std::filesystem::path& path, const std::string& bytes);
+/// Makes `path` a sparse file of `size` bytes (no disk space used), for size limits.
+/// @return false on failure.
+bool make_sparse_file(const std::filesystem::path& path, std::uintmax_t size);
 /// @return the bytes of `path`, or "" if it cannot be read.
 [[nodiscard]] std::string read_bytes(const std::filesystem::path& path);
 

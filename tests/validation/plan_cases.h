@@ -8,34 +8,14 @@
 #include <vector>
 
 #include "modeling/plan.h"
+#include "testing/plan_builders.h"
 #include "validation/report.h"
 #include "validation/validate.h"
 
 namespace roomcad::testing {
 
-inline Wall make_wall(std::string id, Point2 from, Point2 to, double thickness = 0.25,
-                      double height = 2.5) {
-  Wall w;
-  w.id = std::move(id);
-  w.from = from;
-  w.to = to;
-  w.thickness = thickness;
-  w.height = height;
-  return w;
-}
-
-inline Opening make_opening(std::string id, OpeningType type, std::string wall, double offset,
-                            double width, double height, double sill) {
-  Opening o;
-  o.id = std::move(id);
-  o.type = type;
-  o.wall = std::move(wall);
-  o.offset = offset;
-  o.width = width;
-  o.height = height;
-  o.sill = sill;
-  return o;
-}
+using samples::make_opening;
+using samples::make_wall;
 
 /// A plan on a large site centred on the origin (so that rotated cases stay inside).
 inline Plan plan_with(std::vector<Wall> walls, std::vector<Opening> openings = {}) {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "support/random_plan.h"
+#include "testing/random_plan.h"
 #include "validation/validate.h"
 
 namespace roomcad {
@@ -18,9 +18,9 @@ const std::set<Code> kCodes = {
 TEST(Robustness, RandomPlansAreReportedNotCrashedOn) {
   for (std::uint64_t seed = 1; seed <= 300; ++seed) {
     SCOPED_TRACE(seed);
-    test::RandomPlanOptions options;
+    samples::RandomPlanOptions options;
     options.awkward_numbers = seed % 2 == 0;
-    const Plan plan = test::random_plan(seed, options);
+    const Plan plan = samples::random_plan(seed, options);
     Report first;
     ASSERT_NO_THROW(first = validate(plan));
     EXPECT_TRUE(validate(plan).items == first.items) << "not deterministic";

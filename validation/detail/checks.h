@@ -44,7 +44,4 @@ void warn_about_rooms(const std::vector<Room>& rooms, Report& report);
 void check_rules(const Plan& plan, const Joins& joins, const Usable& usable, const RuleSet& rules,
                  const std::vector<Room>* whole_rooms, Report& report);
 
-/// find_rooms with the plan's joins already found (rooms.cpp).
-[[nodiscard]] std::vector<Room> find_rooms(const Plan& plan, const Joins& joins);
-
 }  // namespace roomcad::detail

@@ -1,10 +1,12 @@
 // duplicate_id (ids are unique across ALL objects of a plan) and unknown_reference.
+#include <algorithm>
 #include <string_view>
 #include <unordered_map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "modeling/plan_objects.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 
@@ -19,15 +21,28 @@ struct IdUse {
 
 std::vector<IdUse> collect_ids(const Plan& plan) {
   std::vector<IdUse> uses;
-  uses.reserve(plan.walls.size() + plan.openings.size() + plan.lights.size() + plan.cameras.size());
-  const auto add = [&uses](const std::string& id, std::string_view list, std::size_t i) {
-    if (!id.empty()) uses.push_back({id, list, i});
-  };
-  for (std::size_t i = 0; i < plan.walls.size(); ++i) add(plan.walls[i].id, "walls", i);
-  for (std::size_t i = 0; i < plan.openings.size(); ++i) add(plan.openings[i].id, "openings", i);
-  for (std::size_t i = 0; i < plan.lights.size(); ++i) add(plan.lights[i].id, "lights", i);
-  for (std::size_t i = 0; i < plan.cameras.size(); ++i) add(plan.cameras[i].id, "cameras", i);
+  for_each_list(plan, [&uses](const auto& objects, ObjectKind kind) {
+    for (std::size_t i = 0; i < objects.size(); ++i)
+      if (!objects[i].id.empty()) uses.push_back({objects[i].id, list_name(kind), i});
+  });
   return uses;
+}
+
+/// unknown_reference for each wall or slab whose `level` names no level.
+template <class Object>
+void check_level_references(const Plan& plan, const std::vector<Object>& objects,
+                            std::string_view kind, Report& report) {
+  for (const Object& o : objects) {
+    if (o.level.empty() ||
+        std::any_of(plan.levels.begin(), plan.levels.end(), [&](const Level& l) { return l.id == o.level; }))
+      continue;
+    report.add(make_diagnostic(
+        Severity::error, Code::unknown_reference, {o.id},
+        fmt::format("{} '{}' names level '{}', which is not in the plan.", kind, o.id, o.level),
+        plan.levels.empty() ? fmt::format("add level '{}' to the plan's levels", o.level)
+                            : fmt::format("set its level to the id of an existing level, e.g. '{}'",
+                                          plan.levels.front().id)));
+  }
 }
 
 /// @return the uses of each id used more than once, in order of first use. O(n) expected.
@@ -64,6 +79,8 @@ void report_duplicates(const Plan& plan, Report& report) {
 
 void check_ids(const Plan& plan, Usable& usable, Report& report) {
   report_duplicates(plan, report);
+  check_level_references(plan, plan.walls, "wall", report);
+  check_level_references(plan, plan.slabs, "slab", report);
   std::unordered_map<std::string_view, std::size_t> walls;
   walls.reserve(plan.walls.size());
   for (std::size_t i = plan.walls.size(); i-- > 0;) walls[plan.walls[i].id] = i;  // first wins

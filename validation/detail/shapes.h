@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "modeling/broad_phase.h"
-#include "modeling/detail/exact_geometry.h"
+#include "modeling/exact_geometry.h"
 #include "validation/report.h"
 
 namespace roomcad::detail {

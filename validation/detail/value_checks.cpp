@@ -1,17 +1,31 @@
 // invalid_value: numbers that are not finite, sizes that are not positive, degenerate
-// directions. A Plan built in code can hold anything, so nothing here is assumed.
+// directions, each field judged by its check in the field tables (modeling/plan_fields.h); then
+// the few rules that tie two fields together. A Plan built in code can hold anything, so
+// nothing here is assumed.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
+#include "modeling/plan_fields.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 
 namespace roomcad::detail {
 namespace {
 
-/// Checks the fields of one object, reporting each bad one; `ok()` is false after any.
-/// Texts are only formatted for a bad field: checking 100,000 good walls formats nothing.
+/// Lengths and coordinates that enter exact geometry must lie in the range it is computed in:
+/// 0, or a magnitude from 1e-15 m (below a femtometre) to 1e15 m (beyond the solar system).
+/// Outside it the exact number types lose their footing (and no plan needs it). Cameras only
+/// look, so their positions are merely finite.
+bool is_computable(double v) {
+  const double m = std::fabs(v);
+  return m == 0 || (m >= 1e-15 && m <= 1e15);
+}
+template <class Object>
+constexpr bool kEntersGeometry = !std::is_same_v<Object, Camera>;
+
+/// Checks the fields of one object, reporting each bad one.
 class FieldChecker {
  public:
   /// `list` and `index` locate the object ("walls", 3); an empty list means the site.
@@ -19,44 +33,22 @@ class FieldChecker {
                std::string_view id)
       : report_(report), kind_(kind), list_(list), index_(index), id_(id) {}
 
-  bool finite(std::string_view field, double v) {
-    return std::isfinite(v) || fail(field, fmt::format("{}", v), "a finite number");
+  /// Checks every field of `o` by its table. Texts are only formatted for a bad field:
+  /// checking 100,000 good walls formats nothing. @return whether all were good.
+  template <class Object>
+  bool check_fields(const Object& o) {
+    bool all = true;
+    for (const Field<Object>& f : fields_of<Object>())
+      if (is_present(o, f))
+        all = std::visit([&](auto member) { return check_value<Object>(f, o.*member); }, f.member) && all;
+    return all;
   }
-  bool positive(std::string_view field, double v, double example) {
-    return (std::isfinite(v) && v > 0) ||
-           fail(field, fmt::format("{}", v), fmt::format("a positive number (e.g. {})", example));
-  }
-  bool non_negative(std::string_view field, double v) {
-    return (std::isfinite(v) && v >= 0) ||
-           fail(field, fmt::format("{}", v), "a number of at least 0");
-  }
-  bool finite(std::string_view field, Point2 p) {
-    return (std::isfinite(p.x) && std::isfinite(p.y)) ||
-           fail(field, fmt::format("[{}, {}]", p.x, p.y), "two finite numbers");
-  }
-  bool finite(std::string_view field, Vec3 v) {
-    return (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) ||
-           fail(field, fmt::format("[{}, {}, {}]", v.x, v.y, v.z), "three finite numbers");
-  }
-  /// Lengths and coordinates must also lie in the range exact geometry is computed in:
-  /// 0, or a magnitude from 1e-15 m (below a femtometre) to 1e15 m (beyond the solar system).
-  /// Outside it the exact number types lose their footing (and no plan needs it).
-  bool computable(std::string_view field, double v) {
-    const double m = std::fabs(v);
-    return m == 0 || (m >= 1e-15 && m <= 1e15) ||
-           fail(field, fmt::format("{}", v), "0 or between 1e-15 and 1e15 m in size");
-  }
-  bool computable(std::string_view field, Point2 p) {
-    return (computable(field, p.x) && computable(field, p.y));
-  }
-  bool non_zero(std::string_view field, Vec3 v) {
-    return v.x != 0 || v.y != 0 || v.z != 0 || fail(field, "[0, 0, 0]", "a non-zero direction");
-  }
+
   /// Reports that `field` is `value` and must be `must_be`, with `fix` (or "set <field> to
   /// <must_be>"). @return false, for `good || fail(...)`.
   bool fail(std::string_view field, std::string_view value, std::string_view must_be,
             std::string fix = {}) {
-    ok_ = false;
+    failed_.emplace_back(field);
     const std::string label =
         list_.empty() ? std::string(kind_)
                       : fmt::format("{} '{}' ({}[{}])", kind_, id_, list_, index_);
@@ -68,85 +60,141 @@ class FieldChecker {
         std::move(fix)));
     return false;
   }
-  [[nodiscard]] bool ok() const { return ok_; }
+
+  /// @return the fields reported bad so far ("thickness", "cells[1]", ...).
+  [[nodiscard]] const std::vector<std::string>& failed() const { return failed_; }
 
  private:
+  template <class Object>
+  bool number_ok(const Field<Object>& f, double v) {
+    if (!std::isfinite(v)) return fail(f.name, fmt::format("{}", v), "a finite number");
+    if (f.unit == Unit::metre && kEntersGeometry<Object> && !is_computable(v))
+      return fail(f.name, fmt::format("{}", v), "0 or between 1e-15 and 1e15 m in size");
+    switch (f.check) {
+      case Check::positive:
+        return v > 0 || fail(f.name, fmt::format("{}", v),
+                             fmt::format("a positive number (e.g. {})", f.example));
+      case Check::non_negative:
+        return v >= 0 || fail(f.name, fmt::format("{}", v), "a number of at least 0");
+      case Check::unit_interval:
+        return (v >= 0 && v <= 1) || fail(f.name, fmt::format("{}", v), "in [0, 1]");
+      case Check::turn:
+        return (v != 0 && std::fabs(v) < 360) ||
+               fail(f.name, fmt::format("{}", v), "between -360 and 360 degrees, not 0");
+      default: return true;
+    }
+  }
+  bool point_ok(std::string_view name, Point2 p, bool computable) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+      return fail(name, fmt::format("[{}, {}]", p.x, p.y), "two finite numbers");
+    return !computable || (is_computable(p.x) && is_computable(p.y)) ||
+           fail(name, fmt::format("[{}, {}]", p.x, p.y), "0 or between 1e-15 and 1e15 m in size");
+  }
+  bool polygon_ok(std::string_view name, const Polygon& polygon, bool computable) {
+    if (polygon.size() < 3)
+      return fail(name, fmt::format("{} corners", polygon.size()), "a polygon of at least 3 corners");
+    for (const Point2& p : polygon)
+      if (!point_ok(name, p, computable)) return false;
+    return true;
+  }
+
+  template <class Object>
+  bool check_value(const Field<Object>& f, double v) {
+    return f.check == Check::lens || number_ok(f, v);
+  }
+  template <class Object>
+  bool check_value(const Field<Object>& f, const std::optional<double>& v) {
+    return !v || number_ok(f, *v);
+  }
+  template <class Object>
+  bool check_value(const Field<Object>& f, Point2 p) {
+    return point_ok(f.name, p, f.unit == Unit::metre && kEntersGeometry<Object>);
+  }
+  template <class Object>
+  bool check_value(const Field<Object>& f, Vec3 v) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+      return fail(f.name, fmt::format("[{}, {}, {}]", v.x, v.y, v.z), "three finite numbers");
+    return f.check != Check::non_zero || v.x != 0 || v.y != 0 || v.z != 0 ||
+           fail(f.name, "[0, 0, 0]", "a non-zero direction");
+  }
+  template <class Object>
+  bool check_value(const Field<Object>& f, const std::string& s) {
+    return f.name != "id" || !s.empty() || fail("id", "empty", "a non-empty string unique in the plan");
+  }
+  template <class Object>
+  bool check_value(const Field<Object>& f, const std::array<std::int64_t, 2>& cells) {
+    bool ok = true;
+    for (int i = 0; i < 2; ++i)
+      if (cells[i] <= 0)
+        ok = fail(fmt::format("{}[{}]", f.name, i), fmt::format("{}", cells[i]),
+                  "a positive whole number of tiles");
+    return ok;
+  }
+  template <class Object>
+  bool check_value(const Field<Object>& f, const Polygon& polygon) {
+    return polygon_ok(f.name, polygon, f.unit == Unit::metre);
+  }
+  template <class Object>
+  bool check_value(const Field<Object>& f, const std::vector<Polygon>& polygons) {
+    bool ok = true;
+    for (std::size_t i = 0; i < polygons.size(); ++i)
+      ok = polygon_ok(fmt::format("{}[{}]", f.name, i), polygons[i], f.unit == Unit::metre) && ok;
+    return ok;
+  }
+  template <class Object, class Other>
+  bool check_value(const Field<Object>&, const Other&) {
+    return true;  // colours and enums: their type is their check
+  }
+
   Report& report_;
   std::string_view kind_;
   std::string_view list_;
   std::size_t index_;
   std::string_view id_;
-  bool ok_ = true;
+  std::vector<std::string> failed_;
 };
 
-void check_id(FieldChecker& c, const std::string& id) {
-  if (id.empty()) c.fail("id", "empty", "a non-empty string unique in the plan");
-}
-
+/// The site's bounds: usable when origin, cells, cell size and maximum height are good (a bad
+/// tolerance falls back to 0 in the joins: the bounds still hold).
 bool check_site(const Site& s, Report& report) {
   FieldChecker c(report, "site", "", 0, "");
-  if (c.finite("origin", s.origin)) c.computable("origin", s.origin);
-  for (int i = 0; i < 2; ++i)
-    if (s.cells[i] <= 0)
-      c.fail(fmt::format("cells[{}]", i), fmt::format("{}", s.cells[i]),
-             "a positive whole number of tiles");
-  if (c.positive("cell_size", s.cell_size, 1.0)) c.computable("cell_size", s.cell_size);
-  if (c.positive("max_height", s.max_height, 6.0)) c.computable("max_height", s.max_height);
-  const bool bounds_ok = c.ok();
-  // Joins fall back to a tolerance of 0 when it is bad: the bounds still hold.
-  if (c.positive("tolerance", s.tolerance, 1e-6)) c.computable("tolerance", s.tolerance);
-  return bounds_ok;
+  c.check_fields(s);
+  return std::all_of(c.failed().begin(), c.failed().end(), [](const std::string& field) {
+    return field == "tolerance" || field == "chord_tolerance";
+  });
 }
 
 bool check_wall(const Wall& w, std::size_t i, Report& report) {
   FieldChecker c(report, "wall", "walls", i, w.id);
-  check_id(c, w.id);
-  // Both ends checked (and reported) before either verdict is used: no short circuit.
-  const bool from_ok = c.finite("from", w.from) && c.computable("from", w.from);
-  const bool to_ok = c.finite("to", w.to) && c.computable("to", w.to);
-  const bool ends = from_ok && to_ok;
+  const bool ok = c.check_fields(w);
+  const bool ends = std::isfinite(w.from.x) && std::isfinite(w.from.y) &&
+                    std::isfinite(w.to.x) && std::isfinite(w.to.y);
   if (ends && w.from == w.to)
-    c.fail("its length", "0 (from equals to)", "positive",
-           fmt::format("move `to` of wall '{}' away from `from`, or delete the wall", w.id));
-  if (c.positive("thickness", w.thickness, 0.25)) c.computable("thickness", w.thickness);
-  if (c.positive("height", w.height, 2.8)) c.computable("height", w.height);
-  if (c.non_negative("base", w.base)) c.computable("base", w.base);
-  return c.ok();
-}
-
-bool check_opening(const Opening& o, std::size_t i, Report& report) {
-  const OpeningDefaults d = opening_defaults(o.type);
-  FieldChecker c(report, to_string(o.type), "openings", i, o.id);
-  check_id(c, o.id);
-  if (c.finite("offset", o.offset)) c.computable("offset", o.offset);
-  if (c.positive("width", o.width, d.width)) c.computable("width", o.width);
-  if (c.positive("height", o.height, d.height)) c.computable("height", o.height);
-  if (c.non_negative("sill", o.sill)) c.computable("sill", o.sill);
-  return c.ok();
-}
-
-void check_light(const Light& l, std::size_t i, Report& report) {
-  FieldChecker c(report, "light", "lights", i, l.id);
-  check_id(c, l.id);
-  if (c.finite("direction", l.direction)) c.non_zero("direction", l.direction);
-  c.finite("intensity", l.intensity);
-  if (!(std::isfinite(l.ambient) && l.ambient >= 0 && l.ambient <= 1))
-    c.fail("ambient", fmt::format("{}", l.ambient), "in [0, 1]");
+    return c.fail("its length", "0 (from equals to)", "positive",
+                  fmt::format("move `to` of wall '{}' away from `from`, or delete the wall", w.id));
+  return ok;
 }
 
 void check_camera(const Camera& cam, std::size_t i, Report& report) {
   FieldChecker c(report, "camera", "cameras", i, cam.id);
-  check_id(c, cam.id);
-  const bool eye_ok = c.finite("eye", cam.eye);  // both reported: no short circuit
-  const bool target_ok = c.finite("target", cam.target);
-  if (eye_ok && target_ok && cam.eye == cam.target)
-    c.fail("target", "equal to eye", "a point other than the eye");
-  if (c.finite("up", cam.up)) c.non_zero("up", cam.up);
+  const bool ok = c.check_fields(cam);
+  if (ok && cam.eye == cam.target) c.fail("target", "equal to eye", "a point other than the eye");
   const bool fov_ok = std::isfinite(cam.fov_deg) && cam.fov_deg > 0 && cam.fov_deg < 180;
   if (cam.projection == Projection::perspective && !fov_ok)
     c.fail("fov_deg", fmt::format("{}", cam.fov_deg), "between 0 and 180 degrees (e.g. 50)");
-  else if (cam.projection == Projection::orthographic)
-    c.positive("view_height", cam.view_height, 10.0);
+  else if (cam.projection == Projection::orthographic &&
+           !(std::isfinite(cam.view_height) && cam.view_height > 0))
+    c.fail("view_height", fmt::format("{}", cam.view_height), "a positive number (e.g. 10)");
+}
+
+/// Checks each object of a list by its table. @return which were good.
+template <class Object>
+std::vector<bool> check_list(const std::vector<Object>& objects, std::string_view kind,
+                             std::string_view list, Report& report) {
+  std::vector<bool> good(objects.size());
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    good[i] = FieldChecker(report, kind, list, i, objects[i].id).check_fields(objects[i]);
+  return good;
 }
 
 }  // namespace
@@ -154,13 +202,18 @@ void check_camera(const Camera& cam, std::size_t i, Report& report) {
 Usable check_values(const Plan& plan, Report& report) {
   Usable usable;
   usable.site = check_site(plan.site, report);
+  (void)check_list(plan.levels, "level", "levels", report);
   usable.walls.resize(plan.walls.size());
   for (std::size_t i = 0; i < plan.walls.size(); ++i)
     usable.walls[i] = check_wall(plan.walls[i], i, report);
   usable.host.assign(plan.openings.size(), std::nullopt);
-  for (std::size_t i = 0; i < plan.openings.size(); ++i)
-    if (check_opening(plan.openings[i], i, report)) usable.host[i] = 0;  // host set by check_ids
-  for (std::size_t i = 0; i < plan.lights.size(); ++i) check_light(plan.lights[i], i, report);
+  for (std::size_t i = 0; i < plan.openings.size(); ++i) {
+    const Opening& o = plan.openings[i];
+    if (FieldChecker(report, to_string(o.type), "openings", i, o.id).check_fields(o))
+      usable.host[i] = 0;  // the host is set by check_ids
+  }
+  (void)check_list(plan.slabs, "slab", "slabs", report);
+  (void)check_list(plan.lights, "light", "lights", report);
   for (std::size_t i = 0; i < plan.cameras.size(); ++i) check_camera(plan.cameras[i], i, report);
   return usable;
 }

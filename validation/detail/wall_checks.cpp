@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/detail/segment_predicates.h"
+#include "modeling/segment_predicates.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 #include "validation/detail/shapes.h"

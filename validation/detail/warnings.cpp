@@ -22,8 +22,10 @@ void warn_extra(const ExtraFields& extra, std::string_view owner, const std::str
 void warn_unknown_fields(const Plan& plan, Report& report) {
   warn_extra(plan.extra, "the plan", "", report);
   warn_extra(plan.site.extra, "the site", "", report);
+  for (const Level& l : plan.levels) warn_extra(l.extra, fmt::format("level '{}'", l.id), l.id, report);
   for (const Wall& w : plan.walls) warn_extra(w.extra, name_of(w), w.id, report);
   for (const Opening& o : plan.openings) warn_extra(o.extra, name_of(o), o.id, report);
+  for (const Slab& s : plan.slabs) warn_extra(s.extra, fmt::format("slab '{}'", s.id), s.id, report);
   for (const Light& l : plan.lights)
     warn_extra(l.extra, fmt::format("light '{}'", l.id), l.id, report);
   for (const Camera& c : plan.cameras)

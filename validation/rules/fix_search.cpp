@@ -6,7 +6,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "modeling/detail/segment_predicates.h"
+#include "modeling/segment_predicates.h"
 #include "validation/fix_edits.h"
 #include "validation/report_diff.h"
 #include "validation/validate.h"
@@ -74,7 +74,7 @@ std::vector<FixEdit> move_wall_edits(const Scene& scene, std::size_t wall, Point
     const Wall& other = plan.walls[x];
     std::vector<std::pair<std::string, std::string>> ends;
     for (const auto& [key, end] : {std::pair{"from", other.from}, std::pair{"to", other.to}})
-      if (detail::is_near_segment(end, w.from, w.to, plan.site.tolerance)) ends.emplace_back(key, point_text(moved(end)));
+      if (is_near_segment(end, w.from, w.to, plan.site.tolerance)) ends.emplace_back(key, point_text(moved(end)));
     if (!ends.empty()) edits.push_back(set_edit(other.id, std::move(ends)));
   }
   return edits;

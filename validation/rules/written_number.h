@@ -20,7 +20,7 @@
 
 #include <CGAL/Interval_nt.h>
 
-#include "modeling/detail/exact_geometry.h"
+#include "modeling/exact_geometry.h"
 
 namespace roomcad::rules {
 

@@ -1,0 +1,159 @@
+// Exact plane geometry for plan verdicts: filtered evaluation in any number type.
+//
+// A predicate is written once as a generic lambda over a number type NT and evaluated first
+// in interval arithmetic; only when the intervals cannot decide (the shapes touch or nearly
+// touch) is it evaluated again in Radical (radical.h), which is exact for + - * / and the
+// square roots of rationals and decides signs in a bounded number of rational operations.
+// So wall corners, which involve the square root of a wall's squared length, are compared
+// exactly for the coordinates as read at the cost of double arithmetic in all but touching
+// cases, and never for long (CORE::Expr, used before, took minutes near degenerate shapes).
+// Public for the modules that judge shapes (validation). This header includes CGAL: include it
+// only from the few .cpp files that need it.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include <CGAL/Interval_nt.h>
+
+#include "modeling/detail/radical.h"
+#include "modeling/joins.h"
+#include "modeling/plan.h"
+
+namespace roomcad::exact {
+
+using Approx = CGAL::Interval_nt<false>;  ///< needs upward rounding: see decide()
+using Exact = Radical;
+
+template <class NT>
+struct Pt {
+  NT x;
+  NT y;
+};
+
+template <class NT>
+Pt<NT> to_pt(const Point2& p) {
+  return {NT(p.x), NT(p.y)};
+}
+template <class NT>
+Pt<NT> operator+(const Pt<NT>& a, const Pt<NT>& b) {
+  return {a.x + b.x, a.y + b.y};
+}
+template <class NT>
+Pt<NT> operator-(const Pt<NT>& a, const Pt<NT>& b) {
+  return {a.x - b.x, a.y - b.y};
+}
+template <class NT>
+Pt<NT> operator*(const NT& s, const Pt<NT>& a) {
+  return {s * a.x, s * a.y};
+}
+template <class NT>
+NT dot(const Pt<NT>& a, const Pt<NT>& b) {
+  return a.x * b.x + a.y * b.y;
+}
+template <class NT>
+NT cross(const Pt<NT>& a, const Pt<NT>& b) {
+  return a.x * b.y - a.y * b.x;
+}
+
+/// @return sqrt(x) in any of the number types here (CGAL's for doubles and intervals).
+template <class NT>
+NT root(const NT& x) {
+  using CGAL::sqrt;
+  return sqrt(x);
+}
+
+/// Evaluates `predicate(NT{})` exactly: in intervals first, in Radical if they cannot decide.
+/// @param predicate  generic callable taking a number-type tag and returning a truth value
+///                   (bool, or CGAL::Uncertain<bool> for intervals).
+/// @return the exact verdict. Cost: a few double operations unless the case is degenerate;
+///         then rational arithmetic bounded by the number of distinct roots (see radical.h).
+template <class Predicate>
+bool decide(Predicate&& predicate) {
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    try {
+      return static_cast<bool>(predicate(Approx{}));
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      // The intervals straddle the decision: fall through to exact arithmetic.
+    }
+  }
+  const Exact::Scope scope;
+  return static_cast<bool>(predicate(Exact{}));
+}
+
+/// The left normal of segment a->b scaled to length `half`: perp(b - a) * half / |b - a|.
+/// @pre a != b.
+template <class NT>
+Pt<NT> scaled_left_normal(const Pt<NT>& a, const Pt<NT>& b, const NT& half) {
+  const Pt<NT> d = b - a;
+  const NT scale = half / root(dot(d, d));
+  return {-d.y * scale, d.x * scale};
+}
+
+/// A wall's centre line and its half-thickness left normal, in NT.
+template <class NT>
+struct WallLine {
+  Pt<NT> from;
+  Pt<NT> to;
+  Pt<NT> half_normal;  ///< left of from->to, length thickness / 2
+};
+
+template <class NT>
+WallLine<NT> wall_line(const Wall& w) {
+  const Pt<NT> a = to_pt<NT>(w.from);
+  const Pt<NT> b = to_pt<NT>(w.to);
+  return {a, b, scaled_left_normal(a, b, NT(w.thickness) / NT(2))};
+}
+
+/// Side of a wall: +1 left of from->to, -1 right.
+template <class NT>
+Pt<NT> side_point(const WallLine<NT>& w, WallEnd end, int side) {
+  const Pt<NT>& p = end == WallEnd::from ? w.from : w.to;
+  return side > 0 ? p + w.half_normal : p - w.half_normal;
+}
+
+/// The corner of wall `w` at `end` on `side` (+1 left, -1 right), mitred per `joins`.
+/// A mitred corner is where this side line crosses the matching side line of the partner:
+/// walking into the joint along one wall and out along the other, left meets left and right
+/// meets right. Parallel partners (a straight continuation) give a square end; see below
+/// for what counts as parallel.
+template <class NT>
+Pt<NT> wall_corner(const Plan& plan, const Joins& joins, std::size_t w, WallEnd end, int side) {
+  const WallLine<NT> mine = wall_line<NT>(plan.walls[w]);
+  const auto partner = joins.mitre[w][static_cast<int>(end)];
+  if (!partner) return side_point(mine, end, side);
+  const WallLine<NT> other = wall_line<NT>(plan.walls[*partner]);
+  const WallEnd other_end = joins.mitre[*partner][0] == w ? WallEnd::from : WallEnd::to;
+  // Travelling into the joint along `mine` reverses it at its from-end; leaving along
+  // `other` reverses it at its to-end. Each reversal swaps left and right.
+  const int other_side = side * (end == WallEnd::from ? -1 : 1) * (other_end == WallEnd::to ? -1 : 1);
+  const Pt<NT> p = side_point(mine, end, side);
+  const Pt<NT> q = side_point(other, other_end, other_side);
+  const Pt<NT> d1 = mine.to - mine.from;
+  const Pt<NT> d2 = other.to - other.from;
+  // Parallel partners (a straight continuation) end square. "Parallel" is decided on the
+  // cross product of the two directions evaluated in doubles: when it rounds to 0 the walls
+  // are within an ulp of collinear, the true mitre lies within ~1e-16 of the thickness of
+  // the square end, and constructing it would divide by a number whose double value is 0
+  // (an interval holding 0, or an exact 0). Every number type
+  // takes the same branch, so the footprint is one well-defined shape.
+  const Wall& a = plan.walls[w];
+  const Wall& b = plan.walls[*partner];
+  const double rounded_cross = (a.to.x - a.from.x) * (b.to.y - b.from.y) -
+                               (a.to.y - a.from.y) * (b.to.x - b.from.x);
+  if (rounded_cross == 0.0) return p;
+  return p + (cross(q - p, d2) / cross(d1, d2)) * d1;
+}
+
+/// All four corners {from-right, to-right, to-left, from-left} (counter-clockwise).
+template <class NT>
+std::array<Pt<NT>, 4> wall_corners(const Plan& plan, const Joins& joins, std::size_t w) {
+  return {wall_corner<NT>(plan, joins, w, WallEnd::from, -1),
+          wall_corner<NT>(plan, joins, w, WallEnd::to, -1),
+          wall_corner<NT>(plan, joins, w, WallEnd::to, 1),
+          wall_corner<NT>(plan, joins, w, WallEnd::from, 1)};
+}
+
+}  // namespace roomcad::exact

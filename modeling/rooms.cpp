@@ -1,0 +1,134 @@
+// find_rooms: rooms are the bounded faces of the walls' centre-line arrangement.
+//
+// The reported outline and area are the CLEAR floor inside the walls (what an architect
+// quotes): each side of the face is moved inward by its wall's half-thickness and
+// consecutive sides are intersected. A nested region (a room within a room) is subtracted
+// by its centre-line area. Mitred ends closer than the tolerance are snapped together first
+// so that such a corner still closes its room; an end that stops short of a centre line
+// within the tolerance (a T with a micrometre gap) leaves the room open, and it is not
+// reported (no false warnings).
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <unordered_map>
+
+#include "modeling/joins.h"
+#include "modeling/detail/arrangement.h"
+#include "modeling/detail/centre_lines.h"
+#include "modeling/rooms.h"
+
+namespace roomcad {
+namespace {
+
+struct Line {
+  Point2 p;  ///< a point on the offset side line
+  Point2 d;  ///< its direction
+};
+
+Line inner_line(const detail::FaceEdge& e, double half) {
+  const Point2 d{e.target.x - e.source.x, e.target.y - e.source.y};
+  const double len = std::hypot(d.x, d.y);
+  return {{e.source.x - d.y / len * half, e.source.y + d.x / len * half}, d};
+}
+
+/// Adds the clear-floor corner(s) between consecutive inner side lines a then b.
+void add_corner(const Line& a, const Line& b, Point2 at, std::vector<Point2>& out) {
+  const double denom = a.d.x * b.d.y - a.d.y * b.d.x;
+  if (denom == 0.0) {  // straight on, or the tip of a wall end poking into the room
+    const double ta = ((at.x - a.p.x) * a.d.x + (at.y - a.p.y) * a.d.y) / (a.d.x * a.d.x + a.d.y * a.d.y);
+    out.push_back({a.p.x + ta * a.d.x, a.p.y + ta * a.d.y});
+    if (b.p != out.back()) out.push_back(b.p);
+    return;
+  }
+  const double s = ((b.p.x - a.p.x) * b.d.y - (b.p.y - a.p.y) * b.d.x) / denom;
+  out.push_back({a.p.x + s * a.d.x, a.p.y + s * a.d.y});
+}
+
+double polygon_area(const std::vector<Point2>& pts) {
+  double twice = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const Point2& a = pts[i];
+    const Point2& b = pts[(i + 1) % pts.size()];
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return twice / 2;
+}
+
+/// Opening indices by host wall index (the first wall with the id, as validation reads it).
+using OpeningsByWall = std::vector<std::vector<std::size_t>>;
+
+OpeningsByWall openings_by_wall(const Plan& plan) {
+  std::unordered_map<std::string_view, std::size_t> wall_index;
+  wall_index.reserve(plan.walls.size());
+  for (std::size_t w = plan.walls.size(); w-- > 0;) wall_index[plan.walls[w].id] = w;
+  OpeningsByWall out(plan.walls.size());
+  for (std::size_t i = 0; i < plan.openings.size(); ++i)
+    if (const auto it = wall_index.find(plan.openings[i].wall); it != wall_index.end())
+      out[it->second].push_back(i);
+  return out;
+}
+
+/// Openings whose span along their wall overlaps the face edge's piece of that wall.
+void collect_openings(const Plan& plan, const OpeningsByWall& by_wall, const detail::FaceEdge& e,
+                      Room& room) {
+  const Wall& w = plan.walls[e.wall];
+  const Point2 d{w.to.x - w.from.x, w.to.y - w.from.y};
+  const double len = std::hypot(d.x, d.y);
+  const auto along = [&](Point2 p) { return ((p.x - w.from.x) * d.x + (p.y - w.from.y) * d.y) / len; };
+  const double lo = std::min(along(e.source), along(e.target));
+  const double hi = std::max(along(e.source), along(e.target));
+  for (const std::size_t i : by_wall[e.wall]) {
+    const Opening& o = plan.openings[i];
+    if (std::max(lo, o.offset) >= std::min(hi, o.offset + o.width)) continue;
+    (o.type == OpeningType::door ? room.doors : room.windows).push_back(o.id);
+  }
+}
+
+void sort_unique(std::vector<std::string>& ids) {
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
+Room room_of(const Plan& plan, const OpeningsByWall& by_wall, const detail::Face& face) {
+  Room room;
+  const std::size_t n = face.boundary.size();
+  std::vector<Line> lines;
+  for (const detail::FaceEdge& e : face.boundary) {
+    lines.push_back(inner_line(e, plan.walls[e.wall].thickness / 2));
+    room.walls.push_back(plan.walls[e.wall].id);
+    collect_openings(plan, by_wall, e, room);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    add_corner(lines[(i + n - 1) % n], lines[i], face.boundary[i].source, room.outline);
+  room.area = std::max(0.0, polygon_area(room.outline) - face.hole_area);
+  sort_unique(room.walls);
+  sort_unique(room.doors);
+  sort_unique(room.windows);
+  return room;
+}
+
+}  // namespace
+
+std::vector<Room> find_rooms(const Plan& plan) { return find_rooms(plan, find_joins(plan)); }
+
+std::vector<Room> find_rooms(const Plan& plan, const Joins& joins) {
+  const OpeningsByWall by_wall = openings_by_wall(plan);
+  const detail::CentreLines lines = detail::build_centre_lines(plan, joins);
+  std::vector<Room> rooms;
+  for (detail::Face& face : detail::find_bounded_faces(lines.segments)) {
+    for (detail::FaceEdge& e : face.boundary) e.wall = lines.walls[e.wall];
+    rooms.push_back(room_of(plan, by_wall, face));
+  }
+  // Number rooms from the south-west: by the lowest, then leftmost, corner of the outline.
+  const auto key = [](const Room& r) {
+    const auto it = std::min_element(r.outline.begin(), r.outline.end(), [](Point2 a, Point2 b) {
+      return std::tie(a.y, a.x) < std::tie(b.y, b.x);
+    });
+    return it == r.outline.end() ? std::pair{0.0, 0.0} : std::pair{it->y, it->x};
+  };
+  std::stable_sort(rooms.begin(), rooms.end(),
+                   [&](const Room& a, const Room& b) { return key(a) < key(b); });
+  return rooms;
+}
+
+}  // namespace roomcad

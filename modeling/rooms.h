@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Rooms: the closed regions of the walls' centre-line arrangement, with their clear floor,
+// bounding walls, doors and windows. Validation warns about them; floor plans label them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "modeling/joins.h"
+#include "modeling/plan.h"
+
+namespace roomcad {
+
+/// A closed region of the wall arrangement (a room), as a simple polygon on the wall faces
+/// that bound it, counter-clockwise, in metres.
+struct Room {
+  std::vector<Point2> outline;           ///< the clear floor: centre-line face moved inward
+                                         ///< by each bounding wall's half-thickness
+  double area = 0.0;                     ///< clear floor area, square metres (rooms nested
+                                         ///< inside are subtracted by their centre-line area)
+  std::vector<std::string> walls;        ///< ids of the walls bounding it
+  std::vector<std::string> doors;        ///< ids of doors in those walls
+  std::vector<std::string> windows;      ///< ids of windows in those walls
+};
+
+/// Finds the rooms of a plan: bounded faces of the walls' centre-line arrangement, numbered
+/// from the south-west. Meant for a plan that validates without errors; on any other it
+/// skips walls that are not drawable and does not throw. A room's doors and windows are the
+/// openings on the pieces of wall that bound it. O(n log n) in walls.
+[[nodiscard]] std::vector<Room> find_rooms(const Plan& plan);
+
+/// find_rooms with the plan's joins already found (validation finds them once for all checks).
+/// @pre joins == find_joins(plan).
+[[nodiscard]] std::vector<Room> find_rooms(const Plan& plan, const Joins& joins);
+
+}  // namespace roomcad

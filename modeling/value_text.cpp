@@ -114,13 +114,19 @@ std::string format_vec3(Vec3 v) {
 
 std::string format_polygon(const Polygon& polygon) {
   std::string out;
-  for (const Point2& p : polygon) out += (out.empty() ? "" : ";") + format_point2(p);
+  for (const Point2& p : polygon) {  // appended in two steps: GCC 12 -O3 sees a false -Wrestrict in "" + string
+    if (!out.empty()) out += ';';
+    out += format_point2(p);
+  }
   return out;
 }
 
 std::string format_polygons(const std::vector<Polygon>& polygons) {
   std::string out;
-  for (std::size_t i = 0; i < polygons.size(); ++i) out += (i ? "|" : "") + format_polygon(polygons[i]);
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    if (i) out += '|';
+    out += format_polygon(polygons[i]);
+  }
   return out;
 }
 

@@ -110,6 +110,17 @@ TEST(Reachability, RoomsReachedThroughOtherRoomsAreReachable) {
   EXPECT_TRUE(findings(check(plan, only({Code::room_unreachable})), Code::room_unreachable).empty());
 }
 
+TEST(Reachability, GapsBetweenWallsAreNotRooms) {
+  // A closed sliver 2 m x 0.15 m under the east room's south wall, as imports leave them.
+  Plan plan = two_rooms();
+  plan.openings.push_back(make_door("between", "re", 1.5));
+  plan.walls.push_back(make_wall("g", {5, -0.35}, {7, -0.35}, 0.2));
+  plan.walls.push_back(make_wall("gw", {5, 0}, {5, -0.35}, 0.2));
+  plan.walls.push_back(make_wall("ge", {7, 0}, {7, -0.35}, 0.2));
+  ASSERT_EQ(find_rooms(plan).size(), 3u);
+  EXPECT_TRUE(findings(check(plan, only({Code::room_unreachable})), Code::room_unreachable).empty());
+}
+
 TEST(Reachability, RoomsJoinedOnlyToEachOtherAreEachCaughtWithTheirDoors) {
   Plan plan = two_rooms();
   plan.openings.front().wall = "re";  // the west room's door now leads east, not out

@@ -86,7 +86,8 @@ void check_escape(const Context& cx, const Scene& scene, Report& report) {
                     cx.room_name(*s, r), room.area, fmt::join(room.walls, ", "), detail::point_text(b->farthest), walk),
         door ? fmt::format("add a door {} m wide to the outside in wall '{}' at offset {}", door->fields[3].second,
                            door->fields[1].second, door->fields[2].second)
-             : "add an exterior door nearer to it: no wall of the room gives onto the outside",
+             : "add an exterior door nearer to it: no wall of the room has room for one to the outside, clear "
+               "of its openings, that brings the walk within the limit",
         door ? std::vector<FixEdit>{*door} : std::vector<FixEdit>{}, Where{b->farthest, std::nullopt}));
   }
 }

@@ -1,5 +1,6 @@
 // room_unreachable: the graph of rooms and doors (a door joins the rooms on its two sides,
-// or a room and the outside) searched from the outside. Rooms are find_rooms' rooms of the
+// or a room and the outside) searched from the outside; regions under 0.5 m² are gaps, not
+// rooms, and are not reported. Rooms are find_rooms' rooms of the
 // entrance storey: the lowest storey with a door to the outside (the lowest storey if none
 // has one). Other storeys are reached by stairs, which version 1 plans cannot hold, so they
 // are not judged.
@@ -17,6 +18,9 @@ namespace roomcad::rules {
 namespace {
 
 constexpr double kProbe = 0.01;  // as the door sides in context.cpp
+/// m²: a smaller closed region is a gap between walls (as drawing tools leave them), not a
+/// room anyone goes into; it is not reported, though it may join reported rooms.
+constexpr double kMinRoomArea = 0.5;
 
 /// The rooms and doors of a storey; node `rooms.size()` is the outside.
 struct RoomGraph {
@@ -83,8 +87,8 @@ void report_component(const Context& cx, const Scene& scene, const Storey& s, co
   const std::optional<FixEdit> door = connecting_door(cx, scene, s, component, reached);
   const std::string fix = door ? fmt::format("add a door {} m wide to wall '{}' at offset {}", door->fields[3].second,
                                              door->fields[1].second, door->fields[2].second)
-                               : "no wall of these rooms borders the outside or a room that can be reached: "
-                                 "add a door from one of them towards one";
+                               : "no wall of these rooms has room, clear of its openings, for a door to the "
+                                 "outside or to a room that can be reached: move an opening or a wall to make one";
   const std::string how = doors.empty() ? "it has no door"
                           : component.size() == 1
                               ? fmt::format("its doors ({}) lead to no room that can be", fmt::join(doors, ", "))
@@ -110,7 +114,7 @@ void check_reachability(const Context& cx, const Scene& scene, Report& report) {
   for (const std::size_t n : graph.reach(graph.outside, [](std::size_t) { return true; })) reached[n] = true;
   std::vector<bool> reported(s->rooms.size(), false);
   for (std::size_t r = 0; r < s->rooms.size(); ++r) {
-    if (reached[r] || reported[r]) continue;
+    if (reached[r] || reported[r] || s->rooms[r].area < kMinRoomArea) continue;
     const std::vector<std::size_t> component = graph.reach(r, [&](std::size_t n) { return n != graph.outside; });
     for (const std::size_t n : component) reported[n] = true;
     report_component(cx, scene, *s, graph, component, reached, report);

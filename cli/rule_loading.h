@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The rule set a command is asked for: a built-in name or a rules file (validate, draw).
 #pragma once
 

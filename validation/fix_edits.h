@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A finding's fix as edits (Diagnostic::edits): applying them to a plan, and writing them as
 // the roomcad commands that make them.
 #pragma once

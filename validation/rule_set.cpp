@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Built-in rule sets and the rules file reader.
 #include "validation/rule_set.h"
 

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rule sets of `roomcad validate --rules NAME|FILE`: which rules run beyond the plan format's
 // checks, their thresholds, and their severities. Built-in sets are `default` (no rules: what
-// validate always did), `accessibility` and `all`; a rules file (JSON, docs/rules.md) starts
-// from one of them, enables or disables rules and sets thresholds.
+// validate always did), `accessibility` and `all`; a rules file (JSON, docs/plan-format.md,
+// "Rule sets") starts from one of them, enables or disables rules and sets thresholds.
 #pragma once
 
 #include <array>
@@ -27,7 +28,7 @@ inline constexpr std::array<Code, 10> kRuleCodes = {
 /// @return the index of a rule code in kRuleCodes, or nullopt for any other code. O(1).
 [[nodiscard]] std::optional<std::size_t> rule_index(Code code);
 
-/// Thresholds, metres. The spec's defaults; the sill limits are roomcad's (docs/rules.md).
+/// Thresholds, metres. The spec's defaults; the sill limits are roomcad's (docs/plan-format.md).
 struct RuleThresholds {
   double clearance_width = 1.5;   ///< free rectangle in front of a door, along the wall
   double clearance_depth = 1.5;   ///< ... and away from it, on the push side
@@ -63,7 +64,7 @@ struct RuleSet {
 /// room_unreachable; `all`: every rule.
 [[nodiscard]] std::optional<RuleSet> builtin_rule_set(std::string_view name);
 
-/// Reads a rules file (format in docs/rules.md).
+/// Reads a rules file (format in docs/plan-format.md, "Rule sets: what roomcad decides").
 /// @param[in] text  the file's bytes
 /// @param[in] file  its path, for messages
 /// @return the rule set, or a usage_error naming the file, the field (a JSON pointer) and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers for the rule sets' tests: run one rule, pick its findings, apply a finding's fix and
 // check that the finding is gone and no error came with it.
 #pragma once

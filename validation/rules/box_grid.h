@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A uniform grid of boxes for one-at-a-time queries ("which walls are near this door?") while
 // searching for fixes; batches of queries use find_meeting_boxes (modeling/broad_phase.h).
 #pragma once

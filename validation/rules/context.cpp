@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The rules' shared context: storeys, rooms per storey, door sides, accessible rooms.
 #include "validation/rules/context.h"
 
@@ -18,16 +19,6 @@ namespace {
 /// How far beyond a wall face a door's side is probed for its room: well inside any room a
 /// person can use, and far beyond the rounding of room outlines (1e-15 relative).
 constexpr double kSideProbe = 0.01;
-
-double polygon_area(const std::vector<Point2>& pts) {
-  double twice = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const Point2& a = pts[i];
-    const Point2& b = pts[(i + 1) % pts.size()];
-    twice += a.x * b.y - a.y * b.x;
-  }
-  return std::fabs(twice) / 2;
-}
 
 }  // namespace
 
@@ -118,9 +109,10 @@ Box2 room_box(const Room& room) {
 RoomLocator::RoomLocator(const std::vector<Room>& rooms) : rooms_(rooms) {
   std::vector<Box2> boxes;
   for (std::size_t r = 0; r < rooms.size(); ++r) {
-    areas_.push_back(polygon_area(rooms[r].outline));
-    if (rooms[r].outline.size() < 3) continue;
     Box2 b = room_box(rooms[r]);
+    // Rooms that hold a point are nested, and a room inside another has a smaller box.
+    areas_.push_back((b.max_x - b.min_x) * (b.max_y - b.min_y));
+    if (rooms[r].outline.size() < 3) continue;
     b.index = r;
     boxes.push_back(b);
   }
@@ -129,7 +121,7 @@ RoomLocator::RoomLocator(const std::vector<Room>& rooms) : rooms_(rooms) {
 
 std::optional<std::size_t> RoomLocator::locate(Point2 p) const {
   std::optional<std::size_t> best;
-  for (const std::size_t r : grid_.find({p.x, p.y, p.x, p.y, 0}))  // innermost: the smallest outline
+  for (const std::size_t r : grid_.find({p.x, p.y, p.x, p.y, 0}))  // innermost: the smallest box
     if ((!best || areas_[r] < areas_[*best]) && is_inside_outline(rooms_[r].outline, p)) best = r;
   return best;
 }

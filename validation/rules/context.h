@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the rules share: the usable walls and openings, the storeys with their rooms (found by
 // find_rooms), which room lies on each side of each door, and which rooms are accessible.
 // Plain header (no CGAL).
@@ -47,7 +48,7 @@ class RoomLocator {
 
  private:
   const std::vector<Room>& rooms_;
-  std::vector<double> areas_;
+  std::vector<double> areas_;  ///< by room: the area of its box (the innermost is the smallest)
   BoxGrid grid_;
 };
 

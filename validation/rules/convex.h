@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Convex polygons in any of the rule number types (written_number.h): clipping, closest
 // points, squared distances and the overlap tests the rules decide with. Every function is
 // a template over NT so that decide_written evaluates it first in intervals, then exactly;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fixes for the door rules: another hinge side or swing, a place along the wall, or a width,
 // each tried (door_tests.h, and validation of the neighbourhood) before it is proposed.
 #pragma once

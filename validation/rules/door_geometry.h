@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The shapes the door and space rules test, in any rule number type: a wall's frame, a door
 // leaf's swept quarter disc, the clear rectangle in front of a door, and wall footprints cut
 // at their doors (what a person walks between).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // door_swing_blocked, door_clearance and door_too_narrow.
 //
 // A leaf is blocked when its swept quarter disc shares interior area with a wall (other than

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Door leaves and clear rectangles against walls and each other, decided exactly on the
 // written numbers (written_number.h).
 #include "validation/rules/door_tests.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The door rules' exact tests, on a scene and an opening that may be a changed copy of one
 // of its doors (fixes are tried that way). Plain header; door_tests.cpp holds the geometry.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // escape_too_far: the longest walk from a point of a room to an exterior door, on the entrance
 // storey (as room_unreachable). The walk is bounded from above and below (escape_walks.h); a
 // room is reported when the upper bound is over the limit, conservatively: the message says

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Walking distances to the exterior doors, for escape_too_far. They are geodesic lengths in
 // the free space, which roomcad computes approximately, with both bounds:
 //  - upper: real walks, made of straight lines (inside one room, or through one door) between

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Trying fixes before proposing them: a fix is only given as edits when, applied to the plan,
 // it removes the finding (checked by the rule's own exact test) and introduces no error that
 // validation would report. Validation of the whole plan per candidate would cost O(n) each,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Free circles in rooms (see free_disc.h): candidates in doubles, verdicts exact.
 #include "validation/rules/free_disc.h"
 

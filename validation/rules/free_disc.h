@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Is there a free circle of radius rho in a room? The question no_turning_circle asks, and its
 // fix asks again on the edited neighbourhood.
 //

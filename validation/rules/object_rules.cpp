@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // window_sill_low, window_sill_high and duplicate_object.
 //
 // Sills are compared with the thresholds in the written numbers. Two objects are duplicates

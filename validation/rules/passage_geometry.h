@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The geometry of passage_too_narrow (passages.cpp): the wall pieces of a storey, the
 // barriers between pieces closer than the passage width, positions along a room's outline,
 // and the fixes that widen a barrier. Plain header.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // passage_too_narrow: the narrowest clear width between walls on the way between a room's
 // doors.
 //

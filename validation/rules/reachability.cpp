@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // room_unreachable: the graph of rooms and doors (a door joins the rooms on its two sides,
 // or a room and the outside) searched from the outside; regions under 0.5 m² are gaps, not
 // rooms, and are not reported. Rooms are find_rooms' rooms of the

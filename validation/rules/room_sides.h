@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Which stretch of which wall bounds a room, and where a new door could go in it: what the
 // room rules' fixes need beyond find_rooms' outline. Plain header.
 #pragma once

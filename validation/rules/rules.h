@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The rules of the rule sets, one file each, run by check_rules (run_rules.cpp) on what
 // validate() found. Each appends its findings to the report in a fixed order (by object
 // index), so the report does not depend on threads. Plain header.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // check_rules: the rule sets' rules on what validate() found, in a fixed order.
 #include <future>
 

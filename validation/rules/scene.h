@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A plan prepared for the rules' geometric tests: its joins, which walls and openings can be
 // tested, the walls' boxes and an index of them. Built for the plan being validated, and for
 // small neighbourhoods of it when a fix is tried (fix_search.h). Plain header.

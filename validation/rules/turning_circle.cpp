@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // no_turning_circle: an accessible room with a door must hold a free circle of the turning
 // diameter (free_disc.h decides it). The fix moves one of the room's walls outward, with the
 // ends of the walls that meet it, by what the room lacks, or two walls across each other when

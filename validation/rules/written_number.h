@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Numbers as written in the plan, for the exact verdicts of the rule sets.
 //
 // A plan's numbers are read to the nearest double. The base checks decide on those doubles;

@@ -12,10 +12,12 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "cli/rule_loading.h"
 #include "io/floor_plan_dxf.h"
 #include "io/plan_drawing.h"
 #include "io/svg_writer.h"
 #include "render/floor_plan.h"
+#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -25,7 +27,23 @@ struct DrawOptions {
   DrawRequest request;
   std::filesystem::path output;
   bool force = false;
+  bool findings = false;
+  std::string rules = "all";
 };
+
+/// @return the places of what `validate --rules` finds (errors, warnings, rule findings),
+///         each with its code; items without a place are left out.
+Result<std::vector<PlanMark>> find_marks(const Plan& plan, const std::string& rules) {
+  const Result<RuleSet> set = load_rule_set(rules);
+  if (!set) return set.error();
+  if (const Status rooms = check_accessible_rooms(plan, set.value()); !rooms) return rooms.error();
+  ValidateOptions options;
+  options.rules = set.value();
+  std::vector<PlanMark> marks;
+  for (const Diagnostic& d : validate(plan, options).items)
+    if (d.where) marks.push_back({std::string(to_string(d.code)), d.where->min, d.where->max});
+  return marks;
+}
 
 int run_draw(const DrawOptions& o) {
   DrawRequest request = o.request;
@@ -37,8 +55,17 @@ int run_draw(const DrawOptions& o) {
     return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are written "
                                                                   "as .svg (and the plan view as .dxf too)",
                                                                   o.output.string())});
+  if (o.findings && request.view != "plan")
+    return report_failure("draw", {Code::usage_error, fmt::format("--findings: only the plan view "
+                                                                  "marks findings, not --view {}",
+                                                                  request.view)});
   const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
   if (!loaded.plan) return loaded.exit_status;
+  if (o.findings) {
+    Result<std::vector<PlanMark>> marks = find_marks(*loaded.plan, o.rules);
+    if (!marks) return report_failure("draw", marks.error());
+    request.marks = std::move(marks).value();
+  }
   if (dxf) {
     const FloorPlanDrawing drawing = draw_floor_plan(*loaded.plan, floor_plan_options(request));
     if (const Status written = write_floor_plan_dxf(drawing, o.output); !written)
@@ -97,6 +124,10 @@ void add_draw_command(CLI::App& root, Commands& commands) {
       ->capture_default_str();
   app->add_option("-o,--output", o->output, "OUT.svg, or OUT.dxf for the plan view (written atomically)")->required();
   app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
+  app->add_flag("--findings", o->findings,
+                "plan view: mark what validate --rules finds in red, with its code");
+  app->add_option("--rules", o->rules,
+                  "the rule set of --findings: default, accessibility, all or a rules file");
   commands.push_back({app, [o] { return run_draw(*o); }});
 }
 

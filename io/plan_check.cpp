@@ -8,11 +8,12 @@
 
 namespace roomcad {
 
-Report check_plan(const Plan& plan, const Report* reading) {
+Report check_plan(const Plan& plan, const Report* reading, const RuleSet& rules) {
   Report report;
   if (reading != nullptr) report = *reading;
   ValidateOptions options;
   options.unknown_field_warnings = reading == nullptr;  // else the reader has reported them
+  options.rules = rules;
   report.append(validate(plan, options));
   // Errors first (the JSON lists them apart anyway), each group in the order found.
   std::stable_partition(report.items.begin(), report.items.end(),

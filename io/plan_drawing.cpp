@@ -21,7 +21,8 @@ namespace {
 using ViewDrawer = std::function<Result<SvgDocument>(const Plan&, const DrawRequest&, double)>;
 
 Result<SvgDocument> draw_plan_view(const Plan& plan, const DrawRequest& o, double scale) {
-  const FloorPlanOptions options{.scale = scale, .cut_height = o.cut_height};
+  FloorPlanOptions options{.scale = scale, .cut_height = o.cut_height};
+  options.marks = o.marks;
   return make_floor_plan_svg(draw_floor_plan(plan, options), fmt::format("{}: floor plan", o.title));
 }
 

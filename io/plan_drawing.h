@@ -26,6 +26,7 @@ struct DrawRequest {
   std::string hidden = "dashed";  ///< hidden edges of views: dashed or off
   std::string parts = "walls,floor,fixtures";
   std::string title;  ///< the drawing's title starts with it (the plan file's name)
+  std::vector<PlanMark> marks{};  ///< findings the plan view marks in red (draw --findings)
 };
 
 /// @return the names of the views the table holds (camera:ID aside), sorted.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <future>
+#include <optional>
 #include <vector>
 
 #include "modeling/joins.h"
@@ -31,25 +32,32 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   const bool all_walls_usable =
       std::all_of(usable.walls.begin(), usable.walls.end(), [](bool ok) { return ok; });
   const Joins joins = find_joins(plan);
+  const bool rules = options.rules.any_enabled();
   // Rooms take about as long as all the other checks: find them on the second core while
   // those run (they only read the plan). Their warnings are added below, in a fixed place,
   // so the report does not depend on timing.
   std::future<std::vector<Room>> rooms;
-  if (options.room_warnings)
+  if (options.room_warnings || (rules && all_walls_usable))
     rooms = std::async(std::launch::async, [&plan, &joins] { return find_rooms(plan, joins); });
-  if (all_walls_usable) {
-    detail::check_geometry(plan, joins, usable, report);
-  } else {
-    const Plan geometry = geometry_plan(plan, usable);
-    detail::check_geometry(geometry, find_joins(geometry), usable, report);
+  // The geometry checks and the rules see only usable walls: the others are made to join
+  // nothing (geometry_plan).
+  std::optional<Plan> geometry;
+  std::optional<Joins> geometry_joins;
+  if (!all_walls_usable) {
+    geometry = geometry_plan(plan, usable);
+    geometry_joins = find_joins(*geometry);
   }
+  const Plan& checked = geometry ? *geometry : plan;
+  const Joins& checked_joins = geometry_joins ? *geometry_joins : joins;
+  detail::check_geometry(checked, checked_joins, usable, report);
   const bool has_errors = !report.ok();
   detail::check_warnings(plan, options, report);
+  std::vector<Room> found;
+  const bool whole_rooms = rooms.valid() && all_walls_usable;
+  if (rooms.valid()) found = rooms.get();
   // Rooms are only meaningful on a plan whose walls are sound: with errors, say nothing more.
-  if (rooms.valid()) {
-    const std::vector<Room> found = rooms.get();
-    if (!has_errors) detail::warn_about_rooms(found, report);
-  }
+  if (options.room_warnings && !has_errors) detail::warn_about_rooms(found, report);
+  if (rules) detail::check_rules(checked, checked_joins, usable, options.rules, whole_rooms ? &found : nullptr, report);
   std::stable_partition(report.items.begin(), report.items.end(),
                         [](const Diagnostic& d) { return d.severity == Severity::error; });
   return report;

@@ -20,7 +20,8 @@ install(TARGETS ${roomcad_modules} roomcad_all EXPORT roomcadTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/roomcad COMPONENT development
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/roomcad)
 
-# Public headers only: never detail/. modeling/exact_geometry.h is left out too: it is the
+# Public headers only: never detail/, nor validation/rules/ (each rule's implementation, as
+# private as detail/). modeling/exact_geometry.h is left out too: it is the
 # in-tree header the judging modules share (it includes CGAL and modeling/detail/radical.h),
 # not an interface for programs outside.
 foreach(module IN LISTS roomcad_modules)
@@ -28,6 +29,7 @@ foreach(module IN LISTS roomcad_modules)
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/roomcad/${module} COMPONENT development
           FILES_MATCHING PATTERN "*.h"
           PATTERN "detail" EXCLUDE
+          PATTERN "rules" EXCLUDE
           PATTERN "exact_geometry.h" EXCLUDE)
 endforeach()
 

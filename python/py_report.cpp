@@ -58,7 +58,7 @@ void register_report(py::module_& m) {
                              "the findings that are errors")
       .def_property_readonly("warnings", [](const Report& r) { return of_severity(r, Severity::warning); },
                              "the findings that are warnings")
-      .def("to_json", &format_report_json,
+      .def("to_json", [](const Report& r) { return format_report_json(r); },
            "The JSON text `roomcad validate --format json` prints for the same plan.")
       .def("to_dict", [](const Report& r) {
         return py::module_::import("json").attr("loads")(format_report_json(r));

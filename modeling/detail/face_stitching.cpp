@@ -72,7 +72,7 @@ PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces
 // A uniform grid of the points, for finding those near an edge.
 class PointGrid {
  public:
-  explicit PointGrid(const std::vector<OpenMesh::Vec3d>& points) : points_(points) {
+  explicit PointGrid(const std::vector<OpenMesh::Vec3d>& points) {
     for (const auto& p : points)
       for (int k = 0; k < 3; ++k) {
         low_[k] = std::min(low_[k], p[k]);
@@ -108,7 +108,6 @@ class PointGrid {
   Key cell_of(const OpenMesh::Vec3d& p) const {
     return {std::uint64_t(index(p[0], 0)), std::uint64_t(index(p[1], 1)), std::uint64_t(index(p[2], 2))};
   }
-  const std::vector<OpenMesh::Vec3d>& points_;
   double low_[3] = {INFINITY, INFINITY, INFINITY}, high_[3] = {-INFINITY, -INFINITY, -INFINITY};
   double cell_ = 1.0;
   std::unordered_map<Key, std::vector<std::size_t>, KeyHash> cells_;

@@ -12,6 +12,14 @@
 #include "core/assert.h"
 #include "validation/rules/written_number.h"
 
+// Truths combine with | and & on purpose, never || and &&: for intervals they are
+// CGAL::Uncertain<bool>, decided only when both sides are, with no branch on an undecided
+// value; clang warns on the exact (bool) instantiation.
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wbitwise-instead-of-logical"
+#endif
+
 namespace roomcad::rules {
 
 template <class NT>
@@ -243,3 +251,7 @@ bool discs_meet_in(const Pt<NT>& h1, const NT& r1, const Pt<NT>& h2, const NT& r
 }
 
 }  // namespace roomcad::rules
+
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif

@@ -122,10 +122,12 @@ struct RoomPassages {
     std::map<std::size_t, std::size_t> inner;  // piece -> node
     // A piece of a wall that bounds the room joins the arc its barrier end touches; any other
     // piece (a free-standing wall in the room) is a node of its own.
+    const auto& door_params = params;  // a lambda may not capture a structured binding (clang 14)
     const auto node_of = [&](std::size_t piece, Point2 end) {
       const std::string& wall = scene.plan().walls[geometry.piece(piece).wall].id;
-      if (std::binary_search(room.walls.begin(), room.walls.end(), wall)) return arc_of(params, outline.param(end));
-      return inner.emplace(piece, params.size() + inner.size()).first->second;
+      if (std::binary_search(room.walls.begin(), room.walls.end(), wall))
+        return arc_of(door_params, outline.param(end));
+      return inner.emplace(piece, door_params.size() + inner.size()).first->second;
     };
     for (const std::size_t b : barriers) {
       const Barrier& bar = geometry.barrier(b);

@@ -23,7 +23,8 @@ BoxGrid::BoxGrid(std::vector<Box2> boxes) : boxes_(std::move(boxes)) {
 
 long long BoxGrid::cell_of(double v) const {
   // Clamped so that a huge query box cannot loop for ever; boxes beyond share the edge cells.
-  return static_cast<long long>(std::clamp(std::floor(v / cell_), -1e6, 1e6));
+  // fmax takes the bound for NaN (a box of NaN meets nothing), where a cast would be undefined.
+  return static_cast<long long>(std::fmin(std::fmax(std::floor(v / cell_), -1e6), 1e6));
 }
 
 std::vector<std::size_t> BoxGrid::find(const Box2& q) const {

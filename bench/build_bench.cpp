@@ -127,7 +127,7 @@ void register_all(const Limits& limits) {
     benchmark::RegisterBenchmark(fmt::format("fast/{}", n).c_str(), run_roomcad, n, BooleanPath::automatic)
         ->Unit(benchmark::kMillisecond);
     if (n <= limits.cgal_max_n) {
-      benchmark::RegisterBenchmark(fmt::format("cgal/{}", n).c_str(), run_roomcad, n, BooleanPath::cgal)
+      benchmark::RegisterBenchmark(fmt::format("cgal/{}", n).c_str(), run_roomcad, n, BooleanPath::nef)
           ->Unit(benchmark::kMillisecond)->Iterations(1);
       benchmark::RegisterBenchmark(fmt::format("nef/{}", n).c_str(), run_nef, n)
           ->Unit(benchmark::kMillisecond)->Iterations(1);

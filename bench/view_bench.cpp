@@ -1,12 +1,15 @@
 // Window frame times: the viewer (view/viewer.h) at 1280 x 720 on every bundled example, with
 // the overlay, as the window draws them while orbiting (each frame a new camera). A frame of
-// an edit adds the model rebuild: BM_ViewEditFrame moves a wall one cell and back.
+// an edit adds the model rebuild: BM_ViewEditFrame moves a wall one cell and back (the window
+// rebuilds the wall groups the edit touched, view/model_cache.h: counters groups and rebuilt;
+// the 4-bedroom home is one group, Sample four).
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 
+#include "view/model_cache.h"
 #include "view/viewer.h"
 
 namespace roomcad {
@@ -49,6 +52,19 @@ void BM_ViewEditFrame(benchmark::State& state, const std::string& name) {
   }
   state.counters["build_ms"] = viewer.last_build_ms();
   state.counters["frame_ms"] = viewer.last_frame_ms();
+  state.counters["groups"] = static_cast<double>(viewer.last_build_stats().groups);
+  state.counters["rebuilt"] = static_cast<double>(viewer.last_build_stats().rebuilt);
+}
+
+// What the cache adds to a rebuild: grouping the walls and joining the groups' meshes, all
+// reused (a plan that did not change).
+void BM_ModelCacheReuse(benchmark::State& state, const std::string& name) {
+  const Plan plan = open_viewer(name).session().plan();
+  ModelCache cache;
+  (void)cache.build(plan, {});
+  for (auto _ : state) benchmark::DoNotOptimize(cache.build(plan, {}).walls.n_faces());
+  state.counters["groups"] = static_cast<double>(cache.last_stats().groups);
+  state.counters["rebuilt"] = static_cast<double>(cache.last_stats().rebuilt);
 }
 
 BENCHMARK_CAPTURE(BM_ViewOrbitFrame, studio, std::string("studio"))->Unit(benchmark::kMillisecond);
@@ -57,6 +73,14 @@ BENCHMARK_CAPTURE(BM_ViewOrbitFrame, office, std::string("office"))->Unit(benchm
 BENCHMARK_CAPTURE(BM_ViewOrbitFrame, house, std::string("house"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ViewEditFrame, studio, std::string("studio"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ViewEditFrame, house, std::string("house"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ViewEditFrame, sample, std::string("sweethome3d/Sample"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ViewEditFrame, four_bedroom, std::string("sweethome3d/4-BedroomHouse"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModelCacheReuse, four_bedroom, std::string("sweethome3d/4-BedroomHouse"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModelCacheReuse, sample, std::string("sweethome3d/Sample"))
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace roomcad

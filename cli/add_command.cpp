@@ -12,14 +12,13 @@
 
 #include "cli/command.h"
 #include "cli/edit_session.h"
-#include "modeling/plan_edit.h"
+#include "modeling/plan_add.h"
 #include "modeling/plan_fields.h"
-#include "modeling/value_text.h"
 
 namespace roomcad::cli {
 namespace {
 
-const std::vector<std::string> kKinds{"level", "wall", "door", "window", "slab", "light", "camera"};
+const std::vector<std::string> kKinds(std::begin(kAddableKinds), std::end(kAddableKinds));
 
 struct AddArgs {
   std::string path;
@@ -30,44 +29,17 @@ struct AddArgs {
   std::vector<std::string> values;  ///< storage for the field options, one per field
 };
 
-/// @return the fields --options may set for `kind` (all but id and the kind itself).
-std::vector<std::string_view> settable_fields(std::string_view kind) {
-  std::vector<std::string_view> names = field_names(kind);
-  std::erase_if(names, [](std::string_view n) { return n == "id" || n == "type"; });
-  return names;
-}
-
 std::string option_name(std::string_view key) {
   std::string name = fmt::format("--{}", key);
   std::replace(name.begin(), name.end(), '_', '-');
   return name;
 }
 
-/// Calls visit(Object{}) with a default object of the kind ("door" and "window": an Opening).
-template <class Visit>
-decltype(auto) with_kind(std::string_view kind, Visit&& visit) {
-  if (kind == "level") return visit(Level{});
-  if (kind == "wall") return visit(Wall{});
-  if (kind == "door" || kind == "window") return visit(Opening{});
-  if (kind == "slab") return visit(Slab{});
-  if (kind == "light") return visit(Light{});
-  return visit(Camera{});
-}
-
-/// The fields a kind cannot do without (the others have the format's defaults), but its id.
-std::vector<std::string_view> required_fields(std::string_view kind) {
-  return with_kind(kind, [](const auto& object) {
-    std::vector<std::string_view> names;
-    for (const auto& f : fields_of<std::decay_t<decltype(object)>>())
-      if (f.presence == Presence::required && f.name != "id") names.push_back(f.name);
-    return names;
-  });
-}
-
-/// @return the given field options as (key, value), checked against the kind.
-std::vector<std::pair<std::string, std::string>> given_fields(const AddArgs& args) {
+/// @return the given field options as (key, value), checked against the kind: add_object
+/// checks them too, but these messages name the options.
+FieldValues given_fields(const AddArgs& args) {
   const std::vector<std::string_view> allowed = settable_fields(args.kind);
-  std::vector<std::pair<std::string, std::string>> given;
+  FieldValues given;
   for (std::size_t i = 0; i < args.fields.size(); ++i) {
     const auto& [key, option] = args.fields[i];
     if (option->count() == 0) continue;
@@ -83,37 +55,12 @@ std::vector<std::pair<std::string, std::string>> given_fields(const AddArgs& arg
   return given;
 }
 
-/// Builds the object in a scratch plan (so set_field type-checks every value), then takes it.
-template <class Object>
-Object build(std::vector<Object> Plan::*list, Object object, const std::string& id,
-             const std::vector<std::pair<std::string, std::string>>& given) {
-  Plan scratch;
-  object.id = id.empty() ? "new" : id;
-  (scratch.*list).push_back(std::move(object));
-  for (const auto& [key, value] : given) set_field(scratch, (scratch.*list)[0].id, key, value, "add");
-  Object built = std::move((scratch.*list)[0]);
-  built.id = id;  // empty: add_* generates one
-  return built;
-}
-
-EditSummary add_object(Plan& plan, const AddArgs& args,
-                       const std::vector<std::pair<std::string, std::string>>& given) {
-  if (args.kind == "level") return add_level(plan, build(&Plan::levels, Level{}, args.id, given));
-  if (args.kind == "wall") return add_wall(plan, build(&Plan::walls, Wall{}, args.id, given));
-  if (args.kind == "slab") return add_slab(plan, build(&Plan::slabs, Slab{}, args.id, given));
-  if (args.kind == "light") return add_light(plan, build(&Plan::lights, Light{}, args.id, given));
-  if (args.kind == "camera")
-    return add_camera(plan, build(&Plan::cameras, Camera{}, args.id, given));
-  const Opening base = default_opening(*parse_enum<OpeningType>(args.kind));
-  return add_opening(plan, build(&Plan::openings, base, args.id, given));
-}
-
 /// "level: floor to floor, metres; wall: metres (at from); ..." help, from the field tables.
 std::string field_help(std::string_view key) {
   std::vector<std::string> uses;
   for (const std::string& kind : kKinds) {
     if (kind == "window") continue;  // a door's fields
-    with_kind(kind, [&](const auto& object) {
+    with_default_object(kind, [&](const auto& object) {
       if (const auto* f = find_field<std::decay_t<decltype(object)>>(key))
         uses.push_back(fmt::format("{}{}: {}", kind, kind == "door" ? "/window" : "", f->hint));
     });
@@ -156,7 +103,7 @@ void add_add_command(CLI::App& root, Commands& commands) {
   commands.push_back({app, [args] {
                         const auto given = given_fields(*args);
                         return run_edit("add", args->path, args->flags,
-                                        [&](Plan& plan) { return add_object(plan, *args, given); });
+                                        [&](Plan& plan) { return add_object(plan, args->kind, args->id, given); });
                       }});
 }
 

@@ -1,7 +1,7 @@
-// `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|cgal] [--check] [--force]
-// [--threads N] [--stats] [--format text|json]`: the plan's 3D model, exported and checked.
+// `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|general|nef] [--check] [--force]
+// [--threads N] [--stats] [--format text|json] [--level ID]`: the plan's 3D model, exported
+// (OBJ, OFF, PLY, STL, glTF, IFC) and checked.
 #include <cctype>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -15,8 +15,10 @@
 #include "io/gltf_export.h"
 #include "io/ifc_export.h"
 #include "io/mesh_export.h"
+#include "io/wall_check_format.h"
 #include "modeling/build_model.h"
-#include "modeling/mesh_check.h"
+#include "modeling/plan_levels.h"
+#include "modeling/wall_check.h"
 
 namespace roomcad::cli {
 namespace {
@@ -27,69 +29,25 @@ struct BuildCommandOptions {
   std::string parts = "walls,floor,fixtures";
   std::string boolean = "auto";
   std::string format = "text";
+  std::string level;  ///< empty: every level
   int threads = 0;
   bool check = false;
   bool force = false;
   bool stats = false;
 };
 
-struct CheckVerdict {
-  SolidCheck solid;
-  double analytic = 0.0;
-  double relative = 0.0;  ///< |volume - analytic| / analytic
-  bool ok = false;
-};
-
-CheckVerdict check_walls(const Model& model, const Plan& plan) {
-  CheckVerdict v;
-  v.solid = check_solid(model.walls);
-  v.analytic = analytic_wall_volume(plan);
-  const double diff = std::abs(v.solid.volume - v.analytic);
-  v.relative = v.analytic != 0.0 ? diff / std::abs(v.analytic) : diff;
-  v.ok = v.solid.is_valid() && v.relative <= 1e-9;
-  return v;
-}
-
-std::string yes_no(bool b) { return b ? "yes" : "NO"; }
-
-std::string check_text(const CheckVerdict& v) {
-  const SolidCheck& c = v.solid;
-  std::string out = fmt::format("wall solid: {} vertices, {} faces ({} triangles), {} component{}\n",
-                                c.vertices, c.faces, c.triangles, c.components,
-                                c.components == 1 ? "" : "s");
-  out += fmt::format("  closed              {} ({} border edges)\n", yes_no(c.is_closed()), c.border_edges);
-  out += fmt::format("  2-manifold          {} ({} non-manifold vertices, {} rejected triangles)\n",
-                     yes_no(c.is_manifold()), c.non_manifold_vertices, c.rejected_triangles);
-  out += fmt::format("  self-intersections  {}\n", c.self_intersections);
-  out += fmt::format("  degenerate faces    {}\n", c.degenerate_triangles);
-  out += fmt::format("  outward oriented    {} ({} inward components)\n",
-                     yes_no(c.inward_components == 0), c.inward_components);
-  out += fmt::format("  genus               {}\n", c.genus);
-  out += fmt::format("  volume              {} m^3\n", c.volume);
-  out += fmt::format("  analytic volume     {} m^3 (relative difference {:.3g}, limit 1e-09)\n",
-                     v.analytic, v.relative);
-  out += fmt::format("check: {}\n", v.ok ? "ok" : "FAILED");
-  return out;
-}
-
-std::string check_json(const CheckVerdict& v) {
-  const SolidCheck& c = v.solid;
-  return fmt::format(
-      "{{\"ok\": {}, \"vertices\": {}, \"faces\": {}, \"triangles\": {}, \"components\": {}, "
-      "\"closed\": {}, \"border_edges\": {}, \"manifold\": {}, \"non_manifold_vertices\": {}, "
-      "\"rejected_triangles\": {}, \"self_intersections\": {}, \"degenerate_faces\": {}, "
-      "\"outward\": {}, \"genus\": {}, \"volume\": {}, \"analytic_volume\": {}, "
-      "\"relative_difference\": {}}}\n",
-      v.ok, c.vertices, c.faces, c.triangles, c.components, c.is_closed(), c.border_edges,
-      c.is_manifold(), c.non_manifold_vertices, c.rejected_triangles, c.self_intersections,
-      c.degenerate_triangles, c.inward_components == 0, c.genus, c.volume, v.analytic, v.relative);
+BooleanPath parse_boolean_path(const std::string& name) {
+  if (name == "general") return BooleanPath::general;
+  if (name == "nef" || name == "cgal") return BooleanPath::nef;
+  return BooleanPath::automatic;
 }
 
 void print_stats(const Model& model, const BuildStats& stats) {
   std::fprintf(stderr,
-               "build: %zu walls on the fast path, %zu on the CGAL path, %.3f ms\n"
+               "build: %zu walls on the fast path, %zu on the general path, %zu on the Nef path, %.3f ms\n"
                "  walls %zu faces, floor %zu faces, fixtures %zu faces\n",
-               stats.fast_path_walls, stats.cgal_path_walls, stats.build_ms, model.walls.n_faces(),
+               stats.fast_path_walls, stats.general_path_walls, stats.nef_path_walls, stats.build_ms,
+               model.walls.n_faces(),
                model.floor.n_faces(), model.fixtures.n_faces());
 }
 
@@ -130,21 +88,24 @@ int run_build(const BuildCommandOptions& options) {
   // The validation gate: errors stop the build unless --force.
   const LoadedPlan loaded = load_valid_plan("build", options.plan, options.force);
   if (!loaded.plan) return loaded.exit_status;
+  const Result<Plan> level = select_level(*loaded.plan, options.level);
+  if (!level) return report_failure("build", level.error());
+  const Plan& plan = level.value();
   if (kind.value() == OutputKind::ifc) {
-    if (const int status = export_ifc(*loaded.plan, options.out); status != kExitOk || !options.check)
+    if (const int status = export_ifc(plan, options.out); status != kExitOk || !options.check)
       return status;
   }
-  build.boolean = options.boolean == "cgal" ? BooleanPath::cgal : BooleanPath::automatic;
+  build.boolean = parse_boolean_path(options.boolean);
   build.threads = options.threads;
   const bool export_walls = build.parts.walls;
   if (options.check) build.parts.walls = true;  // checked even when not written
   BuildStats stats;
-  Model model = build_model(*loaded.plan, build, &stats);  // PreconditionError: main reports it
+  Model model = build_model(plan, build, &stats);  // PreconditionError: main reports it
   if (options.stats) print_stats(model, stats);
   const bool meshed = kind.value() == OutputKind::gltf || kind.value() == OutputKind::mesh;
   if (meshed && !export_walls) model.walls = SolidMesh{}, add_face_properties(model.walls);
   if (kind.value() == OutputKind::gltf) {
-    if (const Status written = write_gltf_file(options.out, model, *loaded.plan); !written)
+    if (const Status written = write_gltf_file(options.out, model, plan); !written)
       return report_failure("build", written.error());
   } else if (kind.value() == OutputKind::mesh) {
     const MeshParts mesh{{&model.walls, &model.floor, &model.fixtures}, &model.objects};
@@ -152,8 +113,10 @@ int run_build(const BuildCommandOptions& options) {
       return report_failure("build", written.error());
   }
   if (!options.check) return kExitOk;
-  const CheckVerdict verdict = check_walls(model, *loaded.plan);
-  std::fputs((options.format == "json" ? check_json(verdict) : check_text(verdict)).c_str(), stdout);
+  const WallCheck verdict = check_walls(model, plan);
+  std::fputs((options.format == "json" ? format_wall_check_json(verdict)
+                                       : format_wall_check_text(verdict)).c_str(),
+             stdout);
   return verdict.ok ? kExitOk : kExitPlanErrors;
 }
 
@@ -178,9 +141,11 @@ void add_build_command(CLI::App& root, Commands& commands) {
   app->add_option("--parts", options->parts, "what to build and write: any of walls,floor,fixtures")
       ->capture_default_str();
   app->add_option("--boolean", options->boolean,
-                  "auto: the exact fast path where no general boolean is needed, else CGAL;\n"
-                  "cgal: CGAL's exact Nef polyhedra for every wall (to compare)")
-      ->check(CLI::IsMember({"auto", "cgal"}))
+                  "auto: the exact fast path where no boolean is needed, else the exact general\n"
+                  "path (plane by plane); general: the general path for every wall; nef: CGAL's\n"
+                  "exact Nef polyhedra for every wall, the reference to compare with (cgal: the\n"
+                  "same, its old name)")
+      ->check(CLI::IsMember({"auto", "general", "nef", "cgal"}))
       ->capture_default_str();
   app->add_flag("--check", options->check,
                 "check the wall solid as written (closed, 2-manifold, no self-intersection or\n"
@@ -189,6 +154,9 @@ void add_build_command(CLI::App& root, Commands& commands) {
                 "doubles that .obj, .off and .ply store exactly (.stl rounds them to float32)");
   add_format_option(*app, options->format, "format of the --check report");
   app->add_flag("--force", options->force, "build even if the plan has validation errors");
+  app->add_option("--level", options->level,
+                  "build only the walls of this level (and their openings), where they stand")
+      ->type_name("ID");
   app->add_option("--threads", options->threads, "worker threads, 0 for all cores (same output)")
       ->check(CLI::Range(0, 256))  // as render/renderer.h kMaxThreads: no thread storm
       ->capture_default_str();

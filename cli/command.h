@@ -6,6 +6,7 @@
 // PreconditionError (a bad flag found deep in a helper), which main reports the same way.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -39,6 +40,14 @@ struct Command {
   std::function<int()> run;
 };
 using Commands = std::vector<Command>;
+
+/// Adds `--wait SECONDS` (default kDefaultLockWait, io/plan_lock.h): how long the command
+/// waits for another editor's lock of the plan before it gives up (exit 2, lock_timeout);
+/// `what` replaces the help's description.
+CLI::Option* add_wait_option(CLI::App& app, double& seconds, const std::string& what = "");
+
+/// @return the --wait value as a duration (rounded to the millisecond).
+[[nodiscard]] std::chrono::milliseconds wait_duration(double seconds);
 
 /// Adds `--format text|json` (default text) to a command; `what` says what it formats.
 inline CLI::Option* add_format_option(CLI::App& app, std::string& format,

@@ -2,14 +2,9 @@
 // camera views (render/line_drawing.h) with hidden lines removed. Views are looked up in one
 // table; `camera:ID` names a plan camera.
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
-#include <map>
 #include <memory>
-#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -17,125 +12,70 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "cli/rule_loading.h"
 #include "io/floor_plan_dxf.h"
-#include "io/floor_plan_svg.h"
+#include "io/plan_drawing.h"
+#include "io/svg_writer.h"
 #include "render/floor_plan.h"
-#include "render/line_drawing.h"
+#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
 
 struct DrawOptions {
   std::filesystem::path plan_file;
-  std::string view = "plan";
-  std::string scale = "1:50";
-  double cut_height = 1.0;
-  std::string hidden = "dashed";
-  std::string parts = "walls,floor,fixtures";
-  std::string level;  ///< draw only this level; empty: all
+  DrawRequest request;
   std::filesystem::path output;
   bool force = false;
+  bool findings = false;
+  std::string rules = "all";
 };
 
-constexpr std::string_view kCameraPrefix = "camera:";
-
-/// A view: draws a validated plan with checked options (scale = the N of 1:N).
-/// @return the document, or why this view cannot draw this plan.
-using ViewDrawer = std::function<Result<SvgDocument>(const Plan&, const DrawOptions&, double)>;
-
-Result<SvgDocument> draw_plan_view(const Plan& plan, const DrawOptions& o, double scale) {
-  const FloorPlanOptions options{.scale = scale, .cut_height = o.cut_height};
-  const std::string title =
-      o.level.empty() ? fmt::format("{}: floor plan", o.plan_file.filename().string())
-                      : fmt::format("{}: floor plan of level {}", o.plan_file.filename().string(), o.level);
-  return make_floor_plan_svg(draw_floor_plan(floor_plan_input(plan, !o.level.empty()), options),
-                             title);
-}
-
-/// Draws the model of `plan` as seen by `view` (hidden lines removed).
-Result<SvgDocument> draw_model_view(const Plan& plan, const DrawOptions& o, double scale,
-                                    const LineView& view) {
-  LineDrawingOptions options{.scale = scale,
-                             .hidden = o.hidden == "off" ? HiddenLines::off : HiddenLines::dashed};
-  const Result<Parts> parts = parse_parts(o.parts);
-  if (!parts) return parts.error();
-  options.parts = parts.value();
-  // A model that cannot be built throws PreconditionError (not_buildable): main reports it.
-  const Model model = build_model(plan, BuildOptions{.parts = options.parts});
-  const std::string title = o.plan_file.filename().string();
-  const LineDrawing drawing = draw_line_view(model, view, options, title);
-  return make_line_drawing_svg(drawing, fmt::format("{}: {}", title, view.name));
-}
-
-ViewDrawer preset_drawer(const std::string& name) {
-  return [name](const Plan& plan, const DrawOptions& o, double scale) {
-    return draw_model_view(plan, o, scale, *preset_line_view(name));
-  };
-}
-
-const std::map<std::string, ViewDrawer>& views() {
-  static const std::map<std::string, ViewDrawer> table{
-      {"plan", draw_plan_view},         {"north", preset_drawer("north")},
-      {"south", preset_drawer("south")}, {"east", preset_drawer("east")},
-      {"west", preset_drawer("west")},   {"iso", preset_drawer("iso")}};
-  return table;
-}
-
-/// The drawer of a view name: a table entry, or camera:ID of the plan's cameras.
-Result<ViewDrawer> find_view(const std::string& name, const Plan& plan) {
-  if (const auto it = views().find(name); it != views().end()) return it->second;
-  const std::string id = name.substr(kCameraPrefix.size());
-  std::string known;
-  for (const Camera& c : plan.cameras) {
-    if (c.id == id) {
-      return ViewDrawer([c](const Plan& p, const DrawOptions& o, double scale) {
-        return draw_model_view(p, o, scale, camera_line_view(c));
-      });
-    }
-    known += (known.empty() ? "" : ", ") + c.id;
-  }
-  return Result<ViewDrawer>::failure(Code::usage_error,
-      fmt::format("--view \"{}\": the plan has no camera \"{}\" (it has: {})", name, id,
-                  known.empty() ? "none" : known));
-}
-
-/// Parses "1:N" or "N" into N. @return NaN if the text is neither.
-double parse_scale(const std::string& text) {
-  const std::string number = text.rfind("1:", 0) == 0 ? text.substr(2) : text;
-  double value = NAN;
-  const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
-  return ec == std::errc{} && end == number.data() + number.size() ? value : NAN;
+/// @return the places of what `validate --rules` finds (errors, warnings, rule findings),
+///         each with its code; items without a place are left out.
+Result<std::vector<PlanMark>> find_marks(const Plan& plan, const std::string& rules) {
+  const Result<RuleSet> set = load_rule_set(rules);
+  if (!set) return set.error();
+  if (const Status rooms = check_accessible_rooms(plan, set.value()); !rooms) return rooms.error();
+  ValidateOptions options;
+  options.rules = set.value();
+  std::vector<PlanMark> marks;
+  for (const Diagnostic& d : validate(plan, options).items)
+    if (d.where) marks.push_back({std::string(to_string(d.code)), d.where->min, d.where->max});
+  return marks;
 }
 
 int run_draw(const DrawOptions& o) {
-  const double scale = parse_scale(o.scale);
-  if (std::isnan(scale))
-    return report_failure("draw", {Code::usage_error,
-                                   fmt::format("--scale \"{}\": expected 1:N, e.g. 1:50", o.scale)});
-  if (const Status options = check_floor_plan_options({.scale = scale, .cut_height = o.cut_height});
-      !options)
-    return report_failure("draw", options.error());
+  DrawRequest request = o.request;
+  request.title = o.plan_file.filename().string();
+  if (const Status checked = check_draw_request(request); !checked)
+    return report_failure("draw", checked.error());
   const bool dxf = o.output.extension() == ".dxf";
-  if (o.output.extension() != ".svg" && !(dxf && o.view == "plan"))
+  if (o.output.extension() != ".svg" && !(dxf && request.view == "plan"))
     return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are written "
                                                                   "as .svg (and the plan view as .dxf too)",
                                                                   o.output.string())});
+  if (o.findings && request.view != "plan")
+    return report_failure("draw", {Code::usage_error, fmt::format("--findings: only the plan view "
+                                                                  "marks findings, not --view {}",
+                                                                  request.view)});
   const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
   if (!loaded.plan) return loaded.exit_status;
-  const Result<Plan> shown = select_level(*loaded.plan, o.level);
-  if (!shown) return report_failure("draw", shown.error());
+  if (o.findings) {
+    Result<std::vector<PlanMark>> marks = find_marks(*loaded.plan, o.rules);
+    if (!marks) return report_failure("draw", marks.error());
+    request.marks = std::move(marks).value();
+  }
   if (dxf) {
-    const FloorPlanOptions options{.scale = scale, .cut_height = o.cut_height};
-    const FloorPlanDrawing drawing =
-        draw_floor_plan(floor_plan_input(shown.value(), !o.level.empty()), options);
-    if (const Status written = write_floor_plan_dxf(drawing, o.output); !written)
+    const Result<FloorPlanDrawing> drawing = draw_requested_floor_plan(*loaded.plan, request);
+    if (!drawing) return report_failure("draw", drawing.error());
+    if (const Status written = write_floor_plan_dxf(drawing.value(), o.output); !written)
       return report_failure("draw", written.error());
     std::printf("wrote %s\n", o.output.string().c_str());
     return kExitOk;
   }
-  const Result<ViewDrawer> drawer = find_view(o.view, *loaded.plan);
-  if (!drawer) return report_failure("draw", drawer.error());
-  const Result<SvgDocument> document = drawer.value()(shown.value(), o, scale);
+  // A model that cannot be built throws PreconditionError (not_buildable): main reports it.
+  const Result<SvgDocument> document = draw_plan_svg(*loaded.plan, request);
   if (!document) return report_failure("draw", document.error());
   if (const Status written = write_svg(document.value(), o.output); !written)
     return report_failure("draw", written.error());
@@ -165,30 +105,34 @@ void add_draw_command(CLI::App& root, Commands& commands) {
       "Example: roomcad draw house.json --view plan --scale 1:50 -o house-plan.svg");
   app->add_option("PLAN", o->plan_file, "the plan file (JSON)")->required();
   std::vector<std::string> names;
-  for (const auto& [name, drawer] : views()) names.push_back(name);
+  for (const std::string& name : drawing_view_names()) names.push_back(name);
   const CLI::Validator known_view(
       [names](std::string& v) -> std::string {
-        if (v.rfind(kCameraPrefix, 0) == 0 && v.size() > kCameraPrefix.size()) return {};
+        if (v.rfind(kCameraViewPrefix, 0) == 0 && v.size() > kCameraViewPrefix.size()) return {};
         if (std::find(names.begin(), names.end(), v) != names.end()) return {};
         return fmt::format("\"{}\" is not {} or camera:ID", v, fmt::join(names, ", "));
       },
       "VIEW");
-  app->add_option("--view", o->view, "which drawing: plan, north, south, east, west, iso, camera:ID")
+  app->add_option("--view", o->request.view, "which drawing: plan, north, south, east, west, iso, camera:ID")
       ->check(known_view)
       ->capture_default_str();
-  app->add_option("--hidden", o->hidden, "hidden edges of views: dashed or off")
+  app->add_option("--hidden", o->request.hidden, "hidden edges of views: dashed or off")
       ->check(CLI::IsMember({"dashed", "off"}))
       ->capture_default_str();
-  app->add_option("--parts", o->parts, "parts a view draws: walls,floor,fixtures (floor as outline)")
+  app->add_option("--parts", o->request.parts, "parts a view draws: walls,floor,fixtures (floor as outline)")
       ->capture_default_str();
-  app->add_option("--scale", o->scale, "paper scale 1:N, between 1:1 and 1:10000")
+  app->add_option("--scale", o->request.scale, "paper scale 1:N, between 1:1 and 1:10000")
       ->capture_default_str();
-  app->add_option("--cut-height", o->cut_height,
+  app->add_option("--cut-height", o->request.cut_height,
                   "height of the plan's section, metres (above the level's floor with --level)")
       ->capture_default_str();
-  app->add_option("--level", o->level, "draw only the level with this id (plan format version 2)");
+  app->add_option("--level", o->request.level, "draw only the level with this id (plan format version 2)");
   app->add_option("-o,--output", o->output, "OUT.svg, or OUT.dxf for the plan view (written atomically)")->required();
   app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
+  app->add_flag("--findings", o->findings,
+                "plan view: mark what validate --rules finds in red, with its code");
+  app->add_option("--rules", o->rules,
+                  "the rule set of --findings: default, accessibility, all or a rules file");
   commands.push_back({app, [o] { return run_draw(*o); }});
 }
 

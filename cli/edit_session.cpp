@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -54,10 +55,14 @@ void add_edit_flags(CLI::App& command, EditFlags& flags) {
                    "write the edit even if it introduces plan errors (they are printed)");
   command.add_flag("--dry-run", flags.dry_run,
                    "print what would change (objects, then a line diff of the file), write nothing");
+  add_wait_option(command, flags.wait_seconds);
 }
 
 int run_edit(std::string_view command, const std::string& path, const EditFlags& flags,
              const Edit& edit) {
+  std::optional<PlanLock> lock;  // held until the new file is in place
+  if (!flags.dry_run && !(lock = lock_plan(command, path, flags.wait_seconds)))
+    return kExitCannotRun;
   const LoadedPlan read = load_plan(command, path);  // prints what reading found
   if (!read.plan) return read.exit_status;
   Plan edited = *read.plan;

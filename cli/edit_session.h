@@ -7,6 +7,10 @@
 // already has errors can still be edited (to repair it, or elsewhere), and the same overlap,
 // reworded because a wall moved, is not new. A refused edit leaves the file byte for byte as
 // it was; so does an edit that changes nothing.
+//
+// The plan's lock (io/plan_lock.h) is held from reading the plan to renaming the new file over
+// it, so concurrent edits of one plan (other commands, `roomcad view` saving) happen one after
+// the other and none is lost; an edit waits up to --wait seconds for the lock.
 #pragma once
 
 #include <functional>
@@ -24,10 +28,11 @@ namespace roomcad::cli {
 /// The flags every edit command takes.
 struct EditFlags {
   bool force = false;    ///< write even when the edit introduces errors
-  bool dry_run = false;  ///< print what would change, write nothing
+  bool dry_run = false;  ///< print what would change, write nothing (takes no lock)
+  double wait_seconds = 0.0;  ///< how long to wait for another editor's lock (--wait)
 };
 
-/// Registers --force and --dry-run on an edit subcommand.
+/// Registers --force, --dry-run and --wait on an edit subcommand.
 void add_edit_flags(CLI::App& command, EditFlags& flags);
 
 /// An edit of an in-memory plan: returns what it changed, or throws PreconditionError: with
@@ -39,7 +44,8 @@ using Edit = std::function<EditSummary(Plan&)>;
 /// Runs one edit on the plan file `path` and reports on stdout/stderr.
 /// @param[in] command  the subcommand's name, for messages ("move")
 /// @return 0 done (or dry run shown, or nothing to change), 1 refused because the result has
-///         new errors or the plan could not be read as a plan, 2 usage or I/O error.
+///         new errors or the plan could not be read as a plan, 2 usage or I/O error, or the
+///         lock held by another editor for longer than --wait.
 [[nodiscard]] int run_edit(std::string_view command, const std::string& path,
                            const EditFlags& flags, const Edit& edit);
 

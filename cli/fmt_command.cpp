@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <vector>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cli/command.h"
@@ -16,9 +17,13 @@ struct FmtOptions {
   std::vector<std::string> plans;
   std::string out;
   bool check = false;
+  double wait_seconds = 0.0;
 };
 
 int format_one(const FmtOptions& options, const std::string& plan) {
+  std::optional<PlanLock> lock;  // rewriting in place: held from reading to the rename
+  const bool in_place = !options.check && options.out.empty();
+  if (in_place && !(lock = lock_plan("fmt", plan, options.wait_seconds))) return kExitCannotRun;
   LoadedPlan loaded = load_plan("fmt", plan);
   if (!loaded.plan) return loaded.exit_status;
   const std::string canonical = write_plan_text(*loaded.plan);
@@ -59,7 +64,8 @@ void add_fmt_command(CLI::App& root, Commands& commands) {
       "converted), numbers as the shortest decimal that reads back to the same value, one wall,\n"
       "opening, light or camera per line. Unknown fields are kept (and warned about). The file\n"
       "is replaced atomically: if anything fails, the old file is left as it was. A file already\n"
-      "in canonical form is left untouched.");
+      "in canonical form is left untouched. Rewriting in place holds the plan's lock, as the\n"
+      "edit commands do, so no concurrent edit is lost.");
   app->add_option("PLAN", options->plans, "the plan files (JSON) to format, one or more")
       ->required()
       ->type_name("FILE");
@@ -70,6 +76,7 @@ void add_fmt_command(CLI::App& root, Commands& commands) {
   app->add_flag("--check", options->check,
                 "write nothing; exit 1 if PLAN is not already in canonical form")
       ->excludes(out);
+  add_wait_option(*app, options->wait_seconds);
   app->footer(
       "Exit status (the worst over all PLANs): 0 done (with --check: every PLAN is canonical);\n"
       "1 a PLAN has errors (printed to stderr) or, with --check, is not canonical; 2 could not\n"

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "cli/command.h"
+#include "cli/plan_loading.h"
 #include "import/ifc_import.h"
 #include "import/sweethome3d_import.h"
 #include "io/plan_json.h"
@@ -24,6 +25,7 @@ struct ImportArgs {
   std::string level;  ///< empty: every level
   bool ceilings = false;
   std::optional<double> chord_tolerance;  ///< unset: the format's default
+  double wait_seconds = 0.0;  ///< --wait: for an editor of the plan being replaced
 };
 
 void print_warnings(const Report& warnings) {
@@ -77,6 +79,10 @@ int run_import(const ImportArgs& args) {
   }
   print_warnings(imported.value().warnings);
   const Plan& plan = imported.value().plan;
+  // Replaced under the plan's lock (io/plan_lock.h): an edit of the old plan under way would
+  // otherwise rename its result over the imported plan just written, and the import be lost.
+  const std::optional<PlanLock> lock = lock_plan("import", args.output, args.wait_seconds);
+  if (!lock) return kExitCannotRun;
   if (const Status written = write_plan_file(plan, args.output); !written)
     return report_failure("import", written.error());
   fmt::print(stderr,
@@ -109,6 +115,9 @@ void add_import_command(CLI::App& root, Commands& commands) {
                   "site.chord_tolerance of the plan: largest distance in metres between a curved "
                   "wall and its chords (default 0.001, the format's, left unwritten)")
       ->check(CLI::PositiveNumber);
+  add_wait_option(*app, args->wait_seconds,
+                  "seconds to wait for another editor of the plan being replaced (an edit "
+                  "command, `roomcad view` saving) to finish before giving up (exit 2)");
   commands.push_back({app, [args] { return run_import(*args); }});
 }
 

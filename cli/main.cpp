@@ -1,8 +1,11 @@
 // roomcad: validated, exact 3D models and pictures from room plans.
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 
 #include "cli/command.h"
+#include "io/plan_lock.h"
 
 int main(int argc, char** argv) {
   using namespace roomcad::cli;
@@ -55,6 +58,23 @@ int report_failure(std::string_view command, const Error& error) {
   const std::string who = command.empty() ? "roomcad" : "roomcad " + std::string(command);
   std::fprintf(stderr, "%s: error[%s]: %s\n", who.c_str(), code.c_str(), error.message.c_str());
   return exit_status_of(error.code);
+}
+
+std::chrono::milliseconds wait_duration(double seconds) {
+  return std::chrono::milliseconds(std::llround(seconds * 1000.0));
+}
+
+CLI::Option* add_wait_option(CLI::App& app, double& seconds, const std::string& what) {
+  seconds = std::chrono::duration<double>(kDefaultLockWait).count();
+  return app
+      .add_option("--wait", seconds,
+                  what.empty() ? "seconds to wait for another editor of the plan (another roomcad "
+                                 "command, or `roomcad view` saving) to finish before giving up "
+                                 "(exit 2)"
+                               : what)
+      ->type_name("SECONDS")
+      ->check(CLI::Range(0.0, 86400.0))
+      ->capture_default_str();
 }
 
 int report_usage_error(const CLI::App& app, const CLI::ParseError& error) {

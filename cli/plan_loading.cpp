@@ -3,14 +3,12 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <fmt/format.h>
+
 #include <unistd.h>
 
 #include "cli/command.h"
-#include <fmt/format.h>
-
 #include "io/plan_json.h"
-#include "modeling/plan_chords.h"
-#include "modeling/plan_levels.h"
 #include "io/text_file.h"
 #include "validation/report_format.h"
 #include "validation/validate.h"
@@ -42,6 +40,17 @@ LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path
   return loaded;
 }
 
+std::optional<PlanLock> lock_plan(std::string_view command, const std::filesystem::path& path,
+                                  double wait_seconds) {
+  Result<PlanLock> lock =
+      PlanLock::acquire(path, wait_duration(wait_seconds), fmt::format("roomcad {}", command));
+  if (lock) return std::move(lock).value();
+  Error error = lock.error();
+  if (error.code == Code::lock_timeout) error.message += "; --wait SECONDS waits longer";
+  report_failure(command, error);
+  return std::nullopt;
+}
+
 LoadedPlan load_valid_plan(std::string_view command, const std::filesystem::path& path,
                            bool force) {
   LoadedPlan loaded = load_plan(command, path);
@@ -59,28 +68,6 @@ LoadedPlan load_valid_plan(std::string_view command, const std::filesystem::path
     loaded.exit_status = kExitPlanErrors;
   }
   return loaded;
-}
-
-Result<Plan> select_level(const Plan& plan, const std::string& level) {
-  if (level.empty()) return plan;
-  if (find_level(plan, level)) return plan_of_level(plan, level);
-  std::string known;
-  for (const Level& l : plan.levels) known += fmt::format("{}'{}'", known.empty() ? "" : ", ", l.id);
-  return Result<Plan>::failure(
-      Code::usage_error,
-      fmt::format("--level '{}': the plan has no such level (its levels: {})", level,
-                  known.empty() ? "none" : known));
-}
-
-Plan floor_plan_input(const Plan& plan, bool on_level) {
-  Plan heights = plan;
-  if (on_level) {
-    for (Wall& w : heights.walls) w.level.clear();  // bases stay measured from its floor
-    for (Slab& s : heights.slabs) s.level.clear();
-  } else {
-    heights = with_absolute_heights(std::move(heights));
-  }
-  return with_arcs_as_chords(heights).plan;
 }
 
 }  // namespace roomcad::cli

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/error.h"
+#include "io/plan_lock.h"
 #include "modeling/plan.h"
 #include "validation/report.h"
 
@@ -26,6 +26,14 @@ struct LoadedPlan {
 /// a file that is read but is not a valid plan gives kExitPlanErrors.
 [[nodiscard]] LoadedPlan load_plan(std::string_view command, const std::filesystem::path& path);
 
+/// Takes the lock of the plan file `path` for subcommand `command` (io/plan_lock.h), waiting up
+/// to `wait_seconds` (--wait) for another editor. Prints why it could not (the holder, if
+/// known, and how to wait longer) to stderr.
+/// @return the lock, held until destroyed, or nullopt: stop with kExitCannotRun.
+[[nodiscard]] std::optional<PlanLock> lock_plan(std::string_view command,
+                                                const std::filesystem::path& path,
+                                                double wait_seconds);
+
 /// Reads and validates the plan for a command that needs a sound plan (build, render): the
 /// gate. Prints reading and validation problems to stderr as text, and a summary line when
 /// there are errors. With errors the plan is withheld (exit_status kExitPlanErrors) unless
@@ -33,16 +41,6 @@ struct LoadedPlan {
 /// @return the plan and the combined report; `plan` empty means stop with `exit_status`.
 [[nodiscard]] LoadedPlan load_valid_plan(std::string_view command, const std::filesystem::path& path,
                                          bool force);
-
-/// The part of `plan` a command shows for `--level ID` (plan_of_level), or the whole plan for
-/// an empty `level`. @return a usage_error naming the level and the plan's levels when it
-/// names none. O(objects).
-[[nodiscard]] Result<Plan> select_level(const Plan& plan, const std::string& level);
-
-/// The plan a floor plan (drawn from the plan, not the mesh) is drawn from: arcs as their
-/// chords, and heights as the cut sees them: for one level (`on_level`) measured from the
-/// level's floor, so the cut is at the cut height above its elevation; else absolute.
-[[nodiscard]] Plan floor_plan_input(const Plan& plan, bool on_level);
 
 /// @return true when `stream` (stdout or stderr) is a terminal and NO_COLOR is not set.
 [[nodiscard]] bool use_colour(std::FILE* stream);

@@ -1,15 +1,21 @@
-// `roomcad validate PLAN [--format text|json]`: every problem of a plan, in one run.
-#include <algorithm>
+// `roomcad validate PLAN [--format text|json] [--rules NAME|FILE] [--baseline OLD]`: every
+// problem of a plan, in one run; with rules beyond the format's checks, and compared with an
+// earlier revision.
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
+
+#include <fmt/format.h>
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "cli/rule_loading.h"
+#include "io/plan_check.h"
 #include "io/plan_json.h"
 #include "io/text_file.h"
+#include "validation/report_diff.h"
 #include "validation/report_format.h"
-#include "validation/validate.h"
 
 namespace roomcad::cli {
 namespace {
@@ -17,38 +23,51 @@ namespace {
 struct ValidateCommandOptions {
   std::string plan;
   std::string format = "text";
+  std::string rules = "default";
+  std::string baseline;
 };
 
 /// Reading problems (with their lines and columns) then, if the plan could be read, what
-/// validation finds; unknown fields come from the reader only.
-Report check_plan_text(const std::string& text, const std::string& file) {
-  Report report;
-  const Result<Plan> read = read_plan_text(text, file, &report);
-  if (read) {
-    ValidateOptions options;
-    options.unknown_field_warnings = false;
-    report.append(validate(read.value(), options));
-  }
-  // Errors first (the JSON lists them apart anyway), each group in the order found.
-  std::stable_partition(report.items.begin(), report.items.end(),
-                        [](const Diagnostic& d) { return d.severity == Severity::error; });
-  return report;
+/// validation and the rules find (io/plan_check.h).
+/// @return the report, or an error: the file cannot be read, or the rules name rooms the plan
+///         does not have.
+Result<Report> check_plan_file(const std::string& path, const RuleSet& rules) {
+  const Result<std::string> text = read_text_file(path);
+  if (!text) return text.error();
+  Report reading;
+  const Result<Plan> read = read_plan_text(text.value(), path, &reading);
+  if (!read) return reading;
+  if (const Status rooms = check_accessible_rooms(read.value(), rules); !rooms)
+    return rooms.error();
+  return check_plan(read.value(), &reading, rules);
 }
 
 int run_validate(const ValidateCommandOptions& options) {
-  const Result<std::string> text = read_text_file(options.plan);
-  if (!text) return report_failure("validate", text.error());
-  const Report report = check_plan_text(text.value(), options.plan);
+  const Result<RuleSet> rules = load_rule_set(options.rules);
+  if (!rules) return report_failure("validate", rules.error());
+  const Result<Report> report = check_plan_file(options.plan, rules.value());
+  if (!report) return report_failure("validate", report.error());
+  std::optional<ReportComparison> comparison;
+  ReportFormatOptions format;
+  format.plan_file = options.plan;
+  format.ids = rules.value().any_enabled();
+  if (!options.baseline.empty()) {
+    const Result<Report> old = check_plan_file(options.baseline, rules.value());
+    if (!old) return report_failure("validate", old.error());
+    comparison = compare_reports(old.value(), report.value());
+    format.comparison = &*comparison;
+    format.baseline_file = options.baseline;
+  }
   std::string out;
   if (options.format == "json") {
-    out = format_report_json(report);
+    out = format_report_json(report.value(), format);
   } else {
-    out = format_report_text(report, use_colour(stdout));
-    out += options.plan + ": " + format_report_summary(report) + '\n';
+    out = format_report_text(report.value(), use_colour(stdout), format);
+    out += options.plan + ": " + format_report_summary(report.value(), format) + '\n';
   }
   std::fputs(out.c_str(), stdout);
   if (std::fflush(stdout) != 0) return kExitCannotRun;
-  return report.ok() ? kExitOk : kExitPlanErrors;
+  return report.value().ok() ? kExitOk : kExitPlanErrors;
 }
 
 }  // namespace
@@ -62,15 +81,29 @@ void add_validate_command(CLI::App& root, Commands& commands) {
       "openings, anything outside the site) and warnings (unknown fields, raised doors, rooms\n"
       "without a door or a window). Verdicts are exact for the numbers as written; touching\n"
       "is never overlapping. Text names the objects, the place and a concrete fix; JSON is the\n"
-      "spec's {\"ok\", \"errors\", \"warnings\"} object. Colour only on a terminal.");
+      "spec's {\"ok\", \"errors\", \"warnings\"} object. Colour only on a terminal.\n"
+      "--rules adds rule sets: door swings, clear space at doors, door and passage widths,\n"
+      "turning circles, reachable rooms, escape distances, window sills, duplicates (warnings\n"
+      "unless a rules file says \"error\"); each finding's fix is also given as edit commands.\n"
+      "--baseline compares with an earlier revision: each item is new or unchanged, and the\n"
+      "baseline's items that are gone are listed as fixed.");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
   add_format_option(*app, options->format);
+  app->add_option("--rules", options->rules,
+                  "rule set: default (the format's checks), accessibility, all, or a rules file (JSON)")
+      ->type_name("NAME|FILE")
+      ->capture_default_str();
+  app->add_option("--baseline", options->baseline, "an earlier revision of the plan to compare with")
+      ->type_name("OLD");
   app->footer(
       "Exit status: 0 no errors (warnings allowed); 1 the plan has errors; 2 could not run\n"
-      "(bad arguments, PLAN unreadable).\n"
+      "(bad arguments, PLAN, OLD or the rules file unreadable, an unknown rule or a bad\n"
+      "threshold).\n"
       "Examples:\n"
       "  roomcad validate examples/house.json\n"
-      "  roomcad validate --format json plan.json");
+      "  roomcad validate --format json plan.json\n"
+      "  roomcad validate plan.json --rules all\n"
+      "  roomcad validate plan.json --rules examples/rules/accessible-ground-floor.json --baseline old.json");
   commands.push_back({app, [options] { return run_validate(*options); }});
 }
 

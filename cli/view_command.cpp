@@ -7,6 +7,7 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "modeling/plan_levels.h"
 #include "view/key_bindings.h"
 #include "view/sdl_window.h"
 #include "view/viewer.h"
@@ -17,6 +18,7 @@ namespace {
 struct ViewArgs {
   std::string plan, camera, view = "iso", keys, screenshot, level;
   int width = 1280, height = 720, frames = 1, threads = 0;
+  double wait_seconds = 0.0;
   bool no_overlay = false;
 };
 
@@ -42,18 +44,25 @@ Result<ViewerOptions> make_options(const ViewArgs& a, const Plan& plan) {
   return o;
 }
 
+/// The window's messages (saved, refused, a conflict and its choices) also go to stderr: a
+/// log in the terminal, and what a scripted run is checked by.
+void print_message(const std::string& message) {
+  fmt::print(stderr, "roomcad view: {}\n", message);
+}
+
 int run_view(const ViewArgs& a) {
   const LoadedPlan loaded = load_plan("view", a.plan);  // prints what reading found
   if (!loaded.plan) return loaded.exit_status;
   const Result<std::vector<InputEvent>> script = parse_key_script(a.keys);
   const Result<ViewerOptions> options = make_options(a, *loaded.plan);
-  Result<ViewSession> session = ViewSession::open(a.plan);
+  Result<ViewSession> session = ViewSession::open(a.plan, wait_duration(a.wait_seconds));
   for (const Status& step : {script.status(), options.status(), session.status()})
     if (!step) return report_failure("view", step.error());
   Viewer viewer(std::move(session).value(), options.value());
   const Status shown = run_window(viewer, WindowOptions{.script = script.value(),
                                                         .screenshot = a.screenshot,
-                                                        .frames = a.frames});
+                                                        .frames = a.frames,
+                                                        .on_message = print_message});
   return shown ? kExitOk : report_failure("view", shown.error());
 }
 
@@ -78,6 +87,9 @@ void add_view_command(CLI::App& root, Commands& commands) {
                   "Start showing only the level with this id ('l' steps through the levels)");
   app->add_flag("--no-overlay", args->no_overlay, "Start without the text overlay ('o' toggles it)");
   app->add_option("--threads", args->threads, "Render threads, 0 = all cores")->check(CLI::NonNegativeNumber);
+  add_wait_option(*app, args->wait_seconds,
+                  "seconds a save (Ctrl+S, Ctrl+K) waits for another editor of the plan to "
+                  "finish; then it is not made, and says who holds the plan");
   app->footer("Keys:\n" + key_help());
   commands.push_back({app, [args] { return run_view(*args); }});
 }

@@ -17,11 +17,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   (void)roomcad::parse_point2(text);
   (void)roomcad::parse_vec3(text);
   (void)roomcad::parse_cells(text);
-  (void)roomcad::parse_opening_type(text);
-  (void)roomcad::parse_hinge(text);
-  (void)roomcad::parse_swing(text);
-  (void)roomcad::parse_light_type(text);
-  (void)roomcad::parse_projection(text);
+  (void)roomcad::parse_polygon(text);
+  (void)roomcad::parse_polygons(text);
+  (void)roomcad::parse_enum<roomcad::OpeningType>(text);
+  (void)roomcad::parse_enum<roomcad::Hinge>(text);
+  (void)roomcad::parse_enum<roomcad::Swing>(text);
+  (void)roomcad::parse_enum<roomcad::LightType>(text);
+  (void)roomcad::parse_enum<roomcad::Projection>(text);
   if (const auto colour = roomcad::parse_color(text))
     if (roomcad::parse_color(roomcad::to_string(*colour)) != colour) __builtin_trap();
   return 0;

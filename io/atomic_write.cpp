@@ -145,11 +145,15 @@ class TemporaryFile {
   bool committed_ = false;
 };
 
-void sync_directory(const std::filesystem::path& target) {
-  const int fd = ::open(folder_of(target).c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;
-  ::fsync(fd);  // best effort: the data itself is already on disk
+/// Flushes the folder's entries to disk, so that the rename survives a power cut.
+/// @return 0 or an errno value. EINVAL (a file system that cannot flush a folder, such as
+/// some network and FUSE ones) counts as done: there is nothing more a program can do there.
+int sync_directory(const std::filesystem::path& target) {
+  const int fd = ::open(folder_of(target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return errno;
+  const int error = ::fsync(fd) == 0 || errno == EINVAL ? 0 : errno;
   ::close(fd);
+  return error;
 }
 
 Status fail(const std::filesystem::path& path, std::string_view what, int error) {
@@ -183,7 +187,9 @@ Status write_file_atomically(const std::filesystem::path& path,
   if (buffer.error() != 0) return fail(path, "write failed", buffer.error());
   if (!stream) return fail(path, "write failed", EIO);
   if (const int e = temp.commit(target, mode); e != 0) return fail(path, "write failed", e);
-  sync_directory(path);
+  if (const int e = sync_directory(path); e != 0)
+    return fail(path, "the new file is in place, but its folder could not be flushed to disk, so "
+                      "a power cut may still bring back the old one", e);
   return Status::success();
 }
 

@@ -10,11 +10,16 @@
 
 namespace roomcad {
 
-/// Writes `bytes` to `path` atomically: a temporary file beside it is written, flushed to
-/// disk and renamed over `path`. On any failure `path` is untouched, the temporary file is
-/// removed and the returned Status names the file and the reason. A process killed midway
-/// (SIGKILL, power cut) leaves `path` intact but may leave its temporary file
+/// Writes `bytes` to `path` atomically and durably: a temporary file beside it is written,
+/// flushed to disk (fsync), renamed over `path`, and then the folder is flushed to disk
+/// (fsync), so that once this returns success a power cut leaves the new file, and before
+/// that the old one (or none, for a new file), never an empty or partial file. On a failure
+/// before the rename `path` is untouched, the temporary file is removed and the returned Status
+/// (io_error) names the file and the reason; a failure to flush the folder after the rename is
+/// reported too, saying the new file is in place but not yet safe from a power cut. A process
+/// killed midway (SIGKILL, power cut) leaves `path` intact but may leave its temporary file
 /// `.<name>.tmp-<pid>-XXXXXX`; the next write of `path` removes those whose process is gone.
+/// Cost: the writes, plus the two fsyncs, which dominate small files (README, "Editing").
 Status write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
 /// The same for content produced by a callback writing to a stream (large meshes, images).

@@ -10,6 +10,7 @@ constexpr double kThin = 0.18;    // mm: dimensions, swings, things seen below t
 constexpr double kMedium = 0.25;  // windows
 constexpr double kThick = 0.5;    // door leaves
 constexpr double kOutline = 0.35;  // visible edges of elevations and views
+constexpr const char* kFindingRed = "#d00000";
 
 std::string_view anchor_name(TextAnchor anchor) {
   switch (anchor) {
@@ -47,12 +48,13 @@ void add_scale_bar(SvgDocument& doc, std::span<const PaperPolygon> black,
                {.stroke = "#000", .stroke_width = kThin, .fill = "#fff"});
 }
 
-void add_texts(SvgDocument& doc, std::string_view id, std::span<const PaperText> texts) {
+void add_texts(SvgDocument& doc, std::string_view id, std::span<const PaperText> texts,
+               const std::string& fill = "#000") {
   doc.begin_group(id, id);
   for (const PaperText& t : texts) {
-    doc.add_text(
-        t.at, t.text,
-        {.size = t.size, .anchor = std::string(anchor_name(t.anchor)), .rotate_deg = t.rotate_deg});
+    doc.add_text(t.at, t.text,
+                 {.size = t.size, .anchor = std::string(anchor_name(t.anchor)), .fill = fill,
+                  .rotate_deg = t.rotate_deg});
   }
   doc.end_group();
 }
@@ -94,6 +96,10 @@ SvgDocument make_floor_plan_svg(const FloorPlanDrawing& d, const std::string& ti
   add_texts(doc, "room-labels", d.room_labels);
   add_scale_bar(doc, d.scale_bar_black, d.scale_bar_white);
   add_texts(doc, "labels", d.labels);
+  if (!d.marks.empty()) {  // findings, over everything else
+    add_polygons(doc, "findings", d.marks, {.stroke = kFindingRed, .stroke_width = kMedium, .fill = "none"});
+    add_texts(doc, "finding-codes", d.mark_labels, kFindingRed);
+  }
   return doc;
 }
 

@@ -6,11 +6,13 @@
 #include <tbb/parallel_for.h>
 
 #include "modeling/detail/cgal_booleans.h"
+#include "modeling/detail/buildable_plan.h"
 #include "modeling/detail/clusters.h"
 #include "modeling/detail/face_soup.h"
 #include "modeling/detail/fast_wall.h"
 #include "modeling/detail/floor_fixtures.h"
 #include "modeling/detail/fuse_seams.h"
+#include "modeling/detail/general_solid.h"
 #include "modeling/detail/wall_frame.h"
 #include "modeling/joins.h"
 
@@ -30,7 +32,7 @@ std::vector<std::string> object_ids(const Plan& plan) {
 }
 
 FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, const detail::Work& work,
-                    const WorkItem& item) {
+                    const WorkItem& item, BooleanPath path) {
   const int first_opening = detail::opening_object(plan, 0);
   if (item.kind == WorkItem::Kind::hub) return detail::build_hub(work.hubs[item.hub], work.fast_frames);
   if (item.kind == WorkItem::Kind::fast_wall) {
@@ -40,24 +42,25 @@ FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, cons
   std::vector<const WallFrame*> walls;
   walls.reserve(item.walls.size());
   for (std::size_t i : item.walls) walls.push_back(&frames[i]);
-  return detail::build_cluster_cgal(walls, first_opening);
+  return uses_nef(path) ? detail::build_cluster_cgal(walls, first_opening)
+                                  : detail::build_cluster_general(walls, first_opening);
 }
 
 // Builds every item in parallel; results land in item order, so the mesh does not depend on
 // the thread count.
 std::vector<FaceSoup> build_items(const Plan& plan, const std::vector<WallFrame>& frames,
-                                  const detail::Work& work) {
+                                  const detail::Work& work, BooleanPath path) {
   std::vector<FaceSoup> soups(work.items.size());
   tbb::parallel_for(std::size_t{0}, work.items.size(), [&](std::size_t i) {
-    soups[i] = build_item(plan, frames, work, work.items[i]);
+    soups[i] = build_item(plan, frames, work, work.items[i], path);
   });
   return soups;
 }
 
 // Builds the wall items, then fuses the fast path's faces across the seams of its hubs.
 std::vector<FaceSoup> build_walls(const Plan& plan, const std::vector<WallFrame>& frames,
-                                  const detail::Work& work) {
-  std::vector<FaceSoup> soups = build_items(plan, frames, work);
+                                  const detail::Work& work, BooleanPath path) {
+  std::vector<FaceSoup> soups = build_items(plan, frames, work, path);
   std::vector<detail::Hub> hubs;
   for (const WorkItem& item : work.items)
     if (item.kind == WorkItem::Kind::hub) hubs.push_back(work.hubs[item.hub]);
@@ -65,35 +68,40 @@ std::vector<FaceSoup> build_walls(const Plan& plan, const std::vector<WallFrame>
   return soups;
 }
 
-void count_paths(const std::vector<WorkItem>& items, BuildStats& stats) {
+void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStats& stats) {
+  std::size_t& cluster_walls = uses_nef(path) ? stats.nef_path_walls : stats.general_path_walls;
   for (const WorkItem& item : items)
-    (item.kind == WorkItem::Kind::cluster ? stats.cgal_path_walls : stats.fast_path_walls) +=
-        item.walls.size();
+    (item.kind == WorkItem::Kind::cluster ? cluster_walls : stats.fast_path_walls) += item.walls.size();
 }
 
 }  // namespace
 
-Model build_model(const Plan& plan, const BuildOptions& options, BuildStats* stats) {
+Model build_model(const Plan& input, const BuildOptions& options, BuildStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<tbb::global_control> limit;
   if (options.threads > 0)
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
   Model model;
-  model.objects = object_ids(plan);
+  model.objects = object_ids(input);
+  const detail::BuildablePlan buildable = detail::make_buildable(input);
+  const Plan& plan = buildable.plan;
   const Joins joins = find_joins(plan);
-  const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins);
+  const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins, buildable.through_mitre);
   BuildStats local;
   if (options.parts.walls) {
     const detail::Work work = detail::plan_work(frames, joins, options.boolean);
-    count_paths(work.items, local);
-    model.walls = detail::assemble_mesh(build_walls(plan, frames, work), model.objects);
+    count_paths(work.items, options.boolean, local);
+    std::vector<FaceSoup> walls = build_walls(plan, frames, work, options.boolean);
+    detail::label_input_objects(buildable, walls);
+    model.walls = detail::assemble_mesh(walls, model.objects);
   } else {
     add_face_properties(model.walls);
   }
   const FaceSoup floor = options.parts.floor ? detail::build_floor(plan.site) : FaceSoup{};
   model.floor = detail::assemble_mesh({&floor, 1}, model.objects);
-  const std::vector<FaceSoup> fixtures =
+  std::vector<FaceSoup> fixtures =
       options.parts.fixtures ? detail::build_fixtures(plan, frames) : std::vector<FaceSoup>{};
+  detail::label_input_objects(buildable, fixtures);
   model.fixtures = detail::assemble_mesh(fixtures, model.objects, false);
   local.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats != nullptr) *stats = local;

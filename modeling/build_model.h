@@ -27,9 +27,17 @@ inline constexpr const char* kPartNames = "walls, floor, fixtures";
 [[nodiscard]] Result<Parts> parse_parts(std::string_view list);
 
 enum class BooleanPath {
-  automatic,  ///< per wall: the exact fast path where no general boolean is needed, else CGAL
-  cgal,       ///< CGAL's exact booleans everywhere (to compare against the fast path)
+  automatic,  ///< per wall: the exact fast path where no boolean is needed, else the general path
+  general,    ///< the exact general path (plane by plane, detail/general_solid.h) for every wall
+  nef,        ///< CGAL's exact Nef polyhedra for every wall: the reference, to compare against
+  fast_then_nef,  ///< the fast path where it applies, Nef polyhedra for the rest: the automatic
+                  ///< build before the general path, kept for benchmarks
 };
+
+/// @return whether clusters of this path go through Nef polyhedra.
+[[nodiscard]] inline bool uses_nef(BooleanPath path) {
+  return path == BooleanPath::nef || path == BooleanPath::fast_then_nef;
+}
 
 struct BuildOptions {
   BooleanPath boolean = BooleanPath::automatic;
@@ -40,7 +48,8 @@ struct BuildOptions {
 /// What a build did, for --stats, benchmarks and tests.
 struct BuildStats {
   std::size_t fast_path_walls = 0;
-  std::size_t cgal_path_walls = 0;
+  std::size_t general_path_walls = 0;
+  std::size_t nef_path_walls = 0;
   double build_ms = 0.0;
 };
 

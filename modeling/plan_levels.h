@@ -6,6 +6,7 @@
 
 #include <string_view>
 
+#include "core/error.h"
 #include "modeling/plan.h"
 
 namespace roomcad {
@@ -33,5 +34,10 @@ namespace roomcad {
 /// camera, the site and the levels. For drawings and exports of one storey (`--level ID`).
 /// @pre find_level(plan, level) != nullptr (else PreconditionError). O(walls + openings + slabs).
 [[nodiscard]] Plan plan_of_level(const Plan& plan, std::string_view level);
+
+/// What a command shows for `--level ID`: plan_of_level, or the whole plan for an empty
+/// `level`. @return a usage_error naming the level and the plan's levels when it names none.
+/// O(walls + openings + slabs).
+[[nodiscard]] Result<Plan> select_level(const Plan& plan, std::string_view level);
 
 }  // namespace roomcad

@@ -16,6 +16,7 @@
 #include "modeling/detail/arrangement.h"
 #include "modeling/detail/centre_lines.h"
 #include "modeling/rooms.h"
+#include "modeling/signed_area.h"
 
 namespace roomcad {
 namespace {
@@ -42,16 +43,6 @@ void add_corner(const Line& a, const Line& b, Point2 at, std::vector<Point2>& ou
   }
   const double s = ((b.p.x - a.p.x) * b.d.y - (b.p.y - a.p.y) * b.d.x) / denom;
   out.push_back({a.p.x + s * a.d.x, a.p.y + s * a.d.y});
-}
-
-double polygon_area(const std::vector<Point2>& pts) {
-  double twice = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const Point2& a = pts[i];
-    const Point2& b = pts[(i + 1) % pts.size()];
-    twice += a.x * b.y - a.y * b.x;
-  }
-  return twice / 2;
 }
 
 /// Opening indices by host wall index (the first wall with the id, as validation reads it).
@@ -91,16 +82,19 @@ void sort_unique(std::vector<std::string>& ids) {
 
 Room room_of(const Plan& plan, const OpeningsByWall& by_wall, const detail::Face& face) {
   Room room;
-  const std::size_t n = face.boundary.size();
   std::vector<Line> lines;
+  std::vector<Point2> starts;
   for (const detail::FaceEdge& e : face.boundary) {
-    lines.push_back(inner_line(e, plan.walls[e.wall].thickness / 2));
     room.walls.push_back(plan.walls[e.wall].id);
     collect_openings(plan, by_wall, e, room);
+    // Two exact vertices a hair apart can round to one double: such an edge has no direction.
+    if (e.source == e.target) continue;
+    lines.push_back(inner_line(e, plan.walls[e.wall].thickness / 2));
+    starts.push_back(e.source);
   }
-  for (std::size_t i = 0; i < n; ++i)
-    add_corner(lines[(i + n - 1) % n], lines[i], face.boundary[i].source, room.outline);
-  room.area = std::max(0.0, polygon_area(room.outline) - face.hole_area);
+  const std::size_t n = lines.size();
+  for (std::size_t i = 0; i < n; ++i) add_corner(lines[(i + n - 1) % n], lines[i], starts[i], room.outline);
+  room.area = std::max(0.0, signed_area(room.outline) - face.hole_area);
   sort_unique(room.walls);
   sort_unique(room.doors);
   sort_unique(room.windows);

@@ -23,6 +23,8 @@ constexpr double kMarginMm = 10.0;        // blank border around everything draw
 constexpr double kFooterMm = 25.0;        // scale bar and title under the plan
 constexpr double kWallDimensionMm = 5.0;  // per-wall dimension beyond the wall face
 constexpr double kOverallDimensionMm = 18.0;
+constexpr double kMarkMm = 2.0;       // half the side of a point finding's box; a box's margin
+constexpr double kMarkTextMm = 2.5;   // size of a finding's code
 
 struct Box {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -99,12 +101,30 @@ void add_rooms(const std::vector<Room>& rooms, const PaperMap& map, FloorPlanDra
   }
 }
 
+/// Boxes round the marked findings and their codes above them; codes marked at one corner
+/// are stacked, so that each can be read.
+void add_marks(const std::vector<PlanMark>& marks, const PaperMap& map, FloorPlanDrawing& out) {
+  std::vector<std::pair<Point2, int>> corners;  // top-left corners used, with their labels
+  for (const PlanMark& m : marks) {
+    const Point2 a = map.to_paper(m.min), b = map.to_paper(m.max.value_or(m.min));
+    const Point2 lo{std::min(a.x, b.x) - kMarkMm, std::min(a.y, b.y) - kMarkMm};
+    const Point2 hi{std::max(a.x, b.x) + kMarkMm, std::max(a.y, b.y) + kMarkMm};
+    out.marks.push_back({lo, {hi.x, lo.y}, hi, {lo.x, hi.y}});
+    auto it = std::find_if(corners.begin(), corners.end(), [&](const auto& c) {
+      return std::abs(c.first.x - lo.x) < kMarkTextMm && std::abs(c.first.y - lo.y) < kMarkTextMm;
+    });
+    if (it == corners.end()) it = corners.insert(corners.end(), {lo, 0});
+    out.mark_labels.push_back({{lo.x, lo.y - 0.8 - kMarkTextMm * 1.2 * it->second++}, m.label, kMarkTextMm, 0.0,
+                               TextAnchor::start});
+  }
+}
+
 /// Calls f(point, pad) for every point of the drawing; `pad` is how far the element reaches
 /// around it (a text's size, an arc's radius), 0 for plain vertices.
 template <class Drawing, class F>
 void for_each_point(Drawing& d, F f) {
   for (auto* polygons : {&d.rooms, &d.cut_walls, &d.walls_below, &d.walls_above, &d.scale_bar_black,
-                         &d.scale_bar_white}) {
+                         &d.scale_bar_white, &d.marks}) {
     for (auto& polygon : *polygons) {
       for (auto& p : polygon) f(p, 0.0);
     }
@@ -113,7 +133,7 @@ void for_each_point(Drawing& d, F f) {
     for (auto& line : *lines) f(line.a, 0.0), f(line.b, 0.0);
   }
   for (auto& arc : d.door_swings) f(arc.centre, arc.radius), f(arc.from, 0.0), f(arc.to, 0.0);
-  for (auto* texts : {&d.dimension_texts, &d.room_labels, &d.labels}) {
+  for (auto* texts : {&d.dimension_texts, &d.room_labels, &d.labels, &d.mark_labels}) {
     for (auto& text : *texts) f(text.at, text.size);
   }
 }
@@ -165,6 +185,7 @@ FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& optio
     detail::add_dimension({box.x0, box.y0}, {box.x0, box.y1}, {-1.0, 0.0}, kOverallDimensionMm, map,
                           out);
   }
+  add_marks(options.marks, map, out);
   fit_page(out);
   const double footer = out.height - kFooterMm;
   detail::add_scale_bar({kMarginMm, footer}, std::max(40.0, 0.35 * (out.width - 2.0 * kMarginMm)),

@@ -8,6 +8,7 @@
 // right side.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,9 +17,20 @@
 
 namespace roomcad {
 
+/// A finding marked on the plan (`draw --findings`): its label (the code) and its place, a
+/// point or a box, metres.
+struct PlanMark {
+  std::string label;
+  Point2 min;
+  std::optional<Point2> max;  ///< unset: a point
+};
+
 struct FloorPlanOptions {
   double scale = 50.0;      ///< the scale's denominator: 50 means 1:50
   double cut_height = 1.0;  ///< height of the horizontal section above the floor, metres
+  /// Findings to mark in red, in order. ({}: a member with an initializer may be left out of
+  /// designated initializers such as {.scale = 50} without a warning.)
+  std::vector<PlanMark> marks{};
 };
 
 /// A straight line on paper, mm, y growing downwards.
@@ -68,6 +80,8 @@ struct FloorPlanDrawing {
   /// (x, y) metres is at paper (origin.x + x * mm_per_m, origin.y - y * mm_per_m).
   double mm_per_m = 20.0;
   Point2 origin{};
+  std::vector<PaperPolygon> marks;            ///< a box round each marked finding (red)
+  std::vector<PaperText> mark_labels;         ///< its code, at the box's top-left corner (red)
 };
 
 /// Checks the options. @return success, or a usage_error naming the option and its value.

@@ -12,8 +12,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # clang and its runtime (libFuzzer, sanitizers) are needed here only, not by the normal build.
+# No Python module: a sanitized shared object loads only into a Python started with the
+# sanitizer runtime preloaded.
 bash scripts/setup.sh clang libclang-rt-14-dev
 cmake -S . -B build-san -DCMAKE_CXX_COMPILER=clang++ -DROOMCAD_FUZZ=ON -DCMAKE_BUILD_TYPE=None \
   -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" -DROOMCAD_BENCH=OFF -DROOMCAD_WERROR=ON \
-  >/dev/null
+  -DROOMCAD_PYTHON=OFF >/dev/null
 cmake --build build-san -j"$(nproc)" "$@"

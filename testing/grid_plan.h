@@ -1,6 +1,7 @@
 // Generated grids of rooms for benchmarks and tests: n x n square rooms of `room` metres
 // between wall centres; every wall runs one cell, node to node (2 n (n + 1) walls). Inner
-// walls get a door, outer walls three windows (10 x 10: 220 walls, 180 doors, 120 windows).
+// walls get a door, outer walls three windows (10 x 10: 220 walls, 180 doors, 120 windows);
+// with `entrance`, the first south wall has a door to the outside instead of its middle window.
 #pragma once
 
 #include <string>
@@ -16,6 +17,7 @@ struct GridSpec {
   double room = 4.0;
   double thickness = 0.2;
   double height = 2.8;
+  bool entrance = false;  ///< a door to the outside in the first south wall (instead of its middle window)
 };
 
 inline void add_grid_wall(Plan& plan, Point2 from, Point2 to, bool outer, const GridSpec& g) {
@@ -31,7 +33,11 @@ inline void add_grid_wall(Plan& plan, Point2 from, Point2 to, bool outer, const 
     add(OpeningType::door, 0.4 * g.room - 0.45, 0.9, 0.0, 2.1);
     return;
   }
-  for (int k = 0; k < 3; ++k) add(OpeningType::window, g.room * (0.1 + 0.3 * k), 0.2 * g.room, 0.9, 1.2);
+  const bool entrance = g.entrance && plan.walls.size() == 1;
+  for (int k = 0; k < 3; ++k) {
+    if (entrance && k == 1) add(OpeningType::door, 0.5 * g.room - 0.45, 0.9, 0.0, 2.1);
+    else add(OpeningType::window, g.room * (0.1 + 0.3 * k), 0.2 * g.room, 0.9, 1.2);
+  }
 }
 
 /// @return the n x n grid plan on a site that holds it.

@@ -3,6 +3,7 @@
 # header of a module above it, or another module's detail/ header. The layers, bottom up (the
 # README's "Layout" says what each holds):
 #   core < modeling < validation, render < io < import < view < cli
+# python/ (the Python module) sits beside view, on import and below.
 # validation and render are side by side: neither includes the other. testing/ (plans shared
 # by tests and benchmarks) sits on modeling; tests/, bench/ and fuzz/ may include anything.
 # Usage: cmake -D SOURCE_DIR=<repository> -P <this file>
@@ -15,8 +16,9 @@ set(allowed_io "core;modeling;validation;render;io")
 set(allowed_import "core;modeling;validation;render;io;import")
 set(allowed_view "core;modeling;validation;render;io;import;view")
 set(allowed_cli "core;modeling;validation;render;io;import;view;cli")
+set(allowed_python "core;modeling;validation;render;io;import;python")
 set(allowed_testing "core;modeling;testing")
-set(modules core modeling validation render io import view cli testing)
+set(modules core modeling validation render io import view cli python testing)
 
 set(problems "")
 set(checked 0)

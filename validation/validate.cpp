@@ -55,26 +55,34 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   Report report;
   detail::Usable usable = detail::check_values(plan, report);
   detail::check_ids(plan, usable, report);
-  // Geometry is judged on the plan as built: levels resolved, arcs as their chords.
+  // Geometry is judged on the plan as built: levels resolved, arcs as their chords; walls that
+  // failed a value check join nothing there.
   detail::ResolvedPlan resolved = detail::resolve_plan(plan, usable);
   isolate_unusable(resolved.plan, resolved.usable.walls);
   const Joins joins = find_joins(resolved.plan);
+  const bool rules = options.rules.any_enabled();
+  // The rules reuse the rooms when one storey holds every wall: a sound plan without levels.
+  const bool rooms_for_rules =
+      rules && plan.levels.empty() &&
+      std::all_of(usable.walls.begin(), usable.walls.end(), [](bool ok) { return ok; });
   // Rooms take about as long as all the other checks: find them on the second core while
   // those run (they only read the plan). Their warnings are added below, in a fixed place,
   // so the report does not depend on timing.
   std::future<std::vector<Room>> rooms;
-  if (options.room_warnings)
+  if (options.room_warnings || rooms_for_rules)
     rooms = std::async(std::launch::async, [&plan, &resolved, &joins] {
       return find_rooms_by_level(plan, resolved, joins);
     });
   detail::check_geometry(plan, usable, resolved, joins, report);
   const bool has_errors = !report.ok();
   detail::check_warnings(plan, options, report);
+  std::vector<Room> found;
+  if (rooms.valid()) found = rooms.get();
   // Rooms are only meaningful on a plan whose walls are sound: with errors, say nothing more.
-  if (rooms.valid()) {
-    const std::vector<Room> found = rooms.get();
-    if (!has_errors) detail::warn_about_rooms(found, report);
-  }
+  if (options.room_warnings && !has_errors) detail::warn_about_rooms(found, report);
+  if (rules)
+    detail::check_rules(resolved.plan, joins, resolved.usable, options.rules, rooms_for_rules ? &found : nullptr,
+                        report);
   std::stable_partition(report.items.begin(), report.items.end(),
                         [](const Diagnostic& d) { return d.severity == Severity::error; });
   return report;

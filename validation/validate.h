@@ -7,6 +7,7 @@
 #include "modeling/plan.h"
 #include "modeling/rooms.h"  // find_rooms, once here
 #include "validation/report.h"
+#include "validation/rule_set.h"
 
 namespace roomcad {
 
@@ -15,10 +16,15 @@ struct ValidateOptions {
   /// warn about the fields kept in `extra`; the plan reader already reports them (with line
   /// and column), so commands that read a file turn this off.
   bool unknown_field_warnings = true;
+  /// The rules beyond the plan format's checks (validation/rule_set.h); the default set has
+  /// none. Rule findings are warnings unless the set says "error" for a rule. ({}: may be left
+  /// out of designated initializers without a warning.)
+  RuleSet rules{};
 };
 
 /// Checks a plan. Never throws on any Plan value (NaN, negative sizes, dangling references
-/// are reported, not assumed away). Cost O(n log n + k) for n objects and k nearby pairs.
+/// are reported, not assumed away). Cost O(n log n + k) for n objects and k nearby pairs,
+/// plus the rules' searches (each finding's fix is tried near it).
 [[nodiscard]] Report validate(const Plan& plan, const ValidateOptions& options = {});
 
 }  // namespace roomcad

@@ -71,6 +71,13 @@ std::string parse_key(std::string_view item, InputEvent& event) {
   return "";
 }
 
+/// Parses wait:change. @return an error message or "".
+std::string parse_wait(std::string_view item, InputEvent& event) {
+  if (item != "wait:change") return "expected wait:change";
+  event.type = InputEvent::Type::wait_change;
+  return "";
+}
+
 }  // namespace
 
 bool is_key_name(std::string_view name) {
@@ -87,7 +94,9 @@ Result<std::vector<InputEvent>> parse_key_script(std::string_view script) {
     InputEvent event;
     const bool pointer = item.starts_with("click:") || item.starts_with("drag:") ||
                          item.starts_with("pan:") || item.starts_with("wheel:");
-    const std::string problem = pointer ? parse_pointer(item, event) : parse_key(item, event);
+    const std::string problem = item.starts_with("wait:") ? parse_wait(item, event)
+                                : pointer                 ? parse_pointer(item, event)
+                                                          : parse_key(item, event);
     if (!problem.empty())
       return Result<std::vector<InputEvent>>::failure(Code::usage_error,
           fmt::format("--keys: input {} '{}': {}", index, item, problem));

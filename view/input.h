@@ -14,7 +14,9 @@ namespace roomcad {
 /// One input. Keys are named in lower case: a..z, 0..9, left, right, up, down, delete,
 /// backspace, tab, escape, plus, minus.
 struct InputEvent {
-  enum class Type { key, click, drag, wheel };
+  /// wait_change, in scripts only: wait until the plan's file changes on disk (another editor
+  /// saved it), the window running meanwhile.
+  enum class Type { key, click, drag, wheel, wait_change };
   Type type = Type::key;
   std::string key;     ///< Type::key: the key's name
   bool ctrl = false;   ///< Type::key: Ctrl held
@@ -28,14 +30,18 @@ struct InputEvent {
 /// @return true if `name` is one of the key names above.
 [[nodiscard]] bool is_key_name(std::string_view name);
 
+/// Longest a `wait:change` input waits (kKeyScriptSyntax says it too).
+inline constexpr int kWaitChangeSeconds = 60;
+
 /// The syntax of `--keys`, for --help.
 inline constexpr std::string_view kKeyScriptSyntax =
     "comma-separated inputs, applied in order: a key name (a..z, 0..9, left, right, up, down, "
     "delete, backspace, tab, escape, plus, minus) with optional ctrl+ "
     "and shift+ prefixes (ctrl+s); click:X:Y (left click at pixel X,Y); drag:DX:DY (left drag "
-    "by DX,DY pixels: orbit); pan:DX:DY (right drag); wheel:N (N notches, negative: away)";
+    "by DX,DY pixels: orbit); pan:DX:DY (right drag); wheel:N (N notches, negative: away); "
+    "wait:change (wait, at most 60 s, until the plan file changes on disk)";
 
-/// Parses a `--keys` script, e.g. "1,ctrl+s,click:640:360,drag:-40:0,wheel:2".
+/// Parses a `--keys` script, e.g. "1,ctrl+s,click:640:360,drag:-40:0,wheel:2,wait:change".
 /// @return the events, or an error naming the item and what is wrong with it. O(length).
 [[nodiscard]] Result<std::vector<InputEvent>> parse_key_script(std::string_view script);
 

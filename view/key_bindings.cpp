@@ -49,8 +49,15 @@ constexpr std::array kBindings{
     KeyBinding{"delete", false, false, A::delete_selection,
                "delete the selection (a wall with openings: press twice)"},
     KeyBinding{"backspace", false, false, A::delete_selection, "the same as delete"},
-    KeyBinding{"s", true, false, A::save, "save (validated; refused while the plan has errors)"},
+    KeyBinding{"s", true, false, A::save,
+               "save (validated; refused while the plan has errors, and if the file changed on "
+               "disk meanwhile: then the conflict's choices are shown)"},
     KeyBinding{"z", true, false, A::undo, "undo"},
+    KeyBinding{"r", true, false, A::reload_file,
+               "reload the file, dropping unsaved edits (Ctrl+Z brings them back); in a "
+               "conflict: take the file's version"},
+    KeyBinding{"k", true, false, A::keep_window_version,
+               "in a conflict: keep the window's version, saving it over the file"},
     KeyBinding{"q", false, false, A::quit, "quit"},
 };
 
@@ -74,7 +81,9 @@ std::string key_help() {
   }
   text +=
       "  mouse: click selects, left drag orbits, right drag pans, wheel zooms;\n"
-      "  the window reloads the plan when its file changes on disk\n";
+      "  the window reloads the plan when its file changes on disk; if it changes while the\n"
+      "  window has unsaved edits (or Ctrl+S finds it changed), nothing is saved or dropped until\n"
+      "  Ctrl+R (take the file's version) or Ctrl+K (keep the window's) is pressed\n";
   return text;
 }
 

@@ -23,7 +23,7 @@ enum class Action {
   toggle_overlay,
   step_west, step_east, step_north, step_south,  // move the selection a cell, else pan
   select_next, deselect, turn_selection, turn_selection_back, delete_selection,
-  save, undo, quit,
+  save, undo, reload_file, keep_window_version, quit,
 };
 
 /// One key of the table.

@@ -1,6 +1,8 @@
 #include "view/sdl_window.h"
 
+#include <cstdint>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +17,7 @@ namespace {
 
 constexpr int kClickSlop = 3;   ///< pixels a press may move and still be a click
 constexpr Uint32 kPollMs = 100;  ///< how often the plan file is checked when idle
+constexpr Uint32 kWaitPollMs = 10;  ///< how often a `wait:change` input checks the file
 
 struct SdlDeleter {
   void operator()(SDL_Window* w) const { SDL_DestroyWindow(w); }
@@ -109,8 +112,44 @@ Result<RgbImage> read_window(SDL_Window* window) {
   return image;
 }
 
+/// Hands each new message of the session to WindowOptions::on_message, once.
+class MessageLog {
+ public:
+  MessageLog(const WindowOptions& options, const Viewer& viewer)
+      : on_message_(options.on_message), viewer_(viewer), seen_(viewer.session().message_count()) {}
+  void flush() {
+    const ViewSession& session = viewer_.session();
+    if (!on_message_ || session.message_count() == seen_) return;
+    seen_ = session.message_count();
+    on_message_(session.message());
+  }
+
+ private:
+  const std::function<void(const std::string&)>& on_message_;
+  const Viewer& viewer_;
+  std::uint64_t seen_;
+};
+
+/// A `wait:change` input: polls the plan file (events drained) until the session finds it
+/// changed on disk, at most kWaitChangeSeconds.
+Status wait_for_change(Viewer& viewer, MessageLog& log) {
+  const std::uint64_t before = viewer.session().disk_changes();
+  const Uint64 deadline = SDL_GetTicks64() + kWaitChangeSeconds * Uint64{1000};
+  while (viewer.session().disk_changes() == before) {
+    if (SDL_GetTicks64() >= deadline)
+      return Status::failure(
+          Code::io_error, fmt::format("--keys wait:change: {} did not change on disk within {} s",
+                                      viewer.session().path().string(), kWaitChangeSeconds));
+    for (SDL_Event e; SDL_PollEvent(&e) != 0;) {}  // a scripted run takes no live input
+    viewer.poll_file();
+    log.flush();
+    SDL_Delay(kWaitPollMs);
+  }
+  return Status::success();
+}
+
 /// The interactive loop: until the window closes or the viewer is asked to quit.
-Status run_interactive(SDL_Window* window, Viewer& viewer) {
+Status run_interactive(SDL_Window* window, Viewer& viewer, MessageLog& log) {
   Pointer pointer;
   for (bool quit = false; !quit;) {
     SDL_Event e;
@@ -120,8 +159,10 @@ Status run_interactive(SDL_Window* window, Viewer& viewer) {
         return Status::failure(Code::io_error, fmt::format("drawing the window: {}", SDL_GetError()));
       if (const std::optional<InputEvent> input = translate(e, pointer, quit))
         quit = quit || !viewer.handle(*input);
+      log.flush();
     }
     viewer.poll_file();
+    log.flush();
     if (!quit && viewer.needs_redraw() && !present(window, viewer.frame()))
       return Status::failure(Code::io_error, fmt::format("drawing the window: {}", SDL_GetError()));
   }
@@ -129,10 +170,12 @@ Status run_interactive(SDL_Window* window, Viewer& viewer) {
 }
 
 /// Scripted run: `frames` frames shown (events drained between them), then the screenshot.
-Status run_screenshot(SDL_Window* window, Viewer& viewer, const WindowOptions& options) {
+Status run_screenshot(SDL_Window* window, Viewer& viewer, const WindowOptions& options,
+                      MessageLog& log) {
   for (int i = 0; i < options.frames; ++i) {
     for (SDL_Event e; SDL_PollEvent(&e) != 0;) {}  // a headless run takes no live input
     viewer.poll_file();
+    log.flush();
     if (!present(window, viewer.frame()))
       return Status::failure(Code::io_error, fmt::format("drawing the window: {}", SDL_GetError()));
   }
@@ -171,14 +214,19 @@ Status run_window(Viewer& viewer, const WindowOptions& options) {
   Status status = window ? Status::success()
                          : Status::failure(Code::io_error, fmt::format("cannot open a window: {}", SDL_GetError()));
   bool quit = false;
-  for (const InputEvent& input : options.script)
-    if (status && !quit) quit = !viewer.handle(input);
+  MessageLog log(options, viewer);
+  for (const InputEvent& input : options.script) {
+    if (!status || quit) break;
+    if (input.type == InputEvent::Type::wait_change) status = wait_for_change(viewer, log);
+    else quit = !viewer.handle(input);
+    log.flush();
+  }
   if (status && quit && !options.screenshot.empty())
     status = Status::failure(Code::usage_error, fmt::format("--keys quits ('q') before the screenshot {} is taken",
                                          options.screenshot.string()));
   else if (status && !quit)
-    status = options.screenshot.empty() ? run_interactive(window.get(), viewer)
-                                        : run_screenshot(window.get(), viewer, options);
+    status = options.screenshot.empty() ? run_interactive(window.get(), viewer, log)
+                                        : run_screenshot(window.get(), viewer, options, log);
   window.reset();
   SDL_Quit();
   return status;

@@ -1,12 +1,10 @@
 #include "view/view_session.h"
 
 #include <algorithm>
-#include <system_error>
 #include <utility>
 
 #include <fmt/format.h>
 
-#include "io/plan_json.h"
 #include "modeling/build_model.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
@@ -15,14 +13,6 @@
 
 namespace roomcad {
 namespace {
-
-/// The file's modification time, or the epoch when it cannot be read (a missing file then
-/// counts as changed once it reappears).
-std::filesystem::file_time_type modification_time(const std::filesystem::path& path) {
-  std::error_code ec;
-  const auto time = std::filesystem::last_write_time(path, ec);
-  return ec ? std::filesystem::file_time_type{} : time;
-}
 
 /// Every object id of a plan in plan order: walls, openings, lights, cameras.
 std::vector<std::string> object_ids(const Plan& plan) {
@@ -40,28 +30,7 @@ std::string error_count(const Report& report) {
   return fmt::format("{} error{}", n, n == 1 ? "" : "s");
 }
 
-/// "the plan has errors" as text: the reading report of a file that is not a plan.
-std::string reading_failure(const std::filesystem::path& path, const Report& report) {
-  return fmt::format("{}: {}\n{}", path.string(), format_report_summary(report),
-                     format_report_text(report, false));
-}
-
 }  // namespace
-
-Result<ViewSession> ViewSession::open(const std::filesystem::path& path) {
-  Report report;
-  Result<Plan> read = read_plan_file(path, &report);
-  if (!read) {
-    if (report.ok()) return read.error();  // not read at all: the io_error says why
-    return Error{read.code(), reading_failure(path, report), read.error().location};
-  }
-  ViewSession session;
-  session.path_ = path;
-  session.plan_ = std::move(read).value();
-  session.report_ = validate(session.plan_);
-  session.file_time_ = modification_time(path);
-  return session;
-}
 
 std::vector<std::string> ViewSession::error_objects() const {
   std::vector<std::string> ids;
@@ -89,14 +58,17 @@ void ViewSession::select_next() {
   select(it == ids.end() || it + 1 == ids.end() ? ids.front() : *(it + 1));
 }
 
-void ViewSession::set_message(std::string text) { message_ = std::move(text); }
+void ViewSession::set_message(std::string text) {
+  message_ = std::move(text);
+  ++message_count_;
+}
 
 void ViewSession::replace_plan(Plan next) {
   undo_.push_back(std::move(plan_));
   if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
   plan_ = std::move(next);
   report_ = validate(plan_);
-  modified_ = true;
+  modified_ = plan_ != base_plan_;
   ++revision_;
   if (selected_ && !object_kind(plan_, *selected_)) selected_.reset();
 }
@@ -171,45 +143,10 @@ bool ViewSession::undo() {
   plan_ = std::move(undo_.back());
   undo_.pop_back();
   report_ = validate(plan_);
-  modified_ = true;
+  modified_ = plan_ != base_plan_;
   ++revision_;
   if (selected_ && !object_kind(plan_, *selected_)) selected_.reset();
   set_message("undone");
-  return true;
-}
-
-bool ViewSession::save() {
-  pending_cascade_.reset();
-  report_ = validate(plan_);
-  if (!report_.ok()) {
-    set_message(fmt::format("not saved: the plan has {} (in red); fix or undo (Ctrl+Z) first",
-                            error_count(report_)));
-    return false;
-  }
-  if (const Status written = write_plan_file(plan_, path_); !written) {
-    set_message(fmt::format("not saved: {}", written.message()));
-    return false;
-  }
-  file_time_ = modification_time(path_);
-  modified_ = false;
-  set_message(fmt::format("saved {}", path_.string()));
-  return true;
-}
-
-bool ViewSession::reload_if_changed() {
-  const auto time = modification_time(path_);
-  if (time == file_time_) return false;
-  file_time_ = time;  // a bad file is reported once, not every frame
-  Result<Plan> read = read_plan_file(path_);
-  if (!read) {
-    set_message(fmt::format("{} changed on disk but is not a valid plan ({}: {}); the plan shown "
-                            "is kept", path_.string(), to_string(read.code()), read.message()));
-    return false;
-  }
-  if (read.value() == plan_) return false;
-  replace_plan(std::move(read).value());
-  modified_ = false;
-  set_message(fmt::format("reloaded {} (changed on disk; Ctrl+Z goes back)", path_.string()));
   return true;
 }
 

@@ -51,7 +51,7 @@ void Viewer::rebuild_model() {
   try {
     BuildOptions build;
     build.threads = viewer_options_.threads;
-    const Model model = build_model(plan, build);
+    const Model model = models_.build(plan, build);
     scene_ = flatten_model(model);
     objects_ = model.objects;
     base_colors_ = scene_.colors;
@@ -79,6 +79,7 @@ bool Viewer::handle(const InputEvent& input) {
                     ? pan_camera(camera_, -input.x / double(options_.height), input.y / double(options_.height))
                     : orbit_camera(camera_, -input.x * kDragDegreesPerPixel, input.y * kDragDegreesPerPixel);
       break;
+    case InputEvent::Type::wait_change: return true;  // the window waits (view/sdl_window.h)
     case InputEvent::Type::key: {
       const std::optional<Action> action = action_for(input);
       if (!action) return true;
@@ -92,7 +93,9 @@ bool Viewer::handle(const InputEvent& input) {
 }
 
 bool Viewer::poll_file() {
-  if (!session_.reload_if_changed()) return false;
+  const std::uint64_t messages = session_.message_count();
+  session_.reload_if_changed();
+  if (session_.message_count() == messages) return false;  // every change found says so
   dirty_ = true;
   return true;
 }
@@ -139,7 +142,8 @@ void Viewer::draw() {
   if (wireframe_) draw_wireframe(shown_, scene_, frame_camera(scene_, options_));
   // Measured before the overlay, which shows it (the text itself costs well under 1%).
   frame_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (viewer_options_.overlay) draw_overlay(shown_, overlay_text());
+  // A conflict's choices are shown even with the overlay off: they must not go unseen.
+  if (viewer_options_.overlay || session_.in_conflict()) draw_overlay(shown_, overlay_text());
 }
 
 const RgbImage& Viewer::frame() {

@@ -18,6 +18,7 @@
 #include "view/frame_overlay.h"
 #include "view/input.h"
 #include "view/key_bindings.h"
+#include "view/model_cache.h"
 #include "view/view_session.h"
 
 namespace roomcad {
@@ -43,10 +44,13 @@ class Viewer {
   Viewer(ViewSession session, const ViewerOptions& options);
 
   /// Applies one input: a bound key's action, a click (selects what the pixel shows, or
-  /// nothing), a drag (orbit; right button: pan) or wheel notches (zoom).
+  /// nothing), a drag (orbit; right button: pan) or wheel notches (zoom). A wait does nothing
+  /// here: the window does the waiting (run_window).
   /// @return false when the input asks to quit.
   bool handle(const InputEvent& input);
-  /// Reloads the plan if its file changed on disk. @return true if it did.
+  /// Looks at the plan's file (ViewSession::reload_if_changed): reloads it, or shows the
+  /// conflict with the window's unsaved edits. @return true if it found a change (the frame
+  /// will be drawn again).
   bool poll_file();
   /// @return the current frame, drawn again only if something changed since the last call.
   /// Cost: one render_scene (see render/renderer.h) when anything changed, else O(1).
@@ -62,6 +66,8 @@ class Viewer {
   [[nodiscard]] double last_frame_ms() const { return frame_ms_; }
   /// Milliseconds the model rebuild before the last frame took (0 if the plan had not changed).
   [[nodiscard]] double last_build_ms() const { return build_ms_; }
+  /// What the last model rebuild built and reused (view/model_cache.h).
+  [[nodiscard]] const ModelCacheStats& last_build_stats() const { return models_.last_stats(); }
 
  private:
   void rebuild_model();
@@ -81,6 +87,7 @@ class Viewer {
   ViewerOptions viewer_options_;
   RenderOptions options_;
   Camera camera_;
+  ModelCache models_;                     ///< rebuilds only the wall groups an edit touched
   Scene scene_;
   std::vector<Color> base_colors_;        ///< scene_ colours before highlighting
   std::vector<std::string> objects_;      ///< Model::objects of the model drawn

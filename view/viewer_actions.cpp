@@ -111,6 +111,8 @@ void Viewer::apply_edit(Action a) {
     case Action::delete_selection: session_.delete_selection(); break;
     case Action::save: session_.save(); break;
     case Action::undo: session_.undo(); break;
+    case Action::reload_file: session_.reload_file(); break;
+    case Action::keep_window_version: session_.keep_window_version(); break;
     default: break;
   }
 }
@@ -155,7 +157,7 @@ OverlayText Viewer::overlay_text() const {
   t.help =
       "a/d/w/s orbit  x/y/z turn  shift+arrows pan  +/- zoom  1-4 views  p proj  h shadows  "
       "m shading  g grid  e wire  l level  o text  click select  arrows move  r turn  del delete  "
-      "ctrl+s save  ctrl+z undo  q quit";
+      "ctrl+s save  ctrl+z undo  ctrl+r reload  ctrl+k keep yours  q quit";
   return t;
 }
 

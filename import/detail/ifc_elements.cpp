@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/detail/ifc_elements.h"
+#include "modeling/signed_area.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,16 +15,6 @@ namespace {
 using step::Value;
 
 constexpr double kFlat = 1e-6;  ///< relative slope below which an extrusion counts as vertical
-
-double signed_area(const std::vector<Point2>& ring) {
-  double a = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Point2& p = ring[i];
-    const Point2& q = ring[(i + 1) % ring.size()];
-    a += p.x * q.y - q.x * p.y;
-  }
-  return a / 2;
-}
 
 /// A vertical extrusion of a horizontal profile, in metres: its outline, holes, bottom and depth.
 struct Extrusion {

@@ -4,6 +4,7 @@
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Polygon_set_2.h>
 
+#include "modeling/detail/buildable_plan.h"
 #include "modeling/detail/exact_wall.h"
 #include "modeling/mesh_check.h"
 
@@ -19,13 +20,13 @@ struct Prism {
   double z0, z1;
 };
 
-Polygon to_polygon(const std::array<EK::Point_2, 4>& q) { return Polygon(q.begin(), q.end()); }
+Polygon to_polygon(const std::vector<EK::Point_2>& q) { return Polygon(q.begin(), q.end()); }
 
 // The union of the prisms' outlines over the slab [z0, z1].
 PolygonSet union_in_slab(const std::vector<Prism>& prisms, double z0, double z1) {
   std::vector<Polygon> present;
   for (const Prism& p : prisms)
-    if (p.z0 <= z0 && p.z1 >= z1) present.push_back(p.outline);
+    if (p.z0 <= z0 && p.z1 >= z1 && !p.outline.is_empty()) present.push_back(p.outline);
   PolygonSet set;
   if (!present.empty()) set.join(present.begin(), present.end());
   return set;
@@ -44,8 +45,11 @@ EK::FT area_of(const PolygonSet& set) {
 
 }  // namespace
 
-double analytic_wall_volume(const Plan& plan) {
-  const std::vector<detail::WallFrame> frames = detail::make_wall_frames(plan, find_joins(plan));
+double analytic_wall_volume(const Plan& input) {
+  const detail::BuildablePlan buildable = detail::make_buildable(input);
+  const Plan& plan = buildable.plan;
+  const std::vector<detail::WallFrame> frames =
+      detail::make_wall_frames(plan, find_joins(plan), buildable.through_mitre);
   std::vector<Prism> walls, holes;
   std::vector<double> levels;
   for (const detail::WallFrame& f : frames) {

@@ -21,15 +21,18 @@ namespace {
 using Nef = CGAL::Nef_polyhedron_3<EK>;
 using EMesh = CGAL::Surface_mesh<EK::Point_3>;
 
-// A prism over a counter-clockwise quad, from z0 to z1, as a Nef polyhedron.
-Nef make_prism(const std::array<EK::Point_2, 4>& quad, double z0, double z1) {
+// A prism over a convex counter-clockwise polygon, from z0 to z1, as a Nef polyhedron.
+Nef make_prism(const std::vector<EK::Point_2>& polygon, double z0, double z1) {
+  const std::size_t n = polygon.size();
   std::vector<EK::Point_3> points;
   for (double z : {z0, z1})
-    for (const EK::Point_2& p : quad) points.emplace_back(p.x(), p.y(), z);
-  std::vector<std::vector<std::size_t>> faces{{3, 2, 1, 0}, {4, 5, 6, 7}};
-  for (std::size_t k = 0; k < 4; ++k) {
-    const std::size_t n = (k + 1) % 4;
-    faces.push_back({k, n, n + 4, k + 4});
+    for (const EK::Point_2& p : polygon) points.emplace_back(p.x(), p.y(), z);
+  std::vector<std::vector<std::size_t>> faces(2);
+  for (std::size_t k = 0; k < n; ++k) {
+    faces[0].push_back(n - 1 - k);
+    faces[1].push_back(n + k);
+    const std::size_t next = (k + 1) % n;
+    faces.push_back({k, next, next + n, k + n});
   }
   EMesh mesh;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, faces, mesh);
@@ -102,13 +105,18 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
 
 FaceSoup build_cluster_cgal(std::span<const WallFrame* const> walls, int first_opening_object) {
   std::vector<Nef> prisms, holes;
+  // A footprint or hole with no area, or a height that rounds to nothing, has no volume.
   for (const WallFrame* f : walls) {
-    prisms.push_back(make_prism(exact_footprint(*f), f->base, f->top));
-    for (const Hole& h : f->holes) holes.push_back(make_prism(exact_hole_footprint(*f, h), h.z0, h.z1));
+    if (const auto footprint = exact_footprint(*f); !footprint.empty() && f->base < f->top)
+      prisms.push_back(make_prism(footprint, f->base, f->top));
+    for (const Hole& h : f->holes)
+      if (const auto hole = exact_hole_footprint(*f, h); !hole.empty() && h.z0 < h.z1)
+        holes.push_back(make_prism(hole, h.z0, h.z1));
   }
+  const bool prisms_were_empty = prisms.empty();
   Nef solid = unite_balanced(std::move(prisms));
   if (!holes.empty()) solid -= unite_balanced(std::move(holes));
-  if (solid.is_empty() && !walls.empty())
+  if (solid.is_empty() && !prisms_were_empty)
     throw PreconditionError(fmt::format("build_model: the walls joined to wall #{} leave nothing "
                                         "once their openings are cut", walls.front()->wall), Code::not_buildable);
   return to_soup(solid, walls, first_opening_object);

@@ -20,10 +20,12 @@ double tolerance_for(std::span<const OpenMesh::Vec3d> points) {
   return 1e-6 + 1e-12 * m;
 }
 
+// A hole that runs on through a mitre reaches past its u range into the mitre's wedge.
 bool is_in_hole(const WallFrame& f, const Hole& h, std::span<const OpenMesh::Vec3d> points, double eps) {
+  const double u0 = h.through_mitre[0] ? -INFINITY : h.u0 - eps, u1 = h.through_mitre[1] ? INFINITY : h.u1 + eps;
   for (const auto& p : points) {
     const Local l = to_local(f, p);
-    if (l.u < h.u0 - eps || l.u > h.u1 + eps || std::abs(l.w) > f.half + eps || l.z < h.z0 - eps ||
+    if (l.u < u0 || l.u > u1 || std::abs(l.w) > f.half + eps || l.z < h.z0 - eps ||
         l.z > h.z1 + eps)
       return false;
   }
@@ -63,14 +65,14 @@ std::size_t count_inside(const WallFrame& f, std::span<const OpenMesh::Vec3d> po
   return count;
 }
 
+}  // namespace
+
 FaceKind wall_face_kind(const WallFrame& f, const OpenMesh::Vec3d& n) {
   if (n[2] > 0.5) return FaceKind::wall_top;
   if (n[2] < -0.5) return FaceKind::wall_bottom;
   const double across = n[0] * f.normal.x + n[1] * f.normal.y;
   return std::abs(across) > 0.9 ? FaceKind::wall_face : FaceKind::wall_end;
 }
-
-}  // namespace
 
 FaceLabel classify_face(std::span<const OpenMesh::Vec3d> points,
                         std::span<const WallFrame* const> walls, int first_opening_object) {

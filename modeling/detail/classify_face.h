@@ -15,6 +15,10 @@ struct FaceLabel {
   Color color;
 };
 
+/// @return the kind of a face of wall `frame` with outward normal `n` (unit): top, bottom, side
+///         (normal across the wall) or end. O(1).
+[[nodiscard]] FaceKind wall_face_kind(const WallFrame& frame, const OpenMesh::Vec3d& n);
+
 /// Labels a face of the solid of `walls`.
 /// @param[in] points  the face's corners (rounded), counter-clockwise from outside
 /// @param[in] walls   the walls (and their holes) the face came from

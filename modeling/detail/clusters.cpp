@@ -133,11 +133,12 @@ Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, Boolean
   const std::size_t n = frames.size();
   Work work;
   work.fast_frames = frames;
-  if (path != BooleanPath::cgal) work.hubs = find_hubs(frames, joins);
+  const bool fast = path == BooleanPath::automatic || path == BooleanPath::fast_then_nef;
+  if (fast) work.hubs = find_hubs(frames, joins);
   for (const Hub& hub : work.hubs) attach_hub(hub, work.fast_frames);
-  if (path != BooleanPath::cgal) work.tees = find_tees(work.fast_frames, joins);
+  if (fast) work.tees = find_tees(work.fast_frames, joins);
   attach_tees(work.tees, work.fast_frames);
-  std::vector<char> general(n, path == BooleanPath::cgal ? 1 : 0);
+  std::vector<char> general(n, fast ? 0 : 1);
   DisjointSets sets(n);
   // Touching is judged on the fast-path shapes: a stem clipped at its through-wall's face no
   // longer reaches the walls on the other side (all of them are joined to that wall anyway).
@@ -146,7 +147,7 @@ Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, Boolean
     if (!has_holes_clear_of_joins(work.fast_frames[i])) general[i] = 1;
   const std::vector<char> root_general = find_general_components(general, sets);
   work.items = group_walls(root_general, sets);
-  // A hub among fast walls adds its top and bottom; a cluster's hubs are CGAL's business.
+  // A hub among fast walls adds its top and bottom; a cluster builds its own hubs.
   for (std::size_t h = 0; h < work.hubs.size(); ++h)
     if (!root_general[sets.find(work.hubs[h].arms.front().first)])
       work.items.push_back({WorkItem::Kind::hub, {}, h});

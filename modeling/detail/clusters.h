@@ -1,4 +1,4 @@
-// Which walls take the fast path and which go to CGAL together (clusters).
+// Which walls take the fast path and which go to a boolean path together (clusters).
 //
 // A wall needs the general path if it takes part in a unite join that no hub or tee builds
 // (detail/hubs.h, detail/tees.h), is mitred to a wall of another base or height, has a hole not clear of a
@@ -18,7 +18,7 @@
 
 namespace roomcad::detail {
 
-/// A unit of work: one fast wall, one CGAL cluster, or one hub.
+/// A unit of work: one fast wall, one cluster (general or Nef path), or one hub.
 struct WorkItem {
   enum class Kind { fast_wall, cluster, hub } kind = Kind::fast_wall;
   std::vector<std::size_t> walls;  ///< ascending indices into the frames (one for a fast wall)
@@ -33,7 +33,7 @@ struct Work {
 };
 
 /// Splits the walls into work items.
-/// @param[in] path  BooleanPath::cgal puts every wall in a cluster.
+/// @param[in] path  BooleanPath::general and ::nef put every wall in a cluster.
 /// @return the work; every wall is in exactly one item. O(n log^2 n + k) for k touching pairs.
 [[nodiscard]] Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins,
                              BooleanPath path);

@@ -19,8 +19,13 @@ Color darker(Color c) {
   return {scale(c.r), scale(c.g), scale(c.b)};
 }
 
-// A closed box over a counter-clockwise quad, from z0 to z1.
+// A closed box over a counter-clockwise quad, from z0 to z1; nothing for a box the doubles
+// cannot hold (corners that round together: a hairline opening's pane or leaf).
 void add_box(const std::array<Point2, 4>& quad, double z0, double z1, SoupFace proto, FaceSoup& out) {
+  if (!(z0 < z1)) return;
+  for (std::size_t k = 0; k < 4; ++k)
+    for (std::size_t m = k + 1; m < 4; ++m)
+      if (quad[k] == quad[m]) return;
   auto p = [&](std::size_t k, double z) { return OpenMesh::Vec3d(quad[k].x, quad[k].y, z); };
   proto.points = {p(3, z0), p(2, z0), p(1, z0), p(0, z0)};
   out.push_back(proto);

@@ -2,6 +2,7 @@
 #include "modeling/detail/radical.h"
 
 #include <CGAL/Interval_nt.h>
+#include <mpfr.h>
 
 #include <bit>
 #include <cmath>
@@ -172,6 +173,38 @@ std::pair<double, double> to_interval(const Radical& x) {
   return {sum.inf(), sum.sup()};
 }
 
+std::optional<double> round_if_clear(const Radical& x) {
+  if (x.terms_.empty()) return 0.0;
+  constexpr mpfr_prec_t kBits = 192;
+  mpfr_t lo, hi, tl, th, rl, rh;
+  for (mpfr_ptr v : {lo, hi, tl, th, rl, rh}) mpfr_init2(v, kBits);
+  mpfr_set_zero(lo, 1), mpfr_set_zero(hi, 1);
+  for (const auto& [m, c] : x.terms_) {
+    mpfr_set_q(tl, c.get_mpq_t(), MPFR_RNDD);
+    mpfr_set_q(th, c.get_mpq_t(), MPFR_RNDU);
+    for (std::size_t i = 0; (m >> i) != 0; ++i) {
+      if (!((m >> i) & 1)) continue;
+      // [rl, rh] holds sqrt(s_i) >= 0: multiply [tl, th] by it, rounding outward.
+      mpfr_set_q(rl, radicands()[i].get_mpq_t(), MPFR_RNDD);
+      mpfr_set_q(rh, radicands()[i].get_mpq_t(), MPFR_RNDU);
+      mpfr_sqrt(rl, rl, MPFR_RNDD);
+      mpfr_sqrt(rh, rh, MPFR_RNDU);
+      const bool low_negative = mpfr_sgn(tl) < 0, high_negative = mpfr_sgn(th) < 0;
+      mpfr_mul(tl, tl, low_negative ? rh : rl, MPFR_RNDD);
+      mpfr_mul(th, th, high_negative ? rl : rh, MPFR_RNDU);
+    }
+    mpfr_add(lo, lo, tl, MPFR_RNDD);
+    mpfr_add(hi, hi, th, MPFR_RNDU);
+  }
+  const double a = mpfr_get_d(lo, MPFR_RNDN), b = mpfr_get_d(hi, MPFR_RNDN);
+  // Equal bounds could sit on a midpoint, where MPFR ties to even and round_to_nearest to the
+  // lower double: leave those to it.
+  const bool clear = a == b && mpfr_equal_p(lo, hi) == 0 && std::isfinite(a);
+  for (mpfr_ptr v : {lo, hi, tl, th, rl, rh}) mpfr_clear(v);
+  if (clear) return a;
+  return std::nullopt;
+}
+
 namespace {
 
 /// Doubles in order as integers (negative ones mirrored), so that a bisection can walk them.
@@ -187,6 +220,7 @@ double from_order_key(std::int64_t k) {
 }  // namespace
 
 double round_to_nearest(const Radical& x) {
+  if (const auto clear = round_if_clear(x)) return *clear;
   const auto [inf, sup] = to_interval(x);
   // Bisect for the largest double <= x between the bounds: at most 64 exact comparisons.
   std::int64_t lo = order_key(inf), hi = order_key(sup);

@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -61,6 +62,11 @@ class Radical {
   ///         cancel). Cost: one interval evaluation per term.
   friend std::pair<double, double> to_interval(const Radical& x);
 
+  /// @return the double nearest to x when bounds of x at 192 bits (MPFR, rounded outward)
+  ///         round to the same double, else nothing (x within 2^-190 or so of a midpoint).
+  ///         Cost: a few MPFR operations per term.
+  friend std::optional<double> round_if_clear(const Radical& x);
+
  private:
   using Mask = std::uint64_t;  ///< bit i: the term has the factor sqrt(s_i)
   std::vector<std::pair<Mask, mpq_class>> terms_;  ///< by increasing mask, no zero coefficient
@@ -76,7 +82,8 @@ inline bool operator>=(const Radical& a, const Radical& b) { return sign(a - b) 
 inline bool operator==(const Radical& a, const Radical& b) { return sign(a - b) == 0; }
 inline bool operator!=(const Radical& a, const Radical& b) { return sign(a - b) != 0; }
 
-/// @return the double nearest to x, ties to the lower one. Cost: about 64 exact comparisons.
+/// @return the double nearest to x, ties to the lower one. Cost: a few MPFR operations
+/// (round_if_clear); about 64 exact comparisons in the rare case that cannot tell.
 double round_to_nearest(const Radical& x);
 
 }  // namespace roomcad::exact

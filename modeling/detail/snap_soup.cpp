@@ -77,8 +77,9 @@ void drop_repeats_and_spikes(Polygon& p) {
   }
 }
 
-// Appends the polygon, cleaned, to `out`: split where it touches itself at a corner.
-void append_clean(Polygon p, std::vector<Polygon>& out) {
+// Appends the polygon, cleaned, to `out` (and its tag to `tags`): split where it touches
+// itself at a corner.
+void append_clean(Polygon p, std::size_t tag, std::vector<Polygon>& out, std::vector<std::size_t>& tags) {
   drop_repeats_and_spikes(p);
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = i + 1; j < p.size(); ++j) {
@@ -86,11 +87,13 @@ void append_clean(Polygon p, std::vector<Polygon>& out) {
       Polygon first(p.begin() + std::ptrdiff_t(i), p.begin() + std::ptrdiff_t(j));
       Polygon second(p.begin() + std::ptrdiff_t(j), p.end());
       second.insert(second.end(), p.begin(), p.begin() + std::ptrdiff_t(i));
-      append_clean(std::move(first), out);
-      append_clean(std::move(second), out);
+      append_clean(std::move(first), tag, out, tags);
+      append_clean(std::move(second), tag, out, tags);
       return;
     }
-  if (p.size() >= 3) out.push_back(std::move(p));
+  if (p.size() < 3) return;
+  out.push_back(std::move(p));
+  tags.push_back(tag);
 }
 
 // The polygon's cycle starting at its lowest index (same orientation).
@@ -100,8 +103,9 @@ Polygon canonical(const Polygon& p) {
   return c;
 }
 
-// Removes both polygons of every pair that are one another's reverse. O(n log n).
-std::vector<Polygon> drop_fins(std::vector<Polygon> polygons) {
+// Removes both polygons (and their tags) of every pair that are one another's reverse.
+// O(n log n).
+void drop_fins(std::vector<Polygon>& polygons, std::vector<std::size_t>& tags) {
   std::map<Polygon, std::vector<std::size_t>> open;  // cycle -> unmatched polygons with it
   std::vector<char> gone(polygons.size(), 0);
   for (std::size_t k = 0; k < polygons.size(); ++k) {
@@ -114,24 +118,32 @@ std::vector<Polygon> drop_fins(std::vector<Polygon> polygons) {
     }
     open[canonical(polygons[k])].push_back(k);
   }
-  std::vector<Polygon> kept;
-  kept.reserve(polygons.size());
+  std::size_t kept = 0;
   for (std::size_t k = 0; k < polygons.size(); ++k)
-    if (!gone[k]) kept.push_back(std::move(polygons[k]));
-  return kept;
+    if (!gone[k]) {
+      if (kept != k) polygons[kept] = std::move(polygons[k]), tags[kept] = tags[k];
+      ++kept;
+    }
+  polygons.resize(kept);
+  tags.resize(kept);
 }
 
 }  // namespace
 
 IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
   const std::vector<std::size_t> target = find_snap_targets(soup.points, tolerance);
+  const bool tagged = !soup.tags.empty();
   std::vector<Polygon> cleaned;
+  std::vector<std::size_t> tags;
   cleaned.reserve(soup.polygons.size());
-  for (Polygon& p : soup.polygons) {
+  for (std::size_t k = 0; k < soup.polygons.size(); ++k) {
+    Polygon& p = soup.polygons[k];
     for (std::size_t& i : p) i = target[i];
-    append_clean(std::move(p), cleaned);
+    append_clean(std::move(p), tagged ? soup.tags[k] : 0, cleaned, tags);
   }
-  soup.polygons = drop_fins(std::move(cleaned));
+  drop_fins(cleaned, tags);
+  soup.polygons = std::move(cleaned);
+  if (tagged) soup.tags = std::move(tags);
   return soup;
 }
 

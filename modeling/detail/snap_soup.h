@@ -15,6 +15,9 @@ namespace roomcad::detail {
 struct IndexedSoup {
   std::vector<OpenMesh::Vec3d> points;
   std::vector<std::vector<std::size_t>> polygons;
+  /// Optional, one per polygon (what face it came from): snap_soup carries each to the
+  /// polygons its polygon becomes.
+  std::vector<std::size_t> tags;
 };
 
 /// Snaps together points within `tolerance` of each other (per coordinate, transitively;

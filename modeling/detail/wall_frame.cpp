@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string_view>
 #include <unordered_map>
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include "modeling/build_model.h"
 
@@ -55,6 +57,11 @@ Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
         "build_model: opening '{}' cannot be cut: u [{}, {}] x v [{}, {}] is not a non-empty "
         "rectangle inside wall '{}' ([0, {}] x [0, {}])",
         o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length, w.height), Code::not_buildable);
+  for (std::size_t k = 0; k < 4; ++k)
+    if (f.footprint[k] == f.footprint[(k + 1) % 4])
+      throw PreconditionError(fmt::format(
+          "build_model: opening '{}' cannot be cut: wall '{}' is shorter than its mitres (a side "
+          "of its footprint has no length)", o.id, w.id), Code::not_buildable);
   // base + (sill + height) equals the wall's top exactly when the opening reaches it.
   return {index, o.offset, o.offset + o.width, w.base + o.sill, w.base + (o.sill + o.height)};
 }
@@ -102,22 +109,32 @@ Joins with_hairline_mitres(const Plan& plan, Joins joins) {
 
 }  // namespace
 
-std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_joins) {
+std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_joins,
+                                        std::span<const std::array<bool, 2>> through_mitre) {
   const Joins joins = with_hairline_mitres(plan, plan_joins);
-  std::vector<WallFrame> frames;
-  frames.reserve(plan.walls.size());
+  // Frames are independent (a skewed wall's exact corners cost tens of microseconds): built
+  // in parallel, the first wall that cannot be built (in plan order) reported.
+  std::vector<WallFrame> frames(plan.walls.size());
+  std::vector<std::optional<PreconditionError>> failures(plan.walls.size());
+  tbb::parallel_for(std::size_t{0}, plan.walls.size(), [&](std::size_t i) {
+    try {
+      frames[i] = make_frame(plan, joins, i);
+    } catch (const PreconditionError& e) {
+      failures[i] = e;
+    }
+  });
+  for (const auto& failure : failures)
+    if (failure) throw *failure;
   std::unordered_map<std::string_view, std::size_t> by_id;
-  for (std::size_t i = 0; i < plan.walls.size(); ++i) {
-    frames.push_back(make_frame(plan, joins, i));
-    by_id.emplace(plan.walls[i].id, i);
-  }
+  for (std::size_t i = 0; i < plan.walls.size(); ++i) by_id.emplace(plan.walls[i].id, i);
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     const auto it = by_id.find(plan.openings[i].wall);
     if (it == by_id.end())
       throw PreconditionError(fmt::format("build_model: opening '{}' cannot be cut: its wall '{}' "
                                           "does not exist",
                                           plan.openings[i].id, plan.openings[i].wall), Code::not_buildable);
-    frames[it->second].holes.push_back(make_hole(plan, i, frames[it->second]));
+    Hole& hole = frames[it->second].holes.emplace_back(make_hole(plan, i, frames[it->second]));
+    if (i < through_mitre.size()) hole.through_mitre = through_mitre[i];
   }
   for (WallFrame& f : frames)
     std::sort(f.holes.begin(), f.holes.end(),

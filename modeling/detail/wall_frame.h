@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "modeling/joins.h"
@@ -16,6 +17,9 @@ namespace roomcad::detail {
 struct Hole {
   std::size_t opening = 0;  ///< index into Plan::openings
   double u0 = 0.0, u1 = 0.0, z0 = 0.0, z1 = 0.0;
+  /// Per end (from, to): the hole runs on through the mitre there, to the mitre line (a piece
+  /// of an opening across the chords of an arc wall, buildable_plan.h).
+  std::array<bool, 2> through_mitre{false, false};
 };
 
 /// Where the end of another wall (a stem) is glued to one side face of this wall: that side
@@ -45,6 +49,14 @@ struct WallFrame {
   std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
 
+/// @return whether the hole's footprint reaches the line of the footprint's end `end` (0: from,
+///         1: to) rather than stopping square at u0 (u1): it reaches that end, and the end is
+///         a square cap or the hole runs on through its mitre. O(1).
+[[nodiscard]] inline bool hole_reaches_end_line(const WallFrame& f, const Hole& h, int end) {
+  const bool at_end = end == 0 ? h.u0 <= 0.0 : h.u1 >= f.length;
+  return at_end && (!f.capless[std::size_t(end)] || h.through_mitre[std::size_t(end)]);
+}
+
 /// Frames for every wall, with the holes of every opening. Ends are mitred per `joins`, and
 /// also where two walls of equal thickness among three or more at one node run on from each
 /// other within 1e-6 rad (a hairline wedge between square ends; see wall_frame.cpp).
@@ -53,7 +65,10 @@ struct WallFrame {
 /// @throws PreconditionError naming the wall or opening if a wall is degenerate (length,
 ///         thickness or height not positive and finite) or an opening cannot be cut (unknown
 ///         wall, empty, or not inside [0, length] x [0, height] of its wall).
-[[nodiscard]] std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& joins);
+/// @param through_mitre  per opening (or empty: none), whether its hole runs on through a
+///                       mitre at its wall's from and to ends (Hole::through_mitre).
+[[nodiscard]] std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& joins,
+                                                      std::span<const std::array<bool, 2>> through_mitre = {});
 
 /// @return the point at u along the wall on its right (side = -1) or left (side = +1) face,
 ///         rounded to doubles. O(1).

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -102,6 +103,27 @@ TEST(BuildCommand, WallsOnlyLeavesOutFloorAndFixtures) {
   const std::string mtl = test::read_bytes(dir / "w.mtl");
   EXPECT_EQ(mtl.find("c_c8c8c8"), std::string::npos) << "floor colour in " << mtl;
   EXPECT_EQ(mtl.find("c_8b5a2b"), std::string::npos) << "door colour in " << mtl;
+}
+
+TEST(BuildCommand, LevelBuildsOneStoreyWhereItStands) {
+  TempDir dir;
+  Plan plan = two_rooms();
+  plan.levels = {{"ground", 0.0, 2.8, {}}, {"first", 3.0, 2.8, {}}};
+  for (Wall& w : plan.walls) w.level = "ground";
+  plan.walls[4].level = "first";  // mid, with its door, up one storey
+  const std::string path = write_plan(dir, plan);
+  const auto off = dir / "first.off";
+  const auto r = run_roomcad({"build", path, "--force", "--level", "first", "--parts", "walls", "--check", "-o", off.string()});
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("check: ok"), std::string::npos) << r.out;
+  const auto vertices = read_off_vertices(test::read_bytes(off));
+  ASSERT_FALSE(vertices.empty());
+  const auto lowest = std::min_element(vertices.begin(), vertices.end(), [](const auto& a, const auto& b) { return a[2] < b[2]; });
+  EXPECT_EQ((*lowest)[2], 3.0);
+  const auto unknown = run_roomcad({"build", path, "--level", "attic", "-o", (dir / "a.off").string()});
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("--level 'attic'"), std::string::npos) << unknown.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "a.off"));
 }
 
 TEST(BuildCommand, BadArgumentsExitTwoAndWriteNothing) {

@@ -3,13 +3,18 @@
 // examples/*.json.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include "support/plan_reading.h"
 #include "io/plan_json.h"
+#include "io/plan_lock.h"
 #include "support/run_command.h"
 
 namespace roomcad {
@@ -289,7 +294,37 @@ TEST_F(EditCommands, EachCommandHasHelp) {
     EXPECT_EQ(r.status, 0) << verb;
     EXPECT_NE(r.out.find("Examples:"), std::string::npos) << verb << "\n" << r.out;
     EXPECT_NE(r.out.find("--dry-run"), std::string::npos) << verb;
+    EXPECT_NE(r.out.find("--wait SECONDS"), std::string::npos) << verb;
   }
+}
+
+TEST_F(EditCommands, EveryEditWaitsForThePlansLockThenGivesUpNamingTheHolder) {
+  const fs::path plan = room();
+  const std::string before = read_bytes(plan);
+  const Result<PlanLock> held =
+      PlanLock::acquire(plan, std::chrono::milliseconds(0), "roomcad view");
+  ASSERT_TRUE(held.ok()) << held.error();
+  const std::vector<std::pair<std::string, std::string>> edits{
+      {"add", "light --direction 0,0,-1"}, {"rm", "win1"}, {"move", "south --by 0,0.1"},
+      {"rotate", "win1 --deg 0"}, {"scale", "--all --factor 2"}, {"set", "south height=2.5"}};
+  for (const auto& [verb, rest] : edits) {
+    const CommandResult r = edit(verb, plan, rest + " --wait 0.2");
+    EXPECT_EQ(r.status, 2) << verb;
+    EXPECT_EQ(test::failure_code(r), Code::lock_timeout) << verb << ": " << r.err;
+    const std::string says = fmt::format(
+        "roomcad {}: error[lock_timeout]: {} is locked by another editor (pid {}, roomcad view), which did not "
+        "release it within 0.2 s; --wait SECONDS waits longer",
+        verb, plan.string(), ::getpid());
+    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+  }
+  const CommandResult formatted = test::run_roomcad({"fmt", plan.string(), "--wait", "0"});
+  EXPECT_EQ(formatted.status, 2);
+  EXPECT_EQ(test::failure_code(formatted), Code::lock_timeout) << formatted.err;
+  EXPECT_NE(formatted.err.find("locked by another editor"), std::string::npos) << formatted.err;
+  EXPECT_EQ(read_bytes(plan), before);
+  // Reading needs no lock: a dry run and fmt --check go on.
+  EXPECT_EQ(edit("move", plan, "south --by 0,0.1 --dry-run --wait 0").status, 0);
+  EXPECT_EQ(test::run_roomcad({"fmt", "--check", plan.string(), "--wait", "0"}).status, 0);
 }
 
 }  // namespace

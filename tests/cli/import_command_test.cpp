@@ -1,4 +1,6 @@
-// `roomcad import` run as a program: exit statuses, the plan file it writes, its messages.
+// `roomcad import` run as a program: exit statuses, the plan file it writes, its messages, the
+// lock of the plan it replaces.
+#include <chrono>
 #include <filesystem>
 #include <string>
 
@@ -7,6 +9,7 @@
 #include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "import/sweethome3d_import.h"
+#include "io/plan_lock.h"
 #include "support/run_command.h"
 
 namespace roomcad {
@@ -78,6 +81,28 @@ TEST(ImportCommand, UnwritableOutputExitsTwo) {
   EXPECT_EQ(run.status, 2);
   EXPECT_EQ(test::failure_code(run), Code::io_error);
   EXPECT_NE(run.err.find("no-such-dir"), std::string::npos) << run.err;
+}
+
+TEST(ImportCommand, ReplacesAPlanOnlyUnderItsLock) {
+  const test::TempDir dir;
+  const fs::path home = kHomes / "eteks-example-homes" / "Studio.Home.xml";
+  const fs::path plan = dir / "p.json";
+  ASSERT_TRUE(test::write_bytes(plan, "{}"));  // another editor's plan, being edited
+  {
+    const Result<PlanLock> held =
+        PlanLock::acquire(plan, std::chrono::milliseconds(0), "roomcad set");
+    ASSERT_TRUE(held.ok()) << held.error();
+    const test::CommandResult run =
+        run_roomcad({"import", home.string(), "-o", plan.string(), "--wait", "0.1"});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(test::failure_code(run), Code::lock_timeout) << run.err;
+    EXPECT_NE(run.err.find("roomcad set"), std::string::npos) << run.err;  // the holder
+    EXPECT_EQ(test::read_bytes(plan), "{}");
+  }
+  const test::CommandResult run = run_roomcad({"import", home.string(), "-o", plan.string()});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_TRUE(test::read_plan_at(plan).plan.has_value());
+  EXPECT_FALSE(fs::exists(lock_file_of(plan)));  // released, and removed
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // roomcad view under Xvfb: the window's screenshot is `roomcad render`'s picture of the same
 // camera, keys move the camera, and click + arrow + Ctrl+S moves a wall one cell in the saved
-// file (Ctrl+Z before saving gives the plan back). Xvfb missing is a failure, not a skip:
-// scripts/setup.sh installs it.
+// file (Ctrl+Z before saving gives the plan back); a command-line edit while the window holds
+// unsaved edits gives the conflict prompt, and Ctrl+K and Ctrl+R each do what it says. Xvfb
+// missing is a failure, not a skip: scripts/setup.sh installs it.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -153,6 +154,69 @@ TEST_F(ViewCommand, ClickArrowAndSaveMoveAWallOneCell) {
   EXPECT_EQ(read_plan_file(plan).value(), moved);  // the undone move was not saved
   view_shot(dir_ / "c.png", {plan.string(), "--keys", fmt::format("1,{},left,ctrl+s", click_moved)});
   EXPECT_EQ(read_plan_file(plan).value(), original);
+}
+
+/// Runs `roomcad view PLAN --keys KEYS` to a screenshot in a thread while, as soon as the
+/// window's first save changes the file, another editor runs `roomcad set PLAN west height=2.9`.
+/// @return what the window printed and its exit status.
+test::CommandResult view_while_another_edits(const TempDir& dir, const std::filesystem::path& plan,
+                                             const std::string& keys) {
+  const std::string before = test::read_bytes(plan);
+  test::CommandResult window;
+  std::thread view([&] {
+    window = run_roomcad({"view", plan.string(), "--keys", keys, "--width", kWidth, "--height",
+                          kHeight, "--screenshot", (dir / "conflict.png").string()});
+  });
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (test::read_bytes(plan) == before && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const auto other = run_roomcad({"set", plan.string(), "west", "height=2.9", "--wait", "60"});
+  view.join();
+  EXPECT_EQ(other.status, 0) << other.err;
+  EXPECT_EQ(window.status, 0) << window.err;
+  // The change was seen while the window held unsaved edits, and the prompt named both keys.
+  EXPECT_NE(window.err.find("changed on disk and the window has unsaved edits: Ctrl+R loads the "
+                            "file"), std::string::npos) << window.err;
+  EXPECT_NE(window.err.find("Ctrl+K keeps the window's version"), std::string::npos) << window.err;
+  return window;
+}
+
+/// `plan` with wall `id` moved by (dx, dy) and wall west `height` tall.
+Plan moved(Plan plan, const std::string& id, double dx, double dy, double west_height) {
+  for (Wall& w : plan.walls) {
+    if (w.id == id) w.from = {w.from.x + dx, w.from.y + dy}, w.to = {w.to.x + dx, w.to.y + dy};
+    if (w.id == "west") w.height = west_height;
+  }
+  return plan;
+}
+
+TEST_F(ViewCommand, AnotherEditDuringUnsavedEditsPromptsAndKeepSavesTheWindows) {
+  const auto plan = dir_ / "studio.json";
+  std::filesystem::copy_file(studio(), plan);
+  const Plan original = read_plan_file(plan).value();
+  const std::string click = click_on(dir_, plan.string(), "east");
+  // Saves a move, moves back (unsaved), waits for the other edit, tries to save (the prompt
+  // again, nothing written), then keeps the window's version: the plan as it was at first.
+  const auto window = view_while_another_edits(
+      dir_, plan, fmt::format("1,{},right,ctrl+s,left,wait:change,ctrl+s,ctrl+k", click));
+  EXPECT_NE(window.err.find("not saved: " + plan.string() + " changed on disk since the window "
+                            "read or saved it"), std::string::npos) << window.err;
+  EXPECT_LT(window.err.find("not saved"), window.err.rfind("saved " + plan.string())) << window.err;
+  EXPECT_EQ(read_plan_file(plan).value(), original);
+}
+
+TEST_F(ViewCommand, AnotherEditDuringUnsavedEditsPromptsAndReloadTakesTheFiles) {
+  const auto plan = dir_ / "studio.json";
+  std::filesystem::copy_file(studio(), plan);
+  const Plan original = read_plan_file(plan).value();
+  const double cell = original.site.cell_size;
+  const std::string click = click_on(dir_, plan.string(), "east");
+  // Saves a move, moves back (unsaved), waits for the other edit, reloads (dropping the
+  // unsaved move), moves north and saves: on top of the other edit, without a prompt.
+  const auto window = view_while_another_edits(
+      dir_, plan, fmt::format("1,{},right,ctrl+s,left,wait:change,ctrl+r,up,ctrl+s", click));
+  EXPECT_NE(window.err.find("the window's edits dropped"), std::string::npos) << window.err;
+  EXPECT_EQ(read_plan_file(plan).value(), moved(original, "east", cell, cell, 2.9));
 }
 
 TEST_F(ViewCommand, BadInputsAreNamedWithExitStatus2) {

@@ -55,7 +55,7 @@ TEST(Modeling, PlainWallWithOneWindowHasAHandfulOfFaces) {
   // 2 polygons per side (cut at the window's first jamb), top, bottom, 2 ends, 2 jambs,
   // sill, lintel.
   EXPECT_EQ(model.walls.n_faces(), 12u);
-  EXPECT_LE(build_model(plan, test::options_for(BooleanPath::cgal)).walls.n_faces(), 24u);
+  EXPECT_LE(build_model(plan, test::options_for(BooleanPath::nef)).walls.n_faces(), 24u);
 }
 
 TEST(Modeling, DoorFlushWithAnEndOpensTheWall) {

@@ -23,8 +23,8 @@ Plan two_colour_tee() {
 
 TEST(Modeling, MergedFacetHasOneColour) {
   const Plan plan = two_colour_tee();
-  test::expect_valid_walls(plan, BooleanPath::cgal, 1);
-  const Model model = build_model(plan, test::options_for(BooleanPath::cgal));
+  test::expect_valid_walls(plan, BooleanPath::nef, 1);
+  const Model model = build_model(plan, test::options_for(BooleanPath::nef));
   const FacePropertyHandles props = face_property_handles(model.walls);
   std::set<std::tuple<int, int, int>> front_colours;
   std::size_t front_faces = 0;

@@ -45,6 +45,16 @@ Plan transformed(const Plan& plan, double degrees, double dx, double dy) {
   return out;
 }
 
+void expect_build_refused(const Plan& plan, const BuildOptions& options, Code code, const std::string& names) {
+  try {
+    (void)build_model(plan, options);
+    ADD_FAILURE() << "built; expected a refusal naming " << names;
+  } catch (const PreconditionError& e) {
+    EXPECT_EQ(e.code(), code) << e.what();
+    EXPECT_NE(std::string(e.what()).find(names), std::string::npos) << e.what();
+  }
+}
+
 BuildOptions options_for(BooleanPath path, int threads) {
   BuildOptions options;
   options.boolean = path;
@@ -66,7 +76,7 @@ double area_tolerance(const SolidMesh& mesh, double area) {
 SolidCheck expect_valid_model(const Model& model, const Plan& plan, BooleanPath path, long genus,
                               double expected_volume) {
   const SolidCheck c = check_solid(model.walls);
-  const char* name = path == BooleanPath::cgal ? "cgal" : "auto";
+  const char* name = path == BooleanPath::nef ? "nef" : path == BooleanPath::general ? "general" : "auto";
   EXPECT_TRUE(c.is_closed()) << name << ": " << c.border_edges << " border edges";
   EXPECT_TRUE(c.is_manifold()) << name << ": " << c.non_manifold_vertices << " non-manifold vertices, "
                                << c.rejected_triangles << " rejected triangles";
@@ -89,18 +99,22 @@ SolidCheck expect_valid_walls(const Plan& plan, BooleanPath path, long genus, do
 }
 
 void expect_paths_agree(const Plan& plan, long genus, double expected_volume) {
-  const Model fast_model = build_model(plan, options_for(BooleanPath::automatic));
-  const Model cgal_model = build_model(plan, options_for(BooleanPath::cgal));
-  const SolidCheck fast = expect_valid_model(fast_model, plan, BooleanPath::automatic, genus, expected_volume);
-  const SolidCheck cgal = expect_valid_model(cgal_model, plan, BooleanPath::cgal, genus, expected_volume);
-  EXPECT_NEAR(fast.volume, cgal.volume, 2 * volume_tolerance(cgal_model.walls, cgal.volume));
-  const auto a = area_by_kind(fast_model.walls);
-  const auto b = area_by_kind(cgal_model.walls);
-  for (const auto& [kind, area] : b) EXPECT_TRUE(a.count(kind)) << "only cgal has " << to_string(kind);
-  ASSERT_EQ(a.size(), b.size());
-  for (const auto& [kind, area] : a) {
-    ASSERT_TRUE(b.count(kind)) << to_string(kind);
-    EXPECT_NEAR(area, b.at(kind), 2 * area_tolerance(cgal_model.walls, area)) << to_string(kind);
+  const Model nef_model = build_model(plan, options_for(BooleanPath::nef));
+  const SolidCheck nef = expect_valid_model(nef_model, plan, BooleanPath::nef, genus, expected_volume);
+  const auto b = area_by_kind(nef_model.walls);
+  for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general}) {
+    SCOPED_TRACE(path == BooleanPath::general ? "general path" : "automatic path");
+    const Model model = build_model(plan, options_for(path));
+    const SolidCheck c = expect_valid_model(model, plan, path, genus, expected_volume);
+    EXPECT_NEAR(c.volume, nef.volume, 2 * volume_tolerance(nef_model.walls, nef.volume));
+    const auto a = area_by_kind(model.walls);
+    for (const auto& [kind, area] : b) EXPECT_TRUE(a.count(kind)) << "only nef has " << to_string(kind);
+    for (const auto& [kind, area] : a) EXPECT_TRUE(b.count(kind)) << "only this path has " << to_string(kind) << " " << area;
+    ASSERT_EQ(a.size(), b.size());
+    for (const auto& [kind, area] : a) {
+      ASSERT_TRUE(b.count(kind)) << to_string(kind);
+      EXPECT_NEAR(area, b.at(kind), 2 * area_tolerance(nef_model.walls, area)) << to_string(kind);
+    }
   }
 }
 

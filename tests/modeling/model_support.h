@@ -23,6 +23,10 @@ void add_room(Plan& plan, const std::string& prefix, double x, double y, double 
 /// Rotates every wall of the plan by `degrees` about the origin, then moves it by (dx, dy).
 Plan transformed(const Plan& plan, double degrees, double dx, double dy);
 
+/// Expects build_model(plan, options) to throw a PreconditionError with this code whose message
+/// holds `names` (the objects and reason it must name).
+void expect_build_refused(const Plan& plan, const BuildOptions& options, Code code, const std::string& names);
+
 /// Build options for one path and thread count.
 BuildOptions options_for(BooleanPath path, int threads = 0);
 
@@ -33,8 +37,8 @@ BuildOptions options_for(BooleanPath path, int threads = 0);
 SolidCheck expect_valid_walls(const Plan& plan, BooleanPath path, long genus,
                               double expected_volume = 0.0);
 
-/// Builds both paths, checks both, and expects the same volume and area of each face kind
-/// (within 1e-9 relative plus what vertex_rounding allows).
+/// Builds on the automatic, general and Nef paths, checks each, and expects the same volume
+/// and area of each face kind as Nef's (within 1e-9 relative plus what vertex_rounding allows).
 void expect_paths_agree(const Plan& plan, long genus, double expected_volume = 0.0);
 
 }  // namespace roomcad::test

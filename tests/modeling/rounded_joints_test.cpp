@@ -30,7 +30,7 @@ TEST(Modeling, TeeAtTheJointOfNearlyCollinearWallsBuildsAClosedSolid) {
   add_thick_wall(plan, "wall28", {-0.054999900000000004, -8.265}, {-0.055, -4.661003}, 0.26);
   add_thick_wall(plan, "wall29", {-0.055, -4.661003}, {-0.055, -2.300593}, 0.26);
   expect_valid_walls(plan, BooleanPath::automatic, 0);
-  expect_valid_walls(plan, BooleanPath::cgal, 0);
+  expect_valid_walls(plan, BooleanPath::nef, 0);
 }
 
 // 3-BedroomHouseWithMezzanine: the same joint, where rounding also leaves a groove 1 ulp wide
@@ -42,7 +42,7 @@ TEST(Modeling, TeeAtAJointWithAGrooveOneUlpWideBuildsAClosedSolid) {
                  0.26);
   add_thick_wall(plan, "wall46", {-0.012999873, -9.818}, {-0.013000030000000001, -4.0055908}, 0.26);
   expect_valid_walls(plan, BooleanPath::automatic, 0);
-  expect_valid_walls(plan, BooleanPath::cgal, 0);
+  expect_valid_walls(plan, BooleanPath::nef, 0);
 }
 
 // 3-BedroomHouseWithMezzanine upstairs: wall2 and wall62 run on from each other 7.5e-8 rad
@@ -56,7 +56,7 @@ TEST(Modeling, HairlineWedgeBetweenSquareEndsIsMitredShut) {
   for (Wall& w : plan.walls) w.base = 2.5, w.height = 2.619999885559082;
   plan.walls[2].height = 1.119999885559082;  // wall62 is lower
   expect_valid_walls(plan, BooleanPath::automatic, 0);
-  expect_valid_walls(plan, BooleanPath::cgal, 0);
+  expect_valid_walls(plan, BooleanPath::nef, 0);
 }
 
 detail::SoupFace triangle(OpenMesh::Vec3d a, OpenMesh::Vec3d b, OpenMesh::Vec3d c, int object) {

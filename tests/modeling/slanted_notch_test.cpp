@@ -34,7 +34,7 @@ TEST(SlantedNotch, NotchedWallBuiltInACgalCluster) {
   Wall& through = add_wall(plan, "w4", {6.37, -41.5}, {-27.2695, -20});
   through.thickness = 0.5, through.height = 3.6737;
   expect_valid_walls(plan, BooleanPath::automatic, 0);
-  expect_valid_walls(plan, BooleanPath::cgal, 0);
+  expect_valid_walls(plan, BooleanPath::nef, 0);
 }
 
 // From seed 183: a window flush with the from end and the base of a raised wall crossing
@@ -47,7 +47,7 @@ TEST(SlantedNotch, NotchedRaisedWallCrossingAnother) {
   b.thickness = 0.4496, b.height = 3, b.base = 0.8;
   add_opening(plan, "o15", OpeningType::window, "w5", 0.0, 1.1, 0.0, 1.36);
   expect_valid_walls(plan, BooleanPath::automatic, 0);
-  expect_valid_walls(plan, BooleanPath::cgal, 0);
+  expect_valid_walls(plan, BooleanPath::nef, 0);
 }
 
 }  // namespace

@@ -117,9 +117,10 @@ double expect_valid_build(const Plan& plan, BooleanPath path, BuildStats& total)
   BuildStats stats;
   EXPECT_NO_THROW(model = build_model(plan, options, &stats));
   total.fast_path_walls += stats.fast_path_walls;
-  total.cgal_path_walls += stats.cgal_path_walls;
+  total.general_path_walls += stats.general_path_walls;
+  total.nef_path_walls += stats.nef_path_walls;
   const SolidCheck c = check_solid(model.walls);
-  const char* name = path == BooleanPath::cgal ? "cgal" : "fast";
+  const char* name = path == BooleanPath::nef ? "nef" : "auto";
   EXPECT_TRUE(c.is_valid()) << name << ": " << c.border_edges << " border edges, " << c.non_manifold_vertices
                             << " non-manifold vertices, " << c.self_intersections
                             << " self-intersections, " << c.degenerate_triangles << " degenerate";
@@ -145,18 +146,19 @@ TEST(RandomPlans, ValidPartsBuildClosedWithTheirVolumeOnBothPaths) {
     openings += plan.openings.size();
     const double volume = expect_valid_build(plan, BooleanPath::automatic, fast);
     if (seed > cgal_plans) continue;
-    const double exact = expect_valid_build(plan, BooleanPath::cgal, cgal);
+    const double exact = expect_valid_build(plan, BooleanPath::nef, cgal);
     EXPECT_NEAR(volume, exact, 2e-9 * exact);
   }
   // Not vacuous: many walls, both paths of the automatic build, openings cut.
-  EXPECT_GT(fast.fast_path_walls + fast.cgal_path_walls, 2 * plans);
+  EXPECT_GT(fast.fast_path_walls + fast.general_path_walls, 2 * plans);
   EXPECT_GT(fast.fast_path_walls, plans / 3);
-  EXPECT_GT(fast.cgal_path_walls, plans);
+  EXPECT_GT(fast.general_path_walls, plans);
+  EXPECT_EQ(fast.nef_path_walls, 0u);
   EXPECT_GT(openings, plans / 2);
-  std::printf("random plans: %llu (%llu on the CGAL path): %zu walls on the fast path, %zu "
-              "through CGAL joins, %zu openings; CGAL path: %zu walls\n",
+  std::printf("random plans: %llu (%llu on the Nef path): %zu walls on the fast path, %zu "
+              "on the general path, %zu openings; Nef path: %zu walls\n",
               static_cast<unsigned long long>(plans), static_cast<unsigned long long>(cgal_plans),
-              fast.fast_path_walls, fast.cgal_path_walls, openings, cgal.cgal_path_walls);
+              fast.fast_path_walls, fast.general_path_walls, openings, cgal.nef_path_walls);
 }
 
 }  // namespace

@@ -48,10 +48,14 @@ std::vector<std::filesystem::path> example_plans() {
 }
 
 CommandResult run_roomcad(const std::vector<std::string>& args) {
+  return run_program(roomcad_exe(), args);
+}
+
+CommandResult run_program(const std::string& program, const std::vector<std::string>& args) {
   TempDir dir;
   const auto out_path = dir / "stdout";
   const auto err_path = dir / "stderr";
-  std::string command = shell_quote(roomcad_exe());
+  std::string command = shell_quote(program);
   for (const std::string& a : args) command += ' ' + shell_quote(a);
   command += " </dev/null >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string());
   const int raw = std::system(command.c_str());

@@ -23,6 +23,10 @@ struct CommandResult {
 /// Runs `roomcad args...` (each argument shell-quoted), with stdin from /dev/null.
 [[nodiscard]] CommandResult run_roomcad(const std::vector<std::string>& args);
 
+/// Runs a program (found on PATH) with its arguments, as run_roomcad does.
+[[nodiscard]] CommandResult run_program(const std::string& program,
+                                        const std::vector<std::string>& args);
+
 /// @return the code of the failure the command reported ("roomcad CMD: error[CODE]: ..." on
 ///         stderr, cli/command.h), or nullopt when it reported none or a name no Code has.
 [[nodiscard]] std::optional<Code> failure_code(const CommandResult& result);

@@ -35,5 +35,32 @@ TEST(ReportDiff, CountsEachIdentity) {
   EXPECT_TRUE(introduced_errors(after, before).ok());
 }
 
+TEST(ReportDiff, ItemIdsNameTheCodeAndSortedObjectsAndNumberRepeats) {
+  Report r;
+  r.add(error(Code::door_clearance, {"w3", "d1"}));
+  r.add(error(Code::door_clearance, {"d1", "w3"}, "again"));
+  r.add(error(Code::parse_error, {}, "not JSON"));
+  EXPECT_EQ(item_ids(r), (std::vector<std::string>{"door_clearance:d1+w3", "door_clearance:d1+w3#2",
+                                                   "parse_error:not JSON"}));
+}
+
+TEST(ReportDiff, RevisionsCompareAsNewUnchangedAndFixed) {
+  Report old_report, new_report;
+  old_report.add(error(Code::door_too_narrow, {"d1"}, "door 'd1' is 0.70 m wide"));
+  old_report.add(error(Code::room_unreachable, {"a", "b"}));
+  new_report.add(error(Code::door_too_narrow, {"d1"}, "door 'd1' is 0.75 m wide"));  // reworded
+  new_report.add(error(Code::window_sill_low, {"w"}));
+  const ReportComparison c = compare_reports(old_report, new_report);
+  EXPECT_EQ(c.status, (std::vector<ItemStatus>{ItemStatus::unchanged, ItemStatus::added}));
+  EXPECT_EQ(c.ids, item_ids(new_report));
+  ASSERT_EQ(c.fixed.items.size(), 1u);
+  EXPECT_EQ(c.fixed.items[0].code, Code::room_unreachable);
+  EXPECT_EQ(c.fixed_ids, (std::vector<std::string>{"room_unreachable:a+b"}));
+  EXPECT_EQ(to_string(ItemStatus::added), "new");
+  const ReportComparison same = compare_reports(new_report, new_report);
+  EXPECT_TRUE(same.fixed.items.empty());
+  EXPECT_EQ(same.status, (std::vector<ItemStatus>{ItemStatus::unchanged, ItemStatus::unchanged}));
+}
+
 }  // namespace
 }  // namespace roomcad

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "validation/report_diff.h"
 #include "validation/report_format.h"
 
 namespace roomcad {
@@ -104,6 +105,61 @@ TEST(ReportFormat, TextWithColourOnlyAddsEscapes) {
   }
   EXPECT_EQ(stripped, format_report_text(sample_report(), false));
   EXPECT_EQ(format_report_text(sample_report(), false).find('\033'), std::string::npos);
+}
+
+/// A rule finding whose fix is two edits.
+Report finding_with_edits() {
+  Report r;
+  Diagnostic d;
+  d.severity = Severity::warning;
+  d.code = Code::door_swing_blocked;
+  d.objects = {"d1", "w 2"};
+  d.message = "door 'd1' cannot open fully";
+  d.fix = "swing it out";
+  FixEdit set;
+  set.id = "d1";
+  set.fields = {{"swing", "out"}, {"offset", "1.25"}};
+  FixEdit rm;
+  rm.op = FixEdit::Op::remove;
+  rm.id = "w 2";
+  rm.cascade = true;
+  d.edits = {set, rm};
+  r.add(d);
+  return r;
+}
+
+TEST(ReportFormat, FixEditsArePrintedAsCommandsInTextAndJson) {
+  ReportFormatOptions o;
+  o.plan_file = "my plan.json";
+  EXPECT_EQ(format_report_text(finding_with_edits(), false, o),
+            "warning[door_swing_blocked] d1, w 2: door 'd1' cannot open fully\n"
+            "  fix: swing it out\n"
+            "  edit: roomcad set 'my plan.json' d1 swing=out offset=1.25\n"
+            "  edit: roomcad rm 'my plan.json' 'w 2' --cascade\n");
+  const std::string json = format_report_json(finding_with_edits(), o);
+  EXPECT_NE(json.find("\"edits\": [{\"op\": \"set\", \"id\": \"d1\", \"fields\": {\"swing\": \"out\", \"offset\": "
+                      "\"1.25\"}, \"command\": \"roomcad set 'my plan.json' d1 swing=out offset=1.25\"}, {\"op\": \"rm\", "
+                      "\"id\": \"w 2\", \"cascade\": true, "),
+            std::string::npos) << json;
+}
+
+TEST(ReportFormat, BaselineComparisonMarksItemsAndListsTheFixed) {
+  Report old_report = sample_report();
+  const Report current = finding_with_edits();
+  const ReportComparison c = compare_reports(old_report, current);
+  ReportFormatOptions o;
+  o.comparison = &c;
+  o.baseline_file = "old.json";
+  const std::string text = format_report_text(current, false, o);
+  EXPECT_EQ(text.rfind("new warning[door_swing_blocked]", 0), 0u) << text;
+  EXPECT_NE(text.find("fixed since old.json:\nfixed error[wall_overlap] a, b:"), std::string::npos) << text;
+  EXPECT_EQ(format_report_summary(current, o), "0 errors, 1 warning; against old.json: 1 new, 0 unchanged, 3 fixed");
+  const std::string json = format_report_json(current, o);
+  EXPECT_NE(json.find("{\"id\": \"door_swing_blocked:d1+w 2\", \"status\": \"new\", \"code\""), std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"baseline\": {\"file\": \"old.json\", \"new\": 1, \"unchanged\": 0, \"fixed\": [\n"
+                      "      {\"id\": \"wall_overlap:a+b\", \"code\": \"wall_overlap\""),
+            std::string::npos) << json;
 }
 
 }  // namespace

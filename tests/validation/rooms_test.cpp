@@ -84,6 +84,21 @@ TEST(Rooms, CrossingWallsAndToleranceJoinsUseTheExactArrangement) {
   EXPECT_NEAR(rooms[0].area, 3.8 * 3.8, 1e-5);
 }
 
+TEST(Rooms, TwoBoundaryVerticesThatRoundToOneDoubleLeaveAFiniteOutline) {
+  // From 4-BedroomHouse: "e2" starts at the double nearest to where the sloping north wall
+  // crosses x = 13.455; the exact crossing and that double are two vertices of the room's
+  // boundary, and the edge between them has no length in doubles.
+  const Plan plan = plan_with({make_wall("n", {11.252909, 0.054999795}, {13.588015, 0.055}, 0.26),
+                               make_wall("e1", {13.455, 0.055}, {13.455, -4.661}, 0.26),
+                               make_wall("e2", {13.455, 0.054999988322553664}, {13.455, -4.661}, 0.26),
+                               make_wall("s", {13.455, -4.661}, {11.252909, -4.661}, 0.26),
+                               make_wall("w", {11.252909, -4.661}, {11.252909, 0.054999795}, 0.26)});
+  const std::vector<Room> rooms = find_rooms(plan);
+  ASSERT_EQ(rooms.size(), 1u);
+  for (const Point2& c : rooms[0].outline) EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y)) << c.x << ", " << c.y;
+  EXPECT_NEAR(rooms[0].area, (13.455 - 11.252909 - 0.26) * (0.055 + 4.661 - 0.26), 1e-6);
+}
+
 TEST(Openings, OutsideWallMessageSaysHowFarAndHowToFix) {
   const Plan p = plan_with({make_wall("s", {0, 0}, {4, 0})},
                            {make_opening("w2", OpeningType::window, "s", 2.95, 1.2, 1.2, 0.9)});

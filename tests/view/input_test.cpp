@@ -26,17 +26,21 @@ TEST(KeyScript, ParsesKeysModifiersAndPointerInputs) {
   EXPECT_EQ(e[7].type, InputEvent::Type::wheel);
   EXPECT_EQ(e[7].x, -2);
   EXPECT_TRUE(parse_key_script("").value().empty());
+  const auto wait = parse_key_script("ctrl+s,wait:change,ctrl+k");
+  ASSERT_TRUE(wait.ok()) << wait.error();
+  EXPECT_EQ(wait.value()[1].type, InputEvent::Type::wait_change);
 }
 
 TEST(KeyScript, NamesTheBadItem) {
   for (const char* bad : {"1,,2", "ctrl+", "f13", "click:1", "click:a:2", "click:-1:4", "wheel:1:2",
-                          "drag:1:2:3", "LEFT", "ctrl+ctrl"}) {
+                          "drag:1:2:3", "LEFT", "ctrl+ctrl", "wait:5", "wait:"}) {
     const auto events = parse_key_script(bad);
     ASSERT_FALSE(events.ok()) << bad;
     EXPECT_EQ(events.code(), Code::usage_error) << bad;
     EXPECT_NE(events.message().find("--keys: input"), std::string::npos) << events.error();
   }
   EXPECT_NE(parse_key_script("a,f13").message().find("input 2 'f13'"), std::string::npos);
+  EXPECT_NE(parse_key_script("wait:5").message().find("expected wait:change"), std::string::npos);
 }
 
 TEST(KeyBindings, EveryBindingIsAKeyAndUnique) {
@@ -48,11 +52,14 @@ TEST(KeyBindings, EveryBindingIsAKeyAndUnique) {
                    bindings[i].shift == bindings[j].shift)
           << bindings[i].key;
   }
-  const std::vector<InputEvent> keys = parse_key_script("ctrl+s,s,k").value();
+  const std::vector<InputEvent> keys = parse_key_script("ctrl+s,s,k,ctrl+r,ctrl+k").value();
   EXPECT_EQ(action_for(keys[0]), Action::save);
   EXPECT_EQ(action_for(keys[1]), Action::orbit_down);
   EXPECT_FALSE(action_for(keys[2]));
-  EXPECT_NE(key_help().find("ctrl+s"), std::string::npos);
+  EXPECT_EQ(action_for(keys[3]), Action::reload_file);
+  EXPECT_EQ(action_for(keys[4]), Action::keep_window_version);
+  for (const char* listed : {"ctrl+s", "ctrl+r", "ctrl+k"})
+    EXPECT_NE(key_help().find(listed), std::string::npos) << listed;
 }
 
 }  // namespace

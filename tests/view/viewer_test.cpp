@@ -202,6 +202,27 @@ TEST(Viewer, LevelKeyShowsEachLevelAloneThenAll) {
   EXPECT_NE(started.frame().pixels, first);
 }
 
+TEST(Viewer, AConflictIsShownEvenWithTheOverlayOff) {
+  test::TempDir dir;
+  Plan plan = read_plan_file(studio()).value();
+  const auto path = dir / "p.json";
+  ASSERT_TRUE(write_plan_file(plan, path).ok());
+  Viewer v = open_viewer(path, false);
+  v.handle(key("tab"));
+  v.handle(key("right"));  // an unsaved edit
+  ASSERT_TRUE(v.session().is_modified());
+  const std::vector<std::uint8_t> edited = v.frame().pixels;
+  for (Wall& w : plan.walls) w.height += 0.5;
+  ASSERT_TRUE(write_plan_file(plan, path).ok());  // another editor saves
+  EXPECT_TRUE(v.poll_file());
+  ASSERT_TRUE(v.session().in_conflict());
+  EXPECT_NE(v.frame().pixels, edited);  // the same model, with the conflict's text on it
+  EXPECT_TRUE(v.handle(key("k", true)));  // Ctrl+K: keep the window's version
+  EXPECT_FALSE(v.session().in_conflict());
+  EXPECT_EQ(v.frame().pixels, edited);
+  EXPECT_EQ(read_plan_file(path).value(), v.session().plan());
+}
+
 TEST(Viewer, OverlayWritesOnTheFrame) {
   Viewer with = open_viewer(studio(), true);
   Viewer without = open_viewer(studio(), false);

@@ -44,4 +44,10 @@ void check_warnings(const Plan& plan, const ValidateOptions& options, Report& re
 /// room_without_door and room_without_window warnings for rooms found by find_rooms. O(n).
 void warn_about_rooms(const std::vector<Room>& rooms, Report& report);
 
+/// The rule set's rules (validation/rules/): findings with the rule codes, on the usable
+/// walls and openings. `whole_rooms`: find_rooms of the plan if already found (or nullptr).
+/// Cost: O(n log n) plus the rules' searches near each finding.
+void check_rules(const Plan& plan, const Joins& joins, const Usable& usable, const RuleSet& rules,
+                 const std::vector<Room>* whole_rooms, Report& report);
+
 }  // namespace roomcad::detail

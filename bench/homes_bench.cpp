@@ -1,0 +1,171 @@
+// Real homes built on every path side by side in one run (Google Benchmark; never a timed
+// test): the Sweet Home 3D homes of examples/sweethome3d/ (imported plans; a home with
+// validation errors is built as `--force` builds it), each
+// - `auto`: the automatic build, the exact fast path where it applies and the general path
+//   for the rest (what `roomcad build` does);
+// - `general`: the general path for every wall;
+// - `nef`: CGAL's Nef polyhedra for every wall (the reference);
+// - `before`: the fast path and Nef for the rest, the automatic build before the general path.
+// 2 threads (`--threads N` to change), the wall solid only.
+//
+//   homes_bench [--homes DIR]... [--threads N] [--csv FILE] [Google Benchmark flags]
+//
+// Counters per run: walls, fast / general / nef walls (the share of each path), build_ms,
+// and volume_difference: |volume - Nef volume| / Nef volume of the solid as written.
+// --csv writes one row per home: walls, the shares, the four times and the volume difference.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+
+#include "io/plan_json.h"
+#include "modeling/build_model.h"
+#include "modeling/mesh_check.h"
+
+namespace roomcad::bench {
+namespace {
+
+struct Home {
+  std::string name;
+  Plan plan;
+  double nef_volume = 0.0;
+};
+
+struct Options {
+  std::vector<std::filesystem::path> dirs;
+  int threads = 2;
+  std::string csv;
+};
+
+std::vector<Home>& homes() {
+  static std::vector<Home> all;
+  return all;
+}
+
+void load_homes(const Options& options) {
+  for (const auto& dir : options.dirs) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& file : files) {
+      Result<Plan> plan = read_plan_file(file);
+      if (!plan) {
+        std::fprintf(stderr, "homes_bench: %s: %s\n", file.c_str(), plan.message().c_str());
+        continue;
+      }
+      homes().push_back({file.stem().string(), std::move(plan).value(), 0.0});
+    }
+  }
+}
+
+const char* path_name(BooleanPath path) {
+  switch (path) {
+    case BooleanPath::automatic: return "auto";
+    case BooleanPath::general: return "general";
+    case BooleanPath::nef: return "nef";
+    case BooleanPath::fast_then_nef: return "before";
+  }
+  return "?";
+}
+
+void run_home(benchmark::State& state, std::size_t index, BooleanPath path, int threads) {
+  Home& home = homes()[index];
+  BuildOptions options;
+  options.boolean = path;
+  options.parts = {true, false, false};
+  options.threads = threads;
+  Model model;
+  BuildStats stats;
+  double build_ms = 0.0;
+  for (auto _ : state) {
+    model = build_model(home.plan, options, &stats);
+    build_ms += stats.build_ms;
+  }
+  const double volume = check_solid(model.walls).volume;
+  if (path == BooleanPath::nef) home.nef_volume = volume;
+  const double walls = double(home.plan.walls.size());
+  state.counters["walls"] = walls;
+  state.counters["fast_pct"] = 100.0 * double(stats.fast_path_walls) / walls;
+  state.counters["general_pct"] = 100.0 * double(stats.general_path_walls) / walls;
+  state.counters["nef_pct"] = 100.0 * double(stats.nef_path_walls) / walls;
+  state.counters["build_ms"] = build_ms / double(state.iterations());
+  state.counters["volume_difference"] =
+      home.nef_volume > 0.0 ? std::abs(volume - home.nef_volume) / home.nef_volume : -1.0;
+}
+
+Options parse_options(int& argc, char** argv) {
+  Options o;
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (has_value && flag == "--homes") o.dirs.emplace_back(argv[++i]);
+    else if (has_value && flag == "--threads") o.threads = std::atoi(argv[++i]);
+    else if (has_value && flag == "--csv") o.csv = argv[++i];
+    else argv[kept++] = argv[i];
+  }
+  argc = kept;
+  if (o.dirs.empty()) o.dirs.push_back(std::filesystem::path(ROOMCAD_SOURCE_DIR) / "examples" / "sweethome3d");
+  return o;
+}
+
+// Collects each run's counters, for the CSV.
+class CsvReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& r : runs) rows_[r.run_name.function_name] = r.counters;  // "nef/Studio"
+    ConsoleReporter::ReportRuns(runs);
+  }
+  [[nodiscard]] std::string csv() const {
+    std::string out = "home,walls,fast_pct,general_pct,nef_pct,auto_ms,general_ms,nef_ms,before_ms,volume_difference\n";
+    for (const Home& h : homes()) {
+      auto get = [&](const char* path, const char* counter) -> double {
+        const auto it = rows_.find(fmt::format("{}/{}", path, h.name));
+        return it == rows_.end() || !it->second.count(counter) ? NAN : double(it->second.at(counter));
+      };
+      out += fmt::format("{},{},{:.1f},{:.1f},{:.1f},{:.2f},{:.2f},{:.1f},{:.1f},{:.2e}\n", h.name, h.plan.walls.size(),
+                         get("auto", "fast_pct"), get("auto", "general_pct"), get("auto", "nef_pct"),
+                         get("auto", "build_ms"), get("general", "build_ms"), get("nef", "build_ms"),
+                         get("before", "build_ms"), get("auto", "volume_difference"));
+    }
+    return out;
+  }
+
+ private:
+  std::map<std::string, benchmark::UserCounters> rows_;
+};
+
+}  // namespace
+}  // namespace roomcad::bench
+
+int main(int argc, char** argv) {
+  using namespace roomcad;
+  using namespace roomcad::bench;
+  const Options options = parse_options(argc, argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  load_homes(options);
+  // Nef first: the other paths' volumes are compared with it.
+  for (const BooleanPath path :
+       {BooleanPath::nef, BooleanPath::fast_then_nef, BooleanPath::general, BooleanPath::automatic})
+    for (std::size_t i = 0; i < homes().size(); ++i) {
+      auto* b = benchmark::RegisterBenchmark(fmt::format("{}/{}", path_name(path), homes()[i].name).c_str(),
+                                             run_home, i, path, options.threads);
+      b->Unit(benchmark::kMillisecond)->UseRealTime();
+      if (uses_nef(path)) b->Iterations(1);
+    }
+  CsvReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  if (!options.csv.empty()) std::ofstream(options.csv) << reporter.csv();
+  benchmark::Shutdown();
+  return 0;
+}

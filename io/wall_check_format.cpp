@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "io/wall_check_format.h"
+
+#include <fmt/format.h>
+
+namespace roomcad {
+
+namespace {
+
+std::string yes_no(bool b) { return b ? "yes" : "NO"; }
+
+}  // namespace
+
+std::string format_wall_check_text(const WallCheck& v) {
+  const SolidCheck& c = v.solid;
+  std::string out = fmt::format("wall solid: {} vertices, {} faces ({} triangles), {} component{}\n",
+                                c.vertices, c.faces, c.triangles, c.components,
+                                c.components == 1 ? "" : "s");
+  out += fmt::format("  closed              {} ({} border edges)\n", yes_no(c.is_closed()), c.border_edges);
+  out += fmt::format("  2-manifold          {} ({} non-manifold vertices, {} rejected triangles)\n",
+                     yes_no(c.is_manifold()), c.non_manifold_vertices, c.rejected_triangles);
+  out += fmt::format("  self-intersections  {}\n", c.self_intersections);
+  out += fmt::format("  degenerate faces    {}\n", c.degenerate_triangles);
+  out += fmt::format("  outward oriented    {} ({} inward components)\n",
+                     yes_no(c.inward_components == 0), c.inward_components);
+  out += fmt::format("  genus               {}\n", c.genus);
+  out += fmt::format("  volume              {} m^3\n", c.volume);
+  out += fmt::format("  analytic volume     {} m^3 (relative difference {:.3g}, limit 1e-09)\n",
+                     v.analytic, v.relative);
+  out += fmt::format("check: {}\n", v.ok ? "ok" : "FAILED");
+  return out;
+}
+
+std::string format_wall_check_json(const WallCheck& v) {
+  const SolidCheck& c = v.solid;
+  return fmt::format(
+      "{{\"ok\": {}, \"vertices\": {}, \"faces\": {}, \"triangles\": {}, \"components\": {}, "
+      "\"closed\": {}, \"border_edges\": {}, \"manifold\": {}, \"non_manifold_vertices\": {}, "
+      "\"rejected_triangles\": {}, \"self_intersections\": {}, \"degenerate_faces\": {}, "
+      "\"outward\": {}, \"genus\": {}, \"volume\": {}, \"analytic_volume\": {}, "
+      "\"relative_difference\": {}}}\n",
+      v.ok, c.vertices, c.faces, c.triangles, c.components, c.is_closed(), c.border_edges,
+      c.is_manifold(), c.non_manifold_vertices, c.rejected_triangles, c.self_intersections,
+      c.degenerate_triangles, c.inward_components == 0, c.genus, c.volume, v.analytic, v.relative);
+}
+
+}  // namespace roomcad

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "modeling/detail/buildable_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "modeling/arc_chords.h"
+#include "modeling/plan_levels.h"
+
+namespace roomcad::detail {
+namespace {
+
+void refuse_unbuilt(const Plan& plan) {
+  for (const Wall& w : plan.walls)
+    if (w.height_at_end && *w.height_at_end != w.height)
+      throw PreconditionError(fmt::format("build_model: wall '{}' has a sloped top (height {}, height_at_end {}), "
+                                          "which this build does not make yet", w.id, w.height, *w.height_at_end),
+                              Code::not_buildable);
+  for (const Opening& o : plan.openings)
+    if (!o.shape.empty())
+      throw PreconditionError(fmt::format("build_model: opening '{}' has a shape ({} corners), which this build "
+                                          "does not cut yet", o.id, o.shape.size()),
+                              Code::not_buildable);
+}
+
+// The openings of an arc wall as pieces on its chords: the span [offset, offset + width] along
+// the polyline cut at the chords' corners. A piece ending within rounding of its chord's end
+// ends there, so that pieces meet exactly on the mitre plane.
+void split_openings(const Plan& in, std::size_t wall, const std::vector<std::size_t>& chords, BuildablePlan& out) {
+  std::vector<double> start{0.0}, lengths;  // each chord's length as its frame computes it
+  for (std::size_t c : chords) {
+    const Wall& w = out.plan.walls[c];
+    lengths.push_back(std::hypot(w.to.x - w.from.x, w.to.y - w.from.y));
+    start.push_back(start.back() + lengths.back());
+  }
+  const double slack = 1e-12 * start.back();
+  for (std::size_t i = 0; i < in.openings.size(); ++i) {
+    const Opening& o = in.openings[i];
+    if (o.wall != in.walls[wall].id) continue;
+    for (std::size_t k = 0; k < chords.size(); ++k) {
+      const double length = lengths[k];
+      const double from = std::max(o.offset - start[k], 0.0);
+      double to = o.offset + o.width - start[k];
+      if (to > length && (k + 1 < chords.size() || to <= length + slack)) to = length;  // past the end: refused
+      if (!(to > from)) continue;
+      Opening piece = o;
+      piece.wall = out.plan.walls[chords[k]].id;
+      piece.offset = from, piece.width = to - from;
+      out.plan.openings.push_back(std::move(piece));
+      out.opening_of.push_back(i);
+      out.through_mitre.push_back({k > 0 && from == 0.0, k + 1 < chords.size() && to == length});
+    }
+  }
+}
+
+}  // namespace
+
+BuildablePlan make_buildable(const Plan& plan) {
+  refuse_unbuilt(plan);
+  BuildablePlan b;
+  b.input_walls = plan.walls.size();
+  const Plan resolved = with_absolute_heights(plan);
+  b.plan = resolved;
+  b.plan.walls.clear();
+  b.plan.openings.clear();
+  const double tolerance = chord_tolerance_of(plan.site);
+  std::unordered_map<std::string, std::vector<std::size_t>> chords_of;  // arc wall id -> chords
+  std::vector<std::size_t> arcs;
+  for (std::size_t i = 0; i < resolved.walls.size(); ++i) {
+    const Wall& w = resolved.walls[i];
+    const std::vector<Point2> line = chord_polyline(w, tolerance);
+    if (line.size() > 2) arcs.push_back(i);
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+      Wall chord = w;
+      chord.from = line[k], chord.to = line[k + 1], chord.arc_extent.reset();
+      if (line.size() > 2) {
+        chord.id = fmt::format("{} (chord {} of {})", w.id, k + 1, line.size() - 1);
+        chords_of[w.id].push_back(b.plan.walls.size());
+      }
+      b.plan.walls.push_back(std::move(chord));
+      b.wall_of.push_back(i);
+    }
+  }
+  for (std::size_t i = 0; i < resolved.openings.size(); ++i) {
+    const Opening& o = resolved.openings[i];
+    const auto arc = chords_of.find(o.wall);
+    if (arc != chords_of.end()) continue;  // below, piece by piece
+    b.plan.openings.push_back(o);
+    b.opening_of.push_back(i);
+    b.through_mitre.push_back({false, false});
+  }
+  for (std::size_t i : arcs) split_openings(resolved, i, chords_of.at(resolved.walls[i].id), b);
+  return b;
+}
+
+void label_input_objects(const BuildablePlan& b, std::vector<FaceSoup>& soups) {
+  const int walls = static_cast<int>(b.plan.walls.size());
+  for (FaceSoup& soup : soups)
+    for (SoupFace& f : soup) {
+      if (f.object < 0) continue;
+      f.object = f.object < walls ? static_cast<int>(b.wall_of[std::size_t(f.object)])
+                                  : static_cast<int>(b.input_walls + b.opening_of[std::size_t(f.object - walls)]);
+    }
+}
+
+}  // namespace roomcad::detail

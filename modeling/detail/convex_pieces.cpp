@@ -1,0 +1,339 @@
+#include "modeling/detail/convex_pieces.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "modeling/build_model.h"
+
+namespace roomcad::detail {
+namespace {
+
+// a + b = hi + lo exactly, hi the rounded sum (Knuth's TwoSum; round to nearest).
+std::pair<double, double> two_sum(double a, double b) {
+  const double s = a + b, bb = s - a;
+  return {s, (a - (s - bb)) + (b - bb)};
+}
+
+PlaneRef axis_plane(PlaneSet& set, int axis, double hi, double lo, int sign) {
+  PlaneRecipe r;
+  r.kind = PlaneRecipe::Kind::axis;
+  r.v[0] = axis, r.v[1] = hi, r.v[2] = lo;
+  return {set.add(r), sign};
+}
+
+// The vertical plane through plan points p -> q, its right side outside. @pre p != q.
+PlaneRef plane_through(PlaneSet& set, Point2 p, Point2 q) {
+  if (p.x == q.x) return axis_plane(set, 0, p.x, 0.0, q.y > p.y ? 1 : -1);
+  if (p.y == q.y) return axis_plane(set, 1, p.y, 0.0, q.x > p.x ? -1 : 1);
+  PlaneRecipe r;
+  r.kind = PlaneRecipe::Kind::through2;
+  r.v[0] = p.x, r.v[1] = p.y, r.v[2] = q.x, r.v[3] = q.y;
+  return {set.add(r), 1};
+}
+
+// The plane (p - from) . dir = u of a wall's frame; outside where u is larger (outward +1) or
+// smaller (-1). An axis-aligned wall's is an axis plane at an exact sum.
+PlaneRef plane_at_u(PlaneSet& set, const WallFrame& f, double u, int outward) {
+  if (f.dir.y == 0.0) {
+    const auto [hi, lo] = two_sum(f.from.x, f.dir.x * u);  // dir.x is +-1: the product is exact
+    return axis_plane(set, 0, hi, lo, outward * (f.dir.x > 0 ? 1 : -1));
+  }
+  if (f.dir.x == 0.0) {
+    const auto [hi, lo] = two_sum(f.from.y, f.dir.y * u);
+    return axis_plane(set, 1, hi, lo, outward * (f.dir.y > 0 ? 1 : -1));
+  }
+  PlaneRecipe r;
+  r.kind = PlaneRecipe::Kind::frame_line;
+  r.v[0] = f.from.x, r.v[1] = f.from.y, r.v[2] = f.dir.x, r.v[3] = f.dir.y;
+  r.v[6] = 1.0, r.v[7] = 0.0, r.v[8] = -u;
+  return {set.add(r), outward};
+}
+
+PlaneRef plane_at_z(PlaneSet& set, double z, int outward) { return axis_plane(set, 2, z, 0.0, outward); }
+
+XPoint with_coordinate(XPoint p, int axis, double value) {
+  p.approx[std::size_t(axis)] = Interval(value);
+  return p;
+}
+
+Box3 box_of(const std::vector<XPoint>& points) {
+  Box3 b{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+  for (const XPoint& p : points)
+    for (std::size_t k = 0; k < 3; ++k) {
+      b.low[k] = std::min(b.low[k], p.approx[k].inf());
+      b.high[k] = std::max(b.high[k], p.approx[k].sup());
+    }
+  return b;
+}
+
+// The prism over `base` (a convex polygon in plane C0, counter-clockwise seen from the side
+// C1 lies on) between the outward caps c0 and c1. @pre the caps do not meet inside (parallel
+// caps, base on the inner side of c1).
+Primitive make_prism(const PlaneSet& set, const PlanePolygon& base, PlaneRef c0, PlaneRef c1) {
+  const std::size_t k = base.lines.size();
+  // Horizontal caps over vertical sides (walls): a corner of the base at explicit doubles has
+  // its twin on the top at the same x and y.
+  const bool vertical = simple_axis(set, c0.id).first == 2 && simple_axis(set, c1.id).first == 2;
+  const double top_z = simple_axis(set, c1.id).second;
+  Primitive p;
+  std::vector<XPoint> a = base.vertices, b;
+  b.reserve(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    b.push_back(vertical && a[i].is_explicit() ? with_coordinate(a[i], 2, top_z)
+                     : make_point(set, c1.id, base.lines[i].id, base.lines[(i + 1) % k].id));
+  }
+  PlanePolygon bottom{c0, {}, {}}, top{c1, base.lines, b};
+  for (std::size_t j = 0; j < k; ++j) {
+    bottom.lines.push_back(base.lines[k - 1 - j]);
+    bottom.vertices.push_back(a[(2 * k - 2 - j) % k]);
+  }
+  p.faces.push_back(std::move(bottom));
+  p.faces.push_back(std::move(top));
+  for (std::size_t i = 0; i < k; ++i) {
+    const std::size_t prev = (i + k - 1) % k, next = (i + 1) % k;
+    p.faces.push_back({base.lines[i], {c0, base.lines[next], c1, base.lines[prev]}, {a[i], b[i], b[prev], a[prev]}});
+  }
+  p.vertices = std::move(a);
+  p.vertices.insert(p.vertices.end(), b.begin(), b.end());
+  p.box = box_of(p.vertices);
+  return p;
+}
+
+// The convex polyhedron on the negative side of every plane (outward), for shapes that are not
+// prisms: each plane's face is the box's square in it clipped by every other plane. O(m^2)
+// polygon clips for m planes.
+std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box, const std::vector<PlaneRef>& planes) {
+  Primitive p;
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    PlanePolygon face = box_polygon(set, box, planes[i]);
+    bool kept = true;
+    for (std::size_t j = 0; j < planes.size() && kept; ++j)
+      if (j != i) kept = clip_polygon(set, face, planes[j]);
+    if (!kept) continue;
+    p.vertices.insert(p.vertices.end(), face.vertices.begin(), face.vertices.end());
+    p.faces.push_back(std::move(face));
+  }
+  if (p.faces.size() < 4) return std::nullopt;  // no volume
+  p.box = box_of(p.vertices);
+  return p;
+}
+
+// The convex polygon in `plane` on the negative side of every line, clipped from the box.
+// @return nullopt when it has no area. @throws if it is unbounded (cannot happen for a wall).
+std::optional<PlanePolygon> intersect_half_planes(const PlaneSet& set, const BoxPlanes& box,
+                                                  PlaneRef plane, const std::vector<PlaneRef>& lines,
+                                                  const std::string& what) {
+  PlanePolygon poly = box_polygon(set, box, plane);
+  for (const PlaneRef& l : lines)
+    if (!clip_polygon(set, poly, l)) return std::nullopt;
+  for (const PlaneRef& l : poly.lines)
+    for (std::size_t k = 0; k < 3; ++k)
+      if (l.id == box.low[k] || l.id == box.high[k])
+        throw PreconditionError(fmt::format("build_model: {} is not bounded by its sides", what),
+                                Code::not_buildable);
+  return poly;
+}
+
+// Whether each corner turns strictly left (the lines through consecutive corners exist).
+bool is_strictly_convex(const PlaneSet& set, const std::array<Point2, 4>& c, const std::vector<PlaneRef>& lines) {
+  if (lines.size() != 4) return false;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Point2 q = c[(i + 2) % 4];
+    if (side(set, lines[i], make_point(q.x, q.y, 0.0)) >= 0) return false;
+  }
+  return true;
+}
+
+// The wall piece: its footprint between base and top.
+std::optional<Primitive> make_wall_piece(PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
+                                         const std::array<PlaneRef, 4>& sides, const std::vector<PlaneRef>& lines,
+                                         const std::string& name) {
+  if (!(f.base < f.top)) return std::nullopt;
+  const PlaneRef c0 = plane_at_z(set, f.base, -1), c1 = plane_at_z(set, f.top, 1);
+  PlanePolygon base{{c0.id, -c0.sign}, {}, {}};
+  if (is_strictly_convex(set, f.footprint, lines)) {
+    base.lines.assign(sides.begin(), sides.end());
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Point2 q = f.footprint[(i + 1) % 4];
+      base.vertices.push_back(make_point(q.x, q.y, f.base));
+    }
+  } else if (auto poly = intersect_half_planes(set, box, base.plane, lines, name)) {
+    base = std::move(*poly);
+  } else {
+    return std::nullopt;
+  }
+  return make_prism(set, base, c0, c1);
+}
+
+// The hole of an opening: its outline in the wall's plane between the two side planes.
+std::optional<Primitive> make_hole_piece(PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
+                                         const Hole& h, const std::array<PlaneRef, 4>& sides,
+                                         const std::string& name) {
+  if (!(h.u0 < h.u1) || !(h.z0 < h.z1)) return std::nullopt;
+  // A notch at a capped end takes the end's own plane (exact_hole_footprint does the same).
+  const bool from_cap = hole_reaches_end_line(f, h, 0), to_cap = hole_reaches_end_line(f, h, 1);
+  // Counter-clockwise seen along +normal, from the right side plane (sides[0]) to the left one.
+  const std::vector<PlaneRef> outline{plane_at_z(set, h.z0, -1),
+                                      from_cap ? sides[3] : plane_at_u(set, f, h.u0, -1),
+                                      plane_at_z(set, h.z1, 1),
+                                      to_cap ? sides[1] : plane_at_u(set, f, h.u1, 1)};
+  // The hole lies between the wall's two side lines, on the side of each where the wall's
+  // centre line is: the corners' order does not say which when a mitre overshoots the other
+  // end (a "bow-tie" wall; exact_hole_footprint spans the same lines). A wall thinner than
+  // the doubles (both side lines through its centre line) holds no hole.
+  auto inward = [&](PlaneRef side_plane) -> std::optional<PlaneRef> {
+    int s = side(set, side_plane, make_point(f.from.x, f.from.y, 0.0));
+    if (s == 0) s = side(set, side_plane, make_point(f.to.x, f.to.y, 0.0));
+    if (s == 0) return std::nullopt;
+    return PlaneRef{side_plane.id, s < 0 ? side_plane.sign : -side_plane.sign};
+  };
+  const auto right = inward(sides[0]), left = inward(sides[2]);
+  if (!right || !left) return std::nullopt;
+  const PlaneRef c0 = *right, c1 = *left;
+  std::optional<Primitive> made;
+  if (from_cap || to_cap) {
+    // An end's plane is not parallel to the jambs (its corners are rounded): over the
+    // thickness it may cross the other jamb, so the hole is no prism between the sides.
+    std::vector<PlaneRef> planes = outline;
+    planes.push_back(c0), planes.push_back(c1);
+    made = make_convex(set, box, planes);
+  } else if (auto poly = intersect_half_planes(set, box, {c0.id, -c0.sign}, outline, name)) {
+    made = make_prism(set, *poly, c0, c1);
+  }
+  if (!made) return std::nullopt;
+  Primitive& p = *made;
+  p.kind = Primitive::Kind::hole;
+  p.opening = h.opening;
+  return made;
+}
+
+}  // namespace
+
+BoxPlanes add_box_planes(PlaneSet& set, double largest_coordinate) {
+  const double m = std::ldexp(1.0, std::ilogb(4.0 * (largest_coordinate + 1.0)) + 1);
+  BoxPlanes box;
+  for (int k = 0; k < 3; ++k) {
+    box.low[std::size_t(k)] = set.add_axis(k, -m);
+    box.high[std::size_t(k)] = set.add_axis(k, m);
+  }
+  return box;
+}
+
+int dominant_axis(const PlaneSet& set, PlaneId plane) {
+  const auto& c = set.approx(plane);
+  int best = -1;
+  double best_low = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const Interval& x = c[std::size_t(k)];
+    const double low = x.inf() > 0.0 ? x.inf() : x.sup() < 0.0 ? -x.sup() : 0.0;
+    if (low > best_low) best = k, best_low = low;
+  }
+  if (best >= 0) return best;
+  const auto& e = set.exact(plane);
+  best = 0;
+  for (int k = 1; k < 3; ++k)
+    if (Mpzf_abscmp(e[std::size_t(k)], e[std::size_t(best)]) > 0) best = k;
+  return best;
+}
+
+PlanePolygon box_polygon(const PlaneSet& set, const BoxPlanes& box, PlaneRef plane) {
+  const int k = dominant_axis(set, plane.id);
+  const auto i = std::size_t((k + 1) % 3), j = std::size_t((k + 2) % 3);
+  PlanePolygon poly{plane, {{box.high[i], 1}, {box.high[j], 1}, {box.low[i], -1}, {box.low[j], -1}}, {}};
+  if (orient_normals(set, plane, poly.lines[0], poly.lines[1]) < 0) std::reverse(poly.lines.begin(), poly.lines.end());
+  for (std::size_t m = 0; m < 4; ++m)
+    poly.vertices.push_back(make_point(set, plane.id, poly.lines[m].id, poly.lines[(m + 1) % 4].id));
+  return poly;
+}
+
+bool clip_polygon(const PlaneSet& set, PlanePolygon& poly, PlaneRef h) {
+  const std::size_t n = poly.lines.size();
+  std::vector<int> s(n);
+  bool any_out = false, any_in = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    s[i] = side(set, h, poly.vertices[i]);
+    any_out = any_out || s[i] > 0;
+    any_in = any_in || s[i] < 0;
+  }
+  if (!any_out) return true;
+  if (!any_in) return false;
+  // The outside vertices form one run a..b (cyclic); edges a+1..b lie outside. Edge i runs on
+  // lines[i] from vertex i-1 to vertex i.
+  std::size_t a = 0;
+  while (!(s[a] > 0 && s[(a + n - 1) % n] <= 0)) ++a;
+  std::size_t b = a;
+  while (s[(b + 1) % n] > 0) b = (b + 1) % n;
+  const std::size_t before = (a + n - 1) % n, after = (b + 1) % n;
+  PlanePolygon out{poly.plane, {}, {}};
+  // Walk from `after` round to `before`, keeping lines and vertices, then close over h.
+  const bool drop_first = s[after] == 0, drop_last = s[before] == 0;
+  std::size_t i = drop_first ? (after + 1) % n : after;  // the first line to keep
+  if (!drop_first) {
+    out.lines.push_back(poly.lines[after]);
+    out.vertices.push_back(poly.vertices[after]);
+    i = (after + 1) % n;
+  }
+  for (; i != a; i = (i + 1) % n) {
+    out.lines.push_back(poly.lines[i]);
+    out.vertices.push_back(poly.vertices[i]);
+  }
+  // Line a runs from vertex `before` (kept) out to vertex a: it ends on h.
+  if (!drop_last) {
+    out.lines.push_back(poly.lines[a]);
+    out.vertices.push_back(make_point(set, poly.plane.id, poly.lines[a].id, h.id));
+  }
+  // h runs to where line `after` (or the next kept one) starts.
+  out.lines.push_back(h);
+  out.vertices.push_back(drop_first ? poly.vertices[after]
+                                    : make_point(set, poly.plane.id, h.id, poly.lines[after].id));
+  poly = std::move(out);
+  return poly.lines.size() >= 3;
+}
+
+std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
+                                       const std::vector<const WallFrame*>& walls) {
+  std::vector<Primitive> out;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const WallFrame& f = *walls[w];
+    std::array<PlaneRef, 4> sides{};
+    std::vector<PlaneRef> lines;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Point2 p = f.footprint[i], q = f.footprint[(i + 1) % 4];
+      if (p == q) continue;
+      sides[i] = plane_through(set, p, q);
+      lines.push_back(sides[i]);
+    }
+    const std::string name = fmt::format("the footprint of wall #{}", f.wall);
+    if (auto piece = make_wall_piece(set, box, f, sides, lines, name)) {
+      piece->frame = w;
+      out.push_back(std::move(*piece));
+    }
+    if (lines.size() < 4) continue;  // holds no hole (make_wall_frames refuses such a hole)
+    for (const Hole& h : f.holes)
+      if (auto hole = make_hole_piece(set, box, f, h, sides, name)) {
+        hole->frame = w;
+        out.push_back(std::move(*hole));
+      }
+  }
+  return out;
+}
+
+void use_plane_groups(std::vector<Primitive>& primitives, const std::vector<PlaneRef>& groups) {
+  auto remap_ref = [&](PlaneRef& r) { r = {groups[r.id].id, r.sign * groups[r.id].sign}; };
+  auto remap_point = [&](XPoint& p) {
+    if (!p.is_explicit())
+      for (PlaneId& id : p.planes) id = groups[id].id;
+  };
+  for (Primitive& p : primitives) {
+    for (XPoint& v : p.vertices) remap_point(v);
+    for (PlanePolygon& f : p.faces) {
+      remap_ref(f.plane);
+      for (PlaneRef& l : f.lines) remap_ref(l);
+      for (XPoint& v : f.vertices) remap_point(v);
+    }
+  }
+}
+
+}  // namespace roomcad::detail

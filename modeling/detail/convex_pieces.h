@@ -1,0 +1,74 @@
+// The primitives of the general build path: convex polyhedra in plane-based form
+// (exact_planes.h). A wall piece is its convex footprint between its base and its top (a
+// horizontal or sloped plane); an opening's hole is its convex outline in the wall's vertical
+// plane between the wall's two side planes. The solid is the union of the solids minus the
+// union of the holes (general_solid.h).
+//
+// A footprint is the intersection of the half-planes of its four sides: for a quad that is
+// convex (every wall not shorter than its mitres) that is the quad; a "bow-tie", whose mitre
+// lines cross inside the wall, keeps the triangle between them; a footprint with no area
+// is empty. exact_wall.h's exact_footprint computes the same set for the Nef reference and the
+// analytic volume.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "modeling/detail/exact_planes.h"
+#include "modeling/detail/wall_frame.h"
+
+namespace roomcad::detail {
+
+/// A convex polygon in `plane`: lines[i] are planes whose negative sides hold it, vertices[i]
+/// is where lines[i] and lines[i + 1] meet; counter-clockwise seen from the plane's positive side.
+struct PlanePolygon {
+  PlaneRef plane;
+  std::vector<PlaneRef> lines;
+  std::vector<XPoint> vertices;
+};
+
+/// The planes x, y, z = -M and +M around everything (M a power of two), from which sections
+/// are clipped.
+struct BoxPlanes {
+  std::array<PlaneId, 3> low{}, high{};
+};
+
+/// @return box planes at +-M, M the smallest power of two >= 4 * (largest |coordinate| + 1).
+[[nodiscard]] BoxPlanes add_box_planes(PlaneSet& set, double largest_coordinate);
+
+/// @return the square of the box's lines around the origin in `plane`, counter-clockwise.
+[[nodiscard]] PlanePolygon box_polygon(const PlaneSet& set, const BoxPlanes& box, PlaneRef plane);
+
+/// Keeps the part of the polygon on the negative side of `h` (zero-length edges dropped).
+/// @return false if nothing of positive area is left. O(n) predicates.
+bool clip_polygon(const PlaneSet& set, PlanePolygon& polygon, PlaneRef h);
+
+/// @return the axis along which the plane's normal is largest (its 2D view drops it).
+[[nodiscard]] int dominant_axis(const PlaneSet& set, PlaneId plane);
+
+struct Box3 {
+  std::array<double, 3> low{}, high{};
+};
+
+/// A convex polyhedron: a solid (wall piece) or a hole (an opening's, or a convex part of it).
+struct Primitive {
+  enum class Kind : std::uint8_t { solid, hole } kind = Kind::solid;
+  std::size_t frame = 0;    ///< index of its wall in the walls given to the builder
+  std::size_t opening = 0;  ///< Plan::openings index, for a hole
+  std::vector<PlanePolygon> faces;  ///< plane: outward; counter-clockwise seen from outside
+  std::vector<XPoint> vertices;
+  Box3 box;
+};
+
+/// The primitives of walls and their holes, in order: each wall's piece then its holes.
+/// @param[in,out] set  receives every plane used.
+/// @return primitives; a wall or hole with no volume in doubles (a footprint of no area, a
+///         height that rounds to 0) has none. Cost O(walls + holes) predicates.
+[[nodiscard]] std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
+                                                     const std::vector<const WallFrame*>& walls);
+
+/// Replaces every plane id in the primitives by its group's (PlaneSet::find_equal_planes).
+void use_plane_groups(std::vector<Primitive>& primitives, const std::vector<PlaneRef>& groups);
+
+}  // namespace roomcad::detail

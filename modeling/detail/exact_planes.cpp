@@ -1,0 +1,471 @@
+#include "modeling/detail/exact_planes.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numeric>
+
+#include <gmpxx.h>
+#include <mpfr.h>
+
+namespace roomcad::detail {
+namespace {
+
+// The coefficients (a, b, c, d) of a recipe, in T (Interval under upward rounding, or Exact).
+template <class T>
+std::array<T, 4> coefficients(const PlaneRecipe& r) {
+  const auto& v = r.v;
+  switch (r.kind) {
+    case PlaneRecipe::Kind::axis: {
+      std::array<T, 4> c{T(0), T(0), T(0), -(T(v[1]) + T(v[2]))};
+      c[std::size_t(v[0])] = T(1);
+      return c;
+    }
+    case PlaneRecipe::Kind::through2:
+      return {T(v[3]) - T(v[1]), T(v[0]) - T(v[2]), T(0), T(v[1]) * T(v[2]) - T(v[0]) * T(v[3])};
+    case PlaneRecipe::Kind::frame_line: {
+      const T alpha(v[6]);
+      const T origin = T(v[0]) * T(v[2]) + T(v[1]) * T(v[3]);
+      return {alpha * T(v[2]), alpha * T(v[3]), T(v[7]), T(v[8]) - alpha * origin};
+    }
+    case PlaneRecipe::Kind::sloped_top: {
+      const T ex = T(v[2]) - T(v[0]), ey = T(v[3]) - T(v[1]);
+      const T k = T(v[5]) - T(v[6]), l2 = ex * ex + ey * ey;
+      return {-(k * ex), -(k * ey), l2, k * (ex * T(v[0]) + ey * T(v[1])) - l2 * T(v[4])};
+    }
+    case PlaneRecipe::Kind::frame_edge: {
+      const T u1 = T(v[4]) + T(v[6]) * T(v[5]), u2 = T(v[4]) + T(v[8]) * T(v[5]);
+      const T z1 = T(v[10]) + T(v[7]) * T(v[11]), z2 = T(v[10]) + T(v[9]) * T(v[11]);
+      const T du = u2 - u1, dz = z2 - z1;
+      const T origin = T(v[0]) * T(v[2]) + T(v[1]) * T(v[3]) + u1;
+      return {dz * T(v[2]), dz * T(v[3]), -du, du * z1 - dz * origin};
+    }
+  }
+  return {T(0), T(0), T(0), T(0)};
+}
+
+template <class T>
+T det2(const T& a, const T& b, const T& c, const T& d) {
+  return a * d - b * c;
+}
+
+// det of the 3 x 3 matrix whose rows are (p[i], p[j], p[k]) of planes p0, p1, p2.
+template <class T>
+T det3(const std::array<T, 4>& p0, const std::array<T, 4>& p1, const std::array<T, 4>& p2,
+       std::size_t i, std::size_t j, std::size_t k) {
+  return p0[i] * det2(p1[j], p1[k], p2[j], p2[k]) - p0[j] * det2(p1[i], p1[k], p2[i], p2[k]) +
+         p0[k] * det2(p1[i], p1[j], p2[i], p2[j]);
+}
+
+// det of the 4 x 4 matrix of rows p0..p3, by 2 x 2 minors of the first two and last two rows.
+template <class T>
+T det4(const std::array<T, 4>& a, const std::array<T, 4>& b, const std::array<T, 4>& c,
+       const std::array<T, 4>& d) {
+  const T s0 = det2(a[0], a[1], b[0], b[1]), s1 = det2(a[0], a[2], b[0], b[2]);
+  const T s2 = det2(a[0], a[3], b[0], b[3]), s3 = det2(a[1], a[2], b[1], b[2]);
+  const T s4 = det2(a[1], a[3], b[1], b[3]), s5 = det2(a[2], a[3], b[2], b[3]);
+  const T c5 = det2(c[2], c[3], d[2], d[3]), c4 = det2(c[1], c[3], d[1], d[3]);
+  const T c3 = det2(c[1], c[2], d[1], d[2]), c2 = det2(c[0], c[3], d[0], d[3]);
+  const T c1 = det2(c[0], c[2], d[0], d[2]), c0 = det2(c[0], c[1], d[0], d[1]);
+  return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0;
+}
+
+// Homogeneous coordinates of the meeting point of three planes (Cramer).
+template <class T>
+std::array<T, 4> meet(const std::array<T, 4>& p0, const std::array<T, 4>& p1, const std::array<T, 4>& p2) {
+  return {-det3(p0, p1, p2, 1, 2, 3), det3(p0, p1, p2, 0, 2, 3), -det3(p0, p1, p2, 0, 1, 3),
+          det3(p0, p1, p2, 0, 1, 2)};
+}
+
+// -1, 0, +1 when the interval decides; 2 when it holds 0 but is not 0.
+int interval_sign(const Interval& x) {
+  if (x.inf() > 0.0) return 1;
+  if (x.sup() < 0.0) return -1;
+  if (x.inf() == 0.0 && x.sup() == 0.0) return 0;
+  return 2;
+}
+
+constexpr int kUnknown = 2;
+
+int exact_sign(const Exact& x) { return int(x.sign()); }
+
+std::array<Exact, 4> exact_of_point(const PlaneSet& set, const XPoint& p) {
+  if (p.is_explicit())
+    return {Exact(p.approx[0].inf()), Exact(p.approx[1].inf()), Exact(p.approx[2].inf()), Exact(1)};
+  return meet(set.exact(p.planes[0]), set.exact(p.planes[1]), set.exact(p.planes[2]));
+}
+
+// The correctly rounded double of num / den (ties to even). @pre den != 0.
+double round_quotient(const Exact& num, const Exact& den) {
+  // A close guess, then exact comparisons with the midpoints to its neighbours.
+  double r = num.to_double() / den.to_double();
+  if (std::isfinite(r) && r != 0.0) {
+    const Exact n = den.sign() > 0 ? num : -num, d = den.sign() > 0 ? den : -den;
+    for (int step = 0; step < 4; ++step) {
+      const double up = std::nextafter(r, INFINITY), down = std::nextafter(r, -INFINITY);
+      // 2 n vs (r + up) d: sums of two doubles are exact in Mpzf.
+      const int above = exact_sign(Exact(2) * n - (Exact(r) + Exact(up)) * d);
+      const int below = exact_sign(Exact(2) * n - (Exact(r) + Exact(down)) * d);
+      if (above > 0) { r = up; continue; }
+      if (below < 0) { r = down; continue; }
+      const bool even = (std::bit_cast<std::uint64_t>(r) & 1u) == 0;
+      if (above == 0 && !even) return up;
+      if (below == 0 && !even) return down;
+      return r;
+    }
+  }
+  const mpq_class q = mpq_class(num) / mpq_class(den);
+  mpfr_t m;
+  mpfr_init2(m, 53);
+  mpfr_set_q(m, q.get_mpq_t(), MPFR_RNDN);
+  const double out = mpfr_get_d(m, MPFR_RNDN);
+  mpfr_clear(m);
+  return out;
+}
+
+// Sign-free invariants of a plane for grouping equal planes: |d| / |n|, then |a|, |b|, |c|
+// over |n|, as intervals (equal planes have equal invariants, so theirs overlap).
+std::array<Interval, 4> invariants(const std::array<Interval, 4>& c) {
+  const Interval norm = CGAL::sqrt(CGAL::square(c[0]) + CGAL::square(c[1]) + CGAL::square(c[2]));
+  return {CGAL::abs(c[3]) / norm, CGAL::abs(c[0]) / norm, CGAL::abs(c[1]) / norm, CGAL::abs(c[2]) / norm};
+}
+
+bool do_overlap(const Interval& a, const Interval& b) { return !(a.sup() < b.inf() || b.sup() < a.inf()); }
+
+}  // namespace
+
+namespace {
+thread_local bool t_upward = false;  // an IntervalScope rounds upward on this thread
+}  // namespace
+
+UpwardRounding::UpwardRounding() : switched_(!t_upward) {
+  if (switched_) saved_ = CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD);
+}
+UpwardRounding::~UpwardRounding() {
+  if (switched_) CGAL::FPU_set_cw(saved_);
+}
+
+IntervalScope::IntervalScope() : outer_(!t_upward) {
+  if (!outer_) return;
+  saved_ = CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD);
+  t_upward = true;
+}
+IntervalScope::~IntervalScope() {
+  if (!outer_) return;
+  t_upward = false;
+  CGAL::FPU_set_cw(saved_);
+}
+
+PlaneId PlaneSet::add(const PlaneRecipe& recipe) {
+  recipes_.push_back(recipe);
+  {
+    const UpwardRounding upward;
+    approx_.push_back(coefficients<Interval>(recipe));
+  }
+  const bool simple = recipe.kind == PlaneRecipe::Kind::axis && recipe.v[2] == 0.0;
+  axis_.emplace_back(simple ? int(recipe.v[0]) : -1, simple ? recipe.v[1] : 0.0);
+  exact_.emplace_back();
+  return PlaneId(recipes_.size() - 1);
+}
+
+PlaneId PlaneSet::add_axis(int axis, double value) {
+  PlaneRecipe r;
+  r.kind = PlaneRecipe::Kind::axis;
+  r.v[0] = axis, r.v[1] = value, r.v[2] = 0.0;
+  return add(r);
+}
+
+const std::array<Exact, 4>& PlaneSet::exact(PlaneId id) const {
+  ExactSlot& slot = exact_[id];
+  std::call_once(slot.once, [&] { slot.coefficients = coefficients<Exact>(recipes_[id]); });
+  return slot.coefficients;
+}
+
+XPoint make_point(double x, double y, double z) {
+  XPoint p;
+  p.approx = {Interval(x), Interval(y), Interval(z)};
+  p.hom = {p.approx[0], p.approx[1], p.approx[2], Interval(1)};
+  return p;
+}
+
+XPoint make_point(const PlaneSet& set, PlaneId a, PlaneId b, PlaneId c) {
+  // Three axis planes at double offsets meet at an explicit point.
+  const auto [aa, av] = simple_axis(set, a);
+  const auto [ba, bv] = simple_axis(set, b);
+  const auto [ca, cv] = simple_axis(set, c);
+  if (aa >= 0 && ba >= 0 && ca >= 0 && aa != ba && ba != ca && aa != ca) {
+    std::array<double, 3> xyz{};
+    xyz[std::size_t(aa)] = av, xyz[std::size_t(ba)] = bv, xyz[std::size_t(ca)] = cv;
+    return make_point(xyz[0], xyz[1], xyz[2]);
+  }
+  XPoint p;
+  p.planes = {a, b, c};
+  const UpwardRounding upward;
+  p.hom = meet(set.approx(a), set.approx(b), set.approx(c));
+  for (std::size_t k = 0; k < 3; ++k) p.approx[k] = p.hom[k] / p.hom[3];
+  // A coordinate fixed by an axis plane at a double is exact.
+  for (const auto& [axis, value] : {std::pair{aa, av}, std::pair{ba, bv}, std::pair{ca, cv}})
+    if (axis >= 0) p.approx[std::size_t(axis)] = Interval(value);
+  return p;
+}
+
+namespace {
+
+// The predicates on points, given how to get a point's exact homogeneous coordinates (computed
+// only when the filters cannot decide).
+template <class HomOf>
+int side_of(const PlaneSet& set, PlaneRef plane, const XPoint& p, HomOf&& hom_of) {
+  if (!p.is_explicit() && p.is_on_plane_by_definition(plane.id)) return 0;
+  // Against an axis plane at a double, an exact coordinate decides at once.
+  if (const auto [axis, value] = simple_axis(set, plane.id); axis >= 0) {
+    const Interval& x = p.approx[std::size_t(axis)];
+    if (x.inf() > value) return plane.sign;
+    if (x.sup() < value) return -plane.sign;
+    if (x.inf() == x.sup()) return 0;
+  }
+  {
+    const UpwardRounding upward;
+    const auto& q = set.approx(plane.id);
+    const auto& h = p.hom;
+    // q . (X, Y, Z, W) is the plane's value at the point times W.
+    const int sq = interval_sign(q[0] * h[0] + q[1] * h[1] + q[2] * h[2] + q[3] * h[3]);
+    const int sw = interval_sign(h[3]);
+    if (sq != kUnknown && sw != kUnknown) return sq * sw * plane.sign;
+  }
+  const auto& q = set.exact(plane.id);
+  const XHom& h = hom_of();
+  return exact_sign(q[0] * h.x + q[1] * h.y + q[2] * h.z + q[3] * h.w) * exact_sign(h.w) * plane.sign;
+}
+
+template <class HomOf>
+bool same_point(const XPoint& p, const XPoint& q, HomOf&& hom_of) {
+  if (p.is_explicit() && q.is_explicit()) {
+    for (std::size_t k = 0; k < 3; ++k)
+      if (p.approx[k].inf() != q.approx[k].inf()) return false;
+    return true;
+  }
+  bool all_points = true;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (!do_overlap(p.approx[k], q.approx[k])) return false;
+    all_points = all_points && p.approx[k].inf() == p.approx[k].sup() && q.approx[k].inf() == q.approx[k].sup();
+  }
+  if (all_points) return true;  // overlapping point intervals: equal doubles
+  if (!p.is_explicit() && !q.is_explicit()) {
+    auto a = p.planes, b = q.planes;
+    std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
+    if (a == b) return true;
+  }
+  const XHom& hp = hom_of(0);
+  const XHom& hq = hom_of(1);
+  return hp.x * hq.w == hq.x * hp.w && hp.y * hq.w == hq.y * hp.w && hp.z * hq.w == hq.z * hp.w;
+}
+
+const Exact& coordinate(const XHom& h, std::size_t k) { return k == 0 ? h.x : k == 1 ? h.y : h.z; }
+
+template <class HomOf>
+int compare_points(const XPoint& p, const XPoint& q, int axis, HomOf&& hom_of) {
+  const auto k = std::size_t(axis);
+  if (p.approx[k].sup() < q.approx[k].inf()) return -1;
+  if (p.approx[k].inf() > q.approx[k].sup()) return 1;
+  if (p.approx[k].inf() == p.approx[k].sup() && q.approx[k].inf() == q.approx[k].sup()) return 0;
+  const XHom& hp = hom_of(0);
+  const XHom& hq = hom_of(1);
+  return exact_sign(coordinate(hp, k) * hq.w - coordinate(hq, k) * hp.w) * exact_sign(hp.w) * exact_sign(hq.w);
+}
+
+template <class HomOf>
+int compare_value(const XPoint& p, double value, int axis, HomOf&& hom_of) {
+  const auto k = std::size_t(axis);
+  if (p.approx[k].sup() < value) return -1;
+  if (p.approx[k].inf() > value) return 1;
+  if (p.approx[k].inf() == p.approx[k].sup()) return 0;
+  const XHom& h = hom_of();
+  return exact_sign(coordinate(h, k) - Exact(value) * h.w) * exact_sign(h.w);
+}
+
+template <class HomOf>
+std::array<double, 3> round_of(const XPoint& p, HomOf&& hom_of) {
+  std::array<double, 3> out{};
+  bool all_points = true;
+  for (std::size_t k = 0; k < 3; ++k) {
+    out[k] = p.approx[k].inf();
+    all_points = all_points && p.approx[k].inf() == p.approx[k].sup();
+  }
+  if (all_points) return out;
+  const XHom& h = hom_of();
+  for (std::size_t k = 0; k < 3; ++k) out[k] = round_quotient(coordinate(h, k), h.w) + 0.0;
+  return out;
+}
+
+}  // namespace
+
+XHom homogeneous(const PlaneSet& set, const XPoint& p) {
+  auto h = exact_of_point(set, p);
+  return {std::move(h[0]), std::move(h[1]), std::move(h[2]), std::move(h[3])};
+}
+
+int side(const PlaneSet& set, PlaneRef plane, const XPoint& p) {
+  XHom h;
+  return side_of(set, plane, p, [&]() -> const XHom& { return h = homogeneous(set, p); });
+}
+
+bool is_same_point(const PlaneSet& set, const XPoint& p, const XPoint& q) {
+  XHom h[2];
+  return same_point(p, q, [&](int i) -> const XHom& { return h[i] = homogeneous(set, i == 0 ? p : q); });
+}
+
+int compare_coordinate(const PlaneSet& set, const XPoint& p, const XPoint& q, int axis) {
+  XHom h[2];
+  return compare_points(p, q, axis, [&](int i) -> const XHom& { return h[i] = homogeneous(set, i == 0 ? p : q); });
+}
+
+int compare_coordinate(const PlaneSet& set, const XPoint& p, double value, int axis) {
+  XHom h;
+  return compare_value(p, value, axis, [&]() -> const XHom& { return h = homogeneous(set, p); });
+}
+
+std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p) {
+  XHom h;
+  return round_of(p, [&]() -> const XHom& { return h = homogeneous(set, p); });
+}
+
+std::size_t PointCache::add(const XPoint& p) {
+  points_.push_back(p);
+  exact_.emplace_back();
+  return points_.size() - 1;
+}
+
+const XHom& PointCache::exact(std::size_t i) {
+  if (!exact_[i]) exact_[i] = std::make_unique<XHom>(homogeneous(set_, points_[i]));
+  return *exact_[i];
+}
+
+int PointCache::side(PlaneRef plane, std::size_t i) {
+  return side_of(set_, plane, points_[i], [&]() -> const XHom& { return exact(i); });
+}
+
+bool PointCache::is_same(std::size_t i, std::size_t j) {
+  if (i == j) return true;
+  return same_point(points_[i], points_[j], [&](int k) -> const XHom& { return exact(k == 0 ? i : j); });
+}
+
+int PointCache::compare(std::size_t i, std::size_t j, int axis) {
+  if (i == j) return 0;
+  return compare_points(points_[i], points_[j], axis, [&](int k) -> const XHom& { return exact(k == 0 ? i : j); });
+}
+
+int PointCache::compare(std::size_t i, double value, int axis) {
+  return compare_value(points_[i], value, axis, [&]() -> const XHom& { return exact(i); });
+}
+
+std::array<double, 3> PointCache::round(std::size_t i) {
+  return round_of(points_[i], [&]() -> const XHom& { return exact(i); });
+}
+
+int orient_normals(const PlaneSet& set, PlaneRef a, PlaneRef b, PlaneRef c) {
+  int s = kUnknown;
+  {
+    const UpwardRounding upward;
+    s = interval_sign(det3(set.approx(a.id), set.approx(b.id), set.approx(c.id), 0, 1, 2));
+  }
+  if (s == kUnknown) s = exact_sign(det3(set.exact(a.id), set.exact(b.id), set.exact(c.id), 0, 1, 2));
+  return s * a.sign * b.sign * c.sign;
+}
+
+int dot_normals(const PlaneSet& set, PlaneRef a, PlaneRef b) {
+  int s = kUnknown;
+  {
+    const UpwardRounding upward;
+    const auto& p = set.approx(a.id);
+    const auto& q = set.approx(b.id);
+    s = interval_sign(p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
+  }
+  if (s == kUnknown) {
+    const auto& p = set.exact(a.id);
+    const auto& q = set.exact(b.id);
+    s = exact_sign(p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
+  }
+  return s * a.sign * b.sign;
+}
+
+int dot_in_plane(const PlaneSet& set, PlaneRef plane, PlaneRef a, PlaneRef b) {
+  // (n_a . n_b)(n . n) - (n_a . n)(n_b . n): the dot product of n x n_a and n x n_b.
+  auto value = [&](const auto& n, const auto& p, const auto& q) {
+    auto dot = [](const auto& x, const auto& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+    return dot(p, q) * dot(n, n) - dot(p, n) * dot(q, n);
+  };
+  int s = kUnknown;
+  {
+    const UpwardRounding upward;
+    s = interval_sign(value(set.approx(plane.id), set.approx(a.id), set.approx(b.id)));
+  }
+  if (s == kUnknown) s = exact_sign(value(set.exact(plane.id), set.exact(a.id), set.exact(b.id)));
+  return s * a.sign * b.sign;
+}
+
+bool are_same_plane(const PlaneSet& set, PlaneId a, PlaneId b) {
+  if (a == b) return true;
+  const PlaneRecipe& ra = set.recipe(a);
+  const PlaneRecipe& rb = set.recipe(b);
+  if (ra.kind == PlaneRecipe::Kind::axis && rb.kind == PlaneRecipe::Kind::axis)
+    return ra.v[0] == rb.v[0] && ra.v[1] == rb.v[1] && ra.v[2] == rb.v[2];
+  {
+    const UpwardRounding upward;
+    const auto& p = set.approx(a);
+    const auto& q = set.approx(b);
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j) {
+        const int s = interval_sign(det2(p[i], p[j], q[i], q[j]));
+        if (s == 1 || s == -1) return false;
+      }
+  }
+  const auto& p = set.exact(a);
+  const auto& q = set.exact(b);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = i + 1; j < 4; ++j)
+      if (!det2(p[i], p[j], q[i], q[j]).is_zero()) return false;
+  return true;
+}
+
+std::vector<PlaneRef> PlaneSet::find_equal_planes() const {
+  const std::size_t n = recipes_.size();
+  std::vector<std::array<Interval, 4>> inv(n);
+  {
+    const UpwardRounding upward;
+    for (std::size_t i = 0; i < n; ++i) inv[i] = invariants(approx_[i]);
+  }
+  std::vector<PlaneId> order(n);
+  std::iota(order.begin(), order.end(), PlaneId{0});
+  // Planes in order of their lowest possible |d| / |n|; equal planes overlap in every invariant.
+  std::stable_sort(order.begin(), order.end(),
+                   [&](PlaneId x, PlaneId y) { return inv[x][0].inf() < inv[y][0].inf(); });
+  std::vector<PlaneRef> group(n);
+  std::vector<PlaneId> active;  // representatives whose |d| / |n| may still overlap
+  std::vector<PlaneId> rep_of(n);
+  for (PlaneId id : order) {
+    const double lo = inv[id][0].inf();
+    active.erase(std::remove_if(active.begin(), active.end(), [&](PlaneId r) { return inv[r][0].sup() < lo; }),
+                 active.end());
+    PlaneId found = id;
+    for (PlaneId r : active) {
+      bool overlap = true;
+      for (std::size_t k = 1; k < 4 && overlap; ++k) overlap = do_overlap(inv[id][k], inv[r][k]);
+      if (overlap && are_same_plane(*this, id, r)) {
+        found = r;
+        break;
+      }
+    }
+    rep_of[id] = found;
+    if (found == id) active.push_back(id);
+  }
+  // The group's representative is its lowest id, so the result does not depend on the sort.
+  std::vector<PlaneId> lowest(n, PlaneId(n));
+  for (PlaneId id = 0; id < n; ++id) lowest[rep_of[id]] = std::min(lowest[rep_of[id]], id);
+  for (PlaneId id = 0; id < n; ++id) {
+    const PlaneId rep = lowest[rep_of[id]];
+    group[id] = {rep, rep == id ? 1 : dot_normals(*this, {id, 1}, {rep, 1})};
+  }
+  return group;
+}
+
+}  // namespace roomcad::detail

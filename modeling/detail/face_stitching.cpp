@@ -1,0 +1,181 @@
+#include "modeling/detail/face_stitching.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <unordered_map>
+
+namespace roomcad::detail {
+namespace {
+
+using Key = std::array<std::uint64_t, 3>;
+
+struct KeyHash {
+  std::size_t operator()(const Key& k) const {
+    std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
+    h ^= (k[1] + 0x632BE59BD9B4E019ull) * 0xBF58476D1CE4E5B9ull;
+    h ^= (k[2] + 0x94D049BB133111EBull) * 0x2545F4914F6CDD1Dull;
+    return std::size_t(h ^ (h >> 29));
+  }
+};
+
+Key coordinates_key(const OpenMesh::Vec3d& p) {
+  return {std::bit_cast<std::uint64_t>(p[0] + 0.0), std::bit_cast<std::uint64_t>(p[1] + 0.0),
+          std::bit_cast<std::uint64_t>(p[2] + 0.0)};
+}
+
+// A point's representation (explicit doubles or its three planes) as a hash key.
+Key representation(const XPoint& p) {
+  if (p.is_explicit())
+    return {std::bit_cast<std::uint64_t>(p.approx[0].inf() + 0.0), std::bit_cast<std::uint64_t>(p.approx[1].inf() + 0.0),
+            std::bit_cast<std::uint64_t>(p.approx[2].inf() + 0.0)};
+  auto ids = p.planes;
+  std::sort(ids.begin(), ids.end());
+  return {ids[0] | (std::uint64_t(1) << 63), ids[1], ids[2]};
+}
+
+// The distinct rounded points of the faces and the exact points behind each (distinct exact
+// points may round to one double point, where features are thinner than an ulp).
+struct PointTable {
+  explicit PointTable(const PlaneSet& set) : exact(set) {}
+  std::vector<OpenMesh::Vec3d> points;
+  std::vector<std::vector<std::size_t>> exact_of;  // per point, indices into `exact`
+  PointCache exact;                                 // every distinct exact point
+  std::vector<std::vector<std::size_t>> polygons;   // per face, point indices
+  std::vector<std::vector<std::size_t>> exact_polygons;  // per face, its own exact points
+};
+
+PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
+  PointTable t(set);
+  std::unordered_map<Key, std::size_t, KeyHash> by_coordinates, by_representation;
+  for (const SolidFace& f : faces) {
+    std::vector<std::size_t>& poly = t.polygons.emplace_back();
+    std::vector<std::size_t>& exact_poly = t.exact_polygons.emplace_back();
+    for (std::size_t k = 0; k < f.vertices.size(); ++k) {
+      const OpenMesh::Vec3d p(f.rounded[k][0], f.rounded[k][1], f.rounded[k][2]);
+      const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), t.points.size());
+      if (added) t.points.push_back(p), t.exact_of.emplace_back();
+      const auto [rep, fresh] = by_representation.try_emplace(representation(f.vertices[k]), t.exact.size());
+      if (fresh) {
+        t.exact.add(f.vertices[k]);
+        t.exact_of[at->second].push_back(rep->second);
+      }
+      poly.push_back(at->second);
+      exact_poly.push_back(rep->second);
+    }
+  }
+  return t;
+}
+
+// A uniform grid of the points, for finding those near an edge.
+class PointGrid {
+ public:
+  explicit PointGrid(const std::vector<OpenMesh::Vec3d>& points) {
+    for (const auto& p : points)
+      for (int k = 0; k < 3; ++k) {
+        low_[k] = std::min(low_[k], p[k]);
+        high_[k] = std::max(high_[k], p[k]);
+      }
+    double extent = 0.0;
+    for (int k = 0; k < 3; ++k) extent = std::max(extent, high_[k] - low_[k]);
+    cell_ = std::max(extent / 32.0, std::numeric_limits<double>::min());
+    for (std::size_t i = 0; i < points.size(); ++i) cells_[cell_of(points[i])].push_back(i);
+  }
+  /// Calls f(i) for every point in the cells the box [a, b] (grown by `margin`) touches.
+  template <class F>
+  void for_each_near(const OpenMesh::Vec3d& a, const OpenMesh::Vec3d& b, double margin, F&& f) const {
+    std::array<std::int64_t, 3> lo{}, hi{};
+    for (int k = 0; k < 3; ++k) {
+      lo[std::size_t(k)] = index(std::min(a[k], b[k]) - margin, k);
+      hi[std::size_t(k)] = index(std::max(a[k], b[k]) + margin, k);
+    }
+    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
+      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
+        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+          const auto it = cells_.find({std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)});
+          if (it != cells_.end())
+            for (std::size_t i : it->second) f(i);
+        }
+  }
+
+ private:
+  std::int64_t index(double v, int k) const {
+    const double c = std::floor((std::clamp(v, low_[k], high_[k]) - low_[k]) / cell_);
+    return std::int64_t(std::min(c, 1e6));
+  }
+  Key cell_of(const OpenMesh::Vec3d& p) const {
+    return {std::uint64_t(index(p[0], 0)), std::uint64_t(index(p[1], 1)), std::uint64_t(index(p[2], 2))};
+  }
+  double low_[3] = {INFINITY, INFINITY, INFINITY}, high_[3] = {-INFINITY, -INFINITY, -INFINITY};
+  double cell_ = 1.0;
+  std::unordered_map<Key, std::vector<std::size_t>, KeyHash> cells_;
+};
+
+// Whether rounded point w lies within a few ulps of the segment u-v, strictly between them.
+bool is_near_segment(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, const OpenMesh::Vec3d& w) {
+  const OpenMesh::Vec3d d = v - u, r = w - u;
+  const double len2 = d.sqrnorm();
+  if (len2 == 0.0) return false;
+  const double t = (r | d) / len2;
+  double scale = 0.0;
+  for (int k = 0; k < 3; ++k) scale = std::max({scale, std::abs(u[k]), std::abs(v[k]), std::abs(w[k])});
+  const double tol = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+  return t > 0.0 && t < 1.0 && (r - d * t).norm() <= tol;
+}
+
+// The axis along which u -> v changes most, and the sign of that change (exact).
+std::pair<int, int> edge_axis(PointCache& exact, std::size_t u, std::size_t v, const OpenMesh::Vec3d& d) {
+  std::array<int, 3> axes{0, 1, 2};
+  std::sort(axes.begin(), axes.end(), [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
+  for (int a : axes)
+    if (const int s = exact.compare(v, u, a); s != 0) return {a, s};
+  return {0, 0};
+}
+
+}  // namespace
+
+IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
+  PointTable t = number_faces(set, faces);
+  const PointGrid grid(t.points);
+  IndexedSoup out;
+  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
+    const SolidFace& f = faces[fi];
+    const std::vector<std::size_t>& poly = t.polygons[fi];
+    const std::vector<std::size_t>& exact_poly = t.exact_polygons[fi];
+    std::vector<std::size_t> result;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const std::size_t next = (k + 1) % poly.size();
+      const std::size_t ui = poly[k], vi = poly[next], eu = exact_poly[k], ev = exact_poly[next];
+      result.push_back(ui);
+      const OpenMesh::Vec3d& u = t.points[ui];
+      const OpenMesh::Vec3d& v = t.points[vi];
+      // Candidates near the edge in doubles; each decided on its exact points: on the face's
+      // plane and the edge's line, strictly between the face's own exact ends.
+      std::vector<std::pair<std::size_t, std::size_t>> on_edge;  // (point, its exact point)
+      int axis = -1, dir = 0;
+      grid.for_each_near(u, v, 1e-9 * (1.0 + u.norm()), [&](std::size_t wi) {
+        if (wi == ui || wi == vi || !is_near_segment(u, v, t.points[wi])) return;
+        if (std::find(poly.begin(), poly.end(), wi) != poly.end()) return;
+        for (const std::size_t w : t.exact_of[wi]) {
+          if (t.exact.side(f.plane, w) != 0 || t.exact.side(f.lines[k], w) != 0) continue;
+          if (axis < 0) std::tie(axis, dir) = edge_axis(t.exact, eu, ev, v - u);
+          if (t.exact.compare(w, eu, axis) != dir || t.exact.compare(ev, w, axis) != dir) continue;
+          on_edge.emplace_back(wi, w);
+          break;
+        }
+      });
+      std::sort(on_edge.begin(), on_edge.end(), [&](const auto& a, const auto& b) {
+        return t.exact.compare(a.second, b.second, axis) * dir < 0;
+      });
+      for (const auto& [wi, w] : on_edge) result.push_back(wi);
+    }
+    out.polygons.push_back(std::move(result));
+    out.tags.push_back(fi);
+  }
+  out.points = std::move(t.points);
+  return out;
+}
+
+}  // namespace roomcad::detail

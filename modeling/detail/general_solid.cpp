@@ -1,0 +1,227 @@
+#include "modeling/detail/general_solid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include "modeling/build_model.h"
+#include "modeling/detail/classify_face.h"
+#include "modeling/detail/convex_pieces.h"
+#include "modeling/detail/face_stitching.h"
+#include "modeling/detail/plane_faces.h"
+
+namespace roomcad::detail {
+namespace {
+
+// What one plane's faces are made of.
+struct PlaneWork {
+  PlaneId plane = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> faces;  // (primitive, face) lying on it
+  std::vector<std::size_t> crossing;                       // primitives crossing it
+  std::vector<Cut> cuts;
+  PlaneFaces result;
+};
+
+double largest_coordinate(std::span<const WallFrame* const> walls) {
+  double m = 0.0;
+  for (const WallFrame* f : walls) {
+    for (const Point2& p : f->footprint) m = std::max({m, std::abs(p.x), std::abs(p.y)});
+    m = std::max({m, std::abs(f->base), std::abs(f->top)});
+  }
+  return m;
+}
+
+bool do_overlap(const Box3& a, const Box3& b) {
+  for (std::size_t k = 0; k < 3; ++k)
+    if (a.high[k] < b.low[k] || b.high[k] < a.low[k]) return false;
+  return true;
+}
+
+// The planes carrying faces, each with the primitives near it. O(planes x primitives) box tests.
+std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primitive>& prims) {
+  std::map<PlaneId, PlaneWork> by_plane;
+  for (std::size_t p = 0; p < prims.size(); ++p)
+    for (std::size_t f = 0; f < prims[p].faces.size(); ++f) {
+      PlaneWork& w = by_plane[prims[p].faces[f].plane.id];
+      w.plane = prims[p].faces[f].plane.id;
+      w.faces.emplace_back(p, f);
+    }
+  std::vector<PlaneWork> works;
+  works.reserve(by_plane.size());
+  for (auto& [id, w] : by_plane) {
+    Box3 box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+    for (const auto& [p, f] : w.faces)
+      for (const XPoint& v : prims[p].faces[f].vertices)
+        for (std::size_t k = 0; k < 3; ++k) {
+          box.low[k] = std::min(box.low[k], v.approx[k].inf());
+          box.high[k] = std::max(box.high[k], v.approx[k].sup());
+        }
+    for (std::size_t p = 0; p < prims.size(); ++p) {
+      if (!do_overlap(box, prims[p].box)) continue;
+      if (std::any_of(w.faces.begin(), w.faces.end(), [&](const auto& pf) { return pf.first == p; })) continue;
+      bool below = false, above = false;
+      for (const XPoint& v : prims[p].vertices) {
+        const int s = side(set, {id, 1}, v);
+        below = below || s < 0;
+        above = above || s > 0;
+        if (below && above) break;
+      }
+      if (below && above) w.crossing.push_back(p);
+    }
+    works.push_back(std::move(w));
+  }
+  return works;
+}
+
+// The face as a polygon counter-clockwise seen from the plane's positive side.
+Contribution face_contribution(const Primitive& prim, std::size_t p, std::size_t f) {
+  const PlanePolygon& face = prim.faces[f];
+  Contribution c{face, p, prim.kind == Primitive::Kind::solid, false, false};
+  c.polygon.plane = {face.plane.id, 1};
+  if (face.plane.sign > 0) {
+    c.below = true;  // looking along the normal: the primitive lies below
+    return c;
+  }
+  c.above = true;
+  const std::size_t n = face.lines.size();
+  for (std::size_t m = 0; m < n; ++m) {
+    c.polygon.lines[m] = face.lines[n - 1 - m];
+    c.polygon.vertices[m] = face.vertices[(2 * n - 2 - m) % n];
+  }
+  return c;
+}
+
+std::optional<Contribution> section(const PlaneSet& set, const BoxPlanes& box, const Primitive& prim,
+                                    std::size_t p, PlaneId plane) {
+  PlanePolygon poly = box_polygon(set, box, {plane, 1});
+  for (const PlanePolygon& f : prim.faces)
+    if (!clip_polygon(set, poly, f.plane)) return std::nullopt;
+  return Contribution{std::move(poly), p, prim.kind == Primitive::Kind::solid, true, true};
+}
+
+PlaneFaces run_plane(const PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
+                     const PlaneWork& w) {
+  const IntervalScope intervals;
+  std::vector<Contribution> contributions;
+  for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
+  for (std::size_t p : w.crossing)
+    if (auto c = section(set, box, prims[p], p, w.plane)) contributions.push_back(std::move(*c));
+  return build_plane_faces(set, box, {w.plane, 1}, contributions, w.cuts);
+}
+
+// A line of the plane through the middle of a hole loop (along a view axis).
+Cut cut_through(PlaneSet& set, PlaneId plane, std::size_t owner, const std::vector<XPoint>& loop) {
+  const int k = dominant_axis(set, plane);
+  for (const int a : {(k + 1) % 3, (k + 2) % 3}) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const XPoint& v : loop) lo = std::min(lo, bounds(v, a).first), hi = std::max(hi, bounds(v, a).second);
+    const double c = lo + (hi - lo) / 2.0;
+    const bool left = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) < 0; });
+    const bool right = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) > 0; });
+    if (left && right) return {{set.add_axis(a, c), 1}, owner};
+  }
+  throw PreconditionError("build_model: a hole in a face of the general path is too thin to cut "
+                          "(narrower than the doubles can split)", Code::not_buildable);
+}
+
+// Builds every plane's faces; planes whose faces would have holes get cuts and run again.
+void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
+                std::vector<PlaneWork>& works) {
+  std::vector<std::size_t> todo(works.size());
+  for (std::size_t k = 0; k < works.size(); ++k) todo[k] = k;
+  for (int round = 0; !todo.empty(); ++round) {
+    if (round == 8)
+      throw PreconditionError("build_model: the general path could not cut the faces of a plane "
+                              "into simple polygons (internal error)", Code::internal);
+    tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t k) {
+      works[todo[k]].result = run_plane(set, box, prims, works[todo[k]]);
+    });
+    std::vector<std::size_t> again;
+    for (std::size_t k : todo) {
+      PlaneWork& w = works[k];
+      if (w.result.holes.empty()) continue;
+      for (const auto& [owner, loop] : w.result.holes) w.cuts.push_back(cut_through(set, w.plane, owner, loop));
+      again.push_back(k);
+    }
+    todo = std::move(again);
+  }
+}
+
+SoupFace label_face(const Primitive& prim, const PlaneSet& set, PlaneRef plane,
+                    std::span<const WallFrame* const> walls, int first_opening_object) {
+  const auto& c = set.approx(plane.id);
+  OpenMesh::Vec3d n(CGAL::to_double(c[0]), CGAL::to_double(c[1]), CGAL::to_double(c[2]));
+  n = n.normalized() * double(plane.sign);
+  const WallFrame& f = *walls[prim.frame];
+  SoupFace face;
+  face.color = f.color;
+  if (prim.kind == Primitive::Kind::solid) {
+    face.kind = wall_face_kind(f, n);
+    face.object = static_cast<int>(f.wall);
+  } else if (std::abs(n[0] * f.normal.x + n[1] * f.normal.y) > 0.9) {
+    // A hole's face across its wall is its mouth where other material closes it (a wall in
+    // front of a window): that material's face, the host wall's as classify_face has it.
+    face.kind = FaceKind::wall_face;
+    face.object = static_cast<int>(f.wall);
+  } else {
+    face.kind = n[2] > 0.5 ? FaceKind::sill : n[2] < -0.5 ? FaceKind::lintel : FaceKind::jamb;
+    face.object = first_opening_object + static_cast<int>(prim.opening);
+  }
+  return face;
+}
+
+FaceSoup to_face_soup(IndexedSoup soup, const std::vector<SolidFace>& faces, const std::vector<Primitive>& prims,
+                      const PlaneSet& set, std::span<const WallFrame* const> walls, int first_opening_object) {
+  const double tolerance = snap_tolerance(soup.points);
+  const IndexedSoup r = snap_soup(std::move(soup), tolerance);
+  std::pair<std::size_t, std::size_t> bad;
+  const auto copies = split_fans(r.polygons, r.points.size(), bad);
+  if (copies.empty() && !r.polygons.empty()) {
+    std::string owners;
+    for (std::size_t k = 0; k < r.polygons.size(); ++k) {
+      const auto& poly = r.polygons[k];
+      for (std::size_t m = 0; m < poly.size(); ++m)
+        if ((poly[m] == bad.first && poly[(m + 1) % poly.size()] == bad.second) ||
+            (poly[m] == bad.second && poly[(m + 1) % poly.size()] == bad.first))
+          owners += fmt::format("{}#{}", owners.empty() ? "" : ", ", walls[prims[faces[r.tags[k]].owner].frame]->wall);
+    }
+    const auto& a = r.points[bad.first];
+    const auto& b = r.points[bad.second];
+    throw PreconditionError(fmt::format("build_model: the solid of walls {} is not 2-manifold: more than "
+                                        "two of its faces meet at the edge from ({}, {}, {}) to ({}, {}, {}) "
+                                        "(walls touching along an edge)",
+                                        owners, a[0], a[1], a[2], b[0], b[1], b[2]),
+                            Code::not_buildable);
+  }
+  FaceSoup out;
+  out.reserve(r.polygons.size());
+  for (std::size_t k = 0; k < r.polygons.size(); ++k) {
+    const SolidFace& f = faces[r.tags[k]];
+    SoupFace face = label_face(prims[f.owner], set, f.plane, walls, first_opening_object);
+    for (std::size_t i : r.polygons[k]) face.points.push_back(r.points[i]);
+    face.copies = copies[k];
+    out.push_back(std::move(face));
+  }
+  return out;
+}
+
+}  // namespace
+
+FaceSoup build_cluster_general(std::span<const WallFrame* const> walls, int first_opening_object) {
+  PlaneSet set;
+  const BoxPlanes box = add_box_planes(set, largest_coordinate(walls));
+  std::vector<Primitive> prims = make_primitives(set, box, {walls.begin(), walls.end()});
+  if (prims.empty()) return {};
+  use_plane_groups(prims, set.find_equal_planes());
+  std::vector<PlaneWork> works = plan_planes(set, prims);
+  run_planes(set, box, prims, works);
+  std::vector<SolidFace> faces;
+  for (const PlaneWork& w : works)
+    for (const PlaneFace& f : w.result.faces) faces.push_back({{w.plane, f.side}, f.owner, f.vertices, f.lines, f.rounded});
+  return to_face_soup(stitch_faces(set, faces), faces, prims, set, walls, first_opening_object);
+}
+
+}  // namespace roomcad::detail

@@ -1,0 +1,39 @@
+// The general path: the exact solid of any cluster of walls without 3D booleans.
+//
+// The solid R is the union of the solids (wall pieces) minus the union of the holes, every
+// one a convex polyhedron (convex_pieces.h). Every face of R lies on a plane carrying a face of
+// some primitive, so R's faces are found plane by plane: on a plane, the region where R is
+// just below and not just above is a face looking along the plane's normal, and the other
+// way round; both are exact 2D booleans of the primitives' sections and faces in that plane
+// (plane_faces.h). Every vertex is then where three planes meet (or input doubles), so faces
+// of different planes share their vertices exactly; a vertex inside another face's edge is
+// inserted there (face_stitching.h), and each vertex is rounded to doubles once.
+//
+// Exactness: every decision is the sign of a polynomial in the plan's doubles, evaluated
+// exactly (exact_planes.h), so the faces found are R's, exactly; the only approximation is
+// the final rounding of each vertex to the nearest doubles, as on the Nef path (whose corners
+// round the same way): points that round to within a few ulps of each other are then snapped
+// together (snap_soup.h). Planes are independent, so they are built in parallel; the output
+// does not depend on the thread count.
+#pragma once
+
+#include <span>
+
+#include "modeling/detail/face_soup.h"
+#include "modeling/detail/wall_frame.h"
+
+namespace roomcad::detail {
+
+/// Builds the solid of a cluster of walls with their holes.
+/// @param[in] walls  the cluster: no wall outside it may touch one inside it.
+/// @param[in] first_opening_object Model::objects index of opening 0
+/// @return faces, rounded to the nearest doubles, each labelled by the primitive it belongs
+///         to (a wall's top, side, end or bottom; an opening's jamb, sill or lintel). Cost
+///         about O(p log p) predicates for p primitive faces near each other, plus exact
+///         arithmetic where shapes touch.
+/// @throws PreconditionError (not_buildable) naming the walls if the solid touches itself
+///         along an edge (it would not be 2-manifold) or is unbounded.
+[[nodiscard]] FaceSoup build_cluster_general(std::span<const WallFrame* const> walls,
+                                             int first_opening_object);
+
+}  // namespace roomcad::detail

@@ -1,0 +1,66 @@
+// The faces of the solid on one plane (general_solid.h): exact 2D booleans in the plane.
+//
+// Each primitive near the plane contributes a convex polygon: where it crosses the plane, its
+// section (it lies both just above and just below there); where one of its faces lies on the
+// plane, that face (it lies just above, or just below). At a point of the plane the solid
+// (solids minus holes) is just below and not just above: a face looking along the normal
+// there; just above and not below: a face looking against it. Every polygon edge is split
+// where other edges cross or touch it; each piece is then one straight segment that no other
+// polygon boundary crosses, so both of its sides are each inside or outside every polygon,
+// which the signs of the polygons' lines at its ends decide exactly. A piece bounds a face
+// where the two sides differ; the face on each side belongs to an owner (the primitive whose
+// face it is: the lowest-numbered solid with a face there, else the lowest hole), so faces
+// are split where owners change and each gets an exact label. Pieces are linked into loops
+// (plane_loops.h). A face with a hole is cut through the hole by a line of its owner's (a
+// `Cut`), so every face is one simple polygon.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "modeling/detail/convex_pieces.h"
+#include "modeling/detail/exact_planes.h"
+
+namespace roomcad::detail {
+
+/// A primitive's polygon in the plane.
+struct Contribution {
+  PlanePolygon polygon;  ///< counter-clockwise seen from the plane's positive side
+  std::size_t primitive = 0;
+  bool solid = true;
+  bool above = false;  ///< the primitive is just above the plane (its positive side) there
+  bool below = false;
+};
+
+/// A line of the plane that splits the faces of one owner.
+struct Cut {
+  PlaneRef line;
+  std::size_t owner = 0;
+};
+
+/// One face of the solid on the plane.
+struct PlaneFace {
+  int side = 1;  ///< +1: outward along the plane's normal, -1: against it
+  std::size_t owner = 0;
+  std::vector<XPoint> vertices;  ///< counter-clockwise seen from outside
+  std::vector<PlaneRef> lines;   ///< lines[k]: the line of edge vertices[k] -> vertices[k + 1]
+  std::vector<std::array<double, 3>> rounded;  ///< each vertex rounded to the nearest doubles
+};
+
+struct PlaneFaces {
+  std::vector<PlaneFace> faces;
+  /// Loops that would be holes of a face (owner, vertices): cut through them and run again.
+  std::vector<std::pair<std::size_t, std::vector<XPoint>>> holes;
+};
+
+/// The faces of the solid on `plane`.
+/// @param[in] plane          canonical orientation (sign +1)
+/// @param[in] contributions  every primitive near the plane with area in it
+/// @param[in] cuts           lines splitting their owners' faces
+/// @return faces (complete when `holes` is empty). O(n log n + k) predicates for n polygon
+///         edges and k crossings, plus O(p c) for p pieces and the c polygons around each.
+[[nodiscard]] PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef plane,
+                                           const std::vector<Contribution>& contributions,
+                                           const std::vector<Cut>& cuts);
+
+}  // namespace roomcad::detail

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// roomcad.Report and roomcad.Finding: what Plan.validate returns.
+#include "python/py_types.h"
+
+#include <string>
+
+#include <pybind11/stl.h>
+
+#include "validation/report_format.h"
+
+namespace py = pybind11;
+
+namespace roomcad::python {
+namespace {
+
+py::object where_of(const Diagnostic& d) {
+  if (!d.where) return py::none();
+  const auto point = [](Point2 p) { return py::make_tuple(p.x, p.y); };
+  if (!d.where->max) return point(d.where->min);
+  return py::make_tuple(point(d.where->min), point(*d.where->max));
+}
+
+std::vector<Diagnostic> of_severity(const Report& report, Severity severity) {
+  std::vector<Diagnostic> out;
+  for (const Diagnostic& d : report.items)
+    if (d.severity == severity) out.push_back(d);
+  return out;
+}
+
+}  // namespace
+
+void register_report(py::module_& m) {
+  py::class_<Diagnostic>(m, "Finding", "One problem of a plan: an error or a warning.")
+      .def_property_readonly("severity", [](const Diagnostic& d) {
+        return d.severity == Severity::error ? "error" : "warning";
+      }, "'error' or 'warning'")
+      .def_property_readonly("code", [](const Diagnostic& d) { return std::string(to_string(d.code)); },
+                             "its code (docs/plan-format.md, 'Validation codes'), e.g. 'wall_overlap'")
+      .def_readonly("objects", &Diagnostic::objects, "the ids of the objects involved")
+      .def_readonly("message", &Diagnostic::message, "one sentence a person can act on")
+      .def_readonly("fix", &Diagnostic::fix, "a concrete change that removes it ('' if none)")
+      .def_property_readonly("where", &where_of,
+                             "(x, y) or ((xmin, ymin), (xmax, ymax)) in metres, or None")
+      .def_property_readonly("line", [](const Diagnostic& d) -> py::object {
+        return d.location ? py::object(py::int_(d.location->line)) : py::object(py::none());
+      }, "line in the plan's text, or None")
+      .def("__repr__", [](const Diagnostic& d) {
+        return (d.severity == Severity::error ? "<error " : "<warning ") +
+               std::string(to_string(d.code)) + ": " + d.message + ">";
+      });
+
+  py::class_<Report>(m, "Report",
+                     "What validating a plan found: report.ok, report.errors, report.warnings.")
+      .def_property_readonly("ok", &Report::ok, "True when there is no error (warnings allowed)")
+      .def_property_readonly("findings", [](const Report& r) { return r.items; },
+                             "every finding, errors first")
+      .def_property_readonly("errors", [](const Report& r) { return of_severity(r, Severity::error); },
+                             "the findings that are errors")
+      .def_property_readonly("warnings", [](const Report& r) { return of_severity(r, Severity::warning); },
+                             "the findings that are warnings")
+      .def("to_json", [](const Report& r) { return format_report_json(r); },
+           "The JSON text `roomcad validate --format json` prints for the same plan.")
+      .def("to_dict", [](const Report& r) {
+        return py::module_::import("json").attr("loads")(format_report_json(r));
+      }, "The object `roomcad validate --format json` prints: {'ok', 'errors', 'warnings'}.")
+      .def("__str__", [](const Report& r) { return format_report_text(r, false); })
+      .def("__repr__", [](const Report& r) { return "<Report: " + format_report_summary(r) + ">"; });
+}
+
+}  // namespace roomcad::python

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A picture asked for in words, as `roomcad render`'s flags and the Python module's
+// Plan.render arguments give it, and the RenderOptions it means for a plan. Both front ends
+// fill a RenderRequest, so their defaults and their checks are the same.
+#pragma once
+
+#include <string>
+
+#include "modeling/plan.h"
+#include "render/renderer.h"
+
+namespace roomcad {
+
+/// The defaults are the command's. Texts are as on the command line: points "x,y,z",
+/// colours "#rrggbb", lists "walls,floor".
+struct RenderRequest {
+  int width = 1280, height = 720, shadow_res = 1024, ssaa = 1, threads = 0;
+  std::string camera;       ///< a plan camera's id, or empty
+  std::string eye, target;  ///< both or neither: a camera given by its points (metres)
+  std::string up = "0,0,1", projection = "perspective";
+  std::string view;         ///< front, back, left, right, top, iso; empty: iso
+  double fov = 50.0, view_height = 10.0;
+  std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";
+  std::string parts = "walls,floor,fixtures", cull = "back", frustum_cull = "on";
+};
+
+/// @return the options that render `plan` as `request` asks (no depth or id image: set
+///         `outputs` for those), checked by check_render_options.
+/// @throws PreconditionError (usage_error) naming the flag and its value: an unknown camera,
+///         a malformed point or colour, an unknown choice, a frame too large.
+[[nodiscard]] RenderOptions make_render_options(const RenderRequest& request, const Plan& plan);
+
+}  // namespace roomcad

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The committed seeds of fuzz_build and fuzz_render (fuzz/corpus/build/), decoded as the
+// targets decode them (fuzz/plan_bytes.h) and built as `--force` builds them on every path:
+// degenerate plans (zero-length and hairline walls, bow-ties, coincident and nested walls,
+// openings flush with every end, tiny and huge coordinates) build closed or are refused with
+// a reason, in every build of the suite, not only when the fuzzers run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fuzz/plan_bytes.h"
+#include "model_support.h"
+
+namespace roomcad {
+namespace {
+
+std::vector<std::filesystem::path> build_seeds() {
+  std::vector<std::filesystem::path> seeds;
+  for (const auto& entry : std::filesystem::directory_iterator(ROOMCAD_SOURCE_DIR "/fuzz/corpus/build"))
+    seeds.push_back(entry.path());
+  std::sort(seeds.begin(), seeds.end());
+  return seeds;
+}
+
+Plan decode_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+  return fuzz::decode_plan(bytes.data(), bytes.size());
+}
+
+// The walls built on one path, or the reason they were refused.
+struct Outcome {
+  std::optional<Model> model;
+  std::string refusal;
+};
+
+Outcome build_on(const Plan& plan, BooleanPath path) {
+  try {
+    return {build_model(plan, test::options_for(path, 1)), {}};
+  } catch (const PreconditionError& e) {
+    EXPECT_NE(e.code(), Code::internal) << e.what();
+    EXPECT_NE(std::string(e.what()).find("build_model: "), std::string::npos) << e.what();
+    return {std::nullopt, e.what()};
+  }
+}
+
+TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
+  const auto seeds = build_seeds();
+  ASSERT_GE(seeds.size(), 10u);
+  std::size_t built = 0;
+  for (const auto& seed : seeds) {
+    SCOPED_TRACE(seed.filename().string());
+    const Plan plan = decode_file(seed);
+    const Outcome nef = build_on(plan, BooleanPath::nef);
+    for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general}) {
+      SCOPED_TRACE(path == BooleanPath::general ? "general" : "automatic");
+      const Outcome made = build_on(plan, path);
+      ASSERT_EQ(made.model.has_value(), nef.model.has_value()) << made.refusal << nef.refusal;
+      if (!made.model) continue;
+      const SolidCheck c = check_solid(made.model->walls), reference = check_solid(nef.model->walls);
+      EXPECT_TRUE(c.is_closed()) << c.border_edges << " border edges";
+      EXPECT_TRUE(c.is_manifold());
+      EXPECT_EQ(c.genus, reference.genus);
+      EXPECT_NEAR(c.volume, reference.volume, 2 * test::volume_tolerance(nef.model->walls, reference.volume));
+      ++built;
+    }
+  }
+  EXPECT_GE(built, 2 * (seeds.size() - 2));  // zero-length and far-tiny are refused
+}
+
+}  // namespace
+}  // namespace roomcad

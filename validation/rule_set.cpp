@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Built-in rule sets and the rules file reader.
+#include "validation/rule_set.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "modeling/nearest_name.h"
+
+namespace roomcad {
+namespace {
+
+using Json = nlohmann::json;
+
+/// A threshold a rule takes in a rules file: its key and where it is stored.
+struct ThresholdKey {
+  Code rule;
+  std::string_view key;
+  double RuleThresholds::*field;
+};
+
+constexpr ThresholdKey kThresholdKeys[] = {
+    {Code::door_clearance, "width", &RuleThresholds::clearance_width},
+    {Code::door_clearance, "depth", &RuleThresholds::clearance_depth},
+    {Code::door_too_narrow, "min_width", &RuleThresholds::door_min_width},
+    {Code::passage_too_narrow, "min_width", &RuleThresholds::passage_min_width},
+    {Code::no_turning_circle, "diameter", &RuleThresholds::turning_diameter},
+    {Code::escape_too_far, "max_distance", &RuleThresholds::escape_max_distance},
+    {Code::window_sill_low, "min_sill", &RuleThresholds::window_min_sill},
+    {Code::window_sill_high, "max_sill", &RuleThresholds::window_max_sill},
+};
+
+constexpr std::string_view kTopLevelKeys[] = {"format", "version", "base", "rules", "accessible_rooms"};
+
+/// A failure while reading: the JSON pointer and what is wrong there.
+struct Problem {
+  std::string pointer;
+  std::string what;
+};
+
+Error usage_error(const std::string& file, const Problem& p) {
+  return {Code::usage_error, fmt::format("{}: {}: {}", file, p.pointer.empty() ? "/" : p.pointer, p.what),
+          Location{file, p.pointer, 0, 0}};
+}
+
+std::string value_text(const Json& v) {
+  std::string text = v.dump();
+  return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+}
+
+/// "unknown X \"name\" (did you mean \"near\"?)", or with the list of known names.
+std::string unknown_name(std::string_view what, const std::string& name,
+                         const std::vector<std::string_view>& known) {
+  if (const auto near = nearest_name(name, known))
+    return fmt::format("unknown {} \"{}\" (did you mean \"{}\"?)", what, name, *near);
+  std::string list;
+  for (const std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+  return fmt::format("unknown {} \"{}\" (known: {})", what, name, list);
+}
+
+std::vector<std::string_view> rule_names() {
+  std::vector<std::string_view> names;
+  for (const Code c : kRuleCodes) names.push_back(to_string(c));
+  return names;
+}
+
+std::optional<Problem> read_threshold(const Json& value, const std::string& pointer, double& out) {
+  if (!value.is_number() || !std::isfinite(value.get<double>()) || !(value.get<double>() > 0) ||
+      value.get<double>() > 1e6)
+    return Problem{pointer, fmt::format("expected a positive number of metres (at most 1e6), found {}",
+                                        value_text(value))};
+  out = value.get<double>();
+  return std::nullopt;
+}
+
+std::optional<Problem> read_rule_object(const Json& body, Code rule, const std::string& pointer,
+                                        RuleSet& set) {
+  const std::size_t index = *rule_index(rule);
+  set.enabled[index] = true;
+  for (const auto& [key, value] : body.items()) {
+    const std::string at = pointer + '/' + key;
+    if (key == "enabled") {
+      if (!value.is_boolean()) return Problem{at, "expected true or false, found " + value_text(value)};
+      set.enabled[index] = value.get<bool>();
+      continue;
+    }
+    if (key == "severity") {
+      if (value == "warning" || value == "error") {
+        set.severity[index] = value == "error" ? Severity::error : Severity::warning;
+        continue;
+      }
+      return Problem{at, "expected \"warning\" or \"error\", found " + value_text(value)};
+    }
+    std::vector<std::string_view> known = {"enabled", "severity"};
+    const ThresholdKey* match = nullptr;
+    for (const ThresholdKey& t : kThresholdKeys) {
+      if (t.rule != rule) continue;
+      known.push_back(t.key);
+      if (t.key == key) match = &t;
+    }
+    if (!match) return Problem{at, unknown_name(fmt::format("setting of {}", to_string(rule)), key, known)};
+    if (auto p = read_threshold(value, at, set.thresholds.*(match->field))) return p;
+  }
+  return std::nullopt;
+}
+
+std::optional<Problem> read_rules(const Json& rules, RuleSet& set) {
+  if (!rules.is_object()) return Problem{"/rules", "expected an object of rules, found " + value_text(rules)};
+  for (const auto& [name, body] : rules.items()) {
+    const std::string pointer = "/rules/" + name;
+    const std::optional<Code> code = parse_code(name);
+    if (!code || !rule_index(*code)) return Problem{pointer, unknown_name("rule", name, rule_names())};
+    if (body.is_boolean()) {
+      set.enabled[*rule_index(*code)] = body.get<bool>();
+    } else if (body.is_object()) {
+      if (auto p = read_rule_object(body, *code, pointer, set)) return p;
+    } else {
+      return Problem{pointer, "expected true, false or an object of settings, found " + value_text(body)};
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Problem> read_accessible_rooms(const Json& rooms, RuleSet& set) {
+  if (!rooms.is_array()) return Problem{"/accessible_rooms", "expected an array of points [x, y], found " + value_text(rooms)};
+  std::vector<Point2> points;
+  for (std::size_t i = 0; i < rooms.size(); ++i) {
+    const Json& p = rooms[i];
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number() ||
+        !std::isfinite(p[0].get<double>()) || !std::isfinite(p[1].get<double>()))
+      return Problem{fmt::format("/accessible_rooms/{}", i),
+                     "expected a point [x, y] in metres, found " + value_text(p)};
+    points.push_back({p[0].get<double>(), p[1].get<double>()});
+  }
+  set.accessible_rooms = std::move(points);
+  return std::nullopt;
+}
+
+std::optional<Problem> read_header(const Json& doc, RuleSet& set) {
+  for (const auto& [key, value] : doc.items())
+    if (std::find(std::begin(kTopLevelKeys), std::end(kTopLevelKeys), key) == std::end(kTopLevelKeys))
+      return Problem{'/' + key, unknown_name("field", key, {std::begin(kTopLevelKeys), std::end(kTopLevelKeys)})};
+  if (doc.contains("format") && doc["format"] != "roomcad-rules")
+    return Problem{"/format", "expected \"roomcad-rules\", found " + value_text(doc["format"])};
+  if (doc.contains("version") && doc["version"] != 1)
+    return Problem{"/version", "expected 1, found " + value_text(doc["version"])};
+  if (!doc.contains("base")) return std::nullopt;
+  const Json& base = doc["base"];
+  const std::optional<RuleSet> builtin =
+      base.is_string() ? builtin_rule_set(base.get<std::string>()) : std::nullopt;
+  if (!builtin)
+    return Problem{"/base", base.is_string() ? unknown_name("rule set", base.get<std::string>(),
+                                                            builtin_rule_set_names())
+                                             : "expected a rule set name, found " + value_text(base)};
+  set.enabled = builtin->enabled;
+  return std::nullopt;
+}
+
+/// @return "line L, column C" of a byte offset in text.
+std::string line_and_column(std::string_view text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + offset, '\n'));
+  const std::size_t start = text.rfind('\n', offset == 0 ? 0 : offset - 1);
+  const std::size_t column = offset - (start == std::string_view::npos ? 0 : start + 1) + 1;
+  return fmt::format("{}:{}", line, column);
+}
+
+}  // namespace
+
+std::optional<std::size_t> rule_index(Code code) {
+  const auto it = std::find(kRuleCodes.begin(), kRuleCodes.end(), code);
+  if (it == kRuleCodes.end()) return std::nullopt;
+  return static_cast<std::size_t>(it - kRuleCodes.begin());
+}
+
+bool RuleSet::is_enabled(Code code) const {
+  const auto index = rule_index(code);
+  return index && enabled[*index];
+}
+
+bool RuleSet::any_enabled() const {
+  return std::any_of(enabled.begin(), enabled.end(), [](bool on) { return on; });
+}
+
+std::vector<std::string_view> builtin_rule_set_names() { return {"default", "accessibility", "all"}; }
+
+std::optional<RuleSet> builtin_rule_set(std::string_view name) {
+  RuleSet set;
+  set.name = std::string(name);
+  if (name == "default") return set;
+  if (name == "all") {
+    set.enabled.fill(true);
+    return set;
+  }
+  if (name != "accessibility") return std::nullopt;
+  for (const Code c : {Code::door_too_narrow, Code::door_clearance, Code::passage_too_narrow,
+                       Code::no_turning_circle, Code::room_unreachable})
+    set.enabled[*rule_index(c)] = true;
+  return set;
+}
+
+Result<RuleSet> parse_rule_set(std::string_view text, const std::string& file) {
+  Json doc;
+  try {
+    doc = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    return Error{Code::usage_error,
+                 fmt::format("{}:{}: not a rules file: invalid JSON", file, line_and_column(text, e.byte == 0 ? 0 : e.byte - 1)),
+                 Location{file, "", 0, 0}};
+  }
+  if (!doc.is_object())
+    return usage_error(file, {"", "expected a JSON object with \"rules\", found " + value_text(doc)});
+  RuleSet set;
+  set.name = file;
+  std::optional<Problem> problem = read_header(doc, set);
+  if (!problem && doc.contains("rules")) problem = read_rules(doc["rules"], set);
+  if (!problem && doc.contains("accessible_rooms")) problem = read_accessible_rooms(doc["accessible_rooms"], set);
+  if (problem) return usage_error(file, *problem);
+  return set;
+}
+
+}  // namespace roomcad

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Rule sets of `roomcad validate --rules NAME|FILE`: which rules run beyond the plan format's
+// checks, their thresholds, and their severities. Built-in sets are `default` (no rules: what
+// validate always did), `accessibility` and `all`; a rules file (JSON, docs/plan-format.md,
+// "Rule sets") starts from one of them, enables or disables rules and sets thresholds.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/error.h"
+#include "modeling/plan.h"
+#include "validation/report.h"
+
+namespace roomcad {
+
+/// The rule codes, in the order the plan format lists them.
+inline constexpr std::array<Code, 10> kRuleCodes = {
+    Code::door_swing_blocked, Code::door_clearance,    Code::door_too_narrow,
+    Code::passage_too_narrow, Code::no_turning_circle, Code::room_unreachable,
+    Code::escape_too_far,     Code::window_sill_low,   Code::window_sill_high,
+    Code::duplicate_object};
+
+/// @return the index of a rule code in kRuleCodes, or nullopt for any other code. O(1).
+[[nodiscard]] std::optional<std::size_t> rule_index(Code code);
+
+/// Thresholds, metres. The spec's defaults; the sill limits are roomcad's (docs/plan-format.md).
+struct RuleThresholds {
+  double clearance_width = 1.5;   ///< free rectangle in front of a door, along the wall
+  double clearance_depth = 1.5;   ///< ... and away from it, on the push side
+  double door_min_width = 0.80;   ///< a door's clear width (its `width`)
+  double passage_min_width = 0.90;
+  double turning_diameter = 1.5;
+  double escape_max_distance = 30.0;
+  double window_min_sill = 0.80;  ///< below: a fall risk without a guard
+  double window_max_sill = 1.20;  ///< above: no view and no escape through it
+  friend bool operator==(const RuleThresholds&, const RuleThresholds&) = default;
+};
+
+struct RuleSet {
+  std::string name = "default";  ///< the built-in set's name or the rules file's path
+  std::array<bool, kRuleCodes.size()> enabled{};
+  /// Severity of each rule's findings: warnings unless a rules file says "error".
+  std::array<Severity, kRuleCodes.size()> severity{};
+  RuleThresholds thresholds;
+  /// Points (x, y) inside the rooms the accessibility rules apply to; unset: every room.
+  std::optional<std::vector<Point2>> accessible_rooms;
+
+  RuleSet() { severity.fill(Severity::warning); }
+  [[nodiscard]] bool is_enabled(Code code) const;
+  [[nodiscard]] bool any_enabled() const;
+  friend bool operator==(const RuleSet&, const RuleSet&) = default;
+};
+
+/// @return the names of the built-in sets: default, accessibility, all.
+[[nodiscard]] std::vector<std::string_view> builtin_rule_set_names();
+
+/// @return the built-in set `name`, or nullopt if there is none by that name. O(1).
+/// `accessibility`: door_too_narrow, door_clearance, passage_too_narrow, no_turning_circle and
+/// room_unreachable; `all`: every rule.
+[[nodiscard]] std::optional<RuleSet> builtin_rule_set(std::string_view name);
+
+/// Reads a rules file (format in docs/plan-format.md, "Rule sets: what roomcad decides").
+/// @param[in] text  the file's bytes
+/// @param[in] file  its path, for messages
+/// @return the rule set, or a usage_error naming the file, the field (a JSON pointer) and the
+///         value: not JSON, an unknown field or rule (with the nearest known name), a
+///         threshold that is not a positive finite number of metres, an unknown severity or
+///         base set. O(size of the text).
+[[nodiscard]] Result<RuleSet> parse_rule_set(std::string_view text, const std::string& file);
+
+/// @return success, or a usage_error naming the rules file, `/accessible_rooms/i` and the
+///         point, for the first accessible-room point that lies in no room of the plan (on any
+///         storey). O(n log n) per storey (find_rooms).
+[[nodiscard]] Status check_accessible_rooms(const Plan& plan, const RuleSet& rules);
+
+}  // namespace roomcad

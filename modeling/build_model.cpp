@@ -23,14 +23,6 @@ using detail::FaceSoup;
 using detail::WallFrame;
 using detail::WorkItem;
 
-std::vector<std::string> object_ids(const Plan& plan) {
-  std::vector<std::string> ids;
-  ids.reserve(plan.walls.size() + plan.openings.size());
-  for (const Wall& w : plan.walls) ids.push_back(w.id);
-  for (const Opening& o : plan.openings) ids.push_back(o.id);
-  return ids;
-}
-
 FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, const detail::Work& work,
                     const WorkItem& item, BooleanPath path) {
   const int first_opening = detail::opening_object(plan, 0);
@@ -76,13 +68,21 @@ void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStat
 
 }  // namespace
 
+std::vector<std::string> model_object_ids(const Plan& plan) {
+  std::vector<std::string> ids;
+  ids.reserve(plan.walls.size() + plan.openings.size());
+  for (const Wall& w : plan.walls) ids.push_back(w.id);
+  for (const Opening& o : plan.openings) ids.push_back(o.id);
+  return ids;
+}
+
 Model build_model(const Plan& input, const BuildOptions& options, BuildStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<tbb::global_control> limit;
   if (options.threads > 0)
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
   Model model;
-  model.objects = object_ids(input);
+  model.objects = model_object_ids(input);
   const detail::BuildablePlan buildable = detail::make_buildable(input);
   const Plan& plan = buildable.plan;
   const Joins joins = find_joins(plan);

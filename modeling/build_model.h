@@ -53,6 +53,10 @@ struct BuildStats {
   double build_ms = 0.0;
 };
 
+/// @return the object table of the plan's model (Model::objects): the wall ids in plan order,
+///         then the opening ids. O(n).
+[[nodiscard]] std::vector<std::string> model_object_ids(const Plan& plan);
+
 /// Builds the model of a plan.
 /// @pre validate(plan).ok() (validation/validate.h); a plan with errors may still be built
 ///      (`--force`), but an opening that cannot be cut throws instead of leaving a wall whole.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 #include <set>
+#include <tuple>
+#include <utility>
 
 #include "modeling/broad_phase.h"
 #include "modeling/detail/fast_wall.h"
@@ -65,6 +67,28 @@ bool are_apart(const WallFrame& a, const WallFrame& b) {
 
 bool is_same_height(const WallFrame& a, const WallFrame& b) { return a.base == b.base && a.top == b.top; }
 
+// The two corners of a footprint's end (0: from, 1: to), in ascending order.
+std::pair<Point2, Point2> end_corners(const WallFrame& f, std::size_t end) {
+  const Point2 p = f.footprint[end == 0 ? 0 : 1], q = f.footprint[end == 0 ? 3 : 2];
+  return std::minmax(p, q, [](Point2 u, Point2 v) { return std::tie(u.x, u.y) < std::tie(v.x, v.y); });
+}
+
+// Whether every end of `a` mitred to `b` has the very end face of an end of `b` mitred to `a`.
+// The fast path leaves both mitred ends open, so they must close each other: not so for a
+// straight run from one thickness to another (square ends of two widths) or for ends that
+// are only within tolerance of each other in a straight run.
+bool mitre_ends_coincide(const std::vector<WallFrame>& frames, const Joins& joins, std::size_t a,
+                         std::size_t b) {
+  for (std::size_t e = 0; e < 2; ++e) {
+    if (joins.mitre[a][e] != b) continue;
+    bool matched = false;
+    for (std::size_t f = 0; f < 2; ++f)
+      matched = matched || (joins.mitre[b][f] == a && end_corners(frames[a], e) == end_corners(frames[b], f));
+    if (!matched) return false;
+  }
+  return true;
+}
+
 using PairSet = std::set<std::pair<std::size_t, std::size_t>>;
 
 // Marks walls that need the general path and links the walls that must be built together.
@@ -73,8 +97,9 @@ void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const 
                 std::vector<char>& general, DisjointSets& sets) {
   for (const Join& j : joins.pairs) {
     sets.unite(j.a, j.b);
-    const bool plain = j.kind == JoinKind::mitre ? is_same_height(frames[j.a], frames[j.b])
-                                                 : explained.count({j.a, j.b}) > 0;
+    const bool plain = j.kind == JoinKind::mitre
+                           ? is_same_height(frames[j.a], frames[j.b]) && mitre_ends_coincide(frames, joins, j.a, j.b)
+                           : explained.count({j.a, j.b}) > 0;
     if (!plain) general[j.a] = general[j.b] = 1;
   }
   std::vector<Box2> boxes;

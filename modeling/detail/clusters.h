@@ -1,7 +1,8 @@
 // Which walls take the fast path and which go to a boolean path together (clusters).
 //
 // A wall needs the general path if it takes part in a unite join that no hub or tee builds
-// (detail/hubs.h, detail/tees.h), is mitred to a wall of another base or height, has a hole not clear of a
+// (detail/hubs.h, detail/tees.h), is mitred to a wall of another base or height or whose mitred
+// end face is not its own (a straight run from one thickness to another), has a hole not clear of a
 // capless end, or meets a wall it is not joined to (their boxes touch). A cluster is a
 // connected group of walls (joined or touching) holding such a wall; every other wall is built
 // alone on the fast path, and every hub among fast walls adds its top and bottom. So fast

@@ -117,7 +117,12 @@ Cut cut_through(PlaneSet& set, PlaneId plane, std::size_t owner, const std::vect
   const int k = dominant_axis(set, plane);
   for (const int a : {(k + 1) % 3, (k + 2) % 3}) {
     double lo = INFINITY, hi = -INFINITY;
-    for (const XPoint& v : loop) lo = std::min(lo, bounds(v, a).first), hi = std::max(hi, bounds(v, a).second);
+    // The rounded coordinates, not the intervals: a corner of nearly parallel planes (a sliver
+    // between walls drawn over each other) may have an unbounded interval.
+    for (const XPoint& v : loop) {
+      const double x = round_point(set, v)[std::size_t(a)];
+      lo = std::min(lo, x), hi = std::max(hi, x);
+    }
     const double c = lo + (hi - lo) / 2.0;
     const bool left = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) < 0; });
     const bool right = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) > 0; });

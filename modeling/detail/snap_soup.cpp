@@ -8,6 +8,9 @@
 #include <map>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
+
+#include "modeling/exact_geometry.h"
 
 namespace roomcad::detail {
 namespace {
@@ -128,6 +131,86 @@ void drop_fins(std::vector<Polygon>& polygons, std::vector<std::size_t>& tags) {
   tags.resize(kept);
 }
 
+// Whether a, b, c lie on one line, exactly for the doubles given.
+bool are_collinear(const OpenMesh::Vec3d& a, const OpenMesh::Vec3d& b, const OpenMesh::Vec3d& c) {
+  return exact::decide([&](auto tag) -> bool {
+    using NT = decltype(tag);
+    const NT ux = NT(b[0]) - NT(a[0]), uy = NT(b[1]) - NT(a[1]), uz = NT(b[2]) - NT(a[2]);
+    const NT vx = NT(c[0]) - NT(a[0]), vy = NT(c[1]) - NT(a[1]), vz = NT(c[2]) - NT(a[2]);
+    return uy * vz - uz * vy == NT(0) && uz * vx - ux * vz == NT(0) && ux * vy - uy * vx == NT(0);
+  });
+}
+
+// Whether every corner of the polygon lies on the line of its first two: no area at all.
+bool is_flat(const std::vector<OpenMesh::Vec3d>& points, const Polygon& p) {
+  for (std::size_t k = 2; k < p.size(); ++k)
+    if (!are_collinear(points[p[0]], points[p[1]], points[p[k]])) return false;
+  return true;
+}
+
+// The flat polygon's corners in order along its line: by the coordinate that varies most
+// (on an exact line every coordinate is monotone along it, and that one strictly).
+Polygon corners_along_line(const std::vector<OpenMesh::Vec3d>& points, const Polygon& flat) {
+  Polygon corners(flat);
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  int axis = 0;
+  double widest = -1.0;
+  for (int k = 0; k < 3; ++k) {
+    const auto [lo, hi] = std::minmax_element(corners.begin(), corners.end(), [&](std::size_t a, std::size_t b) {
+      return points[a][k] < points[b][k];
+    });
+    if (points[*hi][k] - points[*lo][k] > widest) widest = points[*hi][k] - points[*lo][k], axis = k;
+  }
+  std::sort(corners.begin(), corners.end(), [&](std::size_t a, std::size_t b) { return points[a][axis] < points[b][axis]; });
+  return corners;
+}
+
+// Removes the polygons with no area (rounding flattened a sliver's side to a segment: every
+// corner on one line) and keeps the surface closed: each edge of another polygon that runs
+// between two corners of a removed one gets the removed one's corners between them, so the
+// edges that met the flat polygon from both sides now meet each other. O(n) for n corners
+// when no polygon is flat.
+void collapse_flat_polygons(const std::vector<OpenMesh::Vec3d>& points, std::vector<Polygon>& polygons,
+                            std::vector<std::size_t>& tags) {
+  std::vector<char> flat(polygons.size(), 0);
+  std::vector<Polygon> lines;  // per flat polygon, its corners along its line
+  for (std::size_t k = 0; k < polygons.size(); ++k)
+    if (is_flat(points, polygons[k])) {
+      flat[k] = 1;
+      lines.push_back(corners_along_line(points, polygons[k]));
+    }
+  if (lines.empty()) return;
+  std::unordered_map<std::size_t, std::vector<std::size_t>> lines_at;  // corner -> lines through it
+  for (std::size_t l = 0; l < lines.size(); ++l)
+    for (const std::size_t c : lines[l]) lines_at[c].push_back(l);
+  std::vector<Polygon> kept;
+  std::vector<std::size_t> kept_tags;
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    if (flat[k]) continue;
+    const Polygon& p = polygons[k];
+    Polygon split;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::size_t a = p[i], b = p[(i + 1) % p.size()];
+      split.push_back(a);
+      const auto at_a = lines_at.find(a);
+      if (at_a == lines_at.end()) continue;
+      for (const std::size_t l : at_a->second) {
+        const Polygon& line = lines[l];
+        const auto ia = std::find(line.begin(), line.end(), a), ib = std::find(line.begin(), line.end(), b);
+        if (ib == line.end()) continue;
+        if (ia < ib) split.insert(split.end(), ia + 1, ib);
+        else split.insert(split.end(), std::make_reverse_iterator(ia), std::make_reverse_iterator(ib + 1));
+        break;
+      }
+    }
+    kept.push_back(std::move(split));
+    kept_tags.push_back(tags[k]);
+  }
+  polygons = std::move(kept);
+  tags = std::move(kept_tags);
+}
+
 }  // namespace
 
 IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
@@ -141,6 +224,7 @@ IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
     for (std::size_t& i : p) i = target[i];
     append_clean(std::move(p), tagged ? soup.tags[k] : 0, cleaned, tags);
   }
+  collapse_flat_polygons(soup.points, cleaned, tags);
   drop_fins(cleaned, tags);
   soup.polygons = std::move(cleaned);
   if (tagged) soup.tags = std::move(tags);

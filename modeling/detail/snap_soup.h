@@ -23,8 +23,10 @@ struct IndexedSoup {
 /// Snaps together points within `tolerance` of each other (per coordinate, transitively;
 /// each group takes the coordinates of its lowest-index point), then cleans the polygons:
 /// repeated corners dropped, spikes (a, b, a) removed, a polygon pinched at a repeated corner
-/// split in two, polygons of fewer than three corners dropped, and pairs of polygons that
-/// are one another's reverse (a fin of zero width) removed both.
+/// split in two, polygons of fewer than three corners dropped, polygons with every corner on
+/// one line (exactly) dropped with their corners inserted into the edges of the others that
+/// run along that line, and pairs of polygons that are one another's reverse (a fin of zero
+/// width) removed both.
 /// @param[in] soup       points in metres; a closed surface stays closed (collapsing an edge
 ///                       or a fin keeps every remaining edge paired).
 /// @param[in] tolerance  metres, >= 0; a few ulps of the largest coordinate (snap_tolerance).

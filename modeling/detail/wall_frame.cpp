@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "modeling/build_model.h"
+#include "modeling/segment_predicates.h"
 
 namespace roomcad::detail {
 namespace {
@@ -70,7 +71,8 @@ Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
 using NodeKey = std::pair<std::uint64_t, std::uint64_t>;
 
 // Outward directions of two wall ends at one node that run on from each other within
-// kHairline radians (but not exactly: then the square ends coincide).
+// kHairline radians (but not exactly: then the square ends coincide), the walls sharing a
+// height range (a wall under the node's floor is not part of its join).
 bool is_hairline_pair(const Wall& a, WallEnd ea, const Wall& b, WallEnd eb) {
   constexpr double kHairline = 1e-6;
   auto outward = [](const Wall& w, WallEnd e) {
@@ -79,7 +81,8 @@ bool is_hairline_pair(const Wall& a, WallEnd ea, const Wall& b, WallEnd eb) {
   };
   const Point2 da = outward(a, ea), db = outward(b, eb);
   const double cross = da.x * db.y - da.y * db.x, dot = da.x * db.x + da.y * db.y;
-  return a.thickness == b.thickness && dot < 0.0 && cross != 0.0 && std::abs(cross) <= kHairline;
+  return a.thickness == b.thickness && dot < 0.0 && cross != 0.0 && std::abs(cross) <= kHairline &&
+         share_heights(a, b);  // one above the other they do not meet (found by fuzz_build)
 }
 
 // Where three or more walls meet at a node (a unite join), two of equal thickness that run

@@ -127,6 +127,31 @@ TEST(Modeling, TJoin) {
   EXPECT_EQ(stats.fast_path_walls, 2u);  // the stem is clipped at the through-wall's face
 }
 
+TEST(Modeling, StraightRunFromOneThicknessToAnotherIsClosed) {
+  // Found by fuzz_build: the two square ends of a straight run differ in width, so the
+  // fast path, which leaves mitred ends open for each other, gave an open solid.
+  Plan plan = empty_plan();
+  add_wall(plan, "thick", {0, 0}, {3, 0}).thickness = 0.3;
+  add_wall(plan, "thin", {3, 0}, {5, 0}).thickness = 0.1;
+  expect_paths_agree(plan, 0, 2.5 * (3 * 0.3 + 2 * 0.1));
+}
+
+TEST(Modeling, WallAboveANodeIsNotMitredToAWallBelowThatRunsOnFromIt) {
+  // Found by fuzz_build: at a node of three walls, a wall of a storey above (equal thickness,
+  // running on from one of them within a hairline angle) was mitred to it though the two
+  // never meet, and its end left open.
+  Plan plan = empty_plan();
+  add_wall(plan, "west", {-4, 0}, {0, 0});
+  add_wall(plan, "north", {0, 0}, {0, 3});
+  add_wall(plan, "south", {0, 0}, {0, -3});
+  Wall& above = add_wall(plan, "above", {0, 0}, {4, 4e-7});
+  above.base = 3.0;  // a gap above the others: built alone on the fast path
+  // Closed with the volume on every path (Nef labels the upper wall's end as a side; the
+  // paths' labels are compared elsewhere).
+  for (const BooleanPath path : {BooleanPath::nef, BooleanPath::automatic, BooleanPath::general})
+    expect_valid_walls(plan, path, 0, 2.5 * (6 * 0.2 + 3.9 * 0.2 + 4 * 0.2));
+}
+
 TEST(Modeling, SlantedStemsOnBothSidesOfAWallFarAway) {
   Plan plan = empty_plan();
   add_wall(plan, "through", {0, 0}, {8, 0});

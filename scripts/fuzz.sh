@@ -7,11 +7,12 @@
 # target's executions and peak RSS.
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET (default 60)] [TARGET...]
 #
-# Without TARGETs: every target but fuzz_build. fuzz_build (degenerate plans through the build,
-# failing on an open solid) runs when named: it found a new bug in each of its first five
-# runs (all fixed, inputs in fuzz/corpus/build/crash-*), and its last run (180 s) found none;
-# it joins the default list once it has run clean for longer. Its seed corpus runs in CTest
-# (FuzzSeeds.*).
+# Without TARGETs: every reader target. fuzz_build and fuzz_render (degenerate plans through
+# the build and the renderer) run when named: between them they found a new bug in most of
+# their runs this session (all fixed, inputs in fuzz/corpus/{build,render}/crash-*; the last
+# runs, 180 s each, found none in fuzz_build and one in fuzz_render, fixed), so they join the
+# default list once they have run clean for longer. Their seed corpora run in CTest
+# (FuzzSeeds.*, RenderFuzzSeeds.*).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -23,7 +24,7 @@ targets=("$@")
 if ((${#targets[@]} == 0)); then
   for source in fuzz/fuzz_*.cpp; do
     target=$(basename "$source" .cpp)
-    [[ $target == fuzz_build ]] || targets+=("$target")
+    [[ $target == fuzz_build || $target == fuzz_render ]] || targets+=("$target")
   done
 fi
 jobs=$(nproc)  # libFuzzer runs one thread: one target per core at a time

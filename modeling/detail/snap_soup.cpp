@@ -8,7 +8,6 @@
 #include <map>
 #include <numeric>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "modeling/exact_geometry.h"
 

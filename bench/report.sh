@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # One command for the evidence report: builds the benchmark drivers, runs them side by side in
 # one run (so their ratios hold on a noisy machine) and writes bench/report.md, with its CSV
 # files and gnuplot PNG plots in bench/report/. Prints and records its own run time.

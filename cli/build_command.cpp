@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|general|nef] [--check] [--force]
 // [--threads N] [--stats] [--format text|json] [--level ID]`: the plan's 3D model, exported
 // (OBJ, OFF, PLY, STL, glTF, IFC) and checked.

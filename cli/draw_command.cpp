@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad draw`: line drawings of a plan as SVG: the floor plan, elevations, isometric and
 // camera views (render/line_drawing.h) with hidden lines removed. Views are looked up in one
 // table; `camera:ID` names a plan camera.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Building the 3D model of a plan: the wall solid (walls joined, openings cut), the tiled
 // floor and the fixtures, as OpenMesh meshes (modeling/solid_mesh.h).
 #pragma once

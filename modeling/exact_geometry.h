@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact plane geometry for plan verdicts: filtered evaluation in any number type.
 //
 // A predicate is written once as a generic lambda over a number type NT and evaluated first

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // find_joins: broad phase on grown centre-line boxes, then exact tests on the candidate pairs.
 //
 // End clusters. The tolerance makes "shared end point" non-transitive: ends A, B, C may have

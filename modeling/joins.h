@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where walls meet, after the spec's "Junctions" section.
 //
 // Two walls are joined where their centre lines meet: they cross, or an end point of one lies

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checks of a wall solid as written (its doubles), and its volume computed from the plan
 // alone, for `roomcad build --check` and the tests.
 #pragma once

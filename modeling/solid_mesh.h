@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The meshes roomcad builds: OpenMesh polygon meshes in double precision, with the per-face
 // properties every later stage (export, render, drawings) reads. All persistent properties are
 // declared here and only here (STYLE rule 14); scratch properties use makeTemporaryProperty.

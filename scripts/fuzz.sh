@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs each libFuzzer target (fuzz/) for a bounded time, seeded from fuzz/corpus/<target>/.
 # The targets are built in build-san/ by scripts/build-sanitized.sh (clang, ASan + UBSan),
 # sharing the libraries' compile with scripts/test-sanitized.sh. Fails if any target finds a

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs, from Debian's packages, whatever roomcad needs that this machine lacks (toolchain
 # included); with --tests also the independent readers of the export tests (python3-ezdxf,
 # Node.js, and tests/readers' npm packages web-ifc and gltf-validator at the versions of its

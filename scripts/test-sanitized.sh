@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer (clang,
 # -O1, build-san/, built by scripts/build-sanitized.sh, shared with scripts/fuzz.sh) through
 # CTest. Any sanitizer report fails the test that made it. Prints the time each half took.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Curved Sweet Home 3D walls as chains of straight walls (chords), with doors and windows kept
 // whole: a chord break never falls in an opening, so each opening lies in one straight wall.
 #pragma once

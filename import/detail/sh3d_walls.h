@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sweet Home 3D walls to plan walls: levels to bases, arcs to chains of straight walls, sloped
 // tops to flat ones, and joined end points made to coincide exactly.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Which walls take the fast path and which go to a boolean path together (clusters).
 //
 // A wall needs the general path if it takes part in a unite join that no hub or tee builds

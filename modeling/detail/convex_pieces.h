@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The primitives of the general build path: convex polyhedra in plane-based form
 // (exact_planes.h). A wall piece is its convex footprint between its base and its top (a
 // horizontal or sloped plane); an opening's hole is its convex outline in the wall's vertical

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The general path: the exact solid of any cluster of walls without 3D booleans.
 //
 // The solid R is the union of the solids (wall pieces) minus the union of the holes, every

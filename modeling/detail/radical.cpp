@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Radical: exact sums of rational multiples of products of square roots (see radical.h).
 #include "modeling/detail/radical.h"
 

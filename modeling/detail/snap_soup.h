@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rounding an exact boolean result to doubles: where two exact corners lie a few ulps apart
 // (walls meeting nearly collinear leave grooves and slivers that thin), their rounded faces
 // are zero-width fins and needles that no mesh can hold. Snapping such corners together

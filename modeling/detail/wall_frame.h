@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Each wall in its own frame (u along from -> to, w to the left, z up) with its holes, the
 // common input of every builder (fast path, CGAL path, analytic volume, fixtures).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad draw` end to end: the floor plan view, exit statuses and messages.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad surface` end to end: exit statuses, messages and the files it writes.
 #include <gtest/gtest.h>
 

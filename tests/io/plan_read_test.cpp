@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading plans: every field, every default, units.
 #include <cmath>
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // exact::Radical: signs, equalities and inverses of sums of products of square roots, decided
 // exactly (no refinement), and rounding to the nearest double.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // snap_soup: corners a few ulps apart snap together, and the fins, needles and pinches that
 // leaves are cleaned away without opening the surface.
 #include <gtest/gtest.h>

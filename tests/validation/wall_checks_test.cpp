@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Joins excuse walls from wall_overlap (L, T, X, three-way) unless centre lines overlap;
 // out_of_bounds on the site rectangle and max_height; messages with concrete fixes.
 #include <gtest/gtest.h>

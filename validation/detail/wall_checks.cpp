@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // wall_overlap and out_of_bounds, on the walls that passed the value checks.
 //
 // Walls are their mitred footprints times [base, base + height]. Two walls that are not

@@ -61,13 +61,16 @@ std::string wall_list(std::span<const WallFrame* const> walls) {
 }
 
 // The result's points rounded to doubles, snapped where they round to within a few ulps of
-// each other (snap_soup), and its polygons over them.
+// each other (snap_soup: points that are exact doubles stay apart), and its polygons over them.
 IndexedSoup round_soup(const std::vector<EK::Point_3>& exact, std::vector<std::vector<std::size_t>> polygons) {
   IndexedSoup out;
   out.points.reserve(exact.size());
-  for (const EK::Point_3& p : exact)
-    out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
-                            round_to_nearest(p.z()) + 0.0);
+  out.exact.reserve(exact.size());
+  for (const EK::Point_3& p : exact) {
+    const OpenMesh::Vec3d& r = out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
+                                                       round_to_nearest(p.z()) + 0.0);
+    out.exact.push_back(EK::FT(r[0]) == p.x() && EK::FT(r[1]) == p.y() && EK::FT(r[2]) == p.z());
+  }
   out.polygons = std::move(polygons);
   const double tolerance = snap_tolerance(out.points);
   return snap_soup(std::move(out), tolerance);

@@ -24,14 +24,24 @@ struct CellHash {
   }
 };
 
-// For each point, the lowest index of the points within `tolerance` of it (transitively).
-// Points hash into cubes of side 2 * tolerance, so near points are in adjacent cubes.
-std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points, double tolerance) {
+// For each point, the point whose coordinates it takes: groups of points within `tolerance`
+// of each other (transitively), never joining two groups that each hold an exact point; a
+// group's root is its exact point, else its lowest index. Points hash into cubes of side
+// 2 * tolerance, so near points are in adjacent cubes.
+std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points, const std::vector<char>& exact,
+                                           double tolerance) {
   std::vector<std::size_t> parent(points.size());
   std::iota(parent.begin(), parent.end(), std::size_t{0});
   auto find = [&](std::size_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
+  };
+  auto is_exact = [&](std::size_t root) { return !exact.empty() && exact[root] != 0; };
+  auto unite = [&](std::size_t a, std::size_t b) {
+    if (a == b || (is_exact(a) && is_exact(b))) return;
+    const bool a_root = is_exact(a) || (!is_exact(b) && a < b);
+    if (a_root) parent[b] = a;
+    else parent[a] = b;
   };
   // Cells no smaller than an ulp of the largest coordinate, so that every cell index fits an
   // int64 whatever the tolerance (a larger cell only adds candidates, never loses one).
@@ -51,8 +61,7 @@ std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& p
           for (std::size_t j : it->second) {
             const OpenMesh::Vec3d d = points[i] - points[j];
             if (std::abs(d[0]) > tolerance || std::abs(d[1]) > tolerance || std::abs(d[2]) > tolerance) continue;
-            const std::size_t a = find(i), b = find(j);
-            parent[std::max(a, b)] = std::min(a, b);
+            unite(find(i), find(j));
           }
         }
     cells[c].push_back(i);
@@ -214,7 +223,7 @@ void collapse_flat_polygons(const std::vector<OpenMesh::Vec3d>& points, std::vec
 }  // namespace
 
 IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
-  const std::vector<std::size_t> target = find_snap_targets(soup.points, tolerance);
+  const std::vector<std::size_t> target = find_snap_targets(soup.points, soup.exact, tolerance);
   const bool tagged = !soup.tags.empty();
   std::vector<Polygon> cleaned;
   std::vector<std::size_t> tags;

@@ -19,10 +19,15 @@ struct IndexedSoup {
   /// Optional, one per polygon (what face it came from): snap_soup carries each to the
   /// polygons its polygon becomes.
   std::vector<std::size_t> tags;
+  /// Optional, one per point: nonzero where the point is its exact corner, not a rounding of
+  /// it. Two such points are distinct corners of the exact solid, so they are never snapped
+  /// together, however near (walls drawn an ulp apart stay apart, as they are).
+  std::vector<char> exact;
 };
 
-/// Snaps together points within `tolerance` of each other (per coordinate, transitively;
-/// each group takes the coordinates of its lowest-index point), then cleans the polygons:
+/// Snaps together points within `tolerance` of each other (per coordinate, transitively, but
+/// never two exact points into one group; each group takes the coordinates of its exact point
+/// if it has one, else of its lowest-index point), then cleans the polygons:
 /// repeated corners dropped, spikes (a, b, a) removed, a polygon pinched at a repeated corner
 /// split in two, polygons of fewer than three corners dropped, polygons with every corner on
 /// one line (exactly) dropped with their corners inserted into the edges of the others that

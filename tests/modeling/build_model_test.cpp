@@ -153,6 +153,25 @@ TEST(Modeling, WallAboveANodeIsNotMitredToAWallBelowThatRunsOnFromIt) {
     expect_valid_walls(plan, path, 0, 2.5 * (6 * 0.2 + 3.9 * 0.2 + 4 * 0.2));
 }
 
+TEST(Modeling, WallsAnUlpApartStayApart) {
+  // Four furring walls round a duct in duplex.ifc (examples/ifc), a pinwheel: each ends
+  // against the next one's side. In doubles, 1.91755 - 0.027 is an ulp past 1.89055 (and so
+  // on round the duct), so neighbours are an ulp apart; the corners are exact doubles.
+  // Snapping them together (as rounded corners a few ulps apart are) pinched the solid at an
+  // edge of four faces, and the build refused it.
+  Plan plan = empty_plan();
+  add_wall(plan, "north", {0.80745, -10.09745}, {1.89055, -10.09745});
+  add_wall(plan, "west", {0.83445, -11.25955}, {0.83445, -10.12445});
+  add_wall(plan, "south", {1.94455, -11.23255}, {0.86145, -11.23255});
+  add_wall(plan, "east", {1.91755, -10.07045}, {1.91755, -11.20555});
+  for (Wall& w : plan.walls) w.thickness = 0.054, w.height = 0.288;
+  const double volume = 0.288 * 0.054 * 2 * ((1.89055 - 0.80745) + (11.20555 - 10.07045));
+  // Closed with the volume on every path (an end an ulp from a side is a side to Nef's
+  // labels and an end to the others'; the paths' labels are compared elsewhere).
+  for (const BooleanPath path : {BooleanPath::nef, BooleanPath::automatic, BooleanPath::general})
+    expect_valid_walls(plan, path, 0, volume);
+}
+
 TEST(Modeling, SlantedStemsOnBothSidesOfAWallFarAway) {
   Plan plan = empty_plan();
   add_wall(plan, "through", {0, 0}, {8, 0});

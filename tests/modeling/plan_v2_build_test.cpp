@@ -13,6 +13,7 @@
 
 #include "model_support.h"
 #include "modeling/arc_chords.h"
+#include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 
 namespace roomcad {
@@ -106,12 +107,6 @@ Plan bow_room() {
   add_wall(plan, "n", {11, 7}, {5, 7});
   add_wall(plan, "w", {5, 7}, {5, 1});
   return plan;
-}
-
-double polyline_length(const std::vector<Point2>& line) {
-  double length = 0.0;
-  for (std::size_t k = 0; k + 1 < line.size(); ++k) length += std::hypot(line[k + 1].x - line[k].x, line[k + 1].y - line[k].y);
-  return length;
 }
 
 TEST(ArcBuild, AnArcWallIsItsMitredChordPolylineOnEveryPath) {

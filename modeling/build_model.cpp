@@ -82,28 +82,29 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
   std::optional<tbb::global_control> limit;
   if (options.threads > 0)
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
-  Model model;
-  model.objects = model_object_ids(input);
+  std::vector<std::string> objects = model_object_ids(input);
   const detail::BuildablePlan buildable = detail::make_buildable(input);
   const Plan& plan = buildable.plan;
   const Joins joins = find_joins(plan);
   const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins, buildable.through_mitre);
   BuildStats local;
+  std::vector<FaceSoup> walls;
   if (options.parts.walls) {
     const detail::Work work = detail::plan_work(frames, joins, options.boolean);
     count_paths(work.items, options.boolean, local);
-    std::vector<FaceSoup> walls = build_walls(plan, frames, work, options.boolean);
+    walls = build_walls(plan, frames, work, options.boolean);
     detail::label_input_objects(buildable, walls);
-    model.walls = detail::assemble_mesh(walls, model.objects);
-  } else {
-    add_face_properties(model.walls);
   }
   const FaceSoup floor = options.parts.floor ? detail::build_floor(plan.site) : FaceSoup{};
-  model.floor = detail::assemble_mesh({&floor, 1}, model.objects);
   std::vector<FaceSoup> fixtures =
       options.parts.fixtures ? detail::build_fixtures(plan, frames) : std::vector<FaceSoup>{};
   detail::label_input_objects(buildable, fixtures);
-  model.fixtures = detail::assemble_mesh(fixtures, model.objects, false);
+  // Each mesh is made in place: an OpenMesh mesh has no move constructor (its kernel declares
+  // a destructor), so assigning one to a member would copy it.
+  Model model{.walls = detail::assemble_mesh(walls, objects),
+              .floor = detail::assemble_mesh({&floor, 1}, objects),
+              .fixtures = detail::assemble_mesh(fixtures, objects, false),
+              .objects = std::move(objects)};
   local.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats != nullptr) *stats = local;
   return model;

@@ -3,6 +3,7 @@
 // through the library function the command line calls (io/plan_json.h, io/plan_check.h,
 // modeling/plan_edit.h, modeling/build_model.h, render/render_request.h, io/plan_drawing.h).
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -101,14 +102,14 @@ Parts parts_of(const std::string& parts) {
   return take(parse_parts(parts == "all" ? "walls,floor,fixtures" : parts));
 }
 
-PyModel build(const PyPlan& self, bool force, const std::string& parts, int threads) {
+// Made in place on the heap and handed to Python as it is: an OpenMesh mesh has no move
+// constructor (its kernel declares a destructor), so every "move" of a Model copies its
+// meshes, which cost 10% of a build.
+std::unique_ptr<PyModel> build(const PyPlan& self, bool force, const std::string& parts, int threads) {
   require_valid(self, force, "build");
-  PyModel out;
-  out.plan = self.plan;
   const BuildOptions options{.parts = parts_of(parts), .threads = threads};
   py::gil_scoped_release free;
-  out.model = build_model(self.plan, options);
-  return out;
+  return std::unique_ptr<PyModel>(new PyModel{.model = build_model(self.plan, options), .plan = self.plan});
 }
 
 /// The object with this id, as the dict of its entry in to_dict().

@@ -10,10 +10,9 @@
 #
 # Without TARGETs: every reader target. fuzz_build and fuzz_render (degenerate plans through
 # the build and the renderer) run when named: between them they found a new bug in most of
-# their runs this session (all fixed, inputs in fuzz/corpus/{build,render}/crash-*; the last
-# runs, 180 s each, found none in fuzz_build and one in fuzz_render, fixed), so they join the
-# default list once they have run clean for longer. Their seed corpora run in CTest
-# (FuzzSeeds.*, RenderFuzzSeeds.*).
+# their runs (all fixed, inputs in fuzz/corpus/{build,render}/crash-*; the last runs, 420 s
+# each, found nothing), so they join the default list once more runs stay clean. Their seed
+# corpora run in CTest (FuzzSeeds.*, RenderFuzzSeeds.*).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}

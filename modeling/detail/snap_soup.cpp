@@ -220,10 +220,10 @@ void collapse_flat_polygons(const std::vector<OpenMesh::Vec3d>& points, std::vec
   tags = std::move(kept_tags);
 }
 
-}  // namespace
-
-IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
-  const std::vector<std::size_t> target = find_snap_targets(soup.points, soup.exact, tolerance);
+// Snaps with find_snap_targets (exact corners kept apart or not) and cleans the polygons.
+IndexedSoup snap_with(IndexedSoup soup, double tolerance, bool keep_exact_apart) {
+  const std::vector<std::size_t> target =
+      find_snap_targets(soup.points, keep_exact_apart ? soup.exact : std::vector<char>{}, tolerance);
   const bool tagged = !soup.tags.empty();
   std::vector<Polygon> cleaned;
   std::vector<std::size_t> tags;
@@ -238,6 +238,37 @@ IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
   soup.polygons = std::move(cleaned);
   if (tagged) soup.tags = std::move(tags);
   return soup;
+}
+
+// Whether every edge of the polygons is used exactly once each way: a closed surface whose
+// edges each join two faces. O(n) expected for n corners.
+bool has_paired_edges(const std::vector<Polygon>& polygons) {
+  struct EdgeHash {
+    std::size_t operator()(const std::pair<std::size_t, std::size_t>& e) const {
+      return std::hash<std::size_t>()(e.first * 0x9E3779B97F4A7C15ull ^ e.second);
+    }
+  };
+  std::unordered_map<std::pair<std::size_t, std::size_t>, int, EdgeHash> uses;
+  for (const Polygon& p : polygons)
+    for (std::size_t k = 0; k < p.size(); ++k) ++uses[{p[k], p[(k + 1) % p.size()]}];
+  for (const auto& [edge, n] : uses) {
+    const auto twin = uses.find({edge.second, edge.first});
+    if (n != 1 || twin == uses.end() || twin->second != 1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
+  if (soup.exact.empty()) return snap_with(std::move(soup), tolerance, false);
+  IndexedSoup merged = snap_with(soup, tolerance, false);
+  if (has_paired_edges(merged.polygons)) return merged;
+  // Merging two exact corners pinched the surface (walls an ulp apart, each corner exact:
+  // an edge of four faces). Keeping exact corners apart leaves them as the exact solid has
+  // them; taken only where that closes the surface.
+  IndexedSoup apart = snap_with(std::move(soup), tolerance, true);
+  return has_paired_edges(apart.polygons) ? apart : merged;
 }
 
 double snap_tolerance(const std::vector<OpenMesh::Vec3d>& points) {

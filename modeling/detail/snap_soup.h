@@ -25,9 +25,8 @@ struct IndexedSoup {
   std::vector<char> exact;
 };
 
-/// Snaps together points within `tolerance` of each other (per coordinate, transitively, but
-/// never two exact points into one group; each group takes the coordinates of its exact point
-/// if it has one, else of its lowest-index point), then cleans the polygons:
+/// Snaps together points within `tolerance` of each other (per coordinate, transitively; each
+/// group takes the coordinates of its lowest-index point), then cleans the polygons:
 /// repeated corners dropped, spikes (a, b, a) removed, a polygon pinched at a repeated corner
 /// split in two, polygons of fewer than three corners dropped, polygons with every corner on
 /// one line (exactly) dropped with their corners inserted into the edges of the others that
@@ -36,8 +35,13 @@ struct IndexedSoup {
 /// @param[in] soup       points in metres; a closed surface stays closed (collapsing an edge
 ///                       or a fin keeps every remaining edge paired).
 /// @param[in] tolerance  metres, >= 0; a few ulps of the largest coordinate (snap_tolerance).
+/// If that leaves an edge not used exactly once each way (two exact corners merged pinch the
+/// surface: walls an ulp apart) and the soup says which points are exact, it snaps again
+/// keeping exact points in separate groups (a group with one takes its coordinates), and
+/// takes that result where it has every edge paired.
 /// @return the cleaned soup: same points (unused ones stay), fewer or equal polygons, in the
-///         input's order. O(n) expected for n corners (hashing), deterministic.
+///         input's order. O(n) expected for n corners (hashing), twice where it snaps again;
+///         deterministic.
 [[nodiscard]] IndexedSoup snap_soup(IndexedSoup soup, double tolerance);
 
 /// @return 4 ulps of the largest coordinate magnitude in `points` (0 for none). O(n).

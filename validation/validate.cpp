@@ -10,17 +10,24 @@
 #include <vector>
 
 #include "modeling/joins.h"
+#include "modeling/plan_levels.h"
 #include "validation/detail/checks.h"
 
 namespace roomcad {
 namespace {
 
-/// The plan the geometry checks see: walls that failed a value check are made to join
-/// nothing (NaN ends), so a bad thickness cannot bend a good wall's mitre.
-Plan geometry_plan(const Plan& plan, const detail::Usable& usable) {
-  Plan copy = plan;
-  for (std::size_t w = 0; w < copy.walls.size(); ++w)
+/// The plan the geometry checks see: levels resolved (every base absolute, so walls standing
+/// on one another are neither joined nor overlapping: docs/plan-format.md, "Version 2"), and
+/// walls that failed a value check made to join nothing (NaN ends), so a bad thickness cannot
+/// bend a good wall's mitre. A wall whose level puts it nowhere (a bad elevation, reported
+/// on the level) becomes unusable too.
+Plan geometry_plan(const Plan& plan, detail::Usable& usable) {
+  Plan copy = with_absolute_heights(plan);
+  for (std::size_t w = 0; w < copy.walls.size(); ++w) {
+    const Wall& wall = copy.walls[w];
+    if (!std::isfinite(wall.base) || !std::isfinite(wall.base + wall.height)) usable.walls[w] = false;
     if (!usable.walls[w]) copy.walls[w].from = copy.walls[w].to = {NAN, NAN};
+  }
   return copy;
 }
 
@@ -40,11 +47,11 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   std::future<std::vector<Room>> rooms;
   if (options.room_warnings || (rules && all_walls_usable))
     rooms = std::async(std::launch::async, [&plan, &joins] { return find_rooms(plan, joins); });
-  // The geometry checks and the rules see only usable walls: the others are made to join
-  // nothing (geometry_plan).
+  // The geometry checks and the rules see the levels resolved and only usable walls
+  // (geometry_plan); a plan without levels whose walls are all usable is that already.
   std::optional<Plan> geometry;
   std::optional<Joins> geometry_joins;
-  if (!all_walls_usable) {
+  if (!all_walls_usable || !plan.levels.empty()) {
     geometry = geometry_plan(plan, usable);
     geometry_joins = find_joins(*geometry);
   }

@@ -220,10 +220,8 @@ void collapse_flat_polygons(const std::vector<OpenMesh::Vec3d>& points, std::vec
   tags = std::move(kept_tags);
 }
 
-// Snaps with find_snap_targets (exact corners kept apart or not) and cleans the polygons.
-IndexedSoup snap_with(IndexedSoup soup, double tolerance, bool keep_exact_apart) {
-  const std::vector<std::size_t> target =
-      find_snap_targets(soup.points, keep_exact_apart ? soup.exact : std::vector<char>{}, tolerance);
+// Moves every corner to its snap target (find_snap_targets) and cleans the polygons.
+IndexedSoup snap_to(IndexedSoup soup, const std::vector<std::size_t>& target) {
   const bool tagged = !soup.tags.empty();
   std::vector<Polygon> cleaned;
   std::vector<std::size_t> tags;
@@ -258,16 +256,32 @@ bool has_paired_edges(const std::vector<Polygon>& polygons) {
   return true;
 }
 
+// Whether snapping to `target` puts two exact points (`exact`, possibly empty) in one group.
+bool merges_exact_points(const std::vector<std::size_t>& target, const std::vector<char>& exact) {
+  if (exact.empty()) return false;
+  std::vector<char> holds_exact(target.size(), 0);
+  for (std::size_t i = 0; i < target.size(); ++i) {
+    if (!exact[i]) continue;
+    if (holds_exact[target[i]]) return true;
+    holds_exact[target[i]] = 1;
+  }
+  return false;
+}
+
 }  // namespace
 
 IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
-  if (soup.exact.empty()) return snap_with(std::move(soup), tolerance, false);
-  IndexedSoup merged = snap_with(soup, tolerance, false);
+  const std::vector<std::size_t> merging = find_snap_targets(soup.points, {}, tolerance);
+  // Keeping exact corners apart changes nothing unless two of them would merge (rare): only
+  // then is the result checked and, where it must be, the soup snapped again.
+  if (!merges_exact_points(merging, soup.exact)) return snap_to(std::move(soup), merging);
+  IndexedSoup merged = snap_to(soup, merging);
   if (has_paired_edges(merged.polygons)) return merged;
   // Merging two exact corners pinched the surface (walls an ulp apart, each corner exact:
   // an edge of four faces). Keeping exact corners apart leaves them as the exact solid has
   // them; taken only where that closes the surface.
-  IndexedSoup apart = snap_with(std::move(soup), tolerance, true);
+  const std::vector<std::size_t> apart_targets = find_snap_targets(soup.points, soup.exact, tolerance);
+  IndexedSoup apart = snap_to(std::move(soup), apart_targets);
   return has_paired_edges(apart.polygons) ? apart : merged;
 }
 

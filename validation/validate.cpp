@@ -19,16 +19,22 @@ namespace {
 /// The plan the geometry checks see: levels resolved (every base absolute, so walls standing
 /// on one another are neither joined nor overlapping: docs/plan-format.md, "Version 2"), and
 /// walls that failed a value check made to join nothing (NaN ends), so a bad thickness cannot
-/// bend a good wall's mitre. A wall whose level puts it nowhere (a bad elevation, reported
-/// on the level) becomes unusable too.
-Plan geometry_plan(const Plan& plan, detail::Usable& usable) {
+/// bend a good wall's mitre.
+Plan geometry_plan(const Plan& plan, const detail::Usable& usable) {
   Plan copy = with_absolute_heights(plan);
-  for (std::size_t w = 0; w < copy.walls.size(); ++w) {
-    const Wall& wall = copy.walls[w];
-    if (!std::isfinite(wall.base) || !std::isfinite(wall.base + wall.height)) usable.walls[w] = false;
+  for (std::size_t w = 0; w < copy.walls.size(); ++w)
     if (!usable.walls[w]) copy.walls[w].from = copy.walls[w].to = {NAN, NAN};
-  }
   return copy;
+}
+
+/// A wall whose level puts it nowhere (a bad elevation, reported on the level) is unusable
+/// for the geometry, as a wall with a bad value of its own is.
+void leave_out_unplaced_walls(const Plan& plan, detail::Usable& usable) {
+  if (plan.levels.empty()) return;  // every base was judged by the value checks
+  for (std::size_t w = 0; w < plan.walls.size(); ++w) {
+    const double base = base_z(plan, plan.walls[w]);
+    if (!std::isfinite(base) || !std::isfinite(base + plan.walls[w].height)) usable.walls[w] = false;
+  }
 }
 
 }  // namespace
@@ -37,6 +43,7 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   Report report;
   detail::Usable usable = detail::check_values(plan, report);
   detail::check_ids(plan, usable, report);
+  leave_out_unplaced_walls(plan, usable);
   const bool all_walls_usable =
       std::all_of(usable.walls.begin(), usable.walls.end(), [](bool ok) { return ok; });
   const Joins joins = find_joins(plan);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <unordered_map>
 
@@ -15,17 +16,20 @@
 namespace roomcad::detail {
 namespace {
 
-void refuse_unbuilt(const Plan& plan) {
-  for (const Wall& w : plan.walls)
-    if (w.height_at_end && *w.height_at_end != w.height)
-      throw PreconditionError(fmt::format("build_model: wall '{}' has a sloped top (height {}, height_at_end {}), "
-                                          "which this build does not make yet", w.id, w.height, *w.height_at_end),
-                              Code::not_buildable);
-  for (const Opening& o : plan.openings)
-    if (!o.shape.empty())
-      throw PreconditionError(fmt::format("build_model: opening '{}' has a shape ({} corners), which this build "
-                                          "does not cut yet", o.id, o.shape.size()),
-                              Code::not_buildable);
+// A sloped arc wall's chords share its slope: the top rises along the polyline, so chord k
+// runs from the height at its start to the height at its end (docs/plan-format.md).
+void slope_chords(const Wall& arc, std::span<Wall> chords) {
+  if (!arc.height_at_end || *arc.height_at_end == arc.height) return;
+  double total = 0.0;
+  for (const Wall& c : chords) total += std::hypot(c.to.x - c.from.x, c.to.y - c.from.y);
+  const double rise = *arc.height_at_end - arc.height;
+  double along = 0.0;
+  for (std::size_t k = 0; k < chords.size(); ++k) {
+    Wall& c = chords[k];
+    c.height = k == 0 ? arc.height : arc.height + rise * (along / total);
+    along += std::hypot(c.to.x - c.from.x, c.to.y - c.from.y);
+    c.height_at_end = k + 1 == chords.size() ? *arc.height_at_end : arc.height + rise * (along / total);
+  }
 }
 
 // The openings of an arc wall as pieces on its chords: the span [offset, offset + width] along
@@ -61,7 +65,6 @@ void split_openings(const Plan& in, std::size_t wall, const std::vector<std::siz
 }  // namespace
 
 BuildablePlan make_buildable(const Plan& plan) {
-  refuse_unbuilt(plan);
   BuildablePlan b;
   b.input_walls = plan.walls.size();
   const Plan resolved = with_absolute_heights(plan);
@@ -85,6 +88,7 @@ BuildablePlan make_buildable(const Plan& plan) {
       b.plan.walls.push_back(std::move(chord));
       b.wall_of.push_back(i);
     }
+    if (line.size() > 2) slope_chords(w, std::span(b.plan.walls).last(line.size() - 1));
   }
   for (std::size_t i = 0; i < resolved.openings.size(); ++i) {
     const Opening& o = resolved.openings[i];

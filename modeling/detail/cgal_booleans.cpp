@@ -108,6 +108,12 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
 }  // namespace
 
 FaceSoup build_cluster_cgal(std::span<const WallFrame* const> walls, int first_opening_object) {
+  // The reference path builds prisms: flat tops and rectangular holes only.
+  for (const WallFrame* f : walls)
+    if (needs_general_path(*f))
+      throw PreconditionError(fmt::format("build_model: wall #{} has a sloped top or a shaped opening, which "
+                                          "the Nef path (--boolean nef) does not build; the default path does",
+                                          f->wall), Code::not_buildable);
   std::vector<Nef> prisms, holes;
   // A footprint or hole with no area, or a height that rounds to nothing, has no volume.
   for (const WallFrame* f : walls) {

@@ -66,7 +66,9 @@ bool are_apart(const WallFrame& a, const WallFrame& b) {
   return false;
 }
 
-bool is_same_height(const WallFrame& a, const WallFrame& b) { return a.base == b.base && a.top == b.top; }
+bool is_same_height(const WallFrame& a, const WallFrame& b) {
+  return a.base == b.base && a.top == b.top && !is_sloped(a) && !is_sloped(b);
+}
 
 // The two corners of a footprint's end (0: from, 1: to), in ascending order.
 std::pair<Point2, Point2> end_corners(const WallFrame& f, std::size_t end) {
@@ -108,7 +110,7 @@ void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const 
   for (const WallFrame& f : frames) boxes.push_back(box_of(f));
   for (const auto& [a, b] : find_meeting_boxes(boxes)) {
     if (joins.are_joined(a, b)) continue;
-    if (frames[a].top < frames[b].base || frames[b].top < frames[a].base) continue;
+    if (frames[a].top_max < frames[b].base || frames[b].top_max < frames[a].base) continue;
     if (are_apart(frames[a], frames[b])) continue;
     sets.unite(a, b);
     general[a] = general[b] = 1;
@@ -170,7 +172,7 @@ Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, Boolean
   // longer reaches the walls on the other side (all of them are joined to that wall anyway).
   link_walls(work.fast_frames, joins, explained_pairs(work.hubs, work.tees), general, sets);
   for (std::size_t i = 0; i < n; ++i)
-    if (!has_holes_clear_of_joins(work.fast_frames[i])) general[i] = 1;
+    if (!has_holes_clear_of_joins(work.fast_frames[i]) || needs_general_path(frames[i])) general[i] = 1;
   const std::vector<char> root_general = find_general_components(general, sets);
   work.items = group_walls(root_general, sets);
   // A hub among fast walls adds its top and bottom; a cluster builds its own hubs.

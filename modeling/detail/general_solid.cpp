@@ -30,7 +30,7 @@ double largest_coordinate(std::span<const WallFrame* const> walls) {
   double m = 0.0;
   for (const WallFrame* f : walls) {
     for (const Point2& p : f->footprint) m = std::max({m, std::abs(p.x), std::abs(p.y)});
-    m = std::max({m, std::abs(f->base), std::abs(f->top)});
+    m = std::max({m, std::abs(f->base), std::abs(f->top_max)});
   }
   return m;
 }

@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include <fmt/format.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
@@ -24,8 +25,14 @@ using detail::FaceSoup;
 using detail::WallFrame;
 using detail::WorkItem;
 
-FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, const detail::Work& work,
-                    const WorkItem& item, BooleanPath path) {
+// The walls and slabs a build works on.
+struct Frames {
+  const std::vector<WallFrame>& walls;
+  const std::vector<detail::SlabFrame>& slabs;
+};
+
+FaceSoup build_item(const Plan& plan, const Frames& frames, const detail::Work& work, const WorkItem& item,
+                    BooleanPath path) {
   const int first_opening = detail::opening_object(plan, 0);
   if (item.kind == WorkItem::Kind::hub) return detail::build_hub(work.hubs[item.hub], work.fast_frames);
   if (item.kind == WorkItem::Kind::fast_wall) {
@@ -34,15 +41,23 @@ FaceSoup build_item(const Plan& plan, const std::vector<WallFrame>& frames, cons
   }
   std::vector<const WallFrame*> walls;
   walls.reserve(item.walls.size());
-  for (std::size_t i : item.walls) walls.push_back(&frames[i]);
-  return uses_nef(path) ? detail::build_cluster_cgal(walls, first_opening)
-                                  : detail::build_cluster_general(walls, first_opening);
+  for (std::size_t i : item.walls) walls.push_back(&frames.walls[i]);
+  std::vector<const detail::SlabFrame*> slabs;
+  for (std::size_t i : item.slabs) slabs.push_back(&frames.slabs[i]);
+  if (uses_nef(path)) {
+    if (!slabs.empty())
+      throw PreconditionError(fmt::format("build_model: slab '{}' is not built by the Nef path (--boolean nef); "
+                                          "the default path builds slabs", plan.slabs[slabs.front()->slab].id),
+                              Code::not_buildable);
+    return detail::build_cluster_cgal(walls, first_opening);
+  }
+  return detail::build_cluster_general(walls, slabs, first_opening, detail::slab_object(plan, 0));
 }
 
 // Builds every item in parallel; results land in item order, so the mesh does not depend on
 // the thread count.
-std::vector<FaceSoup> build_items(const Plan& plan, const std::vector<WallFrame>& frames,
-                                  const detail::Work& work, BooleanPath path) {
+std::vector<FaceSoup> build_items(const Plan& plan, const Frames& frames, const detail::Work& work,
+                                  BooleanPath path) {
   std::vector<FaceSoup> soups(work.items.size());
   tbb::parallel_for(std::size_t{0}, work.items.size(), [&](std::size_t i) {
     soups[i] = build_item(plan, frames, work, work.items[i], path);
@@ -51,8 +66,8 @@ std::vector<FaceSoup> build_items(const Plan& plan, const std::vector<WallFrame>
 }
 
 // Builds the wall items, then fuses the fast path's faces across the seams of its hubs.
-std::vector<FaceSoup> build_walls(const Plan& plan, const std::vector<WallFrame>& frames,
-                                  const detail::Work& work, BooleanPath path) {
+std::vector<FaceSoup> build_walls(const Plan& plan, const Frames& frames, const detail::Work& work,
+                                  BooleanPath path) {
   std::vector<FaceSoup> soups = build_items(plan, frames, work, path);
   std::vector<detail::Hub> hubs;
   for (const WorkItem& item : work.items)
@@ -71,9 +86,10 @@ void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStat
 
 std::vector<std::string> model_object_ids(const Plan& plan) {
   std::vector<std::string> ids;
-  ids.reserve(plan.walls.size() + plan.openings.size());
+  ids.reserve(plan.walls.size() + plan.openings.size() + plan.slabs.size());
   for (const Wall& w : plan.walls) ids.push_back(w.id);
   for (const Opening& o : plan.openings) ids.push_back(o.id);
+  for (const Slab& s : plan.slabs) ids.push_back(s.id);
   return ids;
 }
 
@@ -90,9 +106,10 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
   BuildStats local;
   std::vector<FaceSoup> walls;
   if (options.parts.walls) {
-    const detail::Work work = detail::plan_work(frames, joins, options.boolean);
+    const std::vector<detail::SlabFrame> slabs = detail::make_slab_frames(plan, frames);
+    const detail::Work work = detail::plan_work(frames, joins, options.boolean, slabs);
     count_paths(work.items, options.boolean, local);
-    walls = build_walls(plan, frames, work, options.boolean);
+    walls = build_walls(plan, {frames, slabs}, work, options.boolean);
     detail::label_input_objects(buildable, walls);
   }
   const FaceSoup floor = options.parts.floor ? detail::build_floor(plan.site) : FaceSoup{};

@@ -40,6 +40,7 @@ enum class FaceKind : std::uint8_t {
   floor,
   door,       ///< a door leaf fixture
   window,     ///< a window pane fixture
+  slab,       ///< any face of a slab (a floor or ceiling of plan format version 2)
 };
 std::string_view to_string(FaceKind k);
 

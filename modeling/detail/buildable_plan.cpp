@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "modeling/arc_chords.h"
+#include "modeling/detail/wall_frame.h"
 #include "modeling/plan_levels.h"
 
 namespace roomcad::detail {
@@ -67,6 +68,7 @@ void split_openings(const Plan& in, std::size_t wall, const std::vector<std::siz
 BuildablePlan make_buildable(const Plan& plan) {
   BuildablePlan b;
   b.input_walls = plan.walls.size();
+  b.input_openings = plan.openings.size();
   const Plan resolved = with_absolute_heights(plan);
   b.plan = resolved;
   b.plan.walls.clear();
@@ -104,11 +106,14 @@ BuildablePlan make_buildable(const Plan& plan) {
 
 void label_input_objects(const BuildablePlan& b, std::vector<FaceSoup>& soups) {
   const int walls = static_cast<int>(b.plan.walls.size());
+  const int first_slab = slab_object(b.plan, 0);  // slabs are neither split nor reordered
+  const int input_first_slab = static_cast<int>(b.input_walls + b.input_openings);
   for (FaceSoup& soup : soups)
     for (SoupFace& f : soup) {
       if (f.object < 0) continue;
-      f.object = f.object < walls ? static_cast<int>(b.wall_of[std::size_t(f.object)])
-                                  : static_cast<int>(b.input_walls + b.opening_of[std::size_t(f.object - walls)]);
+      f.object = f.object < walls        ? static_cast<int>(b.wall_of[std::size_t(f.object)])
+                 : f.object < first_slab ? static_cast<int>(b.input_walls + b.opening_of[std::size_t(f.object - walls)])
+                                         : input_first_slab + (f.object - first_slab);
     }
 }
 

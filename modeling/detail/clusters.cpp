@@ -136,28 +136,45 @@ std::vector<char> find_general_components(const std::vector<char>& general, Disj
   return root_general;
 }
 
-std::vector<WorkItem> group_walls(const std::vector<char>& root_general, DisjointSets& sets) {
-  const std::size_t n = root_general.size();
+// Slab s is element n + s of the sets (n walls): it meets the walls and slabs whose boxes
+// meet its box, heights included (touching counts).
+void link_slabs(const std::vector<WallFrame>& frames, const std::vector<SlabFrame>& slabs, DisjointSets& sets) {
+  const std::size_t n = frames.size();
+  std::vector<Box2> walls, boxes;
+  for (const WallFrame& f : frames) walls.push_back(box_of(f));
+  for (std::size_t s = 0; s < slabs.size(); ++s)
+    boxes.push_back({slabs[s].min_x, slabs[s].min_y, slabs[s].max_x, slabs[s].max_y, s});
+  for (const auto& [w, s] : find_meeting_boxes(walls, boxes))
+    if (!(frames[w].top_max < slabs[s].bottom || slabs[s].top < frames[w].base)) sets.unite(w, n + s);
+  for (const auto& [a, b] : find_meeting_boxes(boxes))
+    if (!(slabs[a].top < slabs[b].bottom || slabs[b].top < slabs[a].bottom)) sets.unite(n + a, n + b);
+}
+
+// The items of walls 0..n-1 and slabs n.. (every slab in a cluster).
+std::vector<WorkItem> group_walls(std::size_t n, const std::vector<char>& root_general, DisjointSets& sets) {
+  const std::size_t all = root_general.size();
   std::vector<WorkItem> items;
-  std::vector<std::size_t> item_of_root(n, n);
-  for (std::size_t i = 0; i < n; ++i) {
+  std::vector<std::size_t> item_of_root(all, all);
+  for (std::size_t i = 0; i < all; ++i) {
     const std::size_t root = sets.find(i);
     if (!root_general[root]) {
-      items.push_back({WorkItem::Kind::fast_wall, {i}, 0});
+      items.push_back({WorkItem::Kind::fast_wall, {i}, 0, {}});
       continue;
     }
-    if (item_of_root[root] == n) {
+    if (item_of_root[root] == all) {
       item_of_root[root] = items.size();
-      items.push_back({WorkItem::Kind::cluster, {}, 0});
+      items.push_back({WorkItem::Kind::cluster, {}, 0, {}});
     }
-    items[item_of_root[root]].walls.push_back(i);
+    WorkItem& item = items[item_of_root[root]];
+    (i < n ? item.walls : item.slabs).push_back(i < n ? i : i - n);
   }
   return items;
 }
 
 }  // namespace
 
-Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, BooleanPath path) {
+Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, BooleanPath path,
+               const std::vector<SlabFrame>& slabs) {
   const std::size_t n = frames.size();
   Work work;
   work.fast_frames = frames;
@@ -166,19 +183,21 @@ Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, Boolean
   for (const Hub& hub : work.hubs) attach_hub(hub, work.fast_frames);
   if (fast) work.tees = find_tees(work.fast_frames, joins);
   attach_tees(work.tees, work.fast_frames);
-  std::vector<char> general(n, fast ? 0 : 1);
-  DisjointSets sets(n);
+  std::vector<char> general(n + slabs.size(), fast ? 0 : 1);
+  std::fill(general.begin() + std::ptrdiff_t(n), general.end(), 1);
+  DisjointSets sets(n + slabs.size());
   // Touching is judged on the fast-path shapes: a stem clipped at its through-wall's face no
   // longer reaches the walls on the other side (all of them are joined to that wall anyway).
   link_walls(work.fast_frames, joins, explained_pairs(work.hubs, work.tees), general, sets);
+  link_slabs(frames, slabs, sets);
   for (std::size_t i = 0; i < n; ++i)
     if (!has_holes_clear_of_joins(work.fast_frames[i]) || needs_general_path(frames[i])) general[i] = 1;
   const std::vector<char> root_general = find_general_components(general, sets);
-  work.items = group_walls(root_general, sets);
+  work.items = group_walls(n, root_general, sets);
   // A hub among fast walls adds its top and bottom; a cluster builds its own hubs.
   for (std::size_t h = 0; h < work.hubs.size(); ++h)
     if (!root_general[sets.find(work.hubs[h].arms.front().first)])
-      work.items.push_back({WorkItem::Kind::hub, {}, h});
+      work.items.push_back({WorkItem::Kind::hub, {}, h, {}});
   return work;
 }
 

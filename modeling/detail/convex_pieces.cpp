@@ -374,8 +374,23 @@ bool clip_polygon(const PlaneSet& set, PlanePolygon& poly, PlaneRef h) {
   return poly.lines.size() >= 3;
 }
 
+// A convex piece of a slab (counter-clockwise doubles, strictly convex) between its bottom and
+// top.
+Primitive make_slab_piece(PlaneSet& set, const SlabFrame& s, const Polygon& piece) {
+  const PlaneRef c0 = plane_at_z(set, s.bottom, -1), c1 = plane_at_z(set, s.top, 1);
+  PlanePolygon base{{c0.id, -c0.sign}, {}, {}};
+  const std::size_t n = piece.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2 q = piece[(i + 1) % n];
+    base.lines.push_back(plane_through(set, piece[i], q));
+    base.vertices.push_back(make_point(q.x, q.y, s.bottom));
+  }
+  return make_prism(set, base, c0, c1);
+}
+
 std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
-                                       const std::vector<const WallFrame*>& walls) {
+                                       const std::vector<const WallFrame*>& walls,
+                                       const std::vector<const SlabFrame*>& slabs) {
   std::vector<Primitive> out;
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const WallFrame& f = *walls[w];
@@ -403,6 +418,11 @@ std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
       for (std::size_t k = first; k < out.size(); ++k) out[k].frame = w;
     }
   }
+  for (std::size_t s = 0; s < slabs.size(); ++s)
+    for (const Polygon& piece : slabs[s]->pieces) {
+      out.push_back(make_slab_piece(set, *slabs[s], piece));
+      out.back().slab = s;
+    }
   return out;
 }
 

@@ -92,4 +92,9 @@ struct WallFrame {
   return static_cast<int>(plan.walls.size() + opening);
 }
 
+/// @return the index into Model::objects of a slab (after the walls and the openings).
+[[nodiscard]] inline int slab_object(const Plan& plan, std::size_t slab) {
+  return static_cast<int>(plan.walls.size() + plan.openings.size() + slab);
+}
+
 }  // namespace roomcad::detail

@@ -76,6 +76,17 @@ std::vector<FaceSoup> build_walls(const Plan& plan, const Frames& frames, const 
   return soups;
 }
 
+// Leaves out of the work the slabs (--parts without slabs) or the walls (without walls).
+void keep_parts(detail::Work& work, const Parts& parts) {
+  for (WorkItem& item : work.items) {
+    if (!parts.slabs) item.slabs.clear();
+    if (!parts.walls) item.walls.clear();
+  }
+  std::erase_if(work.items, [&](const WorkItem& item) {
+    return item.kind == WorkItem::Kind::hub ? !parts.walls : item.walls.empty() && item.slabs.empty();
+  });
+}
+
 void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStats& stats) {
   std::size_t& cluster_walls = uses_nef(path) ? stats.nef_path_walls : stats.general_path_walls;
   for (const WorkItem& item : items)
@@ -105,9 +116,10 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
   const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins, buildable.through_mitre);
   BuildStats local;
   std::vector<FaceSoup> walls;
-  if (options.parts.walls) {
+  if (options.parts.walls || options.parts.slabs) {
     const std::vector<detail::SlabFrame> slabs = detail::make_slab_frames(plan, frames);
-    const detail::Work work = detail::plan_work(frames, joins, options.boolean, slabs);
+    detail::Work work = detail::plan_work(frames, joins, options.boolean, slabs);
+    keep_parts(work, options.parts);
     count_paths(work.items, options.boolean, local);
     walls = build_walls(plan, {frames, slabs}, work, options.boolean);
     detail::label_input_objects(buildable, walls);

@@ -24,6 +24,7 @@
 
 #include "modeling/detail/buildable_plan.h"
 #include "modeling/detail/exact_wall.h"
+#include "modeling/detail/slab_frames.h"
 #include "modeling/mesh_check.h"
 
 namespace roomcad {
@@ -417,11 +418,13 @@ Prim shaped_hole_prim(const detail::WallFrame& f, const detail::Hole& h) {
   return p;
 }
 
-Prim slab_prim(const Slab& slab) {
+// A slab as the build takes it (slab_frames.h: its edges along walls laid into them, its bottom
+// rounded once); its area from the outline and holes, not from the build's convex pieces.
+Prim slab_prim(const detail::SlabFrame& slab) {
   Prim p;
   p.kind = Prim::Kind::slab;
   p.zmax = slab.top;
-  p.zmin = FT(slab.top) - FT(slab.thickness);
+  p.zmin = slab.bottom;
   p.heights = {p.zmin, p.zmax};
   auto polygon = [](const roomcad::Polygon& q) {
     std::vector<Point> points;
@@ -440,7 +443,7 @@ Prim slab_prim(const Slab& slab) {
     if (h.size() >= 3 && h.area() > 0) set.difference(h);
   }
   set.polygons_with_holes(std::back_inserter(p.parts));
-  const double zlo = CGAL::to_double(p.zmin), zhi = slab.top;
+  const double zlo = slab.bottom, zhi = slab.top;
   auto add_faces = [&](const Polygon& poly) {
     for (auto e = poly.edges_begin(); e != poly.edges_end(); ++e)
       p.faces.push_back(vertical_face(e->source(), e->target(), zlo, zhi));
@@ -470,7 +473,7 @@ double analytic_wall_volume(const Plan& input) {
       if (p.zmin < p.zmax && (p.kind == Prim::Kind::shaped || p.outline.size() >= 3)) holes.push_back(std::move(p));
     }
   }
-  for (const Slab& s : plan.slabs) {
+  for (const detail::SlabFrame& s : detail::make_slab_frames(plan, frames)) {
     Prim p = slab_prim(s);
     if (!p.parts.empty() && p.zmin < p.zmax) solids.push_back(std::move(p));
   }

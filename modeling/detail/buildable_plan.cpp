@@ -56,6 +56,13 @@ void split_openings(const Plan& in, std::size_t wall, const std::vector<std::siz
       Opening piece = o;
       piece.wall = out.plan.walls[chords[k]].id;
       piece.offset = from, piece.width = to - from;
+      // A shape's hole would have to run on through the mitre planes as a rectangle's does;
+      // refused rather than cut as separate holes with wall left between them.
+      if (!o.shape.empty() && (o.offset - start[k] < 0.0 || to < o.offset + o.width - start[k]))
+        throw PreconditionError(fmt::format("build_model: opening '{}' has a shape and spans corners of the chords "
+                                            "of arc wall '{}', which the build does not cut yet; make it rectangular "
+                                            "or narrow it to one chord", o.id, in.walls[wall].id),
+                                Code::not_buildable);
       out.plan.openings.push_back(std::move(piece));
       out.opening_of.push_back(i);
       out.through_mitre.push_back({k > 0 && from == 0.0, k + 1 < chords.size() && to == length});

@@ -134,6 +134,16 @@ TEST(ArcBuild, AnOpeningAcrossChordsIsOneHoleThroughTheirMitres) {
   }
 }
 
+TEST(ArcBuild, AShapedOpeningAcrossChordsIsRefusedNamingItNotCutApart) {
+  Plan plan = bow_room();
+  add_opening(plan, "gable", OpeningType::window, "bow", 2.0, 2.0, 1.0, 1.0).shape = {{0, 0}, {1, 0}, {0.5, 1}};
+  test::expect_build_refused(plan, {}, Code::not_buildable, "opening 'gable' has a shape and spans corners");
+  // Within one chord (10 chords of 0.628 m) it is cut: a triangle of 0.4 x 0.5 through 0.2.
+  plan.openings[0].offset = 0.1, plan.openings[0].width = 0.4, plan.openings[0].height = 0.5;
+  const double bow = polyline_length(chord_polyline(plan.walls[1], 0.01));
+  test::expect_valid_walls(plan, BooleanPath::automatic, 2, 0.2 * (6 + bow + 6 + 6) * 2.5 - 0.2 * 0.1);
+}
+
 TEST(ArcBuild, FacesNameThePlansWallsAndOpenings) {
   Plan plan = bow_room();
   add_opening(plan, "win", OpeningType::window, "bow", 2.0, 2.0, 1.0, 1.0);

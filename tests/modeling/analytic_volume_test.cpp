@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "model_support.h"
+#include "modeling/signed_area.h"
 
 namespace roomcad {
 namespace {
@@ -37,17 +38,6 @@ Slab& add_slab(Plan& plan, const std::string& id, Polygon outline, double top, d
   Slab& s = plan.slabs.emplace_back();
   s.id = id, s.outline = std::move(outline), s.top = top, s.thickness = thickness;
   return s;
-}
-
-// The shoelace area of a polygon in the unit square.
-double shape_area(const Polygon& p) {
-  double a = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Point2& u = p[i];
-    const Point2& v = p[(i + 1) % p.size()];
-    a += u.x * v.y - v.x * u.y;
-  }
-  return a / 2.0;
 }
 
 // A door-like arch: the unit square's lower part, then a half circle of `n` segments on top.
@@ -120,7 +110,7 @@ TEST(AnalyticVolume, AnArchedDoorRemovesItsPrism) {
   const Polygon shape = arch(24);
   add_opening(plan, "arch", OpeningType::door, "w", 1, 0.9, 0, 2.2).shape = shape;
   // Length sqrt(17) x 0.2 x 2.5, minus the arch's area (shoelace) x 0.9 x 2.2 x 0.2.
-  expect_volume(plan, std::sqrt(17.0) * 0.2 * 2.5 - shape_area(shape) * 0.9 * 2.2 * 0.2);
+  expect_volume(plan, std::sqrt(17.0) * 0.2 * 2.5 - signed_area(shape) * 0.9 * 2.2 * 0.2);
   expect_mesh_agrees(plan);
 }
 

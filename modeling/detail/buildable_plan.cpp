@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 #include <string>
 #include <unordered_map>
 
@@ -12,26 +11,11 @@
 #include "core/error.h"
 #include "modeling/arc_chords.h"
 #include "modeling/detail/wall_frame.h"
+#include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 
 namespace roomcad::detail {
 namespace {
-
-// A sloped arc wall's chords share its slope: the top rises along the polyline, so chord k
-// runs from the height at its start to the height at its end (docs/plan-format.md).
-void slope_chords(const Wall& arc, std::span<Wall> chords) {
-  if (!arc.height_at_end || *arc.height_at_end == arc.height) return;
-  double total = 0.0;
-  for (const Wall& c : chords) total += std::hypot(c.to.x - c.from.x, c.to.y - c.from.y);
-  const double rise = *arc.height_at_end - arc.height;
-  double along = 0.0;
-  for (std::size_t k = 0; k < chords.size(); ++k) {
-    Wall& c = chords[k];
-    c.height = k == 0 ? arc.height : arc.height + rise * (along / total);
-    along += std::hypot(c.to.x - c.from.x, c.to.y - c.from.y);
-    c.height_at_end = k + 1 == chords.size() ? *arc.height_at_end : arc.height + rise * (along / total);
-  }
-}
 
 // The openings of an arc wall as pieces on its chords: the span [offset, offset + width] along
 // the polyline cut at the chords' corners. A piece ending within rounding of its chord's end
@@ -85,19 +69,16 @@ BuildablePlan make_buildable(const Plan& plan) {
   std::vector<std::size_t> arcs;
   for (std::size_t i = 0; i < resolved.walls.size(); ++i) {
     const Wall& w = resolved.walls[i];
-    const std::vector<Point2> line = chord_polyline(w, tolerance);
-    if (line.size() > 2) arcs.push_back(i);
-    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
-      Wall chord = w;
-      chord.from = line[k], chord.to = line[k + 1], chord.arc_extent.reset();
-      if (line.size() > 2) {
-        chord.id = fmt::format("{} (chord {} of {})", w.id, k + 1, line.size() - 1);
+    std::vector<Wall> chords = chord_walls(w, chord_polyline(w, tolerance));
+    if (chords.size() > 1) arcs.push_back(i);
+    for (std::size_t k = 0; k < chords.size(); ++k) {
+      if (chords.size() > 1) {
+        chords[k].id = fmt::format("{} (chord {} of {})", w.id, k + 1, chords.size());
         chords_of[w.id].push_back(b.plan.walls.size());
       }
-      b.plan.walls.push_back(std::move(chord));
+      b.plan.walls.push_back(std::move(chords[k]));
       b.wall_of.push_back(i);
     }
-    if (line.size() > 2) slope_chords(w, std::span(b.plan.walls).last(line.size() - 1));
   }
   for (std::size_t i = 0; i < resolved.openings.size(); ++i) {
     const Opening& o = resolved.openings[i];

@@ -20,7 +20,8 @@ struct SolidCheck {
   std::size_t rejected_triangles = 0;    ///< triangles that would make an edge non-manifold
   std::size_t degenerate_triangles = 0;  ///< collinear corners (exact predicate)
   std::size_t self_intersections = 0;    ///< pairs of intersecting triangles (exact predicates)
-  std::size_t inward_components = 0;     ///< components with negative volume
+  std::size_t inward_components = 0;     ///< components facing the wrong way (inside out)
+  std::size_t cavities = 0;              ///< components bounding a void inside the solid (facing in, rightly)
   std::size_t components = 0;
   long genus = 0;       ///< sum over components of (2 - Euler characteristic) / 2
   double volume = 0.0;  ///< cubic metres

@@ -68,6 +68,47 @@ TEST(SlabBuild, AFloorDrawnToTheWallsFacesIsLaidIntoThemNotLeftOnASliver) {
   expect_valid_walls(plan, BooleanPath::automatic, 0, 0.26 * 14 * 2.74 + (4 - 0.26) * (3 - 0.26) * 0.12);
 }
 
+TEST(SlabBuild, AFloorBesideAWallStandingOnItsEdgeIsLaidUnderIt) {
+  // A wall (x = 4.4 +- 0.2175, from z = 1.25) stands where a floor 0.127 thick ends, its side
+  // at 4.4 + 0.2175, the floor drawn to 4.6175: they would share a bare edge (duplex.ifc).
+  // Laid a quarter thickness under the wall, the floor joins it face to face; the solid
+  // gains the strip (0.435 / 4 x 2 x 0.127).
+  Plan plan = empty_plan();
+  add_wall(plan, "w", {4.4, 0}, {4.4, 2});
+  Wall& w = plan.walls[0];
+  w.thickness = 0.435, w.base = 1.25, w.height = 1;
+  Slab s;
+  s.id = "floor";
+  s.outline = {{4.6175, 0}, {7, 0}, {7, 2}, {4.6175, 2}};
+  s.top = 1.25, s.thickness = 0.127;
+  plan.slabs.push_back(s);
+  const double strip = 0.435 / 4 * 2 * 0.127;
+  expect_valid_walls(plan, BooleanPath::automatic, 0, 0.435 * 2 * 1 + (7 - 4.6175) * 2 * 0.127 + strip);
+}
+
+TEST(SlabBuild, AFloorAlongAWallEndAndAWallUnderItIsLaidWhole) {
+  // From duplex.ifc: wall a ends at x = 4.6175 (its end face), wall b below the floor has its
+  // side at 4.4 + 0.2175 (a double above 4.6175) and its top at the floor's bottom; the
+  // floor's edge at 4.6175 runs along both and on past them. As drawn, the solid pinches at a
+  // point where a, b and the floor meet (two empty corners touch there). The edge moves whole,
+  // a quarter of a's thickness into a and over b, and the solid is 2-manifold.
+  Plan plan = empty_plan();
+  add_wall(plan, "a", {0.417, -10}, {4.6175, -10});
+  add_wall(plan, "b", {4.4, -9.7825}, {4.4, -8.0175});
+  for (Wall& w : plan.walls) w.thickness = 0.435, w.height = 1.25;
+  plan.walls[1].height = 1.123;
+  Slab s;
+  s.id = "floor";
+  s.outline = {{4.6175, -8.075}, {4.6175, -10.275}, {6, -10.275}, {6, -8.075}};
+  s.top = 1.25, s.thickness = 0.127;
+  plan.slabs.push_back(s);
+  const double laid = 4.6175 - 0.435 / 4;
+  // a + b + the laid floor, less the floor's part inside a (x from laid to 4.6175, a's y).
+  const double volume = 4.2005 * 0.435 * 1.25 + 1.765 * 0.435 * 1.123 + (6 - laid) * 2.2 * 0.127 -
+                        (4.6175 - laid) * 0.435 * 0.127;
+  expect_valid_walls(plan, BooleanPath::automatic, 0, volume);
+}
+
 TEST(SlabBuild, AnOutlineThatCrossesItselfIsRefusedNamingTheSlab) {
   Plan plan = covered_room();
   plan.slabs[0].outline = {{0.9, 0.9}, {6.1, 5.1}, {6.1, 0.9}, {0.9, 5.1}};  // a bow tie

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Modeling benchmark (Google Benchmark; a report driver, never a timed test): generated N x N
 // grids of rooms (doors inside, windows outside; bench/grid_plan.h) built and exported by
 // roomcad's fast path and its CGAL path, side by side with two outside references run on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Depth formats against depth error (a report driver, not a timed test): for the perspective
 // camera's near plane (render/camera.h kPerspectiveNear, infinite far plane), the step between
 // neighbouring stored depths at 1 m, 100 m and 1 km, in metres, for the format the renderer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of the floor-plan drawing on the bundled house (21 walls) and on grids of rooms.
 #include <benchmark/benchmark.h>
 

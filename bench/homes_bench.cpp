@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Real homes built on every path side by side in one run (Google Benchmark; never a timed
 // test): the Sweet Home 3D homes of examples/sweethome3d/ (imported plans; a home with
 // validation errors is built as `--force` builds it), each

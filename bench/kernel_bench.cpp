@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact against filtered kernels (a report driver, not a timed test): the orientation of
 // three points, the predicate behind every verdict of validation (touching, crossing, inside),
 // on easy triples and on nearly collinear ones (where a wall end touches another wall), with

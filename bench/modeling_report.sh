@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The modeling benchmark in one run: N x N grids of rooms (doors inside, windows outside) built
 # by roomcad's fast path and CGAL path, and by the two outside references, plain CGAL Nef
 # (balanced union, one batched subtraction) and Debian's openscad (only on grids up to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The modeling benchmark's report: Google Benchmark runs named "<path>/<n>" (path: fast, cgal,
 // nef, openscad) gathered into one row per scene, written as CSV and as a Markdown table.
 // The CSV columns are documented in bench/modeling_report.sh and must stay stable.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The outside CGAL reference of the modeling benchmark: the plan's walls as CGAL Nef
 // polyhedra, united as a balanced tree, all openings subtracted in one batch (the fastest
 // exact CGAL recipe), written out as a polygon soup. Plain CGAL, none of roomcad's code:

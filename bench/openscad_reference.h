@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The outside OpenSCAD reference of the modeling benchmark: the plan written as OpenSCAD (the
 // union of the wall boxes minus the union of the opening boxes, the same solids as
 // nef_reference.h) and run through Debian's `openscad -o out.off`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The outside reference: the same room-grid meshes drawn by Mesa's llvmpipe through OSMesa at
 // 1920 x 1080: the mesh is uploaded once into vertex buffers, and a frame is glClear +
 // glDrawArrays with the depth test + glFinish (one pass, no shadows, flat vertex colours,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cost of the decimal-exact plan transforms (modeling/transform2d.h, modeling/plan_edit.h)
 // against plain double arithmetic, as the number of walls grows.
 #include <benchmark/benchmark.h>

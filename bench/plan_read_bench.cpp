@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading plan files: read_plan_text on generated grids up to the 100,800-wall plan (n = 224,
 // about 23 MB of canonical JSON), in MB/s; the canonical writer; and reading then validating,
 // which is what `roomcad validate` does end to end. Run: build/bench/plan_read_bench

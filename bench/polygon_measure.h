@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Size and volume of a polygon soup (any closed, outward surface), measured the same way for
 // every path of the modeling benchmark: triangles as each n-gon's n - 2, volume by the
 // divergence theorem over a fan of each planar polygon.

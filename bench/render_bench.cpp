@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Render benchmarks: frame times at 1920 x 1080 for grids of rooms from ~1k to ~2M triangles,
 // without shadows, with PCF and with hard shadows, at 1 and 2 threads; and shadow-map
 // resolution against shadow error (vs ray-traced shadows) and time. The scene is flattened

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the render benchmark and the OSMesa/llvmpipe harness side by side, size by size, and
 # prints one CSV table of frame times at 1920 x 1080 in ms. The *_cpu columns run both sides
 # single-threaded (LP_NUM_THREADS=0 makes llvmpipe rasterise in the calling thread; roomcad

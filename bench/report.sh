@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # One command for the evidence report: builds the benchmark drivers, runs them side by side in
 # one run (so their ratios hold on a noisy machine) and writes bench/report.md, with its CSV
 # files and gnuplot PNG plots in bench/report/. Prints and records its own run time.
@@ -10,7 +11,7 @@ quick=${1:-}
 bash scripts/setup.sh >/dev/null
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target validate_bench build_bench render_bench depth_format_bench kernel_bench \
-  skipping_bench >/dev/null
+  skipping_bench homes_bench >/dev/null
 out=bench/report
 mkdir -p "$out"
 
@@ -70,12 +71,21 @@ GNUPLOT
 
 section_validate() {
   # validate_bench: | grid | walls | openings | wall ms | cpu ms | critical | no rooms wall | cpu | errors |
+  # (then the rules' tables, of other columns): the rows of that first table, the last run of
+  # each size, by walls.
   build/bench/validate_bench $quick |
-    awk -F'|' 'NR == 1 { print "walls,openings,wall_ms,cpu_ms,no_rooms_ms"; next } NR > 2 {
-        for (i = 2; i <= 9; i++) gsub(/ /, "", $i); print $3 "," $4 "," $5 "," $6 "," $8 }' \
+    awk -F'|' '$2 ~ /^ [0-9]+ x [0-9]+ $/ && NF == 11 {
+        for (i = 2; i <= 10; i++) gsub(/ /, "", $i); row[$3] = $3 "," $4 "," $5 "," $6 "," $8 }
+      END { print "walls,openings,wall_ms,cpu_ms,no_rooms_ms"; for (w in row) print row[w] | "sort -t, -k1,1n" }' \
     >"$out/validate_scaling.csv"
   plot "$out/validate_scaling.csv" "$out/validate_scaling.png" "validate: time against walls" \
     walls ms xy 3:"wall-clock ms" 5:"no room warnings ms"
+}
+
+section_homes() {
+  # homes_bench: the bundled Sweet Home 3D homes on every path in one run (its --csv columns:
+  # walls, the share of walls per path, the four times, the volume difference against Nef).
+  build/bench/homes_bench --csv "$out/homes.csv" >/dev/null 2>&1
 }
 
 section_build() {
@@ -190,6 +200,7 @@ GNUPLOT
 }
 
 section_validate
+section_homes
 section_build
 section_render
 section_antialiasing
@@ -213,6 +224,15 @@ seconds=$((SECONDS - start))
   csv_to_markdown "$out/validate_scaling.csv"
   echo
   echo "![validate scaling](report/validate_scaling.png)"
+  echo
+  echo "## Real homes: every path against Nef"
+  echo "The Sweet Home 3D homes of examples/sweethome3d/ (imported plans, built as \`--force\` builds"
+  echo "them), the wall solid at 2 threads (\`build/bench/homes_bench\`): the share of walls each path"
+  echo "took in the automatic build (fast, general, Nef), its time (\`auto_ms\`), every wall on the"
+  echo "general path and on CGAL Nef, \`before_ms\` the fast path with Nef for the rest (the automatic"
+  echo "build before the general path), and the automatic solid's volume against Nef's, relative."
+  echo
+  csv_to_markdown "$out/homes.csv"
   echo
   echo "## Build: fast path against CGAL path and OpenSCAD"
   echo "The per-wall fast path on and off: N x N grids of rooms built and written as OFF by the fast"

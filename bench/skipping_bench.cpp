@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What skipping saves: frame times at 1920 x 1080 with each culling switch on and off
 // (FaceCull none / back faces / visibility pre-pass, frustum culling of clusters on / off), on
 // the 10 x 10 grid of rooms and on examples/house.json, each seen from outside and from inside

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of the surface drawing: expression evaluation and the floating-horizon sweep.
 #include <benchmark/benchmark.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Importing the largest Sweet Home 3D example home (3-BedroomHouseWithMezzanine, 113 kB,
 // 67 walls, 37 doors and windows): parsing, junctions, host walls. Target: well under 50 ms,
 // so that importing never dominates import + validate + build + render.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Validation time for grids of rooms from about 10 to 100,000 walls (a door in every inner
 // wall, three windows in every outer one: about as many openings as walls), printed as a
 // markdown table. Run: build/bench/validate_bench [--quick]

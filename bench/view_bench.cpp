@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Window frame times: the viewer (view/viewer.h) at 1280 x 720 on every bundled example, with
 // the overlay, as the window draws them while orbiting (each frame a new camera). A frame of
 // an edit adds the model rebuild: BM_ViewEditFrame moves a wall one cell and back (the window

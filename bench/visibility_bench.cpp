@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seed-004 visibility pre-pass and hidden-line drawings: faces skipped and time saved on
 // the bundled examples and on generated grids of rooms (bench/grid_plan.h).
 //

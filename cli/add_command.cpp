@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad add PLAN KIND [--id ID] [--<field> VALUE ...]: adds a level, wall, door, window, slab,
 // light or camera. Its options are the fields of the plan format, from the field tables
 // (modeling/plan_fields.h): --from, --thickness, --fov-deg, ...; each type-checked by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad build PLAN -o OUT [--parts ...] [--boolean auto|general|nef] [--check] [--force]
 // [--threads N] [--stats] [--format text|json] [--level ID]`: the plan's 3D model, exported
 // (OBJ, OFF, PLY, STL, glTF, IFC) and checked.
@@ -26,7 +27,7 @@ namespace {
 struct BuildCommandOptions {
   std::string plan;
   std::string out;
-  std::string parts = "walls,floor,fixtures";
+  std::string parts = kAllParts;
   std::string boolean = "auto";
   std::string format = "text";
   std::string level;  ///< empty: every level
@@ -138,7 +139,7 @@ void add_build_command(CLI::App& root, Commands& commands) {
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
   app->add_option("-o,--output", options->out, "the file to write (.obj .off .ply .stl .glb .gltf .ifc)")
       ->type_name("OUT");
-  app->add_option("--parts", options->parts, "what to build and write: any of walls,floor,fixtures")
+  app->add_option("--parts", options->parts, "what to build and write: any of walls,slabs,floor,fixtures (walls,slabs: the building's solid)")
       ->capture_default_str();
   app->add_option("--boolean", options->boolean,
                   "auto: the exact fast path where no boolean is needed, else the exact general\n"

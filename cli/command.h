@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How subcommands plug into the `roomcad` command: each cli/<name>_command.cpp defines one
 // add_<name>_command that registers its options on the root app and returns what to run.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad draw`: line drawings of a plan as SVG: the floor plan, elevations, isometric and
 // camera views (render/line_drawing.h) with hidden lines removed. Views are looked up in one
 // table; `camera:ID` names a plan camera.
@@ -119,7 +120,7 @@ void add_draw_command(CLI::App& root, Commands& commands) {
   app->add_option("--hidden", o->request.hidden, "hidden edges of views: dashed or off")
       ->check(CLI::IsMember({"dashed", "off"}))
       ->capture_default_str();
-  app->add_option("--parts", o->request.parts, "parts a view draws: walls,floor,fixtures (floor as outline)")
+  app->add_option("--parts", o->request.parts, "parts a view draws: walls,slabs,floor,fixtures (floor as outline)")
       ->capture_default_str();
   app->add_option("--scale", o->request.scale, "paper scale 1:N, between 1:1 and 1:10000")
       ->capture_default_str();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What every edit command (add, rm, move, rotate, scale, set) does around its edit: read the
 // plan, apply the edit to a copy, validate, refuse an edit that INTRODUCES errors (unless
 // --force), show the change (--dry-run) or write the file atomically.

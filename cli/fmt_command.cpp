@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad fmt PLAN [-o OUT] [--check]`: rewrites a plan in the canonical form.
 #include <algorithm>
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad import HOME.xml|HOME.sh3d|MODEL.ifc -o PLAN.json`: a Sweet Home 3D home or an IFC
 // model as a plan.
 #include <cctype>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad info PLAN [--format text|json]`: what a plan holds and how big it is.
 #include <algorithm>
 #include <cmath>

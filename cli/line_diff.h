@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A line diff of two texts, for showing what an edit would change (--dry-run).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad: validated, exact 3D models and pictures from room plans.
 #include <chrono>
 #include <cmath>

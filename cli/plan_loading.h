@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading the plan a command works on, with its problems printed the same way by every command.
 #pragma once
 

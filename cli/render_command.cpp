@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad render PLAN -o OUT.png: a picture of the plan's model from the CPU renderer.
 #include <cmath>
 #include <cstdio>

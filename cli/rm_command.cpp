@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad rm PLAN ID [--cascade]: removes an object; a wall that holds openings only with
 // --cascade (which removes them too).
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad set PLAN ID key=value ...: sets fields of one object (or of the site, ID "site"),
 // each value type-checked against the plan format.
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad surface`: the floating-horizon drawing of y = f(x, z) as SVG or PNG.
 #include <fmt/format.h>
 

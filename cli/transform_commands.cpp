@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad move | rotate | scale PLAN (ID | --all) ...: the plan transforms of modeling/plan_edit.h,
 // through homogeneous matrices (modeling/transform2d.h): quarter turns exact, moves and scales
 // undone bit for bit for decimal coordinates of up to 15 significant digits. A move or quarter

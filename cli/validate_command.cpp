@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad validate PLAN [--format text|json] [--rules NAME|FILE] [--baseline OLD]`: every
 // problem of a plan, in one run; with rules beyond the format's checks, and compared with an
 // earlier revision.

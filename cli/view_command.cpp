@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad view PLAN: the interactive window (view/), or a scripted headless run of it.
 #include <cstdio>
 #include <memory>

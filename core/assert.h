@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RC_ASSERT: an internal invariant, checked in debug builds only (as Manifold's DEBUG_ASSERT
 // and CGAL_assertion). It states what the code around it relies on and can never be false for
 // any input; input that can be wrong is checked always and reported as an Error instead.

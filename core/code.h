@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one vocabulary of codes roomcad speaks: every finding of validation (the codes of the plan
 // format, docs/plan-format.md), every warning, and every reason a command or a library call
 // fails. A code is stable: it is printed, written in JSON, raised to Python and read by

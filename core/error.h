@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Errors as values: what a failure says (a Code, a message, where), carried by Status and
 // Result<T>; and the one exception modeling throws, PreconditionError, carrying the same.
 //

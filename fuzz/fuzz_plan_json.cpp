@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the plan reader on arbitrary bytes, then the report printers and the writer
 // on whatever it returns. Any crash, sanitizer report, uncaught exception, leak or hang is a bug;
 // so is a canonical text that does not read back to itself (the writer's promise in plan_json.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the PNG reader (io/image_io.h) on arbitrary bytes. Any crash, sanitizer
 // report, leak or hang is a bug, and so is an image whose buffer does not match its size.
 #include <cstddef>

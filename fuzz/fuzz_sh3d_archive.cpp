@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the `.sh3d` (ZIP) path of the Sweet Home 3D importer. libzip reads archives
 // from files, and import_sweethome3d_file is the entry point users reach, so each input is
 // written to a scratch file first. Any crash, sanitizer report, leak or hang is a bug.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the Sweet Home 3D importer on arbitrary `Home.xml` text, then the plan
 // writer on what it imports. Any crash, sanitizer report, uncaught exception, leak or hang is a bug.
 #include <cstddef>

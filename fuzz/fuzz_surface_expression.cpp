@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the surface expression parser and its evaluator on arbitrary text. Any
 // crash, sanitizer report, uncaught exception, leak or hang is a bug; so is an error column
 // outside [1, size + 1] (parse_surface_expression's contract).

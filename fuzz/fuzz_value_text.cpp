@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the strict value parsers of the command line and set_field
 // (modeling/value_text.h) and colours (modeling/plan.h) on arbitrary text. Any crash, sanitizer
 // report or hang is a bug, and so is a number parsed as not finite.

@@ -8,10 +8,14 @@
 // A byte past the end reads as 0, so every input is a plan.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -98,6 +102,22 @@ inline Plan decode_plan(const std::uint8_t* data, std::size_t size) {
     plan.openings.push_back(std::move(o));
   }
   return plan;
+}
+
+/// @return a committed corpus file (fuzz/corpus/<target>/) decoded as its target decodes it,
+/// so that the tests build every seed the fuzzers start from.
+inline Plan decode_plan_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+  return decode_plan(bytes.data(), bytes.size());
+}
+
+/// @return the files of a corpus folder, sorted by name.
+inline std::vector<std::filesystem::path> corpus_files(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 }  // namespace roomcad::fuzz

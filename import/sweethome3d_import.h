@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Importing Sweet Home 3D homes (`Home.xml`, or a `.sh3d` archive holding one) as plans.
 //
 // Mapping (centimetres to metres, Sweet Home 3D's downward y negated; plan format version 2

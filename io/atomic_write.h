@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Atomic file writes: every file roomcad writes goes through here.
 #pragma once
 

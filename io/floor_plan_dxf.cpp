@@ -248,25 +248,23 @@ void write_blocks(DxfWriter& w) {
   w.group(2, "BLOCKS");
   for (const char* name : {"*Model_Space", "*Paper_Space"}) {
     const std::string_view owner = name[1] == 'M' ? kModelSpace : "1E";
-    w.group(0, "BLOCK");
-    w.handle();
-    w.group(330, owner);
-    w.group(100, "AcDbEntity");
-    if (name[1] == 'P') w.group(67, 1);
-    w.group(8, "0");
-    w.group(100, "AcDbBlockBegin");
+    // BLOCK and ENDBLK each: a handle, the owner, paper space or not, layer 0, the subclass.
+    auto entity = [&](const char* type, const char* subclass) {
+      w.group(0, type);
+      w.handle();
+      w.group(330, owner);
+      w.group(100, "AcDbEntity");
+      if (name[1] == 'P') w.group(67, 1);
+      w.group(8, "0");
+      w.group(100, subclass);
+    };
+    entity("BLOCK", "AcDbBlockBegin");
     w.group(2, name);
     w.group(70, 0);
     w.group(10, 0.0), w.group(20, 0.0), w.group(30, 0.0);
     w.group(3, name);
     w.group(1, "");
-    w.group(0, "ENDBLK");
-    w.handle();
-    w.group(330, owner);
-    w.group(100, "AcDbEntity");
-    if (name[1] == 'P') w.group(67, 1);
-    w.group(8, "0");
-    w.group(100, "AcDbBlockEnd");
+    entity("ENDBLK", "AcDbBlockEnd");
   }
   w.group(0, "ENDSEC");
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Floor plans as SVG: line weights and fills in the architectural manner.
 #include "io/floor_plan_svg.h"
 

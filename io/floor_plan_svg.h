@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Floor plans (render/floor_plan.h) as SVG documents.
 #pragma once
 

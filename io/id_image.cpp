@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Object-id PNG and its JSON legend.
 #include "io/id_image.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Object-id images: the renderer's per-pixel object indices as a lossless PNG plus a JSON
 // legend, for tests and other tools (`roomcad render --ids OUT.png`).
 #pragma once

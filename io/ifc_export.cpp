@@ -11,6 +11,7 @@
 #include "io/atomic_write.h"
 #include "io/detail/ifc_shapes.h"
 #include "io/step_file.h"
+#include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 #include "modeling/rooms.h"
 
@@ -81,8 +82,20 @@ struct Storey {
 class IfcBuilder {
  public:
   IfcBuilder(const Plan& plan, IfcExportSummary& summary)
-      : plan_(plan), absolute_(with_absolute_heights(plan)), joins_(find_joins(absolute_)),
-        summary_(summary) {}
+      : plan_(plan), chorded_(with_arcs_as_chords(with_absolute_heights(plan))),
+        joins_(find_joins(chorded_.plan)), joined_(chorded_.plan, joins_), summary_(summary) {
+    // Each wall's chords (one for a straight wall) and each opening's pieces, in order.
+    chords_.resize(plan_.walls.size());
+    for (std::size_t j = 0; j < chorded_.source_wall.size(); ++j) chords_[chorded_.source_wall[j]].push_back(j);
+    pieces_.resize(plan_.openings.size());
+    for (std::size_t p = 0; p < chorded_.source_opening.size(); ++p) pieces_[chorded_.source_opening[p]].push_back(p);
+    openings_of_.resize(plan_.walls.size());
+    std::unordered_map<std::string_view, std::size_t> wall_index;
+    for (std::size_t i = 0; i < plan_.walls.size(); ++i) wall_index.emplace(plan_.walls[i].id, i);
+    for (std::size_t o = 0; o < plan_.openings.size(); ++o)
+      if (const auto it = wall_index.find(plan_.openings[o].wall); it != wall_index.end())
+        openings_of_[it->second].push_back(o);
+  }
 
   std::string build(std::string_view name) {
     const int project = write_context(name);
@@ -114,8 +127,12 @@ class IfcBuilder {
 
  private:
   const Plan& plan_;
-  const Plan absolute_;
-  const Joins joins_;
+  const ChordPlan chorded_;  ///< heights absolute, arc walls as their chords
+  const Joins joins_;        ///< of chorded_.plan
+  const io_detail::JoinedWalls joined_;
+  std::vector<std::vector<std::size_t>> chords_;       ///< per wall, its walls in chorded_
+  std::vector<std::vector<std::size_t>> pieces_;       ///< per opening, its openings in chorded_
+  std::vector<std::vector<std::size_t>> openings_of_;  ///< per wall, its openings
   IfcExportSummary& summary_;
   step::Writer w_;
   IfcShapeWriter shapes_{w_};
@@ -179,19 +196,26 @@ class IfcBuilder {
     const Wall& wall = plan_.walls[i];
     Storey& storey = storey_of(wall.level);
     const int placement = local_placement(storey.placement, wall.base);
-    const int body = io_detail::wall_body(shapes_, wall, io_detail::export_footprint(absolute_, joins_, i));
-    const int shape = shapes_.product_shape(wall.height_at_end ? "Tessellation" : "SweptSolid", body,
-                                            io_detail::wall_axis(shapes_, wall));
+    // One body item per chord: its footprint after its joins, extruded (or, sloped, a face set).
+    std::vector<int> items;
+    std::vector<Point2> axis{wall.from};
+    for (const std::size_t j : chords_[i]) {
+      const Wall& chord = chorded_.plan.walls[j];
+      items.push_back(io_detail::wall_body(shapes_, chord, io_detail::export_footprint(joined_, j)));
+      axis.push_back(chord.to);
+    }
+    const int shape = shapes_.product_shape(wall.height_at_end ? "Tessellation" : "SweptSolid", items,
+                                            io_detail::wall_axis(shapes_, axis));
     const int entity = w_.add("IFCWALL", root("wall", wall.id, wall.id) + ",$," + ref(placement) + ',' +
                                              ref(shape) + ',' + text(wall.id) + ",.STANDARD.");
     storey.elements.push_back(entity);
     ++summary_.walls;
-    for (const Opening& opening : plan_.openings)
-      if (opening.wall == wall.id) write_opening(opening, wall, entity, placement, storey);
+    for (const std::size_t o : openings_of_[i]) write_opening(o, i, entity, placement, storey);
   }
 
-  void write_opening(const Opening& o, const Wall& wall, int wall_entity, int wall_placement,
-                     Storey& storey) {
+  /// The void of an opening in a straight wall: its outline (its shape if it has one) in the
+  /// wall's vertical plane, extruded through the wall.
+  int straight_void(const Opening& o, const Wall& wall) {
     const double length = std::hypot(wall.to.x - wall.from.x, wall.to.y - wall.from.y);
     const Point2 d{(wall.to.x - wall.from.x) / length, (wall.to.y - wall.from.y) / length};
     // The profile lies in the wall's vertical plane (x along the wall, y up) one thickness on
@@ -204,7 +228,35 @@ class IfcBuilder {
       outline.clear();
       for (const Point2& p : o.shape) outline.push_back({p.x * o.width, p.y * o.height});
     }
-    const int body = shapes_.extrusion(outline, {}, position, 2.0 * wall.thickness, wall.color);
+    return shapes_.extrusion(outline, {}, position, 2.0 * wall.thickness, wall.color);
+  }
+
+  /// The void items of opening `o` in arc wall `wall`: one per chord its span crosses.
+  std::vector<int> arc_voids(std::size_t o, std::size_t wall) {
+    std::vector<int> items;
+    const std::vector<std::size_t>& chords = chords_[wall];
+    for (const std::size_t p : pieces_[o]) {
+      const std::size_t j = chorded_.chord[p];
+      const Opening& piece = chorded_.plan.openings[p];
+      const Wall& chord = chorded_.plan.walls[j];
+      const double length = std::hypot(chord.to.x - chord.from.x, chord.to.y - chord.from.y);
+      // On into the neighbouring chord: from its start, or to its end (within the rounding of
+      // the offsets along the polyline), as the build's pieces meet on the mitre plane.
+      const bool first = j == chords.front(), last = j == chords.back();
+      const std::array<bool, 2> mitred{!first && piece.offset == 0.0,
+                                       !last && piece.offset + piece.width >= length * (1.0 - 1e-12)};
+      items.push_back(io_detail::chord_piece_void(shapes_, chord, io_detail::export_footprint(joined_, j),
+                                                  piece, mitred));
+    }
+    return items;
+  }
+
+  void write_opening(std::size_t index, std::size_t w, int wall_entity, int wall_placement, Storey& storey) {
+    const Opening& o = plan_.openings[index];
+    const Wall& wall = plan_.walls[w];
+    std::vector<int> body;
+    if (chords_[w].size() > 1) body = arc_voids(index, w);
+    if (body.empty()) body.push_back(straight_void(o, wall));  // straight, or (invalid) off its arc
     const int placement = local_placement(wall_placement, 0.0);
     const int element = w_.add("IFCOPENINGELEMENT", root("opening", o.id, o.id) + ",$," + ref(placement) + ',' +
                                                         ref(shapes_.product_shape("SweptSolid", body)) + ',' +
@@ -230,7 +282,7 @@ class IfcBuilder {
     const int placement = local_placement(storey.placement, slab.top - slab.thickness);
     const int body = shapes_.extrusion(slab.outline, slab.holes, 0, slab.thickness, slab.color);
     const int entity = w_.add("IFCSLAB", root("slab", slab.id, slab.id) + ",$," + ref(placement) + ',' +
-                                             ref(shapes_.product_shape("SweptSolid", body)) + ',' +
+                                             ref(shapes_.product_shape("SweptSolid", {body})) + ',' +
                                              text(slab.id) + ",.FLOOR.");
     storey.elements.push_back(entity);
     ++summary_.slabs;
@@ -246,7 +298,7 @@ class IfcBuilder {
       const int placement = local_placement(storey.placement, 0.0);
       const int body = shapes_.extrusion(rooms[r].outline, {}, 0, storey.height, plan_.site.floor_color);
       const int space = w_.add("IFCSPACE", root("space", id, fmt::format("Room {}", r + 1)) + ",$," +
-                                               ref(placement) + ',' + ref(shapes_.product_shape("SweptSolid", body)) +
+                                               ref(placement) + ',' + ref(shapes_.product_shape("SweptSolid", {body})) +
                                                ",$,.ELEMENT.,.INTERNAL.,$");
       const int area = w_.add("IFCQUANTITYAREA", "'NetFloorArea',$,$," + real(rooms[r].area) + ",$");
       const int quantities = w_.add("IFCELEMENTQUANTITY", root("quantities", id, "BaseQuantities") + ",$,(" + ref(area) + ')');
@@ -260,11 +312,15 @@ class IfcBuilder {
 }  // namespace
 
 Result<std::string> format_ifc(const Plan& plan, std::string_view name, IfcExportSummary* summary) {
-  for (const Wall& wall : plan.walls) {
-    if (wall.arc_extent)
+  // An arc wall's openings are cut chord by chord as rectangles; a shape would need its
+  // outline bent around the arc.
+  for (const Opening& o : plan.openings) {
+    if (o.shape.empty()) continue;
+    const auto wall = std::find_if(plan.walls.begin(), plan.walls.end(), [&](const Wall& w) { return w.id == o.wall; });
+    if (wall != plan.walls.end() && wall->arc_extent)
       return Result<std::string>::failure(
-          Code::unsupported, fmt::format("wall \"{}\" is an arc (arc_extent {}): IFC export writes "
-                                         "straight walls only", wall.id, *wall.arc_extent));
+          Code::unsupported, fmt::format("opening \"{}\" has a shape ({} corners) in arc wall \"{}\": IFC export "
+                                         "cuts only rectangles in arc walls", o.id, o.shape.size(), wall->id));
   }
   IfcExportSummary counts;
   std::string out = IfcBuilder(plan, counts).build(name);

@@ -9,16 +9,19 @@
 //   after its joins (mitred ends, T ends cut back to the face they stop on: export_footprint)
 //   extruded by its height, or, for a sloped top, the closed IfcTriangulatedFaceSet of that
 //   prism. Joined walls' bodies do not overlap, so their volumes add up to the united solid's.
+//   An arc wall (version 2 `arc_extent`) is its chords, as the build makes it: its axis the
+//   chord polyline, its body one such item per chord.
 // - Each opening an IfcOpeningElement voiding its wall (IfcRelVoidsElement), its body the
 //   opening's outline (its `shape` if it has one) extruded through the wall, filled
-//   (IfcRelFillsElement) by an IfcDoor or IfcWindow with OverallWidth and OverallHeight.
+//   (IfcRelFillsElement) by an IfcDoor or IfcWindow with OverallWidth and OverallHeight. In
+//   an arc wall, one item per chord its span crosses (chord_piece_void), as the build cuts it.
 // - Each slab an IfcSlab (.FLOOR.), its outline minus its holes extruded by its thickness.
 // - Each room (find_rooms, per storey) an IfcSpace: its clear floor extruded to the storey's
 //   height, its area as the quantity NetFloorArea.
 // - Colours as IfcSurfaceStyle (one per colour); units metres, square and cubic metres, radians.
 // - Names and tags are the plan's ids; GlobalIds are derived from them (a 128-bit hash of the
 //   kind and id), and the header carries a fixed time stamp: the same plan gives the same bytes.
-// Arc walls (version 2 `arc_extent`) are not exported yet: an `unsupported` error names them.
+// A shaped opening in an arc wall is not exported yet: an `unsupported` error names it.
 #pragma once
 
 #include <cstddef>
@@ -44,8 +47,8 @@ struct IfcExportSummary {
 
 /// @return the IFC text of the plan, named `name` in its header and IfcProject.
 /// @pre the plan validates without errors (validation/validate.h).
-/// @return an `unsupported` failure naming the first arc wall. O(n log n) in walls and openings
-///   plus find_rooms per storey.
+/// @return an `unsupported` failure naming the first shaped opening in an arc wall. O(n log n)
+///   in walls and openings, plus the chords of arc walls and find_rooms per storey.
 [[nodiscard]] Result<std::string> format_ifc(const Plan& plan, std::string_view name,
                                              IfcExportSummary* summary = nullptr);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PNG through libpng's memory interface (encode into a string, then one atomic write), and PFM.
 #include "io/image_io.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Image files: PNG (libpng) and PFM (portable float map, for depth buffers). Written atomically.
 #pragma once
 

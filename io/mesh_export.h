@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing built models as mesh files: OBJ (+ MTL), OFF, PLY and STL, chosen by extension.
 //
 // Coordinates are written as the shortest decimal that reads back to the same double

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading and writing plans as JSON (docs/plan-format.md, versions 1 and 2).
 //
 // Reading never throws and never crashes: every problem becomes a Diagnostic with the file,

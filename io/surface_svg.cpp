@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Surface drawings as SVG: one group per kind of visible piece.
 #include "io/surface_svg.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Surface drawings (render/floating_horizon.h) as SVG documents.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG text generation: attributes, number formatting and escaping.
 #include "io/svg_writer.h"
 

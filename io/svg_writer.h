@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A small SVG document builder for drawings (surfaces, floor plans, elevations). User units are
 // millimetres on paper: the document is width x height mm with viewBox "0 0 width height".
 // Output is deterministic: numbers are written with at most three decimals (a micrometre on

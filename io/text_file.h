@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a whole file into memory, with errors that name the file and the reason.
 #pragma once
 

@@ -21,8 +21,8 @@ std::string format_wall_check_text(const WallCheck& v) {
                      yes_no(c.is_manifold()), c.non_manifold_vertices, c.rejected_triangles);
   out += fmt::format("  self-intersections  {}\n", c.self_intersections);
   out += fmt::format("  degenerate faces    {}\n", c.degenerate_triangles);
-  out += fmt::format("  outward oriented    {} ({} inward components)\n",
-                     yes_no(c.inward_components == 0), c.inward_components);
+  out += fmt::format("  outward oriented    {} ({} inward components{})\n", yes_no(c.inward_components == 0),
+                     c.inward_components, c.cavities == 0 ? "" : fmt::format(", {} cavities", c.cavities));
   out += fmt::format("  genus               {}\n", c.genus);
   out += fmt::format("  volume              {} m^3\n", c.volume);
   out += fmt::format("  analytic volume     {} m^3 (relative difference {:.3g}, limit 1e-09)\n",
@@ -37,11 +37,11 @@ std::string format_wall_check_json(const WallCheck& v) {
       "{{\"ok\": {}, \"vertices\": {}, \"faces\": {}, \"triangles\": {}, \"components\": {}, "
       "\"closed\": {}, \"border_edges\": {}, \"manifold\": {}, \"non_manifold_vertices\": {}, "
       "\"rejected_triangles\": {}, \"self_intersections\": {}, \"degenerate_faces\": {}, "
-      "\"outward\": {}, \"genus\": {}, \"volume\": {}, \"analytic_volume\": {}, "
+      "\"outward\": {}, \"cavities\": {}, \"genus\": {}, \"volume\": {}, \"analytic_volume\": {}, "
       "\"relative_difference\": {}}}\n",
       v.ok, c.vertices, c.faces, c.triangles, c.components, c.is_closed(), c.border_edges,
       c.is_manifold(), c.non_manifold_vertices, c.rejected_triangles, c.self_intersections,
-      c.degenerate_triangles, c.inward_components == 0, c.genus, c.volume, v.analytic, v.relative);
+      c.degenerate_triangles, c.inward_components == 0, c.cavities, c.genus, c.volume, v.analytic, v.relative);
 }
 
 }  // namespace roomcad

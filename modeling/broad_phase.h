@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Broad phase: which axis-aligned boxes meet, without testing all pairs.
 //
 // Every pairwise check of the plan (joins, overlaps, blocked openings) first narrows the pairs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Building the 3D model of a plan: the wall solid (walls joined, openings cut), the tiled
 // floor and the fixtures, as OpenMesh meshes (modeling/solid_mesh.h).
 #pragma once
@@ -17,10 +18,13 @@ struct Parts {
   bool walls = true;
   bool floor = true;
   bool fixtures = true;
+  bool slabs = true;  ///< built into one solid with the walls (Model::walls)
 };
 
 /// The names parse_parts knows, for messages and help.
-inline constexpr const char* kPartNames = "walls, floor, fixtures";
+inline constexpr const char* kPartNames = "walls, slabs, floor, fixtures";
+/// Every part, as a --parts list (the default).
+inline constexpr const char* kAllParts = "walls,slabs,floor,fixtures";
 
 /// Parses a --parts list: names of kPartNames separated by commas, any subset in any order.
 /// @return the parts, or a usage_error naming the list and the first unknown (or empty) name.
@@ -52,6 +56,10 @@ struct BuildStats {
   std::size_t nef_path_walls = 0;
   double build_ms = 0.0;
 };
+
+/// @return the object table of the plan's model (Model::objects): the wall ids in plan order,
+///         then the opening ids. O(n).
+[[nodiscard]] std::vector<std::string> model_object_ids(const Plan& plan);
 
 /// Builds the model of a plan.
 /// @pre validate(plan).ok() (validation/validate.h); a plan with errors may still be built

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact plane geometry for plan verdicts: filtered evaluation in any number type.
 //
 // A predicate is written once as a generic lambda over a number type NT and evaluated first
@@ -114,37 +115,42 @@ Pt<NT> side_point(const WallLine<NT>& w, WallEnd end, int side) {
   return side > 0 ? p + w.half_normal : p - w.half_normal;
 }
 
-/// The corner of wall `w` at `end` on `side` (+1 left, -1 right), mitred per `joins`.
-/// A mitred corner is where this side line crosses the matching side line of the partner:
-/// walking into the joint along one wall and out along the other, left meets left and right
-/// meets right. Parallel partners (a straight continuation) give a square end; see below
-/// for what counts as parallel.
+/// The corner on `side` (+1 left, -1 right) of wall `a` at `end`, mitred to wall `b` at
+/// `b_end`: where this side line crosses the matching side line of `b`. Walking into the
+/// joint along one wall and out along the other, left meets left and right meets right.
+/// Parallel partners (a straight continuation) give a square end; see below for what counts
+/// as parallel.
 template <class NT>
-Pt<NT> wall_corner(const Plan& plan, const Joins& joins, std::size_t w, WallEnd end, int side) {
-  const WallLine<NT> mine = wall_line<NT>(plan.walls[w]);
-  const auto partner = joins.mitre[w][static_cast<int>(end)];
-  if (!partner) return side_point(mine, end, side);
-  const WallLine<NT> other = wall_line<NT>(plan.walls[*partner]);
-  const WallEnd other_end = joins.mitre[*partner][0] == w ? WallEnd::from : WallEnd::to;
+Pt<NT> mitre_corner(const Wall& a, WallEnd end, const Wall& b, WallEnd b_end, int side) {
+  const WallLine<NT> mine = wall_line<NT>(a);
+  const WallLine<NT> other = wall_line<NT>(b);
   // Travelling into the joint along `mine` reverses it at its from-end; leaving along
   // `other` reverses it at its to-end. Each reversal swaps left and right.
-  const int other_side = side * (end == WallEnd::from ? -1 : 1) * (other_end == WallEnd::to ? -1 : 1);
+  const int other_side = side * (end == WallEnd::from ? -1 : 1) * (b_end == WallEnd::to ? -1 : 1);
   const Pt<NT> p = side_point(mine, end, side);
-  const Pt<NT> q = side_point(other, other_end, other_side);
+  const Pt<NT> q = side_point(other, b_end, other_side);
   const Pt<NT> d1 = mine.to - mine.from;
   const Pt<NT> d2 = other.to - other.from;
-  // Parallel partners (a straight continuation) end square. "Parallel" is decided on the
-  // cross product of the two directions evaluated in doubles: when it rounds to 0 the walls
-  // are within an ulp of collinear, the true mitre lies within ~1e-16 of the thickness of
-  // the square end, and constructing it would divide by a number whose double value is 0
-  // (an interval holding 0, or an exact 0). Every number type
-  // takes the same branch, so the footprint is one well-defined shape.
-  const Wall& a = plan.walls[w];
-  const Wall& b = plan.walls[*partner];
-  const double rounded_cross = (a.to.x - a.from.x) * (b.to.y - b.from.y) -
-                               (a.to.y - a.from.y) * (b.to.x - b.from.x);
-  if (rounded_cross == 0.0) return p;
-  return p + (cross(q - p, d2) / cross(d1, d2)) * d1;
+  // Parallel partners (a straight continuation) end square. Parallel is decided exactly: an
+  // interval holding 0 throws Uncertain_conversion_exception (callers then construct the
+  // corner exactly). Walls an ulp from parallel get their true mitre, which lies within an
+  // ulp of the square end at equal thicknesses (at unequal ones it is out of kMitreReach,
+  // so find_joins unites them). Deciding on the cross product rounded to doubles instead
+  // took different branches in intervals (rounding upward) and in exact numbers for walls a
+  // denormal apart.
+  const NT turn = cross(d1, d2);
+  if (turn == NT(0)) return p;
+  return p + (cross(q - p, d2) / turn) * d1;
+}
+
+/// The corner of wall `w` at `end` on `side` (+1 left, -1 right), mitred per `joins`
+/// (mitre_corner), or square where the end is not mitred.
+template <class NT>
+Pt<NT> wall_corner(const Plan& plan, const Joins& joins, std::size_t w, WallEnd end, int side) {
+  const auto partner = joins.mitre[w][static_cast<int>(end)];
+  if (!partner) return side_point(wall_line<NT>(plan.walls[w]), end, side);
+  const WallEnd other_end = joins.mitre[*partner][0] == w ? WallEnd::from : WallEnd::to;
+  return mitre_corner<NT>(plan.walls[w], end, plan.walls[*partner], other_end, side);
 }
 
 /// All four corners {from-right, to-right, to-left, from-left} (counter-clockwise).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A field of a plan object as text: what `roomcad set` and `roomcad add` read, and what the
 // window's property panel shows, through the field tables (modeling/plan_fields.h). The text
 // of a value reads back to the same value.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triangles of a mesh with its corners rounded to float32, for the formats that store float32
 // (binary STL): no triangle is flat after rounding, and the rounded surface stays closed.
 //

@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where walls meet, after the spec's "Junctions" section.
 //
 // Two walls are joined where their centre lines meet: they cross, or an end point of one lies
 // within `site.tolerance` of the other's centre line or end point. At an end point shared by
-// exactly two walls (and touched by no third centre line) the two are mitred; every other
-// meeting (T, X, three or more walls) joins by union. Validation uses this to excuse joined
+// exactly two walls (and touched by no third centre line) the two are mitred, unless the
+// mitre would reach too far (kMitreReach); every other meeting (T, X, three or more walls)
+// joins by union. Validation uses this to excuse joined
 // walls from overlap errors; modeling uses it to shape the wall solids.
 #pragma once
 
@@ -42,6 +44,10 @@ struct Joins {
   /// @return the join of a and b (either order), or nullptr. O(log n).
   [[nodiscard]] const Join* find(std::size_t a, std::size_t b) const;
 };
+
+/// How far a mitre may reach: its corners lie within this many thicknesses (of the thicker
+/// wall) of the shared end point, or the two walls join by union instead (see joins.cpp).
+inline constexpr double kMitreReach = 4.0;
 
 /// Finds every join of the plan's walls. Distances are compared with the tolerance exactly.
 /// End clusters (ends within tolerance of each other, but not all of them pairwise) are

@@ -1,5 +1,6 @@
-// Checks of a wall solid as written (its doubles), and its volume computed from the plan
-// alone, for `roomcad build --check` and the tests.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Checks of a solid as written (its doubles), and its volume computed from the plan alone,
+// for `roomcad build --check` and the tests.
 #pragma once
 
 #include <cstddef>
@@ -19,7 +20,8 @@ struct SolidCheck {
   std::size_t rejected_triangles = 0;    ///< triangles that would make an edge non-manifold
   std::size_t degenerate_triangles = 0;  ///< collinear corners (exact predicate)
   std::size_t self_intersections = 0;    ///< pairs of intersecting triangles (exact predicates)
-  std::size_t inward_components = 0;     ///< components with negative volume
+  std::size_t inward_components = 0;     ///< components facing the wrong way (inside out)
+  std::size_t cavities = 0;              ///< components bounding a void inside the solid (facing in, rightly)
   std::size_t components = 0;
   long genus = 0;       ///< sum over components of (2 - Euler characteristic) / 2
   double volume = 0.0;  ///< cubic metres
@@ -39,11 +41,20 @@ struct SolidCheck {
 ///         from the origin keeps its precision. O(n log n) in triangles.
 [[nodiscard]] SolidCheck check_solid(const SolidMesh& mesh);
 
-/// The volume of the plan's wall solid from the plan alone: the z range is cut into slabs at
-/// every base, top, sill and opening top; each slab's area is the exact area (CGAL 2D boolean
-/// operations on Epeck) of the union of its walls' footprints minus the union of its holes.
+/// The volume of the plan's solid from the plan alone, independent of the builders' planes:
+/// (union of walls and slabs) minus (union of holes), walls with sloped tops, holes rectangular
+/// or shaped (the opening's outline through the wall), slabs their outline minus their holes.
+/// Over z the cross-section's area is a polynomial of degree <= 2 between events: every
+/// primitive's corner heights, and the heights where a tilted plane (a sloped top, an edge of
+/// a shaped hole) meets two other face planes within their boxes. Each interval takes one
+/// exact area (CGAL 2D boolean operations on Epeck) where nothing moves, else Simpson's rule
+/// on three. The work is split into small groups: the flat walls and slabs together (as
+/// before: one area per interval), each sloped wall against what is near it, each cluster of
+/// overlapping holes against the walls and slabs near it.
 /// @pre the plan builds (build_model does not throw).
-/// @return cubic metres, the exact sum rounded once. O(s n log n) for s slabs and n walls.
+/// @return cubic metres, the exact sum rounded once. O(s n log n) for s intervals of the flat
+///         walls and slabs and n of them, plus small groups per sloped wall and hole cluster
+///         (candidate triples of planes filtered by boxes).
 /// @throws PreconditionError as build_model does for walls and openings that cannot be built.
 [[nodiscard]] double analytic_wall_volume(const Plan& plan);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // "Did you mean ...?": the known name nearest to a misspelt one, for messages about unknown
 // fields and keys.
 #pragma once

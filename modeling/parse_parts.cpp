@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <string>
 
 #include <fmt/format.h>
@@ -7,12 +8,13 @@
 namespace roomcad {
 
 Result<Parts> parse_parts(std::string_view list) {
-  Parts parts{false, false, false};
+  Parts parts{false, false, false, false};
   std::size_t start = 0;
   while (start <= list.size()) {
     const std::size_t comma = std::min(list.find(',', start), list.size());
     const std::string_view name = list.substr(start, comma - start);
     if (name == "walls") parts.walls = true;
+    else if (name == "slabs") parts.slabs = true;
     else if (name == "floor") parts.floor = true;
     else if (name == "fixtures") parts.fixtures = true;
     else

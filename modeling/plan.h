@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plan model: walls, openings, slabs, levels, lights and cameras on a tiled site, in metres.
 //
 // This is the in-memory form of the plan format (docs/plan-format.md, versions 1 and 2). Every

@@ -25,10 +25,7 @@ bool is_buildable_arc(const Wall& w, double chord_tolerance) {
          chord_tolerance > 0 && chord_count(span, e, chord_tolerance) <= kMaxChords;
 }
 
-namespace {
-
-/// The chords of arc wall `w` (polyline `line`), each with its share of the (sloped) top.
-std::vector<Wall> chords_of(const Wall& w, const std::vector<Point2>& line) {
+std::vector<Wall> chord_walls(const Wall& w, const std::vector<Point2>& line) {
   const double length = polyline_length(line);
   const double rise = w.height_at_end.value_or(w.height) - w.height;
   std::vector<Wall> chords;
@@ -39,13 +36,16 @@ std::vector<Wall> chords_of(const Wall& w, const std::vector<Point2>& line) {
     chord.from = line[k - 1];
     chord.to = line[k];
     const double next = along + std::hypot(line[k].x - line[k - 1].x, line[k].y - line[k - 1].y);
-    chord.height = w.height + rise * along / length;
-    if (w.height_at_end) chord.height_at_end = w.height + rise * next / length;
+    // The ends of the polyline keep the wall's own heights (no rounding through the ratio).
+    chord.height = k == 1 ? w.height : w.height + rise * along / length;
+    if (w.height_at_end) chord.height_at_end = k + 1 == line.size() ? *w.height_at_end : w.height + rise * next / length;
     chords.push_back(std::move(chord));
     along = next;
   }
   return chords;
 }
+
+namespace {
 
 /// The extent of an opening's outline: along the wall [u0, u1], up [v0, v1].
 struct Extent {
@@ -82,7 +82,7 @@ ChordPlan with_arcs_as_chords(const Plan& plan) {
     auto& [first, starts] = arcs[wall.id];
     first = out.plan.walls.size();
     double along = 0;
-    for (Wall& chord : chords_of(wall, chord_polyline(wall, tolerance))) {
+    for (Wall& chord : chord_walls(wall, chord_polyline(wall, tolerance))) {
       starts.push_back(along);
       along += std::hypot(chord.to.x - chord.from.x, chord.to.y - chord.from.y);
       out.plan.walls.push_back(std::move(chord));

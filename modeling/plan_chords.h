@@ -17,6 +17,12 @@ namespace roomcad {
 ///         0 < |arc_extent| < 360 and at most kMaxChords chords within `chord_tolerance`. O(1).
 [[nodiscard]] bool is_buildable_arc(const Wall& wall, double chord_tolerance);
 
+/// @return one wall per segment of `line` (the chord polyline of arc wall `w`), each a copy of
+///         `w` (id and fields kept, arc_extent dropped) with its share of a sloped top: the
+///         height interpolated along the polyline at its two ends, the first starting at
+///         `height` and the last ending at `height_at_end` exactly. O(line).
+[[nodiscard]] std::vector<Wall> chord_walls(const Wall& w, const std::vector<Point2>& line);
+
 /// A plan whose arc walls are their chords, and where each object came from.
 struct ChordPlan {
   Plan plan;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adding and removing objects; ids. Transforms are in plan_transform_edit.cpp, fields in
 // plan_set_field.cpp.
 #include "modeling/plan_edit.h"

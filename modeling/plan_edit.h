@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Edits of a plan: add, remove, move, rotate, scale and set fields of its objects.
 //
 // Each function changes the plan in place and returns what it changed (for `--dry-run`), or

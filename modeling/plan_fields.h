@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fields of each kind of plan object, in one table per kind: name, member, unit, check and
 // presence. This is the only place a field is spelled. The JSON reader and writer
 // (io/plan_json.h), `set` and `add` (modeling/plan_edit.h), the value checks

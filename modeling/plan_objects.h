@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A plan's objects by id, of every kind: finding, naming, visiting with their own type, erasing.
 // What the edit functions (modeling/plan_edit.h), the window and the bindings build on.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // set_field: one field of one object from text, through the field tables
 // (modeling/plan_fields.h) and their text form (modeling/field_text.h).
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Moving, turning and scaling objects and whole plans through homogeneous matrices
 // (modeling/transform2d.h); what each quantity does is in modeling/plan_edit.h.
 #include <fmt/format.h>

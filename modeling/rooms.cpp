@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // find_rooms: rooms are the bounded faces of the walls' centre-line arrangement.
 //
 // The reported outline and area are the CLEAR floor inside the walls (what an architect

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact segment predicates: CGAL's filtered Epick predicates and exact::decide.
 #include "modeling/segment_predicates.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact predicates on centre-line segments, behind a plain header (no CGAL here): what joins,
 // validation and the importers decide contacts with.
 // All are exact for the doubles given, including the tolerance comparisons (the distance

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/solid_mesh.h"
 
 #include <stdexcept>
@@ -16,6 +17,7 @@ std::string_view to_string(FaceKind k) {
     case FaceKind::floor: return "floor";
     case FaceKind::door: return "door";
     case FaceKind::window: return "window";
+    case FaceKind::slab: return "slab";
   }
   return "unknown";
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The meshes roomcad builds: OpenMesh polygon meshes in double precision, with the per-face
 // properties every later stage (export, render, drawings) reads. All persistent properties are
 // declared here and only here (STYLE rule 14); scratch properties use makeTemporaryProperty.
@@ -39,6 +40,7 @@ enum class FaceKind : std::uint8_t {
   floor,
   door,       ///< a door leaf fixture
   window,     ///< a window pane fixture
+  slab,       ///< any face of a slab (a floor or ceiling of plan format version 2)
 };
 std::string_view to_string(FaceKind k);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // 2D homogeneous transforms of a plan (seed 002, lab 1), in the seed's ROW-VECTOR convention:
 // a point is the row [x y 1] and maps to [x' y' 1] = [x y 1] * M, so the translation sits in the
 // bottom row (m[2][0], m[2][1]) and `compose(a, b)` = a * b means "first a, then b".

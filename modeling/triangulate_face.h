@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triangulation of one planar polygon face, for everything that needs triangles (STL export,
 // mesh checks, the rasteriser) while the model itself keeps few, large polygons.
 #pragma once

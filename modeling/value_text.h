@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The values of plan fields as text, as typed on the command line (`set`, `add`) and shown in
 // the window: strict parsing (a whole string or nothing, never a prefix: "1.5m" is not 1.5;
 // never NaN or infinity) and the formatting that reads back to the same value.

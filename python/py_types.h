@@ -33,10 +33,10 @@ struct PyModel {
   Model model;
   Plan plan;
   bool triangulated = false;
-  std::vector<double> vertices;      ///< x, y, z per vertex: walls, then floor, then fixtures
-  std::vector<std::int32_t> faces;   ///< three vertex indices per triangle
-  std::vector<std::string> face_objects;
-  std::vector<std::string> face_kinds;
+  std::vector<double> vertices{};     ///< x, y, z per vertex: walls, then floor, then fixtures
+  std::vector<std::int32_t> faces{};  ///< three vertex indices per triangle
+  std::vector<std::string> face_objects{};
+  std::vector<std::string> face_kinds{};
   double volume = 0.0;  ///< the wall solid's, from its triangles
 };
 

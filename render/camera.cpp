@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // View and reversed-Z projection matrices; framing a box from a preset direction.
 #include "render/camera.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cameras: from a plan camera, from flags, from a view preset, or the default framing, and the
 // view/projection matrices the pipeline uses (right-handed, z up in the world, reversed-Z).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sutherland-Hodgman clipping of one triangle against the six clip-space planes.
 #include "render/clip.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Clipping in homogeneous clip space, before the divide by w.
 //
 // Triangles are clipped against all six planes of the reversed-Z view volume: near (w - z >= 0),

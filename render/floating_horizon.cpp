@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The floating-horizon method: sampling, the window (seed: алгоритм ОКНО) and the sweep over
 // the sections from front to back.
 #include "render/floating_horizon.h"

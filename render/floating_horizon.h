@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The floating-horizon drawing of a surface y = f(x, z) (seed 002, lab 4, variant 3): the
 // surface is cut by the planes z = const, taken from the front (z_min) to the back; each
 // section is drawn where it lies above the upper or below the lower horizon of the sections

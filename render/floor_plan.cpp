@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The floor plan's page: layout at the scale, walls, rooms, dimensions, scale bar and title.
 #include "render/floor_plan.h"
 

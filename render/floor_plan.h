@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The architectural floor plan of a Plan: a horizontal section at a cut height, drawn on paper
 // at a scale (mm). Pure geometry; io/floor_plan_svg.h writes it as SVG.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hidden-line removal in object space: split feature edges at projected crossings, classify
 // each piece by an exact segment-against-faces test towards the viewer.
 #include <algorithm>

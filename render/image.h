@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Images the renderer draws into. The caller owns the buffer, so a window, a file writer or a
 // test can share one renderer.
 #pragma once

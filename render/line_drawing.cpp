@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Views of line drawings and their layout on paper.
 #include "render/line_drawing.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CAD line drawings of the model: elevations, isometric and camera views with hidden lines
 // removed exactly in object space, then laid out on paper at a scale (mm).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A DDA line drawer (seed 002, lab 4, variant 4's raster step) and surface rasterisation.
 #include "render/line_raster.h"
 

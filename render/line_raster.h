@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drawing thin lines into an RgbImage: how line drawings (surfaces, plans) become PNG pictures.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Edge-function rasterisation in fixed point, with the top-left rule and reversed-Z depth.
 #include "render/rasterizer.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triangle set-up and rasterisation with edge functions.
 //
 // Screen positions are fixed point (1/256 pixel), so edge functions are exact 64-bit integers:

@@ -21,7 +21,7 @@ struct RenderRequest {
   std::string view;         ///< front, back, left, right, top, iso; empty: iso
   double fov = 50.0, view_height = 10.0;
   std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";
-  std::string parts = "walls,floor,fixtures", cull = "back", frustum_cull = "on";
+  std::string parts = kAllParts, cull = "back", frustum_cull = "on";
 };
 
 /// @return the options that render `plan` as `request` asks (no depth or id image: set

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One frame: shadow maps, then tiles rasterised, shaded and resolved in parallel.
 #include "render/renderer.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CPU renderer: draws a model into buffers the caller owns (a file writer, a test or the
 // editor's window can share it).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Flattening OpenMesh polygon meshes into the renderer's triangle arrays.
 #include "render/scene.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The model flattened once into triangle arrays the pipeline streams through.
 //
 // Normals: every triangle carries the unit normal of the planar polygon it came from, and its

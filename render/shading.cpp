@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ambient + Lambert diffuse + Blinn-Phong specular per directional light; tile grid lines.
 #include "render/shading.h"
 

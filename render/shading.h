@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shading: the colour of a visible surface point from the plan's directional lights.
 //
 // Colours stay in sRGB in [0, 1] (as tinyrenderer does): a lit face of colour c under a light

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shadow-map pass (depth seen from the light) and the biased hard/PCF lookup.
 #include "render/shadow_map.h"
 

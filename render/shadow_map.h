@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shadow maps for directional lights: an orthographic depth image seen from the light, its
 // frustum fitted to the scene's bounds, looked up with a slope-scaled bias (hard or PCF).
 #pragma once

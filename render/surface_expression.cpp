@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Recursive-descent parser that emits a postfix program, and its stack evaluator.
 #include "render/surface_expression.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Expressions y = f(x, z) for surface drawings: parsed once by recursive descent, then
 // evaluated many times from a compact postfix program (no tree walking, no allocation).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The visible-surface pre-pass of seed 004 (Makarov & Safin, 2007): which scene triangles a
 // view can show, found by recursively splitting the picture and carrying the depth order along
 // each splitting line, so the renderer can skip the rest (`roomcad render --cull visibility`).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds roomcad, its tests and its libFuzzer targets once, in build-san/, with clang and
 # AddressSanitizer + UndefinedBehaviorSanitizer; every library also carries libFuzzer's
 # coverage hooks, so scripts/test-sanitized.sh and scripts/fuzz.sh share one compile of the

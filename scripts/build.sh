@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Configures and builds roomcad (Release, warnings as errors: ROOMCAD_WERROR) in build/, using
 # every core: the given targets, or everything (roomcad, the tests, the benchmarks) when none
 # is given. The README's two commands share this one build.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The main job on a bundled example: set up, build the roomcad executable (only it: no tests,
 # no benchmarks), then validate the plan, describe it, build and check its 3D model
 # (build/demo.obj), render a picture (build/demo.png) and draw its floor plan

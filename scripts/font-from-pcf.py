@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Prints the glyphs 32..126 of an X11 PCF bitmap font as the C++ rows of
 # view/detail/font_6x13.cpp (one byte per row, the leftmost pixel in the top bit), and the cell
 # size on stderr. The table was made with:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs each libFuzzer target (fuzz/) for a bounded time, seeded from fuzz/corpus/<target>/.
 # The targets are built in build-san/ by scripts/build-sanitized.sh (clang, ASan + UBSan),
 # sharing the libraries' compile with scripts/test-sanitized.sh. Fails if any target finds a
@@ -6,6 +7,12 @@
 # build-san/findings/<target>/. Runs as many targets at once as there are cores; prints each
 # target's executions and peak RSS.
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET (default 60)] [TARGET...]
+#
+# Without TARGETs: every reader target. fuzz_build and fuzz_render (degenerate plans through
+# the build and the renderer) run when named: between them they found a new bug in most of
+# their runs (all fixed, inputs in fuzz/corpus/{build,render}/crash-*; the last runs, 420 s
+# each, found nothing), so they join the default list once more runs stay clean. Their seed
+# corpora run in CTest (FuzzSeeds.*, RenderFuzzSeeds.*).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -15,7 +22,10 @@ source scripts/sanitizer-env.sh
 
 targets=("$@")
 if ((${#targets[@]} == 0)); then
-  for source in fuzz/fuzz_*.cpp; do targets+=("$(basename "$source" .cpp)"); done
+  for source in fuzz/fuzz_*.cpp; do
+    target=$(basename "$source" .cpp)
+    [[ $target == fuzz_build || $target == fuzz_render ]] || targets+=("$target")
+  done
 fi
 jobs=$(nproc)  # libFuzzer runs one thread: one target per core at a time
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Sourced by scripts/test-sanitized.sh and scripts/fuzz.sh: how the sanitizers of build-san/
 # report. Any report fails the run (the build has -fno-sanitize-recover=all; abort_on_error
 # makes ASan's exit visible to CTest and libFuzzer alike); leaks are reported at exit.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs, from Debian's packages, whatever roomcad needs that this machine lacks (toolchain
 # included); with --tests also the independent readers of the export tests (python3-ezdxf,
 # Node.js, and tests/readers' npm packages web-ifc and gltf-validator at the versions of its
@@ -17,9 +18,9 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenmesh-dev libglm-dev libeigen3-dev
   # formats, command line, threads, images, windows, archives
   nlohmann-json3-dev libsimdjson-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libsdl2-dev libzip-dev libpugixml-dev
-  # the Python module (python/) and its tests; dpkg-dev: `cpack -G DEB` reads Depends with
-  # dpkg-shlibdeps
-  python3-dev python3-pybind11 python3-numpy python3-pytest dpkg-dev
+  # the Python module (python/) and its tests; dpkg-dev and file: `cpack -G DEB` reads Depends
+  # with dpkg-shlibdeps, on the files that `file` says are executables and libraries
+  python3-dev python3-pybind11 python3-numpy python3-pytest dpkg-dev file
   # tests and benchmarks (Xvfb: a screen for the window tests of `roomcad view`; gnuplot draws
   # bench/report.sh's plots; admesh: an independent STL reader for the export tests; strace:
   # the durable-save tests watch the flushes and renames and inject their failures)

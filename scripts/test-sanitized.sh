@@ -1,11 +1,18 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer (clang,
 # -O1, build-san/, built by scripts/build-sanitized.sh, shared with scripts/fuzz.sh) through
 # CTest. Any sanitizer report fails the test that made it. Prints the time each half took.
 #
 # The random-plan stress tests run ROOMCAD_STRESS_PLANS plans (default here 100, the normal
 # suite's 1000 take over 20 min under ASan); each prints the count it used.
-# Usage: scripts/test-sanitized.sh [CTEST_REGEX]   (default: every test)
+#
+# Left out here (the Release suite runs them): the slow tests that build every bundled plan
+# again only to export or re-read it, or that time external readers. Under ASan they took
+# 150-217 s each, 700 s of 1351 s for the slow tests (2026-11-25, one core each), and the
+# code they run is what Sh3dBuild.HomesBuild*, BuildCommand's fast tests and the stress
+# tests run under the sanitizers already. ROOMCAD_SANITIZE_ALL=1 keeps them.
+# Usage: scripts/test-sanitized.sh [CTEST_REGEX]   (default: every test but those)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
@@ -14,5 +21,7 @@ built=$SECONDS
 source scripts/sanitizer-env.sh
 export ROOMCAD_STRESS_PLANS=${ROOMCAD_STRESS_PLANS:-100}
 echo "test-sanitized: ROOMCAD_STRESS_PLANS=$ROOMCAD_STRESS_PLANS"
-ctest --test-dir build-san --output-on-failure -j"$(nproc)" --timeout 1500 ${1:+-R "$1"}
+exclude="MeshExport\.(ObjOffAndPlyReadBackAsTheModel|StlIsTheModelRoundedClosedAndNeverFlat)|StlAdmesh\.|BuildCommand\.EveryExamplePlanBuildsAndChecks|IndependentReaders\."
+[[ ${ROOMCAD_SANITIZE_ALL:-0} == 1 ]] && exclude=""
+ctest --test-dir build-san --output-on-failure -j"$(nproc)" --timeout 1500 ${1:+-R "$1"} ${exclude:+-E "$exclude"}
 echo "test-sanitized: built in $((built - start)) s, tested in $((SECONDS - built)) s"

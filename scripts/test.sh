@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds everything (roomcad, the tests, the benchmarks; warnings are errors) and runs the
 # tests through CTest. Extra arguments go to ctest: `scripts/test.sh -L fast` runs the tests
 # labelled fast only (the labels: README, "Tests").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Generated grids of rooms for benchmarks and tests: n x n square rooms of `room` metres
 // between wall centres; every wall runs one cell, node to node (2 n (n + 1) walls). Inner
 // walls get a door, outer walls three windows (10 x 10: 220 walls, 180 doors, 120 windows);

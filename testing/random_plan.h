@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seeded random plans for tests: every field of the format exercised, including awkward values.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Generated grids of rooms for the render benchmarks, built as meshes directly (the same
 // shapes build_model makes: walls with a door or a window cut out, tiled floors, leaves and
 // panes), about 350 triangles per room: 10 x 10 rooms is ~35k triangles, 77 x 77 ~2.1M.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A report of problems found in a plan: what reading and validation return, printed by the CLI
 // as text or as the JSON of docs/plan-format.md ("Validation codes").
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Comparing two reports of the same plan before and after an edit: which errors are new.
 // Shared by the edit commands (cli/edit_session) and the window (view/), which both judge an
 // edit by the errors it introduces rather than by the errors the plan already had.

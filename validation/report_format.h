@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Printing a Report: the JSON object of docs/plan-format.md ("Validation codes") for
 // tools, and plain text for people.
 #pragma once

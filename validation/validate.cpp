@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // validate(): value checks, then ids and references, then exact geometry on what passed,
 // then warnings. Every check runs; nothing stops at the first problem.
 #include "validation/validate.h"

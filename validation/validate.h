@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Validation of a plan: every error code and warning of docs/plan-format.md, all
 // problems in one run, verdicts exact for the coordinates as read.
 #pragma once

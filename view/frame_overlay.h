@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The text over a frame: status and selection at the top left, the plan's errors in red under
 // them, one line of key help at the bottom.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the window reacts to, free of SDL: key presses by name, clicks, drags and wheel turns.
 // The SDL glue (view/sdl_window.cpp) turns SDL events into these, and `--keys` scripts are
 // parsed into the same events, so a script drives exactly what a person at the window does.

@@ -69,15 +69,6 @@ void append_solid(const SolidMesh& from, const std::vector<int>& objects, SolidM
   }
 }
 
-/// The objects of the whole plan, as build_model names them: walls, then openings.
-std::vector<std::string> object_ids(const Plan& plan) {
-  std::vector<std::string> ids;
-  ids.reserve(plan.walls.size() + plan.openings.size());
-  for (const Wall& w : plan.walls) ids.push_back(w.id);
-  for (const Opening& o : plan.openings) ids.push_back(o.id);
-  return ids;
-}
-
 }  // namespace
 
 std::shared_ptr<const ModelCache::Entry> ModelCache::find_or_build(Plan group,
@@ -112,7 +103,7 @@ Model ModelCache::build(const Plan& plan, const BuildOptions& options) {
   }
   stats_ = {};
   Model model;
-  model.objects = object_ids(plan);
+  model.objects = model_object_ids(plan);
   for (SolidMesh* mesh : {&model.walls, &model.floor, &model.fixtures}) add_face_properties(*mesh);
   std::unordered_map<std::string, std::shared_ptr<const Entry>> next;
   for (const std::vector<std::size_t>& walls : find_wall_groups(plan)) {

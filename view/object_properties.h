@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the window shows about the selected object: its kind, id and fields, one per line.
 #pragma once
 

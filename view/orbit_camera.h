@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Moving a camera the way a viewer does: orbit and rotate it about its target, pan, zoom and
 // switch between perspective and parallel projection. Cameras are the plan's Camera (eye,
 // target, up, fov, view height in metres), so a camera reached in the window can be rendered

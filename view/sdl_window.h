@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The window: SDL2 glue around a Viewer (view/viewer.h). The only file that knows SDL.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Text and panels drawn into a frame: the window's overlay (file, selection, messages, help).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "view/view_session.h"
 
 #include <algorithm>
@@ -14,8 +15,8 @@
 namespace roomcad {
 namespace {
 
-/// Every object id of a plan in plan order: walls, openings, lights, cameras.
-std::vector<std::string> object_ids(const Plan& plan) {
+/// The ids the window's Tab steps through, in plan order: walls, openings, lights, cameras.
+std::vector<std::string> selectable_ids(const Plan& plan) {
   std::vector<std::string> ids;
   for (const Wall& w : plan.walls) ids.push_back(w.id);
   for (const Opening& o : plan.openings) ids.push_back(o.id);
@@ -52,7 +53,7 @@ void ViewSession::select(std::optional<std::string> id) {
 }
 
 void ViewSession::select_next() {
-  const std::vector<std::string> ids = object_ids(plan_);
+  const std::vector<std::string> ids = selectable_ids(plan_);
   if (ids.empty()) return select(std::nullopt);
   auto it = selected_ ? std::find(ids.begin(), ids.end(), *selected_) : ids.end();
   select(it == ids.end() || it + 1 == ids.end() ? ids.front() : *(it + 1));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plan a window edits: selection, edits in grid steps, undo, validated saving and reloading
 // when the file changes on disk. Free of SDL and of rendering, so every behaviour is tested
 // without a window.

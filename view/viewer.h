@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The window's state and behaviour without the window: a session (the plan being edited), a
 // camera, display toggles and the frame they give. The SDL glue (view/sdl_window.h) only feeds
 // it inputs and shows its frames, so everything the window does is tested headless here.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What each key's action does to the viewer: camera moves, display toggles and edits.
 #include <algorithm>
 

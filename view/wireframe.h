@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The wireframe toggle: every triangle edge of the scene drawn over the frame.
 #pragma once
 

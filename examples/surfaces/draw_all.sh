@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Draws the 15 test surfaces of the Tomsk lab manual (seed 002, lab 4) with `roomcad surface`.
 # Usage: draw_all.sh OUT_DIR [svg|png] [extra roomcad surface options...]
 # The roomcad binary is $ROOMCAD, else build/roomcad of this checkout.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading the `Home.xml` entry of a Sweet Home 3D `.sh3d` file (a ZIP archive), with libzip.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The parts of a Sweet Home 3D `Home.xml` that roomcad imports, already in roomcad's frame.
 //
 // Sweet Home 3D writes centimetres in screen coordinates (x right, y down, angles clockwise in

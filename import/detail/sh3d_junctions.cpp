@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/detail/sh3d_junctions.h"
 
 #include <cmath>

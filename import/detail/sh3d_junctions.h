@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Making Sweet Home 3D's wall junctions meet roomcad's join rule (end points on a centre line).
 //
 // Sweet Home 3D joins walls by reference (wallAtStart/wallAtEnd) and draws a T-junction as a

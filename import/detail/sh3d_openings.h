@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sweet Home 3D doors and windows to plan openings. The file does not say which wall holds a
 // door or window, so each is given to a wall by geometry, as Sweet Home 3D itself does.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sweet Home 3D walls to plan walls (plan format version 2): on their levels, with their sloped
 // tops and arcs, and joined end points made to coincide exactly.
 #pragma once

@@ -46,14 +46,15 @@ double distance_to_segment(Point2 p, Point2 a, Point2 b) {
 }
 
 /// The wall that the end `e` of wall `w` stops on as a T, if it is exactly one.
-std::optional<std::size_t> t_host(const Plan& plan, const Joins& joins, std::size_t w, WallEnd e) {
+std::optional<std::size_t> t_host(const JoinedWalls& walls, std::size_t w, WallEnd e) {
+  const Plan& plan = walls.plan;
   const Wall& wall = plan.walls[w];
   const Point2 end = e == WallEnd::from ? wall.from : wall.to;
   const double tol = plan.site.tolerance;
   std::optional<std::size_t> host;
   int meetings = 0;
-  for (const Join& join : joins.pairs) {
-    if (join.a != w && join.b != w) continue;
+  for (const std::size_t j : walls.joins_of[w]) {
+    const Join& join = walls.joins.pairs[j];
     const std::size_t other = join.a == w ? join.b : join.a;
     const Wall& o = plan.walls[other];
     if (distance_to_segment(end, o.from, o.to) > tol) continue;
@@ -132,14 +133,14 @@ int IfcShapeWriter::face_set(const std::vector<std::array<double, 3>>& points,
   return set;
 }
 
-int IfcShapeWriter::product_shape(const std::string& type, int item, int axis) {
+int IfcShapeWriter::product_shape(const std::string& type, const std::vector<int>& items, int axis) {
   std::vector<int> representations;
   if (axis >= 0) {
     representations.push_back(out.add("IFCSHAPEREPRESENTATION", step::ref(axis_context) +
                                                                     ",'Axis','Curve2D',(" + step::ref(axis) + ')'));
   }
   representations.push_back(out.add(
-      "IFCSHAPEREPRESENTATION", step::ref(body_context) + ",'Body','" + type + "',(" + step::ref(item) + ')'));
+      "IFCSHAPEREPRESENTATION", step::ref(body_context) + ",'Body','" + type + "'," + refs(items)));
   return out.add("IFCPRODUCTDEFINITIONSHAPE", "$,$," + refs(representations));
 }
 
@@ -164,11 +165,20 @@ void IfcShapeWriter::style(int item, Color color) {
   out.add("IFCSTYLEDITEM", step::ref(item) + ",(" + step::ref(style_of(color)) + "),$");
 }
 
-std::array<Point2, 4> export_footprint(const Plan& plan, const Joins& joins, std::size_t w) {
-  std::array<Point2, 4> f = wall_footprint(plan, joins, w);
+JoinedWalls::JoinedWalls(const Plan& plan, const Joins& joins)
+    : plan(plan), joins(joins), joins_of(plan.walls.size()) {
+  for (std::size_t j = 0; j < joins.pairs.size(); ++j) {
+    joins_of[joins.pairs[j].a].push_back(j);
+    joins_of[joins.pairs[j].b].push_back(j);
+  }
+}
+
+std::array<Point2, 4> export_footprint(const JoinedWalls& walls, std::size_t w) {
+  const Plan& plan = walls.plan;
+  std::array<Point2, 4> f = wall_footprint(plan, walls.joins, w);
   const Wall& wall = plan.walls[w];
   for (const WallEnd e : {WallEnd::from, WallEnd::to}) {
-    const std::optional<std::size_t> host = t_host(plan, joins, w, e);
+    const std::optional<std::size_t> host = t_host(walls, w, e);
     if (!host) continue;
     const Wall& h = plan.walls[*host];
     const Point2 hd = minus(h.to, h.from);
@@ -187,10 +197,11 @@ std::array<Point2, 4> export_footprint(const Plan& plan, const Joins& joins, std
   return f;
 }
 
-int wall_axis(IfcShapeWriter& shapes, const Wall& wall) {
-  const int a = shapes.point(wall.from);
-  const int b = shapes.point(wall.to);
-  return shapes.out.add("IFCPOLYLINE", '(' + step::ref(a) + ',' + step::ref(b) + ')');
+int wall_axis(IfcShapeWriter& shapes, const std::vector<Point2>& line) {
+  std::vector<int> points;
+  points.reserve(line.size());
+  for (const Point2& p : line) points.push_back(shapes.point(p));
+  return shapes.out.add("IFCPOLYLINE", refs(points));
 }
 
 int wall_body(IfcShapeWriter& shapes, const Wall& wall, const std::array<Point2, 4>& footprint) {
@@ -215,6 +226,30 @@ int wall_body(IfcShapeWriter& shapes, const Wall& wall, const std::array<Point2,
     triangles.push_back({k, n + 4, k + 4});
   }
   return shapes.face_set(points, triangles, wall.color);
+}
+
+int chord_piece_void(IfcShapeWriter& shapes, const Wall& chord, const std::array<Point2, 4>& footprint,
+                     const Opening& piece, std::array<bool, 2> mitred) {
+  const Point2 d = minus(chord.to, chord.from);
+  const double length = std::hypot(d.x, d.y);
+  const Point2 along{d.x / length, d.y / length}, left{-along.y, along.x};
+  // Per end, its right and its left point, a thickness from the centre line (twice the
+  // half-thickness the footprint reaches: through both faces with room to spare).
+  auto square = [&](double u) {
+    const Point2 c{chord.from.x + along.x * u, chord.from.y + along.y * u};
+    const double t = chord.thickness;
+    return std::array<Point2, 2>{Point2{c.x - left.x * t, c.y - left.y * t}, Point2{c.x + left.x * t, c.y + left.y * t}};
+  };
+  auto on_mitre = [&](Point2 right, Point2 left_corner) {
+    const Point2 half{(left_corner.x - right.x) / 2, (left_corner.y - right.y) / 2};
+    return std::array<Point2, 2>{Point2{right.x - half.x, right.y - half.y},
+                                 Point2{left_corner.x + half.x, left_corner.y + half.y}};
+  };
+  // Footprint corners: from-right 0, to-right 1, to-left 2, from-left 3.
+  const auto start = mitred[0] ? on_mitre(footprint[0], footprint[3]) : square(piece.offset);
+  const auto end = mitred[1] ? on_mitre(footprint[1], footprint[2]) : square(piece.offset + piece.width);
+  const int position = shapes.placement({0.0, 0.0}, piece.sill, {0.0, 0.0, 1.0}, {1.0, 0.0, 0.0});
+  return shapes.extrusion({start[0], end[0], end[1], start[1]}, {}, position, piece.height, chord.color);
 }
 
 }  // namespace roomcad::io_detail

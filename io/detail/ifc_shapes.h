@@ -40,28 +40,50 @@ struct IfcShapeWriter {
   int face_set(const std::vector<std::array<double, 3>>& points,
                const std::vector<std::array<int, 3>>& triangles, Color color);
   /// @return an IFCPRODUCTDEFINITIONSHAPE of a 'Body' representation of type `type`
-  ///   ('SweptSolid', 'Tessellation') holding `item`, and, if axis >= 0, an 'Axis' one.
-  int product_shape(const std::string& type, int item, int axis = -1);
+  ///   ('SweptSolid', 'Tessellation') holding `items`, and, if axis >= 0, an 'Axis' one.
+  int product_shape(const std::string& type, const std::vector<int>& items, int axis = -1);
 
  private:
   int style_of(Color color);
   void style(int item, Color color);
 };
 
+/// A plan's walls with their joins, and each wall's joins (indices into joins.pairs), so that
+/// a wall's joins are found in O(its joins).
+struct JoinedWalls {
+  JoinedWalls(const Plan& plan, const Joins& joins);
+  const Plan& plan;
+  const Joins& joins;
+  std::vector<std::vector<std::size_t>> joins_of;
+};
+
 /// The footprint the export gives each wall: wall_footprint (mitred ends), and at the end of a
 /// wall that stops on another's centre line (a T: the end within tolerance of exactly one other
 /// wall's centre line, away from its ends) cut back to that wall's face, so that joined walls'
 /// bodies do not overlap and their volumes add up to the united solid's.
-/// @param plan heights absolute (with_absolute_heights), validated; @param joins find_joins(plan).
+/// @param walls a plan with heights absolute (with_absolute_heights), validated, and
+///   find_joins of it.
 /// @return corners counter-clockwise, as wall_footprint. O(joins of the wall).
-[[nodiscard]] std::array<Point2, 4> export_footprint(const Plan& plan, const Joins& joins,
-                                                     std::size_t wall);
+[[nodiscard]] std::array<Point2, 4> export_footprint(const JoinedWalls& walls, std::size_t wall);
 
-/// @return the Axis representation's IFCPOLYLINE from the wall's `from` to its `to`.
-int wall_axis(IfcShapeWriter& shapes, const Wall& wall);
+/// @return the Axis representation's IFCPOLYLINE through `line` (a wall's from, its chord
+///   corners if it is an arc, and its to).
+int wall_axis(IfcShapeWriter& shapes, const std::vector<Point2>& line);
 
 /// @return the body item of a wall whose base is at z = 0 of its placement: an extrusion of the
 ///   footprint when its top is level, else a face set (the top the plane through its top edge).
 int wall_body(IfcShapeWriter& shapes, const Wall& wall, const std::array<Point2, 4>& footprint);
+
+/// The void of one piece of an opening in an arc wall: the part of the opening on one chord
+/// (with_arcs_as_chords), as the build cuts it. In plan, the piece's span along the chord
+/// reaching one thickness to either side of its centre line (past both faces), ending square
+/// or, where the piece runs on into the next chord, on the chords' mitre line (the footprint's
+/// end there); extruded up from the sill by the height.
+/// @param chord     the chord wall; @param footprint its export_footprint
+/// @param piece     the piece on it (offset and width along the chord, sill, height)
+/// @param mitred    per end (from, to): the piece runs on through the mitre there
+/// @return the IFCEXTRUDEDAREASOLID, in the wall's placement (z = 0 at its base). O(1).
+int chord_piece_void(IfcShapeWriter& shapes, const Wall& chord, const std::array<Point2, 4>& footprint,
+                     const Opening& piece, std::array<bool, 2> mitred);
 
 }  // namespace roomcad::io_detail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/detail/json_text.h"
 
 #include <algorithm>

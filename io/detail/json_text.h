@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pieces of canonical JSON text: numbers, strings and whole values.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/detail/plan_reader.h"
 
 #include <simdjson.h>

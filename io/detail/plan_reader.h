@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // From the text of a plan file to a Plan, through the field tables (modeling/plan_fields.h):
 // types, enums, defaults, units, versions and unknown fields.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // JSON parsing that remembers where every key and value starts in the text, so that the plan
 // reader can point at the exact line and column of a wrong value (nlohmann's DOM has no positions).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The faces of the walls' centre-line arrangement, behind a plain header (CGAL inside).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CGAL's box intersection behind the plain interface of modeling/broad_phase.h.
 #include "modeling/broad_phase.h"
 

@@ -10,23 +10,12 @@
 
 #include "core/error.h"
 #include "modeling/arc_chords.h"
+#include "modeling/detail/wall_frame.h"
+#include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 
 namespace roomcad::detail {
 namespace {
-
-void refuse_unbuilt(const Plan& plan) {
-  for (const Wall& w : plan.walls)
-    if (w.height_at_end && *w.height_at_end != w.height)
-      throw PreconditionError(fmt::format("build_model: wall '{}' has a sloped top (height {}, height_at_end {}), "
-                                          "which this build does not make yet", w.id, w.height, *w.height_at_end),
-                              Code::not_buildable);
-  for (const Opening& o : plan.openings)
-    if (!o.shape.empty())
-      throw PreconditionError(fmt::format("build_model: opening '{}' has a shape ({} corners), which this build "
-                                          "does not cut yet", o.id, o.shape.size()),
-                              Code::not_buildable);
-}
 
 // The openings of an arc wall as pieces on its chords: the span [offset, offset + width] along
 // the polyline cut at the chords' corners. A piece ending within rounding of its chord's end
@@ -51,6 +40,13 @@ void split_openings(const Plan& in, std::size_t wall, const std::vector<std::siz
       Opening piece = o;
       piece.wall = out.plan.walls[chords[k]].id;
       piece.offset = from, piece.width = to - from;
+      // A shape's hole would have to run on through the mitre planes as a rectangle's does;
+      // refused rather than cut as separate holes with wall left between them.
+      if (!o.shape.empty() && (o.offset - start[k] < 0.0 || to < o.offset + o.width - start[k]))
+        throw PreconditionError(fmt::format("build_model: opening '{}' has a shape and spans corners of the chords "
+                                            "of arc wall '{}', which the build does not cut yet; make it rectangular "
+                                            "or narrow it to one chord", o.id, in.walls[wall].id),
+                                Code::not_buildable);
       out.plan.openings.push_back(std::move(piece));
       out.opening_of.push_back(i);
       out.through_mitre.push_back({k > 0 && from == 0.0, k + 1 < chords.size() && to == length});
@@ -61,9 +57,9 @@ void split_openings(const Plan& in, std::size_t wall, const std::vector<std::siz
 }  // namespace
 
 BuildablePlan make_buildable(const Plan& plan) {
-  refuse_unbuilt(plan);
   BuildablePlan b;
   b.input_walls = plan.walls.size();
+  b.input_openings = plan.openings.size();
   const Plan resolved = with_absolute_heights(plan);
   b.plan = resolved;
   b.plan.walls.clear();
@@ -73,16 +69,14 @@ BuildablePlan make_buildable(const Plan& plan) {
   std::vector<std::size_t> arcs;
   for (std::size_t i = 0; i < resolved.walls.size(); ++i) {
     const Wall& w = resolved.walls[i];
-    const std::vector<Point2> line = chord_polyline(w, tolerance);
-    if (line.size() > 2) arcs.push_back(i);
-    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
-      Wall chord = w;
-      chord.from = line[k], chord.to = line[k + 1], chord.arc_extent.reset();
-      if (line.size() > 2) {
-        chord.id = fmt::format("{} (chord {} of {})", w.id, k + 1, line.size() - 1);
+    std::vector<Wall> chords = chord_walls(w, chord_polyline(w, tolerance));
+    if (chords.size() > 1) arcs.push_back(i);
+    for (std::size_t k = 0; k < chords.size(); ++k) {
+      if (chords.size() > 1) {
+        chords[k].id = fmt::format("{} (chord {} of {})", w.id, k + 1, chords.size());
         chords_of[w.id].push_back(b.plan.walls.size());
       }
-      b.plan.walls.push_back(std::move(chord));
+      b.plan.walls.push_back(std::move(chords[k]));
       b.wall_of.push_back(i);
     }
   }
@@ -100,11 +94,14 @@ BuildablePlan make_buildable(const Plan& plan) {
 
 void label_input_objects(const BuildablePlan& b, std::vector<FaceSoup>& soups) {
   const int walls = static_cast<int>(b.plan.walls.size());
+  const int first_slab = slab_object(b.plan, 0);  // slabs are neither split nor reordered
+  const int input_first_slab = static_cast<int>(b.input_walls + b.input_openings);
   for (FaceSoup& soup : soups)
     for (SoupFace& f : soup) {
       if (f.object < 0) continue;
-      f.object = f.object < walls ? static_cast<int>(b.wall_of[std::size_t(f.object)])
-                                  : static_cast<int>(b.input_walls + b.opening_of[std::size_t(f.object - walls)]);
+      f.object = f.object < walls        ? static_cast<int>(b.wall_of[std::size_t(f.object)])
+                 : f.object < first_slab ? static_cast<int>(b.input_walls + b.opening_of[std::size_t(f.object - walls)])
+                                         : input_first_slab + (f.object - first_slab);
     }
 }
 

@@ -24,15 +24,16 @@ struct BuildablePlan {
   /// (make_wall_frames' through_mitre).
   std::vector<std::array<bool, 2>> through_mitre;
   std::size_t input_walls = 0;          ///< the input plan's wall count
+  std::size_t input_openings = 0;       ///< the input plan's opening count
 };
 
-/// @return the plan as built. @throws PreconditionError (not_buildable) naming the object
-///         for what the build does not do yet: a sloped top (height_at_end other than
-///         height) or a shaped opening; as chord_polyline does for an arc. O(n + chords).
+/// @return the plan as built (slabs kept in order, their tops absolute).
+/// @throws PreconditionError (not_buildable) naming the wall, as chord_polyline does for an
+///         arc it cannot build. O(n + chords).
 [[nodiscard]] BuildablePlan make_buildable(const Plan& plan);
 
 /// Relabels faces built from `b.plan` (Model::objects indices of it: its walls, then its
-/// openings) with the input plan's indices. O(faces).
+/// openings, then its slabs) with the input plan's indices. O(faces).
 void label_input_objects(const BuildablePlan& b, std::vector<FaceSoup>& soups);
 
 }  // namespace roomcad::detail

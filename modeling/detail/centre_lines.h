@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The centre-line pieces rooms are found on (see rooms.cpp).
 #pragma once
 

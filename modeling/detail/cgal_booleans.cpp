@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/detail/cgal_booleans.h"
 
 #include <array>
@@ -60,13 +61,16 @@ std::string wall_list(std::span<const WallFrame* const> walls) {
 }
 
 // The result's points rounded to doubles, snapped where they round to within a few ulps of
-// each other (snap_soup), and its polygons over them.
+// each other (snap_soup: points that are exact doubles stay apart), and its polygons over them.
 IndexedSoup round_soup(const std::vector<EK::Point_3>& exact, std::vector<std::vector<std::size_t>> polygons) {
   IndexedSoup out;
   out.points.reserve(exact.size());
-  for (const EK::Point_3& p : exact)
-    out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
-                            round_to_nearest(p.z()) + 0.0);
+  out.exact.reserve(exact.size());
+  for (const EK::Point_3& p : exact) {
+    const OpenMesh::Vec3d& r = out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
+                                                       round_to_nearest(p.z()) + 0.0);
+    out.exact.push_back(EK::FT(r[0]) == p.x() && EK::FT(r[1]) == p.y() && EK::FT(r[2]) == p.z());
+  }
   out.polygons = std::move(polygons);
   const double tolerance = snap_tolerance(out.points);
   return snap_soup(std::move(out), tolerance);
@@ -104,6 +108,12 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
 }  // namespace
 
 FaceSoup build_cluster_cgal(std::span<const WallFrame* const> walls, int first_opening_object) {
+  // The reference path builds prisms: flat tops and rectangular holes only.
+  for (const WallFrame* f : walls)
+    if (needs_general_path(*f))
+      throw PreconditionError(fmt::format("build_model: wall #{} has a sloped top or a shaped opening, which "
+                                          "the Nef path (--boolean nef) does not build; the default path does",
+                                          f->wall), Code::not_buildable);
   std::vector<Nef> prisms, holes;
   // A footprint or hole with no area, or a height that rounds to nothing, has no volume.
   for (const WallFrame* f : walls) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The general path: CGAL's exact Nef polyhedra. A cluster of walls is united (balanced tree),
 // the union of all its holes is subtracted in one batch, and the result's facets (maximal
 // coplanar regions, every boundary vertex included, so no T-junctions) become faces.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/detail/classify_face.h"
 
 #include <cmath>
@@ -52,7 +53,7 @@ bool label_hole_face(const WallFrame& f, const Hole& h, std::span<const OpenMesh
 std::size_t count_inside(const WallFrame& f, std::span<const OpenMesh::Vec3d> points, double eps) {
   std::size_t count = 0;
   for (const auto& p : points) {
-    if (p[2] < f.base - eps || p[2] > f.top + eps) continue;
+    if (p[2] < f.base - eps || p[2] > f.top_max + eps) continue;
     bool inside = true;
     for (std::size_t k = 0; k < 4 && inside; ++k) {
       const Point2 a = f.footprint[k], b = f.footprint[(k + 1) % 4];

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a face of a boolean result is (wall side, top, jamb, ...) and which object owns it,
 // found from its plane and position against the walls and holes that made it.
 #pragma once

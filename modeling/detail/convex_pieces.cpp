@@ -1,8 +1,12 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/detail/convex_pieces.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Partition_traits_2.h>
+#include <CGAL/partition_2.h>
 #include <fmt/format.h>
 
 #include "modeling/build_model.h"
@@ -53,8 +57,51 @@ PlaneRef plane_at_u(PlaneSet& set, const WallFrame& f, double u, int outward) {
 
 PlaneRef plane_at_z(PlaneSet& set, double z, int outward) { return axis_plane(set, 2, z, 0.0, outward); }
 
+// The plane of a sloped top (docs/plan-format.md, height_at_end): through the top at `from`
+// and at `to`, rising by exactly height_at_end - height; above it is outside.
+PlaneRef sloped_top_plane(PlaneSet& set, const WallFrame& f) {
+  PlaneRecipe r;
+  r.kind = PlaneRecipe::Kind::sloped_top;
+  r.v[0] = f.from.x, r.v[1] = f.from.y, r.v[2] = f.to.x, r.v[3] = f.to.y;
+  r.v[4] = f.top, r.v[5] = f.heights[1], r.v[6] = f.heights[0];
+  return {set.add(r), 1};
+}
+
+// The line in the wall's plane through two corners (s, t) of a shape, mapped to u = u0 + s *
+// width along the wall and z = z0 + t * height; for corners in counter-clockwise order the
+// shape is on its negative side.
+PlaneRef shape_edge_plane(PlaneSet& set, const WallFrame& f, const Hole& h, Point2 a, Point2 b) {
+  PlaneRecipe r;
+  r.kind = PlaneRecipe::Kind::frame_edge;
+  r.v = {f.from.x, f.from.y, f.dir.x, f.dir.y, h.u0, h.width, a.x, a.y, b.x, b.y, h.z0, h.height};
+  return {set.add(r), 1};
+}
+
+// The shape's convex parts, each counter-clockwise: the shape itself when it is convex, else
+// CGAL's approximate convex partition (diagonals between its corners: no new points).
+std::vector<Polygon> convex_parts(const Polygon& shape) {
+  using Traits = CGAL::Partition_traits_2<CGAL::Epick>;
+  std::vector<Traits::Point_2> points;
+  for (const Point2& p : shape) points.emplace_back(p.x, p.y);
+  Traits::Polygon_2 polygon(points.begin(), points.end());
+  if (polygon.is_clockwise_oriented()) polygon.reverse_orientation();
+  std::vector<Polygon> parts;
+  auto to_part = [](const Traits::Polygon_2& q) {
+    Polygon part;
+    for (const auto& p : q.container()) part.push_back({p.x(), p.y()});
+    return part;
+  };
+  if (polygon.is_convex()) return {to_part(polygon)};
+  std::vector<Traits::Polygon_2> pieces;
+  CGAL::approx_convex_partition_2(polygon.vertices_begin(), polygon.vertices_end(), std::back_inserter(pieces));
+  for (const auto& q : pieces) parts.push_back(to_part(q));
+  return parts;
+}
+
+// An explicit point with one coordinate replaced: its homogeneous coordinates too (W = 1),
+// which the predicates against planes that are not axis planes read.
 XPoint with_coordinate(XPoint p, int axis, double value) {
-  p.approx[std::size_t(axis)] = Interval(value);
+  p.approx[std::size_t(axis)] = p.hom[std::size_t(axis)] = Interval(value);
   return p;
 }
 
@@ -150,6 +197,12 @@ bool is_strictly_convex(const PlaneSet& set, const std::array<Point2, 4>& c, con
 std::optional<Primitive> make_wall_piece(PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
                                          const std::array<PlaneRef, 4>& sides, const std::vector<PlaneRef>& lines,
                                          const std::string& name) {
+  if (is_sloped(f)) {
+    std::vector<PlaneRef> planes = lines;
+    planes.push_back(plane_at_z(set, f.base, -1));
+    planes.push_back(sloped_top_plane(set, f));
+    return make_convex(set, box, planes);
+  }
   if (!(f.base < f.top)) return std::nullopt;
   const PlaneRef c0 = plane_at_z(set, f.base, -1), c1 = plane_at_z(set, f.top, 1);
   PlanePolygon base{{c0.id, -c0.sign}, {}, {}};
@@ -167,6 +220,43 @@ std::optional<Primitive> make_wall_piece(PlaneSet& set, const BoxPlanes& box, co
   return make_prism(set, base, c0, c1);
 }
 
+// The wall's side planes oriented so that the wall's centre line is on their negative side.
+// The corners' order does not say which when a mitre overshoots the other end (a "bow-tie"
+// wall; exact_hole_footprint spans the same lines). @return nullopt for a wall thinner than
+// the doubles (both side lines through its centre line): it holds no hole.
+std::optional<std::array<PlaneRef, 2>> inward_sides(const PlaneSet& set, const WallFrame& f,
+                                                    const std::array<PlaneRef, 4>& sides) {
+  auto inward = [&](PlaneRef side_plane) -> std::optional<PlaneRef> {
+    int s = side(set, side_plane, make_point(f.from.x, f.from.y, 0.0));
+    if (s == 0) s = side(set, side_plane, make_point(f.to.x, f.to.y, 0.0));
+    if (s == 0) return std::nullopt;
+    return PlaneRef{side_plane.id, s < 0 ? side_plane.sign : -side_plane.sign};
+  };
+  const auto right = inward(sides[0]), left = inward(sides[2]);
+  if (!right || !left) return std::nullopt;
+  return std::array<PlaneRef, 2>{*right, *left};
+}
+
+// The hole of a shaped opening: each convex part of its outline through the wall.
+void add_shaped_hole(PlaneSet& set, const BoxPlanes& box, const WallFrame& f, const Hole& h,
+                     const std::array<PlaneRef, 4>& sides, const std::string& name, std::vector<Primitive>& out) {
+  const auto walls_sides = inward_sides(set, f, sides);
+  if (!walls_sides) return;
+  const auto [c0, c1] = *walls_sides;
+  for (const Polygon& part : convex_parts(h.shape)) {
+    std::vector<PlaneRef> outline;
+    for (std::size_t i = 0; i < part.size(); ++i)
+      if (part[i] != part[(i + 1) % part.size()])
+        outline.push_back(shape_edge_plane(set, f, h, part[i], part[(i + 1) % part.size()]));
+    auto poly = intersect_half_planes(set, box, {c0.id, -c0.sign}, outline, name);
+    if (!poly) continue;
+    Primitive p = make_prism(set, *poly, c0, c1);
+    p.kind = Primitive::Kind::hole;
+    p.opening = h.opening;
+    out.push_back(std::move(p));
+  }
+}
+
 // The hole of an opening: its outline in the wall's plane between the two side planes.
 std::optional<Primitive> make_hole_piece(PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
                                          const Hole& h, const std::array<PlaneRef, 4>& sides,
@@ -180,18 +270,10 @@ std::optional<Primitive> make_hole_piece(PlaneSet& set, const BoxPlanes& box, co
                                       plane_at_z(set, h.z1, 1),
                                       to_cap ? sides[1] : plane_at_u(set, f, h.u1, 1)};
   // The hole lies between the wall's two side lines, on the side of each where the wall's
-  // centre line is: the corners' order does not say which when a mitre overshoots the other
-  // end (a "bow-tie" wall; exact_hole_footprint spans the same lines). A wall thinner than
-  // the doubles (both side lines through its centre line) holds no hole.
-  auto inward = [&](PlaneRef side_plane) -> std::optional<PlaneRef> {
-    int s = side(set, side_plane, make_point(f.from.x, f.from.y, 0.0));
-    if (s == 0) s = side(set, side_plane, make_point(f.to.x, f.to.y, 0.0));
-    if (s == 0) return std::nullopt;
-    return PlaneRef{side_plane.id, s < 0 ? side_plane.sign : -side_plane.sign};
-  };
-  const auto right = inward(sides[0]), left = inward(sides[2]);
-  if (!right || !left) return std::nullopt;
-  const PlaneRef c0 = *right, c1 = *left;
+  // centre line is.
+  const auto walls_sides = inward_sides(set, f, sides);
+  if (!walls_sides) return std::nullopt;
+  const auto [c0, c1] = *walls_sides;
   std::optional<Primitive> made;
   if (from_cap || to_cap) {
     // An end's plane is not parallel to the jambs (its corners are rounded): over the
@@ -292,8 +374,23 @@ bool clip_polygon(const PlaneSet& set, PlanePolygon& poly, PlaneRef h) {
   return poly.lines.size() >= 3;
 }
 
+// A convex piece of a slab (counter-clockwise doubles, strictly convex) between its bottom and
+// top.
+Primitive make_slab_piece(PlaneSet& set, const SlabFrame& s, const Polygon& piece) {
+  const PlaneRef c0 = plane_at_z(set, s.bottom, -1), c1 = plane_at_z(set, s.top, 1);
+  PlanePolygon base{{c0.id, -c0.sign}, {}, {}};
+  const std::size_t n = piece.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2 q = piece[(i + 1) % n];
+    base.lines.push_back(plane_through(set, piece[i], q));
+    base.vertices.push_back(make_point(q.x, q.y, s.bottom));
+  }
+  return make_prism(set, base, c0, c1);
+}
+
 std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
-                                       const std::vector<const WallFrame*>& walls) {
+                                       const std::vector<const WallFrame*>& walls,
+                                       const std::vector<const SlabFrame*>& slabs) {
   std::vector<Primitive> out;
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const WallFrame& f = *walls[w];
@@ -311,12 +408,21 @@ std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
       out.push_back(std::move(*piece));
     }
     if (lines.size() < 4) continue;  // holds no hole (make_wall_frames refuses such a hole)
-    for (const Hole& h : f.holes)
-      if (auto hole = make_hole_piece(set, box, f, h, sides, name)) {
-        hole->frame = w;
+    for (const Hole& h : f.holes) {
+      const std::size_t first = out.size();
+      if (!h.shape.empty()) {
+        add_shaped_hole(set, box, f, h, sides, name, out);
+      } else if (auto hole = make_hole_piece(set, box, f, h, sides, name)) {
         out.push_back(std::move(*hole));
       }
+      for (std::size_t k = first; k < out.size(); ++k) out[k].frame = w;
+    }
   }
+  for (std::size_t s = 0; s < slabs.size(); ++s)
+    for (const Polygon& piece : slabs[s]->pieces) {
+      out.push_back(make_slab_piece(set, *slabs[s], piece));
+      out.back().slab = s;
+    }
   return out;
 }
 

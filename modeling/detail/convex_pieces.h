@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The primitives of the general build path: convex polyhedra in plane-based form
 // (exact_planes.h). A wall piece is its convex footprint between its base and its top (a
 // horizontal or sloped plane); an opening's hole is its convex outline in the wall's vertical
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "modeling/detail/exact_planes.h"
+#include "modeling/detail/slab_frames.h"
 #include "modeling/detail/wall_frame.h"
 
 namespace roomcad::detail {
@@ -51,22 +53,27 @@ struct Box3 {
   std::array<double, 3> low{}, high{};
 };
 
-/// A convex polyhedron: a solid (wall piece) or a hole (an opening's, or a convex part of it).
+/// A convex polyhedron: a solid (wall piece, or a convex piece of a slab) or a hole (an
+/// opening's, or a convex part of it).
 struct Primitive {
+  static constexpr std::size_t kNoSlab = SIZE_MAX;
   enum class Kind : std::uint8_t { solid, hole } kind = Kind::solid;
   std::size_t frame = 0;    ///< index of its wall in the walls given to the builder
+  std::size_t slab = kNoSlab;  ///< for a slab's piece: index of its slab in the slabs given
   std::size_t opening = 0;  ///< Plan::openings index, for a hole
   std::vector<PlanePolygon> faces;  ///< plane: outward; counter-clockwise seen from outside
   std::vector<XPoint> vertices;
   Box3 box;
 };
 
-/// The primitives of walls and their holes, in order: each wall's piece then its holes.
+/// The primitives of walls and their holes, in order: each wall's piece then its holes; then
+/// each slab's pieces.
 /// @param[in,out] set  receives every plane used.
 /// @return primitives; a wall or hole with no volume in doubles (a footprint of no area, a
-///         height that rounds to 0) has none. Cost O(walls + holes) predicates.
+///         height that rounds to 0) has none. Cost O(walls + holes + slab corners) predicates.
 [[nodiscard]] std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
-                                                     const std::vector<const WallFrame*>& walls);
+                                                     const std::vector<const WallFrame*>& walls,
+                                                     const std::vector<const SlabFrame*>& slabs);
 
 /// Replaces every plane id in the primitives by its group's (PlaneSet::find_equal_planes).
 void use_plane_groups(std::vector<Primitive>& primitives, const std::vector<PlaneRef>& groups);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The decimal-exact primitives behind modeling/transform2d.h (exact_dot, apply_exactly). GMP
 // integers hold decimal mantissas; the only rounding is the final strtod, which glibc rounds
 // correctly.

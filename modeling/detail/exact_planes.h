@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plane-based exact geometry for the general build path (general_solid.h).
 //
 // Every face of the solid lies on a plane of some primitive (a wall piece, a hole), and every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact (CGAL Epeck) shapes of a wall and its holes, shared by the CGAL path and the
 // analytic volume so that both compute the very same solid. Include only from the few
 // translation units that use CGAL.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Faces as loose polygons ("a soup") before they become one OpenMesh mesh: what each builder
 // (fast path, CGAL path, floor, fixtures) returns, so that builders run in parallel and the
 // mesh is assembled once, in plan order, whatever the thread count.

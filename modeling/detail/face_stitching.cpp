@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/detail/face_stitching.h"
 
 #include <algorithm>
@@ -134,6 +135,15 @@ std::pair<int, int> edge_axis(PointCache& exact, std::size_t u, std::size_t v, c
   return {0, 0};
 }
 
+// Whether rounded point i is its exact point (the only one behind it), not a rounding.
+bool is_exact_corner(PointTable& t, std::size_t i) {
+  if (t.exact_of[i].size() != 1) return false;
+  const std::size_t e = t.exact_of[i].front();
+  for (int k = 0; k < 3; ++k)
+    if (t.exact.compare(e, t.points[i][k], k) != 0) return false;
+  return true;
+}
+
 }  // namespace
 
 IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
@@ -174,6 +184,8 @@ IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& face
     out.polygons.push_back(std::move(result));
     out.tags.push_back(fi);
   }
+  out.exact.reserve(t.points.size());
+  for (std::size_t i = 0; i < t.points.size(); ++i) out.exact.push_back(is_exact_corner(t, i));
   out.points = std::move(t.points);
   return out;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stitching the general path's faces into one surface: faces from different planes meet
 // along shared lines, and where a vertex of one lies inside an edge of another (a
 // T-junction), it is inserted into that edge, exactly: the vertex lies on the edge's plane

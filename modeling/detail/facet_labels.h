@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One colour per merged facet. A boolean result's facet that spans several joined walls comes
 // back triangulated when it has holes, and labelling each triangle on its own (the wall holding
 // most of its corners) paints a diagonal colour boundary across the facet. The triangles of one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The exact fast path: a wall that needs no general boolean (its holes are clear of its
 // capless ends, and it meets other walls only through mitres, hubs and tees of equal base and
 // height) is built directly. Its (u, z) face is cut by the holes' edges into a grid of cells,

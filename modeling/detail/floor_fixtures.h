@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The parts of the model that need no boolean: the tiled floor and the fixtures (door leaves
 // and window panes as thin boxes set in their holes).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // wall_footprint: mitred corners constructed exactly (exact::Radical), then rounded to nearest.
 #include <cmath>
 #include <limits>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fewer triangles on the fast path: where two collinear walls meet a stem at a hub, the hub
 // has a corner on their common outer side (top and bottom). Every face around that corner
 // (both walls' side faces, both walls' tops and the hub's top; likewise at the bottom) ends

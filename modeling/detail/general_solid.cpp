@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/detail/general_solid.h"
 
 #include <algorithm>
@@ -25,14 +26,24 @@ struct PlaneWork {
   PlaneFaces result;
 };
 
-double largest_coordinate(std::span<const WallFrame* const> walls) {
+double largest_coordinate(std::span<const WallFrame* const> walls, std::span<const SlabFrame* const> slabs) {
   double m = 0.0;
   for (const WallFrame* f : walls) {
     for (const Point2& p : f->footprint) m = std::max({m, std::abs(p.x), std::abs(p.y)});
-    m = std::max({m, std::abs(f->base), std::abs(f->top)});
+    m = std::max({m, std::abs(f->base), std::abs(f->top_max)});
   }
+  for (const SlabFrame* s : slabs)
+    m = std::max({m, std::abs(s->min_x), std::abs(s->max_x), std::abs(s->min_y), std::abs(s->max_y),
+                  std::abs(s->bottom), std::abs(s->top)});
   return m;
 }
+
+// Which objects a cluster's faces belong to.
+struct Labels {
+  std::span<const WallFrame* const> walls;
+  std::span<const SlabFrame* const> slabs;
+  int first_opening_object, first_slab_object;
+};
 
 bool do_overlap(const Box3& a, const Box3& b) {
   for (std::size_t k = 0; k < 3; ++k)
@@ -117,7 +128,12 @@ Cut cut_through(PlaneSet& set, PlaneId plane, std::size_t owner, const std::vect
   const int k = dominant_axis(set, plane);
   for (const int a : {(k + 1) % 3, (k + 2) % 3}) {
     double lo = INFINITY, hi = -INFINITY;
-    for (const XPoint& v : loop) lo = std::min(lo, bounds(v, a).first), hi = std::max(hi, bounds(v, a).second);
+    // The rounded coordinates, not the intervals: a corner of nearly parallel planes (a sliver
+    // between walls drawn over each other) may have an unbounded interval.
+    for (const XPoint& v : loop) {
+      const double x = round_point(set, v)[std::size_t(a)];
+      lo = std::min(lo, x), hi = std::max(hi, x);
+    }
     const double c = lo + (hi - lo) / 2.0;
     const bool left = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) < 0; });
     const bool right = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) > 0; });
@@ -150,13 +166,19 @@ void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive
   }
 }
 
-SoupFace label_face(const Primitive& prim, const PlaneSet& set, PlaneRef plane,
-                    std::span<const WallFrame* const> walls, int first_opening_object) {
+SoupFace label_face(const Primitive& prim, const PlaneSet& set, PlaneRef plane, const Labels& labels) {
+  SoupFace face;
+  if (prim.slab != Primitive::kNoSlab) {
+    const SlabFrame& s = *labels.slabs[prim.slab];
+    face.kind = FaceKind::slab;
+    face.object = labels.first_slab_object + static_cast<int>(s.slab);
+    face.color = s.color;
+    return face;
+  }
   const auto& c = set.approx(plane.id);
   OpenMesh::Vec3d n(CGAL::to_double(c[0]), CGAL::to_double(c[1]), CGAL::to_double(c[2]));
   n = n.normalized() * double(plane.sign);
-  const WallFrame& f = *walls[prim.frame];
-  SoupFace face;
+  const WallFrame& f = *labels.walls[prim.frame];
   face.color = f.color;
   if (prim.kind == Primitive::Kind::solid) {
     face.kind = wall_face_kind(f, n);
@@ -168,13 +190,19 @@ SoupFace label_face(const Primitive& prim, const PlaneSet& set, PlaneRef plane,
     face.object = static_cast<int>(f.wall);
   } else {
     face.kind = n[2] > 0.5 ? FaceKind::sill : n[2] < -0.5 ? FaceKind::lintel : FaceKind::jamb;
-    face.object = first_opening_object + static_cast<int>(prim.opening);
+    face.object = labels.first_opening_object + static_cast<int>(prim.opening);
   }
   return face;
 }
 
+// The name of a primitive's object in messages: its wall's plan index, or its slab's.
+std::string owner_name(const Primitive& prim, const Labels& labels) {
+  if (prim.slab != Primitive::kNoSlab) return fmt::format("slab #{}", labels.slabs[prim.slab]->slab);
+  return fmt::format("#{}", labels.walls[prim.frame]->wall);
+}
+
 FaceSoup to_face_soup(IndexedSoup soup, const std::vector<SolidFace>& faces, const std::vector<Primitive>& prims,
-                      const PlaneSet& set, std::span<const WallFrame* const> walls, int first_opening_object) {
+                      const PlaneSet& set, const Labels& labels) {
   const double tolerance = snap_tolerance(soup.points);
   const IndexedSoup r = snap_soup(std::move(soup), tolerance);
   std::pair<std::size_t, std::size_t> bad;
@@ -186,7 +214,7 @@ FaceSoup to_face_soup(IndexedSoup soup, const std::vector<SolidFace>& faces, con
       for (std::size_t m = 0; m < poly.size(); ++m)
         if ((poly[m] == bad.first && poly[(m + 1) % poly.size()] == bad.second) ||
             (poly[m] == bad.second && poly[(m + 1) % poly.size()] == bad.first))
-          owners += fmt::format("{}#{}", owners.empty() ? "" : ", ", walls[prims[faces[r.tags[k]].owner].frame]->wall);
+          owners += fmt::format("{}{}", owners.empty() ? "" : ", ", owner_name(prims[faces[r.tags[k]].owner], labels));
     }
     const auto& a = r.points[bad.first];
     const auto& b = r.points[bad.second];
@@ -200,7 +228,7 @@ FaceSoup to_face_soup(IndexedSoup soup, const std::vector<SolidFace>& faces, con
   out.reserve(r.polygons.size());
   for (std::size_t k = 0; k < r.polygons.size(); ++k) {
     const SolidFace& f = faces[r.tags[k]];
-    SoupFace face = label_face(prims[f.owner], set, f.plane, walls, first_opening_object);
+    SoupFace face = label_face(prims[f.owner], set, f.plane, labels);
     for (std::size_t i : r.polygons[k]) face.points.push_back(r.points[i]);
     face.copies = copies[k];
     out.push_back(std::move(face));
@@ -210,10 +238,12 @@ FaceSoup to_face_soup(IndexedSoup soup, const std::vector<SolidFace>& faces, con
 
 }  // namespace
 
-FaceSoup build_cluster_general(std::span<const WallFrame* const> walls, int first_opening_object) {
+FaceSoup build_cluster_general(std::span<const WallFrame* const> walls, std::span<const SlabFrame* const> slabs,
+                               int first_opening_object, int first_slab_object) {
   PlaneSet set;
-  const BoxPlanes box = add_box_planes(set, largest_coordinate(walls));
-  std::vector<Primitive> prims = make_primitives(set, box, {walls.begin(), walls.end()});
+  const BoxPlanes box = add_box_planes(set, largest_coordinate(walls, slabs));
+  std::vector<Primitive> prims =
+      make_primitives(set, box, {walls.begin(), walls.end()}, {slabs.begin(), slabs.end()});
   if (prims.empty()) return {};
   use_plane_groups(prims, set.find_equal_planes());
   std::vector<PlaneWork> works = plan_planes(set, prims);
@@ -221,7 +251,7 @@ FaceSoup build_cluster_general(std::span<const WallFrame* const> walls, int firs
   std::vector<SolidFace> faces;
   for (const PlaneWork& w : works)
     for (const PlaneFace& f : w.result.faces) faces.push_back({{w.plane, f.side}, f.owner, f.vertices, f.lines, f.rounded});
-  return to_face_soup(stitch_faces(set, faces), faces, prims, set, walls, first_opening_object);
+  return to_face_soup(stitch_faces(set, faces), faces, prims, set, {walls, slabs, first_opening_object, first_slab_object});
 }
 
 }  // namespace roomcad::detail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The general path: the exact solid of any cluster of walls without 3D booleans.
 //
 // The solid R is the union of the solids (wall pieces) minus the union of the holes, every
@@ -20,13 +21,16 @@
 #include <span>
 
 #include "modeling/detail/face_soup.h"
+#include "modeling/detail/slab_frames.h"
 #include "modeling/detail/wall_frame.h"
 
 namespace roomcad::detail {
 
-/// Builds the solid of a cluster of walls with their holes.
-/// @param[in] walls  the cluster: no wall outside it may touch one inside it.
+/// Builds the solid of a cluster of walls with their holes, and slabs.
+/// @param[in] walls  the cluster: no wall or slab outside it may touch one inside it.
+/// @param[in] slabs  the cluster's slabs (the holes cut them too where they meet)
 /// @param[in] first_opening_object Model::objects index of opening 0
+/// @param[in] first_slab_object    Model::objects index of slab 0 (SlabFrame::slab)
 /// @return faces, rounded to the nearest doubles, each labelled by the primitive it belongs
 ///         to (a wall's top, side, end or bottom; an opening's jamb, sill or lintel). Cost
 ///         about O(p log p) predicates for p primitive faces near each other, plus exact
@@ -34,6 +38,7 @@ namespace roomcad::detail {
 /// @throws PreconditionError (not_buildable) naming the walls if the solid touches itself
 ///         along an edge (it would not be 2-manifold) or is unbounded.
 [[nodiscard]] FaceSoup build_cluster_general(std::span<const WallFrame* const> walls,
-                                             int first_opening_object);
+                                             std::span<const SlabFrame* const> slabs,
+                                             int first_opening_object, int first_slab_object);
 
 }  // namespace roomcad::detail

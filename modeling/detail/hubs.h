@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fast path at nodes where three or four walls end (the grid case): the union of their
 // boxes near the node is a convex "hub" polygon whose corners are the crossings of adjacent
 // walls' facing side lines (for two collinear walls, their shared side line at the node).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The faces of the solid on one plane (general_solid.h): exact 2D booleans in the plane.
 //
 // Each primitive near the plane contributes a convex polygon: where it crosses the plane, its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Linking the boundary pieces of one plane's faces into loops (plane_faces.h): each piece
 // runs between two vertex ids with its face on its left; where a vertex starts more than one
 // piece of a face (two parts of it touch there), the piece that turns most sharply is taken,

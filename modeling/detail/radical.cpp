@@ -1,10 +1,13 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Radical: exact sums of rational multiples of products of square roots (see radical.h).
 #include "modeling/detail/radical.h"
 
 #include <CGAL/Interval_nt.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -222,15 +225,20 @@ double from_order_key(std::int64_t k) {
 double round_to_nearest(const Radical& x) {
   if (const auto clear = round_if_clear(x)) return *clear;
   const auto [inf, sup] = to_interval(x);
-  // Bisect for the largest double <= x between the bounds: at most 64 exact comparisons.
-  std::int64_t lo = order_key(inf), hi = order_key(sup);
+  // Bisect for the largest double <= x between the bounds: at most 64 exact comparisons. The
+  // bounds are infinite when a term of x overflows doubles though x does not (a mitre of walls
+  // a denormal off straight divides by ~1e-323): then bisect over all finite doubles.
+  constexpr double kMost = std::numeric_limits<double>::max();
+  std::int64_t lo = order_key(std::max(inf, -kMost)), hi = order_key(std::min(sup, kMost));
   while (lo < hi) {
-    const std::int64_t mid = lo + (hi - lo + 1) / 2;
+    // hi - lo may exceed int64 (from -max to max): halve it unsigned.
+    const auto span = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
+    const std::int64_t mid = lo + static_cast<std::int64_t>((span + 1) / 2);
     if (Radical(from_order_key(mid)) <= x) lo = mid;
     else hi = mid - 1;
   }
   const double below = from_order_key(lo);
-  if (Radical(below) == x) return below;
+  if (Radical(below) == x || below == kMost) return below;
   const double above = from_order_key(lo + 1);
   return x > (Radical(below) + Radical(above)) / Radical(2) ? above : below;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact real numbers of the form sum_S c_S * prod_{i in S} sqrt(s_i): rational coefficients
 // c_S (GMP) times products of square roots of rational radicands s_i. Wall corners live
 // there: a half-thickness normal is perp(d) * t / (2 sqrt(d.d)), and every other operation

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/detail/snap_soup.h"
 
 #include <algorithm>
@@ -8,6 +9,8 @@
 #include <map>
 #include <numeric>
 #include <unordered_map>
+
+#include "modeling/exact_geometry.h"
 
 namespace roomcad::detail {
 namespace {
@@ -21,14 +24,24 @@ struct CellHash {
   }
 };
 
-// For each point, the lowest index of the points within `tolerance` of it (transitively).
-// Points hash into cubes of side 2 * tolerance, so near points are in adjacent cubes.
-std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points, double tolerance) {
+// For each point, the point whose coordinates it takes: groups of points within `tolerance`
+// of each other (transitively), never joining two groups that each hold an exact point; a
+// group's root is its exact point, else its lowest index. Points hash into cubes of side
+// 2 * tolerance, so near points are in adjacent cubes.
+std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points, const std::vector<char>& exact,
+                                           double tolerance) {
   std::vector<std::size_t> parent(points.size());
   std::iota(parent.begin(), parent.end(), std::size_t{0});
   auto find = [&](std::size_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
+  };
+  auto is_exact = [&](std::size_t root) { return !exact.empty() && exact[root] != 0; };
+  auto unite = [&](std::size_t a, std::size_t b) {
+    if (a == b || (is_exact(a) && is_exact(b))) return;
+    const bool a_root = is_exact(a) || (!is_exact(b) && a < b);
+    if (a_root) parent[b] = a;
+    else parent[a] = b;
   };
   // Cells no smaller than an ulp of the largest coordinate, so that every cell index fits an
   // int64 whatever the tolerance (a larger cell only adds candidates, never loses one).
@@ -48,8 +61,7 @@ std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& p
           for (std::size_t j : it->second) {
             const OpenMesh::Vec3d d = points[i] - points[j];
             if (std::abs(d[0]) > tolerance || std::abs(d[1]) > tolerance || std::abs(d[2]) > tolerance) continue;
-            const std::size_t a = find(i), b = find(j);
-            parent[std::max(a, b)] = std::min(a, b);
+            unite(find(i), find(j));
           }
         }
     cells[c].push_back(i);
@@ -128,10 +140,88 @@ void drop_fins(std::vector<Polygon>& polygons, std::vector<std::size_t>& tags) {
   tags.resize(kept);
 }
 
-}  // namespace
+// Whether a, b, c lie on one line, exactly for the doubles given.
+bool are_collinear(const OpenMesh::Vec3d& a, const OpenMesh::Vec3d& b, const OpenMesh::Vec3d& c) {
+  return exact::decide([&](auto tag) -> bool {
+    using NT = decltype(tag);
+    const NT ux = NT(b[0]) - NT(a[0]), uy = NT(b[1]) - NT(a[1]), uz = NT(b[2]) - NT(a[2]);
+    const NT vx = NT(c[0]) - NT(a[0]), vy = NT(c[1]) - NT(a[1]), vz = NT(c[2]) - NT(a[2]);
+    return uy * vz - uz * vy == NT(0) && uz * vx - ux * vz == NT(0) && ux * vy - uy * vx == NT(0);
+  });
+}
 
-IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
-  const std::vector<std::size_t> target = find_snap_targets(soup.points, tolerance);
+// Whether every corner of the polygon lies on the line of its first two: no area at all.
+bool is_flat(const std::vector<OpenMesh::Vec3d>& points, const Polygon& p) {
+  for (std::size_t k = 2; k < p.size(); ++k)
+    if (!are_collinear(points[p[0]], points[p[1]], points[p[k]])) return false;
+  return true;
+}
+
+// The flat polygon's corners in order along its line: by the coordinate that varies most
+// (on an exact line every coordinate is monotone along it, and that one strictly).
+Polygon corners_along_line(const std::vector<OpenMesh::Vec3d>& points, const Polygon& flat) {
+  Polygon corners(flat);
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  int axis = 0;
+  double widest = -1.0;
+  for (int k = 0; k < 3; ++k) {
+    const auto [lo, hi] = std::minmax_element(corners.begin(), corners.end(), [&](std::size_t a, std::size_t b) {
+      return points[a][k] < points[b][k];
+    });
+    if (points[*hi][k] - points[*lo][k] > widest) widest = points[*hi][k] - points[*lo][k], axis = k;
+  }
+  std::sort(corners.begin(), corners.end(), [&](std::size_t a, std::size_t b) { return points[a][axis] < points[b][axis]; });
+  return corners;
+}
+
+// Removes the polygons with no area (rounding flattened a sliver's side to a segment: every
+// corner on one line) and keeps the surface closed: each edge of another polygon that runs
+// between two corners of a removed one gets the removed one's corners between them, so the
+// edges that met the flat polygon from both sides now meet each other. O(n) for n corners
+// when no polygon is flat.
+void collapse_flat_polygons(const std::vector<OpenMesh::Vec3d>& points, std::vector<Polygon>& polygons,
+                            std::vector<std::size_t>& tags) {
+  std::vector<char> flat(polygons.size(), 0);
+  std::vector<Polygon> lines;  // per flat polygon, its corners along its line
+  for (std::size_t k = 0; k < polygons.size(); ++k)
+    if (is_flat(points, polygons[k])) {
+      flat[k] = 1;
+      lines.push_back(corners_along_line(points, polygons[k]));
+    }
+  if (lines.empty()) return;
+  std::unordered_map<std::size_t, std::vector<std::size_t>> lines_at;  // corner -> lines through it
+  for (std::size_t l = 0; l < lines.size(); ++l)
+    for (const std::size_t c : lines[l]) lines_at[c].push_back(l);
+  std::vector<Polygon> kept;
+  std::vector<std::size_t> kept_tags;
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    if (flat[k]) continue;
+    const Polygon& p = polygons[k];
+    Polygon split;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::size_t a = p[i], b = p[(i + 1) % p.size()];
+      split.push_back(a);
+      const auto at_a = lines_at.find(a);
+      if (at_a == lines_at.end()) continue;
+      for (const std::size_t l : at_a->second) {
+        const Polygon& line = lines[l];
+        const auto ia = std::find(line.begin(), line.end(), a), ib = std::find(line.begin(), line.end(), b);
+        if (ib == line.end()) continue;
+        if (ia < ib) split.insert(split.end(), ia + 1, ib);
+        else split.insert(split.end(), std::make_reverse_iterator(ia), std::make_reverse_iterator(ib + 1));
+        break;
+      }
+    }
+    kept.push_back(std::move(split));
+    kept_tags.push_back(tags[k]);
+  }
+  polygons = std::move(kept);
+  tags = std::move(kept_tags);
+}
+
+// Moves every corner to its snap target (find_snap_targets) and cleans the polygons.
+IndexedSoup snap_to(IndexedSoup soup, const std::vector<std::size_t>& target) {
   const bool tagged = !soup.tags.empty();
   std::vector<Polygon> cleaned;
   std::vector<std::size_t> tags;
@@ -141,10 +231,58 @@ IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
     for (std::size_t& i : p) i = target[i];
     append_clean(std::move(p), tagged ? soup.tags[k] : 0, cleaned, tags);
   }
+  collapse_flat_polygons(soup.points, cleaned, tags);
   drop_fins(cleaned, tags);
   soup.polygons = std::move(cleaned);
   if (tagged) soup.tags = std::move(tags);
   return soup;
+}
+
+// Whether every edge of the polygons is used exactly once each way: a closed surface whose
+// edges each join two faces. O(n) expected for n corners.
+bool has_paired_edges(const std::vector<Polygon>& polygons) {
+  struct EdgeHash {
+    std::size_t operator()(const std::pair<std::size_t, std::size_t>& e) const {
+      return std::hash<std::size_t>()(e.first * 0x9E3779B97F4A7C15ull ^ e.second);
+    }
+  };
+  std::unordered_map<std::pair<std::size_t, std::size_t>, int, EdgeHash> uses;
+  for (const Polygon& p : polygons)
+    for (std::size_t k = 0; k < p.size(); ++k) ++uses[{p[k], p[(k + 1) % p.size()]}];
+  for (const auto& [edge, n] : uses) {
+    const auto twin = uses.find({edge.second, edge.first});
+    if (n != 1 || twin == uses.end() || twin->second != 1) return false;
+  }
+  return true;
+}
+
+// Whether snapping to `target` puts two exact points (`exact`, possibly empty) in one group.
+bool merges_exact_points(const std::vector<std::size_t>& target, const std::vector<char>& exact) {
+  if (exact.empty()) return false;
+  std::vector<char> holds_exact(target.size(), 0);
+  for (std::size_t i = 0; i < target.size(); ++i) {
+    if (!exact[i]) continue;
+    if (holds_exact[target[i]]) return true;
+    holds_exact[target[i]] = 1;
+  }
+  return false;
+}
+
+}  // namespace
+
+IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
+  const std::vector<std::size_t> merging = find_snap_targets(soup.points, {}, tolerance);
+  // Keeping exact corners apart changes nothing unless two of them would merge (rare): only
+  // then is the result checked and, where it must be, the soup snapped again.
+  if (!merges_exact_points(merging, soup.exact)) return snap_to(std::move(soup), merging);
+  IndexedSoup merged = snap_to(soup, merging);
+  if (has_paired_edges(merged.polygons)) return merged;
+  // Merging two exact corners pinched the surface (walls an ulp apart, each corner exact:
+  // an edge of four faces). Keeping exact corners apart leaves them as the exact solid has
+  // them; taken only where that closes the surface.
+  const std::vector<std::size_t> apart_targets = find_snap_targets(soup.points, soup.exact, tolerance);
+  IndexedSoup apart = snap_to(std::move(soup), apart_targets);
+  return has_paired_edges(apart.polygons) ? apart : merged;
 }
 
 double snap_tolerance(const std::vector<OpenMesh::Vec3d>& points) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fast path at T joins: a stem whose end lies on the middle of a through-wall standing on
 // the same base, as high as it or lower, is clipped at the through-wall's face (its end
 // corners are the crossings of its side lines with that face, and it gets no cap), and the

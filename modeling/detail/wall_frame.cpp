@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/detail/wall_frame.h"
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <tbb/parallel_for.h>
 
 #include "modeling/build_model.h"
+#include "modeling/segment_predicates.h"
 
 namespace roomcad::detail {
 namespace {
@@ -38,9 +40,22 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   f.length = length;
   f.half = w.thickness / 2.0;
   f.base = w.base;
+  f.heights = {w.height, w.height_at_end.value_or(w.height)};
+  if (!is_positive(f.heights[1]))
+    throw PreconditionError(fmt::format("build_model: wall '{}' cannot be built: height_at_end {} (must be "
+                                        "positive and finite)", w.id, f.heights[1]), Code::not_buildable);
   f.top = w.base + w.height;
+  f.top_end = w.base + f.heights[1];
   f.capless = {joins.mitre[index][0].has_value(), joins.mitre[index][1].has_value()};
   f.footprint = wall_footprint(plan, joins, index);
+  f.top_max = std::max(f.top, f.top_end);
+  if (is_sloped(f)) {  // the plane over the footprint's corners (mitres reach past the ends)
+    for (const Point2& c : f.footprint) {
+      const double u = (c.x - f.from.x) * f.dir.x + (c.y - f.from.y) * f.dir.y;
+      f.top_max = std::max(f.top_max, f.top + (f.heights[1] - f.heights[0]) * u / length);
+    }
+    f.top_max += 1e-9 * (1.0 + std::abs(f.top_max));  // the doubles above round; a bound must not
+  }
   f.color = w.color;
   return f;
 }
@@ -48,29 +63,34 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
 Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
   const Opening& o = plan.openings[index];
   const Wall& w = plan.walls[f.wall];
+  // Under a sloped top the general path cuts whatever the hole meets (validation judged the
+  // outline exactly); a flat wall's fast path needs the rectangle inside.
   const bool inside = is_positive(o.width) && is_positive(o.height) && std::isfinite(o.offset) &&
                       std::isfinite(o.sill) && o.offset >= 0.0 &&
                       o.offset + o.width <= f.length && o.sill >= 0.0 &&
-                      o.sill + o.height <= w.height;
+                      (is_sloped(f) || o.sill + o.height <= w.height);
   if (!inside)
     throw PreconditionError(fmt::format(
         "build_model: opening '{}' cannot be cut: u [{}, {}] x v [{}, {}] is not a non-empty "
         "rectangle inside wall '{}' ([0, {}] x [0, {}])",
-        o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length, w.height), Code::not_buildable);
+        o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length,
+        std::max(f.heights[0], f.heights[1])), Code::not_buildable);
   for (std::size_t k = 0; k < 4; ++k)
     if (f.footprint[k] == f.footprint[(k + 1) % 4])
       throw PreconditionError(fmt::format(
           "build_model: opening '{}' cannot be cut: wall '{}' is shorter than its mitres (a side "
           "of its footprint has no length)", o.id, w.id), Code::not_buildable);
   // base + (sill + height) equals the wall's top exactly when the opening reaches it.
-  return {index, o.offset, o.offset + o.width, w.base + o.sill, w.base + (o.sill + o.height)};
+  return {.opening = index, .u0 = o.offset, .u1 = o.offset + o.width, .z0 = w.base + o.sill,
+          .z1 = w.base + (o.sill + o.height), .width = o.width, .height = o.height, .shape = o.shape};
 }
 
 // Ends meeting at one point, keyed by its bits (as find_hubs does).
 using NodeKey = std::pair<std::uint64_t, std::uint64_t>;
 
 // Outward directions of two wall ends at one node that run on from each other within
-// kHairline radians (but not exactly: then the square ends coincide).
+// kHairline radians (but not exactly: then the square ends coincide), the walls sharing a
+// height range (a wall under the node's floor is not part of its join).
 bool is_hairline_pair(const Wall& a, WallEnd ea, const Wall& b, WallEnd eb) {
   constexpr double kHairline = 1e-6;
   auto outward = [](const Wall& w, WallEnd e) {
@@ -79,7 +99,8 @@ bool is_hairline_pair(const Wall& a, WallEnd ea, const Wall& b, WallEnd eb) {
   };
   const Point2 da = outward(a, ea), db = outward(b, eb);
   const double cross = da.x * db.y - da.y * db.x, dot = da.x * db.x + da.y * db.y;
-  return a.thickness == b.thickness && dot < 0.0 && cross != 0.0 && std::abs(cross) <= kHairline;
+  return a.thickness == b.thickness && dot < 0.0 && cross != 0.0 && std::abs(cross) <= kHairline &&
+         share_heights(a, b);  // one above the other they do not meet (found by fuzz_build)
 }
 
 // Where three or more walls meet at a node (a unite join), two of equal thickness that run
@@ -140,6 +161,10 @@ std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_join
     std::sort(f.holes.begin(), f.holes.end(),
               [](const Hole& a, const Hole& b) { return a.u0 < b.u0 || (a.u0 == b.u0 && a.z0 < b.z0); });
   return frames;
+}
+
+bool needs_general_path(const WallFrame& f) {
+  return is_sloped(f) || std::any_of(f.holes.begin(), f.holes.end(), [](const Hole& h) { return !h.shape.empty(); });
 }
 
 Point2 side_point(const WallFrame& f, double u, int side) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Each wall in its own frame (u along from -> to, w to the left, z up) with its holes, the
 // common input of every builder (fast path, CGAL path, analytic volume, fixtures).
 #pragma once
@@ -13,10 +14,13 @@
 namespace roomcad::detail {
 
 /// An opening's hole in its wall's frame: u in [u0, u1] along the wall, z in [z0, z1]
-/// absolute (base + sill ...), through the full thickness.
+/// absolute (base + sill ...), through the full thickness; a shaped opening's hole is its
+/// outline within that rectangle.
 struct Hole {
   std::size_t opening = 0;  ///< index into Plan::openings
   double u0 = 0.0, u1 = 0.0, z0 = 0.0, z1 = 0.0;
+  double width = 0.0, height = 0.0;  ///< the opening's, as written: `shape` maps through them
+  Polygon shape;  ///< the opening's shape (unit square, counter-clockwise); empty: the rectangle
   /// Per end (from, to): the hole runs on through the mitre there, to the mitre line (a piece
   /// of an opening across the chords of an arc wall, buildable_plan.h).
   std::array<bool, 2> through_mitre{false, false};
@@ -41,13 +45,22 @@ struct WallFrame {
   double length = 0.0;
   double half = 0.0;  ///< half the thickness
   double base = 0.0;
-  double top = 0.0;
+  double top = 0.0;       ///< base + height: the top at `from` (of the whole wall, if flat)
+  double top_end = 0.0;   ///< base + height_at_end: the top at `to`
+  double top_max = 0.0;   ///< at least the highest top over the footprint (sloped: its corners)
+  std::array<double, 2> heights{};  ///< height, height_at_end as written: the slope's exact rise
   std::array<Point2, 4> footprint;  ///< wall_footprint: from-right, to-right, to-left, from-left
   std::array<bool, 2> capless{false, false};  ///< per WallEnd: no end cap (mitred, or on a hub)
   Color color;
   std::vector<Hole> holes;  ///< sorted by u0
   std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
+
+/// @return whether the wall's top is sloped (a plane through its two top ends). O(1).
+[[nodiscard]] inline bool is_sloped(const WallFrame& f) { return f.heights[0] != f.heights[1]; }
+
+/// @return whether the wall needs the general path: a sloped top or a shaped hole. O(holes).
+[[nodiscard]] bool needs_general_path(const WallFrame& f);
 
 /// @return whether the hole's footprint reaches the line of the footprint's end `end` (0: from,
 ///         1: to) rather than stopping square at u0 (u1): it reaches that end, and the end is
@@ -77,6 +90,11 @@ struct WallFrame {
 /// @return the index into Model::objects of an opening (walls come first).
 [[nodiscard]] inline int opening_object(const Plan& plan, std::size_t opening) {
   return static_cast<int>(plan.walls.size() + opening);
+}
+
+/// @return the index into Model::objects of a slab (after the walls and the openings).
+[[nodiscard]] inline int slab_object(const Plan& plan, std::size_t slab) {
+  return static_cast<int>(plan.walls.size() + plan.openings.size() + slab);
 }
 
 }  // namespace roomcad::detail

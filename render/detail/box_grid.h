@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A uniform 2D grid of boxes: the broad phase of hidden-line removal (which edges can cross an
 // edge, which faces can cover a point), so no step compares all pairs.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The exact 3D predicates of drawings, with CGAL's filtered kernel.
 #include "render/detail/exact_3d.h"
 

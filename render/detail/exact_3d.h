@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact 3D predicates for drawings (CGAL's Epick: filtered, exact on the double inputs), behind
 // a plain header so that only exact_3d.cpp includes CGAL.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Feature edges (creases and boundaries) and occluding triangles of a mesh.
 #include "render/detail/feature_edges.h"
 

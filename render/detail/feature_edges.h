@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The edges a line drawing shows and the triangles that can hide them, taken from the model's
 // polygon meshes in double precision.
 #pragma once

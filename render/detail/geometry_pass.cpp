@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Vertex stage, culling, clipping and binning, in parallel over fixed chunks of the scene.
 #include "render/detail/geometry_pass.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The geometry half of a raster pass: transform, frustum-cull clusters, clip, set up and bin
 // triangles into screen tiles. Shared by the colour pass and the shadow-map passes.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Clipping of section segments against piecewise-linear horizons, and their update.
 #include "render/detail/horizon_sweep.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The horizon arrays of the floating-horizon method and the clipping of one section's
 // segments against them. Coordinates here have y growing upwards (picture plane, scaled).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Collinear merging of picture segments.
 #include "render/detail/merge_segments.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Merging collinear pieces of drawn lines, so that a wall's top edge, split into many mesh
 // edges and pieces, is one SVG line.
 #pragma once

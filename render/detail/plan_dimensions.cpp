@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dimension lines in the architectural manner: extension lines with a small gap at the
 // object, a dimension line, 45-degree ticks at its ends and the length above it.
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared helpers of the floor plan: the map from plan metres to paper millimetres, small vector
 // arithmetic, and the parts of the drawing built from walls and from dimensions.
 #pragma once

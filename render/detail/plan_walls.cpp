@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The walls of the floor plan: cut parts between the openings the section passes through,
 // window symbols, door leaves and swings, and walls wholly below or above the cut.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fragment stage: per triangle set-up once, then arrays of samples through interpolation,
 // shadow lookups and shading.
 #include "render/detail/sample_shading.h"

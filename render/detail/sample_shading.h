@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The colour pass's fragment stage: shades the visible samples of a tile once each (the depth
 // and id buffers are already final), run by run of neighbouring samples of one triangle.
 #pragma once

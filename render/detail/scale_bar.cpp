@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The five-cell scale bar of drawings.
 #include "render/detail/scale_bar.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The scale bar every drawing at a scale carries (floor plan, elevations, isometric).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The shadow-map pass with memory the caller keeps between frames (render_shadow_map of
 // shadow_map.h allocates afresh each time).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ROOMCAD_WIDE_LOOPS marks the functions whose loops run per pixel or per sample: GCC and
 // clang compile each twice, for AVX2 and for the x86-64 baseline (SSE2), and pick one when the
 // program loads (target_clones), so those loops vectorise twice as wide where the CPU allows

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The roomcad command: help, exit statuses, info and fmt, run as a user would.
 #include <filesystem>
 #include <string>

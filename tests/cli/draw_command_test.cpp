@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad draw` end to end: the floor plan view, exit statuses and messages.
 #include <gtest/gtest.h>
 
@@ -5,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "support/refused_commands.h"
 #include "support/run_command.h"
 
 namespace roomcad::test {
@@ -75,11 +77,7 @@ TEST(DrawCommand, BadOptionsExitTwo) {
   const std::string plan = (dir / "room.json").string();
   ASSERT_TRUE(write_bytes(plan, kRoomPlan));
   const std::string out = (dir / "out.svg").string();
-  const struct {
-    std::vector<std::string> args;
-    std::string message;
-    Code code = Code::usage_error;
-  } cases[] = {
+  const test::RefusedCase cases[] = {
       {{plan, "--view", "sideways", "-o", out}, "--view"},
       {{plan, "--view", "camera:nope", "-o", out}, "no camera \"nope\""},
       {{plan, "--view", "iso", "--hidden", "grey", "-o", out}, "--hidden"},
@@ -90,12 +88,7 @@ TEST(DrawCommand, BadOptionsExitTwo) {
       {{plan, "-o", (dir / "out.png").string()}, ".svg", Code::unsupported},
       {{(dir / "missing.json").string(), "-o", out}, "missing.json", Code::io_error},
   };
-  for (const auto& c : cases) {
-    const CommandResult run = draw(c.args);
-    EXPECT_EQ(run.status, 2) << c.message << "\n" << run.err;
-    EXPECT_EQ(test::failure_code(run), c.code) << c.message << "\n" << run.err;
-    EXPECT_NE((run.out + run.err).find(c.message), std::string::npos) << run.out << run.err;
-  }
+  test::expect_refused("draw", cases);
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The edit commands (add, rm, move, rotate, scale, set) run as a user runs them: the roomcad
 // binary (ROOMCAD_EXE) on temporary canonical copies of tests/cli/data/edit_room.json and of
 // examples/*.json.

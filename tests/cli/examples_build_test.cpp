@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every bundled example plan builds, and its wall solid passes --check.
 #include <gtest/gtest.h>
 

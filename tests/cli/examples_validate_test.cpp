@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every bundled example is a valid plan: it reads, and validation finds no error.
 #include <filesystem>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad import` run as a program: exit statuses, the plan file it writes, its messages, the
 // lock of the plan it replaces.
 #include <chrono>

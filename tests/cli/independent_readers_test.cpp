@@ -9,6 +9,7 @@
 
 #include "io/floor_plan_dxf.h"
 #include "io/plan_json.h"
+#include "modeling/arc_chords.h"
 #include "modeling/mesh_check.h"
 #include "readers_support.h"
 #include "render/floor_plan.h"
@@ -33,41 +34,73 @@ std::size_t count_openings(const Plan& plan, OpeningType type) {
                                                 [type](const Opening& o) { return o.type == type; }));
 }
 
+// Exports the plan file `path` (holding `plan`) to IFC and checks it in web-ifc: its element
+// counts are the plan's, and web-ifc, cutting each opening from its wall (float32 vertices),
+// finds walls whose volumes add up to the plan's wall solid.
+void expect_web_ifc_agrees(const std::filesystem::path& path, const Plan& plan, const TempDir& dir) {
+  const auto ifc = dir / (path.stem().string() + ".ifc");
+  const auto built = run_roomcad({"build", path.string(), "-o", ifc.string()});
+  ASSERT_EQ(built.status, 0) << built.err;
+  const auto run = run_reader("ifc_check.cjs", ifc);
+  ASSERT_TRUE(run);
+  EXPECT_EQ(run->status, 0) << run->report.dump() << run->err;
+  const auto& counts = run->report["counts"];
+  EXPECT_EQ(run->report["schema"], "IFC4");
+  EXPECT_EQ(counts["IFCBUILDINGSTOREY"], std::max<std::size_t>(plan.levels.size(), 1));
+  EXPECT_EQ(counts["IFCWALL"], plan.walls.size());
+  EXPECT_EQ(counts["IFCOPENINGELEMENT"], plan.openings.size());
+  EXPECT_EQ(counts["IFCRELVOIDSELEMENT"], plan.openings.size());
+  EXPECT_EQ(counts["IFCRELFILLSELEMENT"], plan.openings.size());
+  EXPECT_EQ(counts["IFCDOOR"], count_openings(plan, OpeningType::door));
+  EXPECT_EQ(counts["IFCWINDOW"], count_openings(plan, OpeningType::window));
+  EXPECT_EQ(counts["IFCSLAB"], plan.slabs.size());
+  EXPECT_EQ(counts["IFCSPACE"], find_rooms(plan).size());
+  double volume = 0.0;
+  std::size_t walls = 0;
+  for (const auto& product : run->report["products"]) {
+    if (product["type"] != "IFCWALL") continue;
+    volume += product["volume"].get<double>();
+    ++walls;
+  }
+  EXPECT_EQ(walls, plan.walls.size());
+  const double expected = analytic_wall_volume(plan);
+  EXPECT_NEAR(volume, expected, 1e-5 * expected);
+}
+
 TEST(IndependentReaders, WebIfcOpensEveryExampleWithItsCountsAndWallVolume) {
   TempDir dir;
   for (const auto& path : test::example_plans()) {
     SCOPED_TRACE(path.filename().string());
-    const Plan plan = read_example(path);
-    const auto ifc = dir / (path.stem().string() + ".ifc");
-    const auto built = run_roomcad({"build", path.string(), "-o", ifc.string()});
-    ASSERT_EQ(built.status, 0) << built.err;
-    const auto run = run_reader("ifc_check.cjs", ifc);
-    ASSERT_TRUE(run);
-    EXPECT_EQ(run->status, 0) << run->report.dump() << run->err;
-    const auto& counts = run->report["counts"];
-    EXPECT_EQ(run->report["schema"], "IFC4");
-    EXPECT_EQ(counts["IFCBUILDINGSTOREY"], std::max<std::size_t>(plan.levels.size(), 1));
-    EXPECT_EQ(counts["IFCWALL"], plan.walls.size());
-    EXPECT_EQ(counts["IFCOPENINGELEMENT"], plan.openings.size());
-    EXPECT_EQ(counts["IFCRELVOIDSELEMENT"], plan.openings.size());
-    EXPECT_EQ(counts["IFCRELFILLSELEMENT"], plan.openings.size());
-    EXPECT_EQ(counts["IFCDOOR"], count_openings(plan, OpeningType::door));
-    EXPECT_EQ(counts["IFCWINDOW"], count_openings(plan, OpeningType::window));
-    EXPECT_EQ(counts["IFCSLAB"], plan.slabs.size());
-    EXPECT_EQ(counts["IFCSPACE"], find_rooms(plan).size());
-    // web-ifc cuts each opening from its wall (float32 vertices): the walls' volumes add up to
-    // the plan's wall solid.
-    double volume = 0.0;
-    std::size_t walls = 0;
-    for (const auto& product : run->report["products"]) {
-      if (product["type"] != "IFCWALL") continue;
-      volume += product["volume"].get<double>();
-      ++walls;
-    }
-    EXPECT_EQ(walls, plan.walls.size());
-    const double expected = analytic_wall_volume(plan);
-    EXPECT_NEAR(volume, expected, 1e-5 * expected);
+    expect_web_ifc_agrees(path, read_example(path), dir);
   }
+}
+
+TEST(IndependentReaders, WebIfcCutsTheOpeningsOfAnArcWallAsTheBuildDoes) {
+  // A room whose east wall bows out (version 2 arc_extent), a window across several of its
+  // chords and a door ending exactly on a chord corner, where its void ends on the mitre.
+  Plan plan;
+  plan.site.cells = {12, 10}, plan.site.origin = {2, -1};
+  plan.site.chord_tolerance = 0.05;  // five chords of about 1.25 m
+  auto wall = [&](const char* id, Point2 a, Point2 b) -> Wall& {
+    Wall& w = plan.walls.emplace_back();
+    w.id = id, w.from = a, w.to = b;
+    return w;
+  };
+  wall("s", {5, 1}, {11, 1});
+  wall("bow", {11, 1}, {11, 7}).arc_extent = 60.0;
+  wall("n", {11, 7}, {5, 7});
+  wall("w", {5, 7}, {5, 1});
+  const std::vector<Point2> chords = chord_polyline(plan.walls[1], chord_tolerance_of(plan.site));
+  ASSERT_GT(chords.size(), 4u);
+  const double corner = std::hypot(chords[1].x - chords[0].x, chords[1].y - chords[0].y);
+  plan.openings.push_back({.id = "bay", .type = OpeningType::window, .wall = "bow", .offset = 2.0, .width = 1.6,
+                           .height = 1.2, .sill = 0.9});
+  plan.openings.push_back({.id = "side", .type = OpeningType::door, .wall = "bow", .offset = corner - 0.9,
+                           .width = 0.9, .height = 2.1});
+  TempDir dir;
+  const auto path = dir / "bow-room.json";
+  ASSERT_TRUE(write_plan_file(plan, path).ok());
+  expect_web_ifc_agrees(path, read_example(path), dir);
 }
 
 TEST(IndependentReaders, GltfValidatorFindsNoErrorOrWarningInAnyExample) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad render: files written, stats, determinism across threads, and every bad input
 // giving a clear error, the right exit status and no file.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad surface` end to end: exit statuses, messages and the files it writes.
 #include <gtest/gtest.h>
 
@@ -5,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "support/refused_commands.h"
 #include "support/run_command.h"
 
 namespace roomcad::test {
@@ -86,11 +88,7 @@ TEST(SurfaceCommand, BadExpressionNamesTheColumn) {
 TEST(SurfaceCommand, BadOptionsExitTwoAndWriteNothing) {
   const TempDir dir;
   const std::string out = (dir / "out.svg").string();
-  const struct {
-    std::vector<std::string> args;
-    std::string message;
-    Code code = Code::usage_error;
-  } cases[] = {
+  const test::RefusedCase cases[] = {
       {{"x", "--x", "2", "--z", "-1:1", "-o", out}, "--x \"2\": expected A:B"},
       {{"x", "--x", "-1:1", "--z", "q:1", "-o", out}, "--z \"q:1\""},
       {{"x", "--x", "-1:x", "--z", "-1:1", "-o", out}, "must not use x or z"},
@@ -103,12 +101,7 @@ TEST(SurfaceCommand, BadOptionsExitTwoAndWriteNothing) {
        Code::unsupported},
       {{"x", "--x", "-1:1", "--z", "-1:1"}, "--output is required"},
   };
-  for (const auto& c : cases) {
-    const CommandResult run = surface(c.args);
-    EXPECT_EQ(run.status, 2) << c.message << "\n" << run.err;
-    EXPECT_EQ(test::failure_code(run), c.code) << c.message << "\n" << run.err;
-    EXPECT_NE((run.out + run.err).find(c.message), std::string::npos) << run.out << run.err;
-  }
+  test::expect_refused("surface", cases);
   EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Outputs do not depend on the thread count: `roomcad build` and `roomcad render` on every
 // bundled example write the same bytes with --threads 1 and --threads 2; out of range exits 2.
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad validate` and the rooms of `roomcad info`, run as a user would.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

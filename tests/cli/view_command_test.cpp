@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad view under Xvfb: the window's screenshot is `roomcad render`'s picture of the same
 // camera, keys move the camera, and click + arrow + Ctrl+S moves a wall one cell in the saved
 // file (Ctrl+Z before saving gives the plan back); a command-line edit while the window holds

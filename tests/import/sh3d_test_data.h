@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test data for the Sweet Home 3D importer: the real homes bundled in examples/sweethome3d/homes
 // (THIRD_PARTY.md), and a plain-text reading of their XML that does not share code with the
 // importer.

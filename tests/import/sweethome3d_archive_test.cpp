@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Sweet Home 3D importer on archives and on bad input: a .sh3d built here with libzip
 // imports like its bare Home.xml; malformed files give errors naming the file and the problem.
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Building the imported Sweet Home 3D homes: every home gives a closed, valid wall solid whose
 // volume matches the volume computed from the plan alone.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Sweet Home 3D importer on the real homes of examples/sweethome3d/homes: counts, units,
 // frame and placement are checked against the XML itself, read here with plain text matching
 // (independently of the importer's XML parser).

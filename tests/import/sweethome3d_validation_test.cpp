@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Validation of the imported Sweet Home 3D homes: every error left is a real problem of the home
 // as drawn (listed below with why), never one the import made.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A save killed midway (SIGKILL: no destructor, no handler runs) leaves the old file byte for
 // byte, and the temporary file it leaves is removed by the next save.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Atomic writes: all or nothing, and no temporary file left behind.
 #include <filesystem>
 #include <stdexcept>

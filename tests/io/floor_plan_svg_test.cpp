@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/floor_plan_svg.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Limits on hostile input: every reader refuses what would exhaust memory or time with an error
 // naming the file, the field and the value, and reports many problems in linear time.
 #include <cmath>

@@ -8,6 +8,7 @@
 #include "io/detail/ifc_shapes.h"
 #include "io/ifc_export.h"
 #include "io/step_file.h"
+#include "modeling/arc_chords.h"
 #include "modeling/mesh_check.h"
 #include "modeling/plan_levels.h"
 #include "modeling/rooms.h"
@@ -106,31 +107,61 @@ TEST(IfcExport, WallBodiesAddUpToTheUnitedSolid) {
   plan.walls.pop_back();
   for (Wall& w : plan.walls) w.level.clear();
   const Joins joins = find_joins(plan);
+  const io_detail::JoinedWalls joined(plan, joins);
   double volume = 0.0;
   for (std::size_t i = 0; i < plan.walls.size(); ++i) {
-    const auto f = io_detail::export_footprint(plan, joins, i);
+    const auto f = io_detail::export_footprint(joined, i);
     double area = 0.0;
     for (std::size_t k = 0; k < 4; ++k) area += f[k].x * f[(k + 1) % 4].y - f[(k + 1) % 4].x * f[k].y;
     EXPECT_GT(area, 0.0) << plan.walls[i].id;  // counter-clockwise
     volume += area / 2 * plan.walls[i].height;
   }
   EXPECT_NEAR(volume, analytic_wall_volume(plan), 1e-12 * volume);
-  const auto mid = io_detail::export_footprint(plan, joins, 4);
+  const auto mid = io_detail::export_footprint(joined, 4);
   EXPECT_DOUBLE_EQ(mid[0].y, 1.125);  // the south wall's inner face
   EXPECT_DOUBLE_EQ(mid[1].y, 6.875);  // the north wall's
 }
 
-TEST(IfcExport, SlopedWallIsAClosedFaceSetAndArcWallIsUnsupported) {
+TEST(IfcExport, SlopedWallIsAClosedFaceSet) {
   Plan plan = two_storeys();
   plan.walls[5].height_at_end = 1.5;
   const std::string t = format_ifc(plan, "a.ifc").value();
   EXPECT_EQ(count(t, "=IFCTRIANGULATEDFACESET("), 1u);
   EXPECT_NE(t.find(",$,.T.,((1,3,2),(1,4,3),(5,6,7),(5,7,8)"), std::string::npos);
-  plan.walls[2].arc_extent = 30.0;
-  const Result<std::string> arc = format_ifc(plan, "a.ifc");
-  ASSERT_FALSE(arc.ok());
-  EXPECT_EQ(arc.error().code, Code::unsupported);
-  EXPECT_NE(arc.error().message.find("\"north\""), std::string::npos);
+}
+
+TEST(IfcExport, ArcWallIsItsChordsWithItsOpeningCutChordByChord) {
+  Plan plan = two_storeys();
+  plan.walls[2].arc_extent = 30.0;  // north bows out; its window spans chords
+  plan.site.chord_tolerance = 0.01;
+  const std::size_t chords = chord_polyline(plan.walls[2], 0.01).size() - 1;
+  ASSERT_GE(chords, 3u);
+  IfcExportSummary summary;
+  const std::string t = format_ifc(plan, "a.ifc", &summary).value();
+  EXPECT_EQ(summary.walls, 6u);
+  EXPECT_EQ(count(t, "=IFCWALL("), 6u);
+  // The axis: a polyline through the chord corners; the body: one extrusion per chord.
+  const std::regex axis("IFCSHAPEREPRESENTATION\\(#\\d+,'Axis','Curve2D',\\(#(\\d+)\\)\\)");
+  std::size_t longest = 0;
+  for (auto it = std::sregex_iterator(t.begin(), t.end(), axis); it != std::sregex_iterator(); ++it) {
+    const std::string line = "#" + (*it)[1].str() + "=IFCPOLYLINE((";
+    const std::size_t at = t.find(line);
+    ASSERT_NE(at, std::string::npos);
+    longest = std::max(longest, count(t.substr(at, t.find('\n', at) - at), "#") - 1);
+  }
+  EXPECT_EQ(longest, chords + 1);
+  const std::regex body("'Body','SweptSolid',\\(((#\\d+,?)+)\\)");
+  std::size_t items = 0;
+  for (auto it = std::sregex_iterator(t.begin(), t.end(), body); it != std::sregex_iterator(); ++it)
+    items = std::max(items, count((*it)[1].str(), "#"));
+  EXPECT_EQ(items, chords);
+  // A shape would have to bend around the arc: refused, naming the opening and the wall.
+  plan.openings[1].shape = {{0, 0}, {1, 0}, {0.5, 1}};
+  const Result<std::string> shaped = format_ifc(plan, "a.ifc");
+  ASSERT_FALSE(shaped.ok());
+  EXPECT_EQ(shaped.error().code, Code::unsupported);
+  EXPECT_NE(shaped.error().message.find("\"win\""), std::string::npos);
+  EXPECT_NE(shaped.error().message.find("\"north\""), std::string::npos);
 }
 
 TEST(StepFile, RealsAndStringsAreWrittenAsTheStandardSays) {

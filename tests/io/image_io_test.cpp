@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PNG and PFM files and object-id images: round trips, determinism and errors naming the file.
 #include <gtest/gtest.h>
 

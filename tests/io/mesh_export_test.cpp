@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The mesh writers read back: every bundled example and imported home is written in each format,
 // read with the small readers of mesh_read_support.h (no code shared with io/mesh_export), and
 // compared with the model in memory: vertices, faces, colours, groups, normals, and the closed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/mesh_read_support.h"
 
 #include <bit>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small readers of the mesh files roomcad writes (OBJ + MTL, OFF, ASCII PLY, binary STL), for
 // the read-back tests. They share no code with io/mesh_export: each follows its format's own
 // description, reads numbers with std::from_chars (exact), and throws std::runtime_error naming

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The models the read-back tests write: every bundled example and every imported Sweet Home 3D
 // home, built with all parts as `roomcad build --force` builds them (the homes keep the
 // validation errors of their sources), and what a written file must hold, taken from the model

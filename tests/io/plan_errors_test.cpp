@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading bad plans: every problem found, with file, line, column and JSON pointer; no crash.
 #include <string>
 

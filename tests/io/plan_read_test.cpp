@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading plans: every field, every default, units.
 #include <cmath>
 #include <string>
@@ -13,14 +14,19 @@ namespace {
 
 using test::read_ok;
 
+// The site of the spec's example, which is also every field's default.
+void expect_spec_site(const Site& site) {
+  EXPECT_EQ(site.origin, (Point2{0, 0}));
+  EXPECT_EQ(site.cells, (std::array<std::int64_t, 2>{12, 8}));
+  EXPECT_EQ(site.cell_size, 1.0);
+  EXPECT_EQ(site.max_height, 6.0);
+  EXPECT_EQ(site.tolerance, 1e-6);
+  EXPECT_EQ(site.floor_color, (Color{0xc8, 0xc8, 0xc8}));
+}
+
 TEST(PlanRead, SpecExampleGivesEveryField) {
   const Plan p = read_ok(test::kSpecExample);
-  EXPECT_EQ(p.site.origin, (Point2{0, 0}));
-  EXPECT_EQ(p.site.cells, (std::array<std::int64_t, 2>{12, 8}));
-  EXPECT_EQ(p.site.cell_size, 1.0);
-  EXPECT_EQ(p.site.max_height, 6.0);
-  EXPECT_EQ(p.site.tolerance, 1e-6);
-  EXPECT_EQ(p.site.floor_color, (Color{0xc8, 0xc8, 0xc8}));
+  expect_spec_site(p.site);
 
   ASSERT_EQ(p.walls.size(), 1u);
   const Wall& w = p.walls[0];
@@ -84,12 +90,7 @@ TEST(PlanRead, EmptyObjectIsTheDefaultPlan) {
 
 TEST(PlanRead, SiteDefaults) {
   const Plan p = read_ok(R"({"site": {}})");
-  EXPECT_EQ(p.site.origin, (Point2{0, 0}));
-  EXPECT_EQ(p.site.cells, (std::array<std::int64_t, 2>{12, 8}));
-  EXPECT_EQ(p.site.cell_size, 1.0);
-  EXPECT_EQ(p.site.max_height, 6.0);
-  EXPECT_EQ(p.site.tolerance, 1e-6);
-  EXPECT_EQ(p.site.floor_color, (Color{0xc8, 0xc8, 0xc8}));
+  expect_spec_site(p.site);
 }
 
 TEST(PlanRead, WallDefaults) {

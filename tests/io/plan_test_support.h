@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared helpers of the io tests: the spec's example plan and error expectations.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Version 2 of the plan format through the reader and the writer: levels, slabs, sloped and
 // arc walls, shaped openings; and what a version-1 file makes of version-2 fields.
 #include <gtest/gtest.h>

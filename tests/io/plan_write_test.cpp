@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing plans: the canonical layout, shortest numbers, round trips.
 #include <cmath>
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The STL of every bundled example and imported home, as an independent reader sees it: admesh
 // (Debian package `admesh`, installed by scripts/setup.sh) reads the file, welds it by
 // coordinates, and reports degenerate facets (two equal corners), unconnected facet edges and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/build_model.h"
 
 #include <fmt/format.h>
@@ -125,6 +126,50 @@ TEST(Modeling, TJoin) {
   BuildStats stats;
   (void)build_model(plan, {}, &stats);
   EXPECT_EQ(stats.fast_path_walls, 2u);  // the stem is clipped at the through-wall's face
+}
+
+TEST(Modeling, StraightRunFromOneThicknessToAnotherIsClosed) {
+  // Found by fuzz_build: the two square ends of a straight run differ in width, so the
+  // fast path, which leaves mitred ends open for each other, gave an open solid.
+  Plan plan = empty_plan();
+  add_wall(plan, "thick", {0, 0}, {3, 0}).thickness = 0.3;
+  add_wall(plan, "thin", {3, 0}, {5, 0}).thickness = 0.1;
+  expect_paths_agree(plan, 0, 2.5 * (3 * 0.3 + 2 * 0.1));
+}
+
+TEST(Modeling, WallAboveANodeIsNotMitredToAWallBelowThatRunsOnFromIt) {
+  // Found by fuzz_build: at a node of three walls, a wall of a storey above (equal thickness,
+  // running on from one of them within a hairline angle) was mitred to it though the two
+  // never meet, and its end left open.
+  Plan plan = empty_plan();
+  add_wall(plan, "west", {-4, 0}, {0, 0});
+  add_wall(plan, "north", {0, 0}, {0, 3});
+  add_wall(plan, "south", {0, 0}, {0, -3});
+  Wall& above = add_wall(plan, "above", {0, 0}, {4, 4e-7});
+  above.base = 3.0;  // a gap above the others: built alone on the fast path
+  // Closed with the volume on every path (Nef labels the upper wall's end as a side; the
+  // paths' labels are compared elsewhere).
+  for (const BooleanPath path : {BooleanPath::nef, BooleanPath::automatic, BooleanPath::general})
+    expect_valid_walls(plan, path, 0, 2.5 * (6 * 0.2 + 3.9 * 0.2 + 4 * 0.2));
+}
+
+TEST(Modeling, WallsAnUlpApartStayApart) {
+  // Four furring walls round a duct in duplex.ifc (examples/ifc), a pinwheel: each ends
+  // against the next one's side. In doubles, 1.91755 - 0.027 is an ulp past 1.89055 (and so
+  // on round the duct), so neighbours are an ulp apart; the corners are exact doubles.
+  // Snapping them together (as rounded corners a few ulps apart are) pinched the solid at an
+  // edge of four faces, and the build refused it.
+  Plan plan = empty_plan();
+  add_wall(plan, "north", {0.80745, -10.09745}, {1.89055, -10.09745});
+  add_wall(plan, "west", {0.83445, -11.25955}, {0.83445, -10.12445});
+  add_wall(plan, "south", {1.94455, -11.23255}, {0.86145, -11.23255});
+  add_wall(plan, "east", {1.91755, -10.07045}, {1.91755, -11.20555});
+  for (Wall& w : plan.walls) w.thickness = 0.054, w.height = 0.288;
+  const double volume = 0.288 * 0.054 * 2 * ((1.89055 - 0.80745) + (11.20555 - 10.07045));
+  // Closed with the volume on every path (an end an ulp from a side is a side to Nef's
+  // labels and an end to the others'; the paths' labels are compared elsewhere).
+  for (const BooleanPath path : {BooleanPath::nef, BooleanPath::automatic, BooleanPath::general})
+    expect_valid_walls(plan, path, 0, volume);
 }
 
 TEST(Modeling, SlantedStemsOnBothSidesOfAWallFarAway) {

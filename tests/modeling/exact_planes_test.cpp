@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plane-based exact kernel of the general path (detail/exact_planes.h), checked against
 // rational arithmetic (GMP) written out independently here.
 #include "modeling/detail/exact_planes.h"

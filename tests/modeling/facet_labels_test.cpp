@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A facet of the CGAL path that spans walls of different colours is labelled as one piece:
 // no colour boundary runs diagonally across it.
 #include <set>

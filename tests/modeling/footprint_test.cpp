@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // wall_footprint's shortcut for axis-aligned walls (sums of doubles rounded, ties down) gives
 // bit for bit what the exact construction (exact::wall_corners in Radical, rounded by
 // exact::round_to_nearest) gives: a mitre's shared corner must not depend on which way each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fast path fuses faces across the seams where two collinear walls meet a stem at a hub.
 #include <gtest/gtest.h>
 

@@ -6,10 +6,6 @@
 // a reason, in every build of the suite, not only when the fuzzers run.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,20 +15,6 @@
 
 namespace roomcad {
 namespace {
-
-std::vector<std::filesystem::path> build_seeds() {
-  std::vector<std::filesystem::path> seeds;
-  for (const auto& entry : std::filesystem::directory_iterator(ROOMCAD_SOURCE_DIR "/fuzz/corpus/build"))
-    seeds.push_back(entry.path());
-  std::sort(seeds.begin(), seeds.end());
-  return seeds;
-}
-
-Plan decode_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
-  return fuzz::decode_plan(bytes.data(), bytes.size());
-}
 
 // The walls built on one path, or the reason they were refused.
 struct Outcome {
@@ -51,12 +33,12 @@ Outcome build_on(const Plan& plan, BooleanPath path) {
 }
 
 TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
-  const auto seeds = build_seeds();
+  const auto seeds = fuzz::corpus_files(ROOMCAD_SOURCE_DIR "/fuzz/corpus/build");
   ASSERT_GE(seeds.size(), 10u);
   std::size_t built = 0;
   for (const auto& seed : seeds) {
     SCOPED_TRACE(seed.filename().string());
-    const Plan plan = decode_file(seed);
+    const Plan plan = fuzz::decode_plan_file(seed);
     const Outcome nef = build_on(plan, BooleanPath::nef);
     for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general}) {
       SCOPED_TRACE(path == BooleanPath::general ? "general" : "automatic");

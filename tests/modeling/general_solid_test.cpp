@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The general path (detail/general_solid.h) on what the fast path cannot build and what
 // plans with errors hold (built as `--force` builds them): each solid is checked (closed,
 // 2-manifold, no self-intersection, outward, genus) and its volume is compared with the

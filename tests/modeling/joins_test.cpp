@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/joins.h"
 
 #include <cmath>
@@ -93,6 +94,54 @@ TEST(Joins, CollinearOverlapUnitesAndIsNotAMitre) {
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::unite);
+}
+
+TEST(Joins, CornerSharperThanTheMitreReachUnitesAndKeepsSquareEnds) {
+  // Walls 0.2 thick leaving the shared end at 14 and 15 degrees: the outer corner of their
+  // mitre lies 0.1 / sin(angle / 2) from the end, 0.82 and 0.77 m; the reach is 4 x 0.2 m.
+  const auto corner = [](double degrees) {
+    const double r = degrees * M_PI / 180;
+    return plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2),
+                    make_wall("b", {0, 0}, {4 * std::cos(r), 4 * std::sin(r)}, 0.2)});
+  };
+  EXPECT_EQ(find_joins(corner(15)).pairs.at(0).kind, JoinKind::mitre);
+  const Plan sharp = corner(14);
+  const Joins j = find_joins(sharp);
+  ASSERT_EQ(j.pairs.size(), 1u);
+  EXPECT_EQ(j.pairs[0].kind, JoinKind::unite);
+  EXPECT_FALSE(j.mitre[0][0].has_value());
+  const auto fa = wall_footprint(sharp, j, 0);
+  EXPECT_EQ(fa[0], (Point2{0, -0.1}));
+  EXPECT_EQ(fa[3], (Point2{0, 0.1}));
+}
+
+TEST(Joins, StraightRunToAnotherThicknessWithAKinkUnitesUnlessTheMitreIsNear) {
+  // A 0.2 m wall running on as a 0.1 m wall, bent by 1 degree: the side lines cross 2.9 m
+  // away. Bent by 10 degrees they cross 0.29 m away, within the reach of 0.8 m.
+  const auto run = [](double degrees, double thickness) {
+    const double r = degrees * M_PI / 180;
+    return plan_of({make_wall("a", {0, 0}, {3, 0}, 0.2),
+                    make_wall("b", {3, 0}, {3 + 2 * std::cos(r), 2 * std::sin(r)}, thickness)});
+  };
+  EXPECT_EQ(find_joins(run(1, 0.1)).pairs.at(0).kind, JoinKind::unite);
+  EXPECT_EQ(find_joins(run(10, 0.1)).pairs.at(0).kind, JoinKind::mitre);
+  EXPECT_EQ(find_joins(run(1, 0.2)).pairs.at(0).kind, JoinKind::mitre);  // equal: on the bisector
+  EXPECT_EQ(find_joins(run(0, 0.1)).pairs.at(0).kind, JoinKind::mitre);  // straight: square ends
+}
+
+TEST(Joins, HairpinOfWallsDrawnOverEachOtherStaysWithinItsWalls) {
+  // Found by fuzz_build: two walls ending at one point, one doubling back along the other
+  // with a tilt of 2e-16 rad; the mitre put a corner 7.7e18 m away.
+  const Plan p = plan_of({make_wall("a", {-1150000, -1150000}, {-1150000.0000000002, -1060000}, 20000),
+                          make_wall("b", {-1150000.0000000002, -1120000}, {-1150000.0000000002, -1060000}, 20000)});
+  const Joins j = find_joins(p);
+  ASSERT_EQ(j.pairs.size(), 1u);
+  EXPECT_EQ(j.pairs[0].kind, JoinKind::unite);
+  for (std::size_t w = 0; w < 2; ++w)
+    for (const Point2& c : wall_footprint(p, j, w)) {
+      EXPECT_LE(std::abs(c.x + 1150000), 10000.001);
+      EXPECT_LE(std::abs(c.y + 1105000), 45000.001);
+    }
 }
 
 TEST(Joins, TAndXAndThreeWayMeetingsUnite) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/mesh_check.h"
 
 #include <gtest/gtest.h>
@@ -52,6 +53,38 @@ TEST(MeshCheck, InsideOutBoxIsFlagged) {
   const SolidCheck c = check_solid(with_normals(mesh));
   EXPECT_EQ(c.inward_components, 1u);
   EXPECT_DOUBLE_EQ(c.volume, -2.0);
+}
+
+// A box [-1, 3] x [-1, 2] x [-1, 2] round the box of add_box: a shell with a void inside.
+void add_outer_box(SolidMesh& mesh) {
+  std::array<SolidMesh::VertexHandle, 8> v;
+  for (int k = 0; k < 8; ++k) v[k] = mesh.add_vertex(V((k & 1) ? 3 : -1, (k & 2) ? 2 : -1, (k & 4) ? 2 : -1));
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& f : faces) mesh.add_face({v[f[0]], v[f[1]], v[f[2]], v[f[3]]});
+}
+
+TEST(MeshCheck, AVoidInsideIsACavityNotAnInwardComponent) {
+  // A room closed by its walls, floor and ceiling: the void's shell faces inward, rightly.
+  SolidMesh mesh;
+  add_outer_box(mesh);
+  add_box(mesh, 0.0, -1, true);
+  const SolidCheck c = check_solid(with_normals(mesh));
+  EXPECT_EQ(c.cavities, 1u);
+  EXPECT_EQ(c.inward_components, 0u);
+  EXPECT_TRUE(c.is_valid());
+  EXPECT_DOUBLE_EQ(c.volume, 4.0 * 3.0 * 3.0 - 2.0);
+}
+
+TEST(MeshCheck, AVoidFacingOutwardIsFlagged) {
+  // The inner shell facing out: a box inside a box, not a solid with a void.
+  SolidMesh mesh;
+  add_outer_box(mesh);
+  add_box(mesh, 0.0);
+  add_box(mesh, 10.0, -1, true);  // and one inside out on its own
+  const SolidCheck c = check_solid(with_normals(mesh));
+  EXPECT_EQ(c.cavities, 0u);
+  EXPECT_EQ(c.inward_components, 2u);
+  EXPECT_FALSE(c.is_valid());
 }
 
 TEST(MeshCheck, OverlappingBoxesSelfIntersect) {

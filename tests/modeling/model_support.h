@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers for the modeling tests: small plans, and the checks every built solid must pass.
 #pragma once
 

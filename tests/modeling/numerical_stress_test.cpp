@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Numerical stress for the wall solid: a room and a free wall with openings flush with wall
 // ends, mitred corners and wall tops (openings always go through the whole thickness), and
 // walls of equal height side by side; walls 0.25 m and 2^-13 m (1.2e-4 m) thick, built 1e6

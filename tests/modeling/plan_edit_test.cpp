@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plan edits: what each changes, what each refuses, and the exact round trips.
 #include "modeling/plan_edit.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Edits of the version-2 objects and fields: levels and slabs added, set, moved and removed;
 // version-2 fields set from text and cleared.
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // Version 2 plans built (docs/plan-format.md "Version 2"): levels resolved (plan_levels.h, its
 // own tests in plan_levels_test.cpp),
 // arc walls as their chord polylines (arc_chords.h) with openings across chords, on every
-// path against Nef and the analytic volume; what the build does not make yet is refused by
-// name, never built flat.
+// path against Nef and the analytic volume; sloped tops and shaped openings built closed, with
+// the analytic volume (analytic_volume_test.cpp checks that volume itself).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 
 #include "model_support.h"
 #include "modeling/arc_chords.h"
+#include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 
 namespace roomcad {
@@ -108,12 +109,6 @@ Plan bow_room() {
   return plan;
 }
 
-double polyline_length(const std::vector<Point2>& line) {
-  double length = 0.0;
-  for (std::size_t k = 0; k + 1 < line.size(); ++k) length += std::hypot(line[k + 1].x - line[k].x, line[k + 1].y - line[k].y);
-  return length;
-}
-
 TEST(ArcBuild, AnArcWallIsItsMitredChordPolylineOnEveryPath) {
   Plan plan = bow_room();
   const double bow = polyline_length(chord_polyline(plan.walls[1], 0.01));
@@ -139,6 +134,16 @@ TEST(ArcBuild, AnOpeningAcrossChordsIsOneHoleThroughTheirMitres) {
   }
 }
 
+TEST(ArcBuild, AShapedOpeningAcrossChordsIsRefusedNamingItNotCutApart) {
+  Plan plan = bow_room();
+  add_opening(plan, "gable", OpeningType::window, "bow", 2.0, 2.0, 1.0, 1.0).shape = {{0, 0}, {1, 0}, {0.5, 1}};
+  test::expect_build_refused(plan, {}, Code::not_buildable, "opening 'gable' has a shape and spans corners");
+  // Within one chord (10 chords of 0.628 m) it is cut: a triangle of 0.4 x 0.5 through 0.2.
+  plan.openings[0].offset = 0.1, plan.openings[0].width = 0.4, plan.openings[0].height = 0.5;
+  const double bow = polyline_length(chord_polyline(plan.walls[1], 0.01));
+  test::expect_valid_walls(plan, BooleanPath::automatic, 2, 0.2 * (6 + bow + 6 + 6) * 2.5 - 0.2 * 0.1);
+}
+
 TEST(ArcBuild, FacesNameThePlansWallsAndOpenings) {
   Plan plan = bow_room();
   add_opening(plan, "win", OpeningType::window, "bow", 2.0, 2.0, 1.0, 1.0);
@@ -152,13 +157,17 @@ TEST(ArcBuild, FacesNameThePlansWallsAndOpenings) {
   }
 }
 
-TEST(V2Build, SlopedTopsAndShapedOpeningsAreRefusedNotBuiltFlat) {
+TEST(V2Build, SlopedTopsAndShapedOpeningsBuildClosedWithTheAnalyticVolume) {
   Plan plan = bow_room();
   plan.walls[0].height_at_end = 1.0;
-  test::expect_build_refused(plan, {}, Code::not_buildable, "wall 's' has a sloped top");
-  plan.walls[0].height_at_end = plan.walls[0].height;  // the same height: a flat top
   add_opening(plan, "arch", OpeningType::window, "s", 1, 1, 1, 1).shape = {{0, 0}, {1, 0}, {0.5, 1}};
-  test::expect_build_refused(plan, {}, Code::not_buildable, "opening 'arch' has a shape");
+  const Model model = build_model(plan);
+  const SolidCheck check = check_solid(model.walls);
+  EXPECT_TRUE(check.is_closed());
+  EXPECT_TRUE(check.is_manifold());
+  EXPECT_TRUE(check.is_valid());
+  const double analytic = analytic_wall_volume(plan);
+  EXPECT_NEAR(check.volume, analytic, 1e-9 * analytic);
 }
 
 }  // namespace

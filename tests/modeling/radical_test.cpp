@@ -1,8 +1,10 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // exact::Radical: signs, equalities and inverses of sums of products of square roots, decided
 // exactly (no refinement), and rounding to the nearest double.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "modeling/detail/radical.h"
 
@@ -51,6 +53,17 @@ TEST(Radical, RoundsToTheNearestDouble) {
   // Halfway between 1 and the next double: ties go to the lower.
   const double up = std::nextafter(1.0, 2.0);
   EXPECT_EQ(round_to_nearest((Radical(1) + Radical(up)) / Radical(2)), 1.0);
+}
+
+TEST(Radical, RoundsAValueWhoseTermsOverflowDoubles) {
+  // sqrt(2) + 1e300 * 1e300 / 1e300 / 1e300: terms of 1e600 (as a mitre of walls a denormal
+  // off straight divides by 1e-323), the value in range. Its interval is unbounded.
+  const Radical::Scope scope;
+  const Radical big(1e300);
+  const Radical x = sqrt(Radical(2)) * (big * big) / big / big;
+  EXPECT_EQ(round_to_nearest(x), std::sqrt(2.0));
+  EXPECT_EQ(round_to_nearest(-x), -std::sqrt(2.0));
+  EXPECT_EQ(round_to_nearest(x * big * big), std::numeric_limits<double>::max());  // saturates
 }
 
 }  // namespace

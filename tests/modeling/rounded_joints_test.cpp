@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Joints where two nearly collinear walls end side by side and a third wall meets them: the
 // exact union has slivers narrower than a double's step, which rounding must not turn into a
 // crash or a broken mesh. Reduced from the Sweet Home 3D homes 4-BedroomHouse and

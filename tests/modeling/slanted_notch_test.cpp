@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Random-plan finding S4 (docs/stress-findings.md): an opening flush with the free end of a
 // slanted wall (a notch) left, on the CGAL path, a sliver between the opening's end at u = 0
 // and the wall's rounded end cap; written in doubles it made an open, self-intersecting

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // snap_soup: corners a few ulps apart snap together, and the fins, needles and pinches that
 // leaves are cleaned away without opening the surface.
 #include <gtest/gtest.h>
@@ -72,6 +73,26 @@ TEST(Modeling, SnapDropsSpikesAndRepeatedCorners) {
   const IndexedSoup out = detail::snap_soup(soup, 0.0);
   ASSERT_EQ(out.polygons.size(), 1u);
   EXPECT_EQ(out.polygons[0], (std::vector<std::size_t>{0, 1, 2}));
+}
+
+// A unit cube whose front is two faces split at x = 0.5, the left one with a corner at mid
+// height on the split, and between them a flat triangle (all three corners on the split
+// line), as rounding leaves the side of a sliver. The triangle goes, the right face takes
+// the corner, and the cube stays closed.
+TEST(Modeling, SnapCollapsesAFlatPolygonIntoItsNeighboursEdges) {
+  IndexedSoup soup;
+  soup.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1},
+                 {0, 1, 1}, {0.5, 0, 0}, {0.5, 0, 1}, {0.5, 0, 0.5}};  // 8-10 on the split
+  soup.polygons = {{3, 2, 1, 8, 0}, {4, 9, 5, 6, 7}, {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5},
+                   {0, 8, 10, 9, 4}, {8, 1, 5, 9},  // the front's two faces
+                   {8, 9, 10}};                      // flat
+  soup.tags = {0, 1, 2, 3, 4, 5, 6, 7};
+  ASSERT_TRUE(is_closed(soup.polygons));
+  const IndexedSoup out = detail::snap_soup(soup, 0.0);
+  ASSERT_EQ(out.polygons.size(), 7u);
+  EXPECT_TRUE(is_closed(out.polygons));
+  EXPECT_EQ(out.polygons[6], (std::vector<std::size_t>{8, 1, 5, 9, 10}));
+  EXPECT_EQ(out.tags, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6}));
 }
 
 }  // namespace

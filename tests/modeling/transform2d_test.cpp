@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Homogeneous 2D transforms (row-vector convention) and their decimal-exact guarantees.
 #include "modeling/transform2d.h"
 

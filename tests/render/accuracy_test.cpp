@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The renderer against the exact reference (CGAL ray casts): object ids away from silhouettes,
 // windows seen straight on, and triangles crossing the near plane.
 #include <gtest/gtest.h>

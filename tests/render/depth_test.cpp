@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Depth precision: reversed-Z float keeps surfaces 1 cm apart apart at 1 km.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hidden-line removal: pieces classified as a sampled ray cast says, creases only, views.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Numerical stress for the renderer: a wall turned by 1e-9, 45 and 89.9999999 degrees, at the
 // origin and 1e6 and 1e7 m from it, lit by a high and a grazing sun: its sunlit face shows no
 // shadowed pixel (no acne) with hard or PCF shadows at 1024 and 4096 texels; and rooms at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A thousand plans (or ROOMCAD_STRESS_PLANS: support/stress_plans.h) from the seeded
 // generator (tests/support/random_plan.h), through validation, both build paths and the renderer:
 // - verdicts exact: a plan swapped in x and y, or scaled by 1024, gets the same codes on the

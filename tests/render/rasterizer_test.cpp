@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Clipping and rasterisation: near-plane clipping without mirrored vertices, the top-left rule
 // (shared edges drawn exactly once), back-face culling and perspective-correct weights.
 #include <gtest/gtest.h>

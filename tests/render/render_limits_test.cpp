@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Render options that would exhaust memory or time are refused, naming the option and value.
 #include <string>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The renderer as a whole: determinism across thread counts, shading modes, anti-aliasing,
 // grid lines, caller-owned buffers, the images asked for and option errors.
 #include <gtest/gtest.h>

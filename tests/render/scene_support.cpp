@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test meshes and the CGAL AABB-tree ray caster used as the exact reference.
 #include "scene_support.h"
 

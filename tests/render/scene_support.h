@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test scenes built as meshes directly, and an exact reference: a ray caster on CGAL's AABB
 // tree over the models' own (double precision) polygons.
 #pragma once

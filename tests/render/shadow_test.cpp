@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shadows against ray-traced shadows: hard shadows agree on every floor pixel more than one
 // shadow-map texel from a shadow edge; unlit shadowed pixels are the colour times ambient.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seed-004 pre-pass: finds exactly the triangles the z-buffer shows (none dropped, none
 // extra), and culling with it leaves the picture unchanged.
 #include <gtest/gtest.h>

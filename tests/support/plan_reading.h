@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a plan in a test, keeping both what read_plan_text returns and every problem it
 // reported, so that a test can look at the whole report.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running the roomcad binary from tests and capturing what it prints.
 #pragma once
 

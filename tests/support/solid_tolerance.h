@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a wall solid written in doubles can be held to: areas by face kind, and the volume
 // error that rounding its vertices to doubles allows, for tests that compare a built solid
 // with its analytic volume.

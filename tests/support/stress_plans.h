@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How many random plans a stress test runs: a documented default, or ROOMCAD_STRESS_PLANS.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every geometric code with a positive case and a just-clear negative case, in every frame
 // of all_frames() (see Frame for why the verdicts stay well defined there), plus exact
 // touching in the frames that keep the numbers exact.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Geometric cases with a signed margin, shared by the exactness and the numerical stress
 // tests: each is built in its local frame so that a margin e > 0 overlaps (or pokes out),
 // e < 0 leaves a gap and e == 0 touches; the codes expected when overlapping are given.

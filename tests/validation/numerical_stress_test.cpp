@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Numerical stress for validation: every geometric code told apart from a 1e-7 m gap or
 // overlap, with walls 0.25 m and 1e-4 m thick, 1e6 and 1e7 m from the origin, turned by
 // 1e-9, 45 and 89.9999999 degrees; exact touching at 2^20, 2^23 and 2^24 m (about 1.7e7 m).

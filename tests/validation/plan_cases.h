@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plans for validation tests: small builders, and a frame that moves a case far from the
 // origin and rotates it.
 #pragma once

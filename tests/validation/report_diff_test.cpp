@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // introduced_errors: errors counted per (code, sorted ids); warnings and rewordings ignored.
 #include <gtest/gtest.h>
 

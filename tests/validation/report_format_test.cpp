@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Printing reports: the spec's JSON object and the text for people.
 #include <string>
 

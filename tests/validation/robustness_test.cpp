@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // validate() on random plans (any geometry, awkward numbers): it never throws, it says the
 // same thing twice, and every item is a known code with a message.
 #include <set>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rooms from the wall arrangement, their clear areas, and the room warnings.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // invalid_value, duplicate_id, unknown_reference, and "one mistake gives one error".
 #include <cmath>
 #include <limits>

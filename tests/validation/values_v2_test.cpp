@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // invalid_value and unknown_reference for the version-2 objects and fields.
 #include <gtest/gtest.h>
 

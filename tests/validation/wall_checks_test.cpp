@@ -1,6 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Joins excuse walls from wall_overlap (L, T, X, three-way) unless centre lines overlap;
 // out_of_bounds on the site rectangle and max_height; messages with concrete fixes.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include "modeling/joins.h"
 #include "plan_cases.h"
@@ -130,6 +133,25 @@ TEST(Bounds, MitredCornerCountsAndHeightIsExact) {
   EXPECT_EQ(error_codes(r), Codes{Code::out_of_bounds});
   tall.walls[0].height = 5.875;
   EXPECT_EQ(error_codes(validate(tall, no_rooms())), Codes{});
+}
+
+TEST(Walls, OnLevelsStandingOnOneAnotherNeitherJoinNorOverlap) {
+  // A foundation wall on the level below and the wall above it on the same centre line, as
+  // IFC models (duplex.ifc) and storeys drawn one over the other have them; the upper wall's
+  // window at the foot of the upper wall. Judged with the levels resolved, they only touch.
+  Plan p = plan_with({make_wall("foundation", {1, 1}, {9, 1}), make_wall("wall", {1, 1}, {9, 1})});
+  p.levels = {{.id = "base", .elevation = 0.0, .height = 1.25}, {.id = "ground", .elevation = 1.25, .height = 2.8}};
+  p.walls[0].level = "base", p.walls[0].height = 1.25;
+  p.walls[1].level = "ground", p.walls[1].height = 2.8;
+  p.site.max_height = 6.0;
+  p.openings.push_back(make_opening("low", OpeningType::window, "wall", 2, 1.2, 1.0, 0.0));
+  EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});
+  // Let the foundation reach up into the storey above: now the two overlap (one wall drawn
+  // twice along that height), and the window is blocked by the wall below.
+  p.walls[0].height = 1.75;
+  const Codes clash = error_codes(validate(p, no_rooms()));
+  EXPECT_EQ(std::count(clash.begin(), clash.end(), Code::wall_overlap), 1);
+  EXPECT_EQ(std::count(clash.begin(), clash.end(), Code::opening_blocked), 1);
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // --keys scripts: every form parses to the events a person would cause; bad items are named.
 #include <gtest/gtest.h>
 

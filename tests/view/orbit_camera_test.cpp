@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Camera moves: turns keep the distance and come back after a full turn, pans move eye and
 // target together, zoom and projection toggles keep what is seen at the target.
 #include <gtest/gtest.h>

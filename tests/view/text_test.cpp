@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The overlay's text: glyphs land inside their cells, clipping is safe, panels darken.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The window's edit session: grid-step moves, turns, deletes (with confirmation), undo,
 // validated atomic saves and reloads, all on a real plan file.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The viewer without a window: its frames are roomcad's renderer's pictures, keys move the
 // camera and toggle the display, clicks select through the id buffer, errors are drawn red.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The checks validate() runs, one file each, sharing what earlier checks found.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Building diagnostics: numbers in metres a person can read, and the common shapes of items.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // duplicate_id (ids are unique across ALL objects of a plan) and unknown_reference.
 #include <algorithm>
 #include <string_view>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // opening_outside_wall, opening_overlap and opening_blocked.
 //
 // An opening is the rectangle [offset, offset + width] x [sill, sill + height] in its wall's

@@ -24,7 +24,8 @@ ResolvedPlan resolve_plan(const Plan& plan, const Usable& usable) {
   std::vector<bool> placed(plan.walls.size());
   std::vector<std::size_t> index_of(plan.walls.size());  // an input wall's first wall in r
   for (std::size_t w = plan.walls.size(); w-- > 0;)
-    placed[w] = usable.walls[w] && placed_on(plan.walls[w].level) && std::isfinite(absolute.walls[w].base);
+    placed[w] = usable.walls[w] && placed_on(plan.walls[w].level) && std::isfinite(absolute.walls[w].base) &&
+                std::isfinite(absolute.walls[w].base + absolute.walls[w].height);
   for (std::size_t j = chords.source_wall.size(); j-- > 0;) index_of[chords.source_wall[j]] = j;
   for (const std::size_t w : chords.source_wall) r.usable.walls.push_back(placed[w]);
   for (std::size_t j = 0; j < chords.plan.openings.size(); ++j) {

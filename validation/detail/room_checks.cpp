@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // room_without_door and room_without_window: a room is a bounded face of the walls' centre
 // line arrangement (find_rooms).
 #include <fmt/format.h>

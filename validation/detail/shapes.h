@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact shape tests for validation: mitred wall footprints, opening holes, and whether two
 // convex quadrilaterals share interior area, in any number type (see modeling's
 // exact::decide). Includes CGAL: only wall_checks.cpp and opening_checks.cpp include it.

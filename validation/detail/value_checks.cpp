@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // invalid_value: numbers that are not finite, sizes that are not positive, degenerate
 // directions, each field judged by its check in the field tables (modeling/plan_fields.h); then
 // the few rules that tie two fields together. A Plan built in code can hold anything, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // wall_overlap and out_of_bounds, on the walls that passed the value checks.
 //
 // Walls are their mitred footprints times [base, base + height]. Two walls that are not
@@ -6,7 +7,10 @@
 // Every verdict is exact (exact::decide); distances in messages are doubles.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <set>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -118,19 +122,30 @@ bool is_inside_site(const Site& s, const Footprints& fp, std::size_t w) {
 }
 
 /// @return "cells [7, 6]" (and " from origin [x, y]" if it must move): the smallest site on
-/// the same tile grid that holds both the old site and the box.
-std::string enlarged_site(const SiteRect& r, double cs, double lo_x, double lo_y, double hi_x,
-                          double hi_y) {
+/// the same tile grid that holds both the old site and the box; nothing if that takes more
+/// than 2^53 cells a side (no plan can state such a count exactly).
+std::optional<std::string> enlarged_site(const SiteRect& r, double cs, double lo_x, double lo_y,
+                                         double hi_x, double hi_y) {
   const auto grown_origin = [cs](double o, double lo) {
     return lo < o ? o - std::ceil((o - lo) / cs) * cs : o;
   };
   const double ox = grown_origin(r.x0, lo_x), oy = grown_origin(r.y0, lo_y);
   const auto cells = [cs](double o, double hi, double site_hi) {
-    return static_cast<long long>(std::ceil((std::max(hi, site_hi) - o) / cs));
+    return std::ceil((std::max(hi, site_hi) - o) / cs);
   };
-  std::string text = fmt::format("cells [{}, {}]", cells(ox, hi_x, r.x1), cells(oy, hi_y, r.y1));
+  const double nx = cells(ox, hi_x, r.x1), ny = cells(oy, hi_y, r.y1);
+  constexpr double kMostCells = 9007199254740992.0;  // 2^53
+  if (!(nx <= kMostCells && ny <= kMostCells)) return std::nullopt;
+  std::string text = fmt::format("cells [{}, {}]", static_cast<std::int64_t>(nx),
+                                 static_cast<std::int64_t>(ny));
   if (ox != r.x0 || oy != r.y0) text += fmt::format(" from origin [{}, {}]", ox, oy);
   return text;
+}
+
+std::string fix_outside_site(const std::string& distance, const char* direction,
+                             const std::optional<std::string>& site) {
+  if (!site) return fmt::format("move it {} {}", distance, direction);
+  return fmt::format("move it {} {}, or enlarge the site to {}", distance, direction, *site);
 }
 
 void report_outside_site(const Plan& plan, const std::array<Point2, 4>& f, const Wall& w,
@@ -151,9 +166,8 @@ void report_outside_site(const Plan& plan, const std::array<Point2, 4>& f, const
       Severity::error, Code::out_of_bounds, {w.id},
       fmt::format("{} reaches {} past the {} edge of the site [{}, {}] x [{}, {}].", name_of(w),
                   metres(std::max(worst.excess, 0.0)), worst.edge, r.x0, r.x1, r.y0, r.y1),
-      fmt::format("move it {} {}, or enlarge the site to {}",
-                  metres_at_least(std::max(worst.excess, 0.0)), worst.back,
-                  enlarged_site(r, plan.site.cell_size, lo_x, lo_y, hi_x, hi_y)),
+      fix_outside_site(metres_at_least(std::max(worst.excess, 0.0)), worst.back,
+                       enlarged_site(r, plan.site.cell_size, lo_x, lo_y, hi_x, hi_y)),
       box_where(lo_x, lo_y, hi_x, hi_y)));
 }
 
@@ -172,8 +186,12 @@ void report_too_high(const Site& s, const Wall& w, const std::array<Point2, 4>& 
       fmt::format("{} rises to {} (base {} + height {}), above the site's max_height {}.",
                   name_of(w), metres(w.base + height), metres(w.base), metres(height),
                   metres(s.max_height)),
-      fmt::format("lower its height to {} or less, or raise site.max_height",
-                  metres_at_most(std::max(s.max_height - w.base, 0.0))),
+      w.base < s.max_height
+          ? fmt::format("lower its height to {} or less, or raise site.max_height",
+                        metres_at_most(s.max_height - w.base))
+          : fmt::format("its base is at or above the site's max_height: lower its base below {}, "
+                        "or raise site.max_height to at least {}",
+                        metres(s.max_height), metres_at_least(w.base + height)),
       box_where(std::min({f[0].x, f[1].x, f[2].x, f[3].x}), std::min({f[0].y, f[1].y, f[2].y, f[3].y}),
                 std::max({f[0].x, f[1].x, f[2].x, f[3].x}), std::max({f[0].y, f[1].y, f[2].y, f[3].y}))));
 }

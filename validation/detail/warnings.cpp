@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Warnings that do not depend on geometry: unknown_field and door_above_floor.
 #include <cmath>
 #include <string_view>

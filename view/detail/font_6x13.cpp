@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The glyphs of the X11 "misc-fixed" 6x13 font (xfonts-base; public domain), ASCII 32..126,
 // made by scripts/font-from-pcf.py. One byte per row, top row first, leftmost pixel in bit 7.
 #include "view/detail/font_6x13.h"

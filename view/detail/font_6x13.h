@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A built-in bitmap font, so the window can write text without a font library.
 #pragma once
 

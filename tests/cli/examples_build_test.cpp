@@ -4,8 +4,6 @@
 
 #include <filesystem>
 
-#include "io/plan_json.h"
-#include "modeling/plan_fields.h"
 #include "support/run_command.h"
 
 namespace roomcad {
@@ -24,14 +22,6 @@ std::vector<std::filesystem::path> example_plans() {
   return plans;
 }
 
-// Version 2 geometry (levels, slopes, arcs, shapes, slabs) is built from the general path on
-// (issue 15): until then those plans are read, validated and drawn only, and skipped here.
-bool uses_version2_geometry(const std::filesystem::path& plan) {
-  const Result<Plan> read = read_plan_file(plan);
-  EXPECT_TRUE(read.ok()) << plan;
-  return read.ok() && uses_version2(read.value());
-}
-
 // The curated plans (examples/*.json) validate and build as they are; the imported homes
 // (examples/sweethome3d/) carry the validation errors of their sources, so they are built
 // with --force. Every one must give a wall solid that passes --check.
@@ -40,7 +30,6 @@ TEST(BuildCommand, EveryExamplePlanBuildsAndChecks) {
   if (plans.empty()) GTEST_SKIP() << "no example plans under examples/";
   test::TempDir dir;
   for (const auto& plan : plans) {
-    if (uses_version2_geometry(plan)) continue;
     const bool curated = plan.parent_path() == test::source_dir() / "examples";
     const auto out = dir / (plan.stem().string() + ".obj");
     std::vector<std::string> args{"build", plan.string(), "-o", out.string(), "--check"};

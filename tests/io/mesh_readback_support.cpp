@@ -8,7 +8,6 @@
 #include "io/plan_json.h"
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
-#include "modeling/plan_fields.h"
 #include "support/run_command.h"
 
 namespace roomcad::test {
@@ -34,9 +33,6 @@ const std::vector<BuiltExample>& built_examples() {
     for (const auto& path : example_plan_files()) {
       const Result<Plan> read = read_plan_file(path);
       if (!read) throw std::runtime_error(path.string() + ": does not read: " + read.message());
-      // Version 2 geometry (levels, slopes, arcs, shapes, slabs) is built from the general
-      // path on (issue 15); until then those plans are read, validated and drawn only.
-      if (uses_version2(*read)) continue;
       out.push_back({path.stem().string(), build_model(*read), analytic_wall_volume(*read)});
     }
     return out;

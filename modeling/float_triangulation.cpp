@@ -46,14 +46,31 @@ P3 point_of(const RoundedPoints& r, int id) {
   return {p[0], p[1], p[2]};
 }
 
-// The face's corners as point numbers, without consecutive repeats (across the seam too).
+// The face's corners as point numbers, without consecutive repeats and without spikes (across
+// the seam too). A spike (a, b, a) is where rounding closed a sliver of the face: the ring runs
+// to b and straight back. Its two edges cancel, and written they would lie on the edges of the
+// faces beside the sliver, so that an edge between two rounded points would join four facets.
 std::vector<int> rounded_ring(const SolidMesh& mesh, SolidMesh::FaceHandle f, const RoundedPoints& r) {
   std::vector<int> ring;
   for (const auto v : mesh.fv_range(f)) {
     const int id = r.of_vertex[std::size_t(v.idx())];
-    if (ring.empty() || ring.back() != id) ring.push_back(id);
+    if (!ring.empty() && ring.back() == id) continue;
+    if (ring.size() >= 2 && ring[ring.size() - 2] == id) {
+      ring.pop_back();  // a, b, a: back at a
+      continue;
+    }
+    ring.push_back(id);
   }
-  while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+  for (bool cut = true; cut && ring.size() > 1;) {
+    const std::size_t m = ring.size();
+    cut = true;
+    if (ring.front() == ring.back() || (m > 2 && ring[m - 2] == ring[0]))
+      ring.pop_back();  // a repeat, or a spike b at the end returning to the first corner
+    else if (m > 2 && ring[m - 1] == ring[1])
+      ring.erase(ring.begin());  // a spike at the first corner, from and back to the last
+    else
+      cut = false;
+  }
   return ring;
 }
 

@@ -23,9 +23,10 @@ struct FloatTriangle {
 
 /// Triangulates every face of `mesh` after rounding each vertex to the nearest float32 (-0 as
 /// +0), the way an STL file stores it and an STL reader welds it (equal coordinates, one vertex):
-///  1. each face's ring of rounded corners loses consecutive repeats and is ear-clipped on the
-///     rounded coordinates (triangulate_face), so it keeps positive area wherever the rounded
-///     polygon has any;
+///  1. each face's ring of rounded corners loses consecutive repeats and spikes (a corner the
+///     ring runs to and straight back from, where rounding closed a sliver of the face) and is
+///     ear-clipped on the rounded coordinates (triangulate_face), so it keeps positive area
+///     wherever the rounded polygon has any;
 ///  2. the triangles still flat after that (repeated corner, or three corners on one line: a
 ///     sliver face, or the zero-area part of a face that rounding pinched) are dropped, and every
 ///     corner of a collinear one is inserted into the triangle edges it lies strictly inside

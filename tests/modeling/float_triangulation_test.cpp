@@ -84,5 +84,29 @@ TEST(FloatTriangulation, EmptyMeshGivesNoTriangles) {
   EXPECT_TRUE(triangulate_in_float(mesh).empty());
 }
 
+// The unit box at (10, 5, 0) whose top is cut along x = 10.5 by a sliver S, as two walls'
+// tops a micrometre apart leave it (arif-putra-pertama-1): S runs up its right side at x = 10.5
+// and back down a left side that leans from 10.5 - 2e-7 (at y = 6 and 5.5) to 10.5 - 8e-7 (at
+// y = 5). In float the upper left corners round onto the right side (a float step here is
+// 9.5e-7): S's ring runs to (10.5, 6) and straight back, a spike whose edges would join the
+// faces beside S a second time. The spike is cut off and S keeps the triangle that is left.
+TEST(FloatTriangulation, CutsOffASpikeWhereRoundingClosesPartOfASliver) {
+  SolidMesh mesh;
+  auto add = [&](double x, double y, double z) { return mesh.add_vertex(V(x, y, z)); };
+  const auto b0 = add(10, 5, 0), b1 = add(11, 5, 0), b2 = add(11, 6, 0), b3 = add(10, 6, 0);
+  const auto a = add(10, 5, 1), b = add(11, 5, 1), c = add(11, 6, 1), d = add(10, 6, 1);
+  const auto p1 = add(10.5, 5, 1), p2 = add(10.5, 5.5, 1), p3 = add(10.5, 6, 1);
+  const auto q3 = add(10.5 - 2e-7, 6, 1), q2 = add(10.5 - 2e-7, 5.5, 1), q1 = add(10.5 - 8e-7, 5, 1);
+  using Ring = std::vector<SolidMesh::VertexHandle>;
+  for (const Ring& face : {Ring{b0, b3, b2, b1}, Ring{b0, b1, b, p1, q1, a}, Ring{b1, b2, c, b},
+                           Ring{b2, b3, d, q3, p3, c}, Ring{b3, b0, a, d}, Ring{a, q1, q2, q3, d},
+                           Ring{p1, b, c, p3, p2}, Ring{p1, p2, p3, q3, q2, q1}})
+    mesh.add_face(face);
+  mesh.request_face_normals();
+  mesh.update_face_normals();
+  const auto triangles = triangulate_in_float(mesh);
+  expect_closed_without_flat_triangles(triangles, 1.0);
+}
+
 }  // namespace
 }  // namespace roomcad

@@ -118,7 +118,7 @@ std::optional<DoorFix> DoorFixer::first_fix(std::size_t door, const std::vector<
   const auto is_clean = [&](const DoorFix& fix) {
     if (!near) {
       const double reach = std::max(o.width, cx_.rules.thresholds.clearance_depth) + o.width;
-      near.emplace(scene_, grown(scene_.wall_box(*scene_.host(door)), reach));
+      near.emplace(scene_, grown(scene_.wall_box(*scene_.host(door)), reach), heights_of(host));
     }
     return near->try_edits(fix.edits).has_value();
   };

@@ -54,7 +54,7 @@ std::optional<FixEdit> exterior_door(const Context& cx, const Scene& scene, cons
       const std::vector<Point2> exits = EscapeWalks::door_points(w, offset, offset + width, side.side);
       if (walks.walk_to(r, exits, w.thickness + 0.02, kFine) > limit) continue;
       std::vector<FixEdit> edits{add_door_edit(id, w.id, offset, width)};
-      if (!near) near.emplace(scene, scene.wall_box(side.wall));
+      if (!near) near.emplace(scene, scene.wall_box(side.wall), heights_of(w));
       if (near->try_edits(edits)) return edits.front();
     }
   }

@@ -24,10 +24,25 @@ ValidateOptions local_options() {
 
 }  // namespace
 
-Neighbourhood::Neighbourhood(const Scene& scene, const Box2& box) {
+Heights heights_of(const Wall& w) {
+  return {w.base, w.base + std::max(w.height, w.height_at_end.value_or(w.height))};
+}
+
+Heights heights_of(const Plan& plan, const std::vector<std::size_t>& walls) {
+  Heights band = heights_of(plan.walls[walls.front()]);
+  for (const std::size_t w : walls) {
+    const Heights h = heights_of(plan.walls[w]);
+    band = {std::min(band.low, h.low), std::max(band.high, h.high)};
+  }
+  return band;
+}
+
+Neighbourhood::Neighbourhood(const Scene& scene, const Box2& box, Heights heights) {
   const Plan& plan = scene.plan();
   std::set<std::size_t> walls;
   for (const std::size_t w : scene.walls_near(box)) {
+    const Heights h = heights_of(plan.walls[w]);
+    if (h.low > heights.high || h.high < heights.low) continue;  // another storey's
     walls.insert(w);
     for (const std::size_t partner : scene.walls_near(scene.wall_box(w)))
       if (scene.joins().are_joined(w, partner)) walls.insert(partner);

@@ -16,11 +16,24 @@
 
 namespace roomcad::rules {
 
+/// A band of heights: a neighbourhood keeps only the walls that reach into it, so that on a
+/// home of many storeys the walls above and below (which no edit of this storey meets) are
+/// not validated with every candidate.
+struct Heights {
+  double low = 0.0, high = 0.0;
+};
+
+/// @return the heights wall `w` spans: its base to its highest top. O(1).
+[[nodiscard]] Heights heights_of(const Wall& w);
+/// @return the heights the walls span together. @pre walls not empty. O(walls).
+[[nodiscard]] Heights heights_of(const Plan& plan, const std::vector<std::size_t>& walls);
+
 /// The part of a plan near a place, with its errors as they are.
 class Neighbourhood {
  public:
-  /// @param[in] box  the region an edit may change (e.g. a door's wall grown by its leaf)
-  Neighbourhood(const Scene& scene, const Box2& box);
+  /// @param[in] box      the region an edit may change (e.g. a door's wall grown by its leaf)
+  /// @param[in] heights  the heights an edit may change (touching included)
+  Neighbourhood(const Scene& scene, const Box2& box, Heights heights);
 
   [[nodiscard]] const Plan& plan() const { return plan_; }
   /// @return the neighbourhood with the edits applied, if they apply and introduce no error

@@ -47,7 +47,7 @@ std::pair<std::string, std::vector<FixEdit>> sill_fix(const Scene& scene, std::s
     text += fmt::format(" and its height to {} m", number_text(height));
   }
   std::vector<FixEdit> edits{set_edit(o.id, std::move(fields))};
-  if (!Neighbourhood(scene, scene.wall_box(*scene.host(i))).try_edits(edits))
+  if (!Neighbourhood(scene, scene.wall_box(*scene.host(i)), heights_of(w)).try_edits(edits))
     return {text + " (this makes it meet another opening: move that one first)", {}};
   return {std::move(text), std::move(edits)};
 }
@@ -139,7 +139,7 @@ void check_wall_copies(const Context& cx, const Scene& scene, Report& report) {
     const std::string fix = fmt::format(
         "delete wall '{}'{}", plan.walls[copy].id,
         edits.size() > 1 ? fmt::format(", moving its openings to wall '{}'", plan.walls[keep].id) : "");
-    if (!Neighbourhood(scene, scene.wall_box(copy)).try_edits(edits)) edits.clear();
+    if (!Neighbourhood(scene, scene.wall_box(copy), heights_of(plan.walls[copy])).try_edits(edits)) edits.clear();
     const Box2& b = scene.wall_box(copy);
     report_copy(cx, "wall", plan.walls[keep].id, plan.walls[copy].id, std::move(edits), fix,
                 detail::box_where(b.min_x, b.min_y, b.max_x, b.max_y), report);

@@ -217,7 +217,7 @@ std::optional<PassageFix> PassageGeometry::find_fix(const Barrier& bar, double w
   const Box2& by = scene_.wall_box(y);
   box = {std::min(box.min_x, by.min_x), std::min(box.min_y, by.min_y), std::max(box.max_x, by.max_x),
          std::max(box.max_y, by.max_y), 0};
-  const Neighbourhood near(scene_, grown(box, step + 2.0));
+  const Neighbourhood near(scene_, grown(box, step + 2.0), heights_of(scene_.plan(), {x, y}));
   const Point2 mid{(bar.a.x + bar.b.x) / 2, (bar.a.y + bar.b.y) / 2};
   for (Candidate& c : candidates) {
     const std::optional<Plan> edited = near.try_edits(c.edits);

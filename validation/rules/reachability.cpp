@@ -64,7 +64,7 @@ std::optional<FixEdit> connecting_door(const Context& cx, const Scene& scene, co
         const std::optional<std::size_t> other = locator.locate(beyond_side(plan, side, offset + width / 2, kProbe));
         if (other && !reached[*other]) continue;
         std::vector<FixEdit> edits{add_door_edit(id, plan.walls[side.wall].id, offset, width)};
-        if (!near) near.emplace(scene, scene.wall_box(side.wall));
+        if (!near) near.emplace(scene, scene.wall_box(side.wall), heights_of(plan.walls[side.wall]));
         if (near->try_edits(edits)) return edits.front();
       }
     }

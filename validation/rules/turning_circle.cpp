@@ -91,7 +91,7 @@ std::optional<WallMove> widen_room(const Scene& scene, const Storey& s, const Ro
   const std::optional<Point2> inside = interior_point(room);
   if (!inside) return std::nullopt;
   const double step = centimetres_up(lacking + 0.01);
-  const Neighbourhood near(scene, grown(room_box(room), step + 2.0));
+  const Neighbourhood near(scene, grown(room_box(room), step + 2.0), heights_of(scene.plan(), s.walls));
   const std::vector<SideMove> moves = side_moves(scene, room, step);
   for (const SideMove& m : moves) {
     std::vector<FixEdit> edits = move_wall_edits(scene, m.wall, m.by);

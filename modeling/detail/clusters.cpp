@@ -30,15 +30,6 @@ class DisjointSets {
   std::vector<std::size_t> parent_;
 };
 
-Box2 box_of(const WallFrame& f) {
-  Box2 b{f.footprint[0].x, f.footprint[0].y, f.footprint[0].x, f.footprint[0].y, f.wall};
-  for (const Point2& p : f.footprint) {
-    b.min_x = std::min(b.min_x, p.x), b.max_x = std::max(b.max_x, p.x);
-    b.min_y = std::min(b.min_y, p.y), b.max_y = std::max(b.max_y, p.y);
-  }
-  return b;
-}
-
 // Whether two footprints are certainly apart: some edge normal of either separates them by
 // more than a small margin (so shapes that touch, or nearly, count as meeting). O(1).
 bool are_apart(const WallFrame& a, const WallFrame& b) {
@@ -107,7 +98,7 @@ void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const 
   }
   std::vector<Box2> boxes;
   boxes.reserve(frames.size());
-  for (const WallFrame& f : frames) boxes.push_back(box_of(f));
+  for (const WallFrame& f : frames) boxes.push_back(footprint_box(f));
   for (const auto& [a, b] : find_meeting_boxes(boxes)) {
     if (joins.are_joined(a, b)) continue;
     if (frames[a].top_max < frames[b].base || frames[b].top_max < frames[a].base) continue;
@@ -141,7 +132,7 @@ std::vector<char> find_general_components(const std::vector<char>& general, Disj
 void link_slabs(const std::vector<WallFrame>& frames, const std::vector<SlabFrame>& slabs, DisjointSets& sets) {
   const std::size_t n = frames.size();
   std::vector<Box2> walls, boxes;
-  for (const WallFrame& f : frames) walls.push_back(box_of(f));
+  for (const WallFrame& f : frames) walls.push_back(footprint_box(f));
   for (std::size_t s = 0; s < slabs.size(); ++s)
     boxes.push_back({slabs[s].min_x, slabs[s].min_y, slabs[s].max_x, slabs[s].max_y, s});
   for (const auto& [w, s] : find_meeting_boxes(walls, boxes))

@@ -82,18 +82,19 @@ void lay_ring(Polygon& ring, int inside, const std::vector<WallFrame>& walls, co
 
 }  // namespace
 
-void lay_slab_edges_into_walls(Slab& slab, const std::vector<WallFrame>& walls, double tolerance) {
+std::vector<Box2> wall_boxes_for_laying(const std::vector<WallFrame>& walls, double tolerance) {
   std::vector<Box2> boxes;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const auto& c = walls[i].footprint;
     if (!(signed_area(Polygon(c.begin(), c.end())) > 0.0)) continue;  // a bow tie: no inside to lay into
-    Box2 b{INFINITY, INFINITY, -INFINITY, -INFINITY, i};
-    for (const Point2& p : walls[i].footprint) {
-      b.min_x = std::min(b.min_x, p.x - tolerance), b.max_x = std::max(b.max_x, p.x + tolerance);
-      b.min_y = std::min(b.min_y, p.y - tolerance), b.max_y = std::max(b.max_y, p.y + tolerance);
-    }
-    boxes.push_back(b);
+    boxes.push_back(footprint_box(walls[i], tolerance));
+    boxes.back().index = i;
   }
+  return boxes;
+}
+
+void lay_slab_edges_into_walls(Slab& slab, const std::vector<WallFrame>& walls, const std::vector<Box2>& boxes,
+                               double tolerance) {
   const double bottom = slab.top - slab.thickness;
   const int outline_turn = signed_area(slab.outline) > 0.0 ? 1 : -1;
   lay_ring(slab.outline, outline_turn, walls, boxes, bottom, slab.top, tolerance);

@@ -25,8 +25,14 @@ namespace roomcad::detail {
 /// is laid into both.
 /// @param[in,out] slab  top absolute (with_absolute_heights)
 /// @param[in] walls     the plan's wall frames
+/// @param[in] boxes     wall_boxes_for_laying(walls, tolerance), made once for every slab
 /// @param[in] tolerance the site's join tolerance
 /// Cost O((n + e) log (n + e) + k) for n walls, e slab edges and k near pairs.
-void lay_slab_edges_into_walls(Slab& slab, const std::vector<WallFrame>& walls, double tolerance);
+void lay_slab_edges_into_walls(Slab& slab, const std::vector<WallFrame>& walls, const std::vector<Box2>& boxes,
+                               double tolerance);
+
+/// @return the walls' footprint boxes grown by `tolerance`, tagged with their index in
+///         `walls`; a wall whose footprint is a bow tie (no inside to lay into) has none. O(n).
+[[nodiscard]] std::vector<Box2> wall_boxes_for_laying(const std::vector<WallFrame>& walls, double tolerance);
 
 }  // namespace roomcad::detail

@@ -124,12 +124,13 @@ std::vector<Polygon> convex_pieces(const Slab& slab) {
 
 std::vector<SlabFrame> make_slab_frames(const Plan& plan, const std::vector<WallFrame>& walls) {
   std::vector<SlabFrame> frames;
+  const std::vector<Box2> wall_boxes = wall_boxes_for_laying(walls, plan.site.tolerance);
   for (std::size_t i = 0; i < plan.slabs.size(); ++i) {
     Slab s = plan.slabs[i];
     SlabFrame f{.slab = i, .outline = {}, .holes = {}, .pieces = {}, .bottom = s.top - s.thickness, .top = s.top,
                 .color = s.color};
     if (!(f.bottom < f.top) || s.outline.size() < 3) continue;
-    lay_slab_edges_into_walls(s, walls, plan.site.tolerance);
+    lay_slab_edges_into_walls(s, walls, wall_boxes, plan.site.tolerance);
     f.pieces = convex_pieces(s);
     f.outline = s.outline, f.holes = s.holes;
     if (f.pieces.empty()) continue;

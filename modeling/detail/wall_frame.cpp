@@ -60,6 +60,20 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   return f;
 }
 
+}  // namespace
+
+Box2 footprint_box(const WallFrame& f, double margin) {
+  Box2 b{f.footprint[0].x, f.footprint[0].y, f.footprint[0].x, f.footprint[0].y, f.wall};
+  for (const Point2& p : f.footprint) {
+    b.min_x = std::min(b.min_x, p.x), b.max_x = std::max(b.max_x, p.x);
+    b.min_y = std::min(b.min_y, p.y), b.max_y = std::max(b.max_y, p.y);
+  }
+  b.min_x -= margin, b.min_y -= margin, b.max_x += margin, b.max_y += margin;
+  return b;
+}
+
+namespace {
+
 Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
   const Opening& o = plan.openings[index];
   const Wall& w = plan.walls[f.wall];

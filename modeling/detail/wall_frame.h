@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "modeling/broad_phase.h"
 #include "modeling/joins.h"
 #include "modeling/plan.h"
 
@@ -55,6 +56,9 @@ struct WallFrame {
   std::vector<Hole> holes;  ///< sorted by u0
   std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
+
+/// @return the box of the wall's footprint grown by `margin` metres, tagged with its wall. O(1).
+[[nodiscard]] Box2 footprint_box(const WallFrame& f, double margin = 0.0);
 
 /// @return whether the wall's top is sloped (a plane through its two top ends). O(1).
 [[nodiscard]] inline bool is_sloped(const WallFrame& f) { return f.heights[0] != f.heights[1]; }

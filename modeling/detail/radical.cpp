@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <stdexcept>
 
 namespace roomcad::exact {
@@ -35,23 +34,42 @@ mpq_class with_squares(mpq_class c, std::uint64_t common) {
   return c;
 }
 
+/// @return a + b_sign * b. Both are sorted by mask, so one merge pass (no map, no node
+/// allocation: this is the inner loop of every exact predicate that reaches the roots).
 Terms combine(const Terms& a, const Terms& b, int b_sign) {
-  std::map<std::uint64_t, mpq_class> sum;
-  for (const auto& [m, c] : a) sum[m] += c;
-  for (const auto& [m, c] : b) sum[m] += b_sign * c;
   Terms out;
-  for (auto& [m, c] : sum)
-    if (sgn(c) != 0) out.emplace_back(m, std::move(c));
+  out.reserve(a.size() + b.size());
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    if (j == b.size() || (i < a.size() && a[i].first < b[j].first)) {
+      out.push_back(a[i++]);
+    } else if (i == a.size() || b[j].first < a[i].first) {
+      out.emplace_back(b[j].first, b_sign < 0 ? mpq_class(-b[j].second) : b[j].second);
+      ++j;
+    } else {
+      mpq_class c = b_sign < 0 ? mpq_class(a[i].second - b[j].second) : mpq_class(a[i].second + b[j].second);
+      if (sgn(c) != 0) out.emplace_back(a[i].first, std::move(c));
+      ++i, ++j;
+    }
+  }
   return out;
 }
 
+/// @return a * b: every pair of terms, then sorted by mask with equal masks summed.
 Terms multiply(const Terms& a, const Terms& b) {
-  std::map<std::uint64_t, mpq_class> product;
+  Terms products;
+  products.reserve(a.size() * b.size());
   for (const auto& [ma, ca] : a)
-    for (const auto& [mb, cb] : b) product[ma ^ mb] += with_squares(ca * cb, ma & mb);
+    for (const auto& [mb, cb] : b) products.emplace_back(ma ^ mb, with_squares(ca * cb, ma & mb));
+  std::sort(products.begin(), products.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
   Terms out;
-  for (auto& [m, c] : product)
-    if (sgn(c) != 0) out.emplace_back(m, std::move(c));
+  out.reserve(products.size());
+  for (auto& [m, c] : products) {
+    if (!out.empty() && out.back().first == m) out.back().second += c;
+    else out.emplace_back(m, std::move(c));
+  }
+  std::erase_if(out, [](const auto& term) { return sgn(term.second) == 0; });
   return out;
 }
 
@@ -144,7 +162,15 @@ Radical operator/(const Radical& a, const Radical& b) {
 }
 Radical Radical::operator-() const { return from_terms(combine({}, terms_, -1)); }
 
-int sign(const Radical& x) { return sign_of(x.terms_); }
+int sign(const Radical& x) {
+  // Most signs asked are far from zero: their interval tells, without the roots' recursion.
+  if (x.terms_.size() > 1) {
+    const auto [lo, hi] = to_interval(x);
+    if (lo > 0) return 1;
+    if (hi < 0) return -1;
+  }
+  return sign_of(x.terms_);
+}
 
 /// sqrt(s) = q / sqrt(prod P) = (q / prod P) * prod_{i in P} sqrt(s_i) when s * prod P = q^2
 /// for a subset P of the registered radicands (P empty: s is a square); otherwise s is new.

@@ -53,7 +53,8 @@ class Radical {
   friend Radical operator/(const Radical& a, const Radical& b);
   Radical operator-() const;
 
-  /// @return -1, 0 or +1, exactly. Cost: up to 3^k rational products for k roots in x.
+  /// @return -1, 0 or +1, exactly. Cost: one interval evaluation, and when that cannot tell
+  /// (x is zero or very near it) up to 3^k rational products for k roots in x.
   friend int sign(const Radical& x);
 
   /// @return sqrt(x). @pre x is rational (no roots in it) and x >= 0; throws otherwise.

@@ -3,6 +3,7 @@
 // grid of rooms, random plans. Every finding's fix, applied, removes the finding and brings
 // no error; reports are the same run after run.
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -20,18 +21,25 @@ namespace fs = std::filesystem;
 using testing::check;
 using testing::expect_fix_clears;
 
-/// Checks every fix of the report's rule findings (each under its own rule, so that the
-/// check stays cheap). @return the number of findings per code.
-std::map<Code, int> check_every_fix(const Plan& plan, const RuleSet& rules, const Report& report) {
-  std::map<Code, int> counts;
+/// Checks the fix of each of the report's rule findings, under the finding's own rule (so
+/// that the check stays cheap), and of at most `per_code` findings of each code. A messy
+/// home repeats one finding over and over (arif-putra-pertama-1: 2185 narrow passages over
+/// its 17 levels, found by one search each), and every check validates the whole home again.
+/// @return the number of findings per code.
+std::map<Code, int> check_fixes(const Plan& plan, const RuleSet& rules, const Report& report,
+                                int per_code = std::numeric_limits<int>::max()) {
+  std::map<Code, int> counts, checked;
+  std::map<Code, Report> before;  // the plan's report under each code's rule alone
   for (const Diagnostic& d : report.items) {
     if (!rule_index(d.code)) continue;
     ++counts[d.code];
-    if (d.edits.empty()) continue;  // a fix in words only: nothing to apply
+    if (d.edits.empty() || checked[d.code] == per_code) continue;  // a fix in words only: nothing to apply
+    ++checked[d.code];
     RuleSet one = testing::only({d.code});
     one.thresholds = rules.thresholds;
+    if (!before.count(d.code)) before[d.code] = check(plan, one);
     SCOPED_TRACE(std::string(to_string(d.code)) + ": " + d.message);
-    expect_fix_clears(plan, one, d);
+    expect_fix_clears(plan, one, d, &before[d.code]);
   }
   return counts;
 }
@@ -45,7 +53,8 @@ std::vector<fs::path> bundled_plans() {
   return out;
 }
 
-TEST(ExamplesRules, EveryFixOnTheBundledPlansClearsItsFinding) {
+TEST(ExamplesRules, FixesOnTheBundledPlansClearTheirFindings) {
+  constexpr int kFixesPerCode = 8;  // per plan: every fix on the clean homes, a sample on messy ones
   const RuleSet all = *builtin_rule_set("all");
   std::size_t plans = 0, with_findings = 0;
   for (const fs::path& path : bundled_plans()) {
@@ -55,7 +64,7 @@ TEST(ExamplesRules, EveryFixOnTheBundledPlansClearsItsFinding) {
     const Report report = check(*read.plan, all);
     EXPECT_EQ(report.items, check(*read.plan, all).items);  // deterministic, whatever the threads did
     ++plans;
-    if (!check_every_fix(*read.plan, all, report).empty()) ++with_findings;
+    if (!check_fixes(*read.plan, all, report, kFixesPerCode).empty()) ++with_findings;
   }
   EXPECT_GE(plans, 14u);
   EXPECT_GE(with_findings, 10u);  // the homes are real: every one of them has something to say
@@ -71,7 +80,7 @@ TEST(ExamplesRules, GridOfRoomsWithOneEntrance) {
   const RuleSet all = *builtin_rule_set("all");
   const Report report = check(plan, all);
   EXPECT_TRUE(report.ok());
-  const std::map<Code, int> counts = check_every_fix(plan, all, report);
+  const std::map<Code, int> counts = check_fixes(plan, all, report);
   ASSERT_EQ(counts.size(), 1u);
   EXPECT_EQ(counts.begin()->first, Code::escape_too_far);
   EXPECT_GT(counts.begin()->second, 0);
@@ -85,7 +94,7 @@ TEST(ExamplesRules, RandomPlansNeverBreakTheRules) {
     const Plan plan = samples::random_plan(seed);
     Report report;
     ASSERT_NO_THROW(report = check(plan, all));
-    check_every_fix(plan, all, report);
+    check_fixes(plan, all, report);
   }
 }
 

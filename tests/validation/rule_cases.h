@@ -54,15 +54,17 @@ inline bool still_there(const Report& report, const Diagnostic& d) {
 }
 
 /// Applies the finding's edits to a copy of the plan and checks the fix: the finding is gone
-/// under the same rules, and validation reports no error the plan did not have.
+/// under the same rules, and validation reports no error the plan did not have (`before`:
+/// the plan's report under those rules, when the caller has it already).
 /// @return the plan with the fix applied.
-inline Plan expect_fix_clears(const Plan& plan, const RuleSet& rules, const Diagnostic& finding) {
+inline Plan expect_fix_clears(const Plan& plan, const RuleSet& rules, const Diagnostic& finding,
+                              const Report* before = nullptr) {
   Plan fixed = plan;
   EXPECT_FALSE(finding.edits.empty()) << "no edits for: " << finding.message << " (fix: " << finding.fix << ")";
   EXPECT_NO_THROW(apply_fix_edits(fixed, finding.edits)) << finding.fix;
   const Report after = check(fixed, rules);
   EXPECT_FALSE(still_there(after, finding)) << "still there after '" << finding.fix << "': " << finding.message;
-  const Report fresh = introduced_errors(check(plan, rules), after);
+  const Report fresh = introduced_errors(before ? *before : check(plan, rules), after);
   EXPECT_TRUE(fresh.items.empty()) << "the fix '" << finding.fix << "' brought " << to_string(fresh.items.front().code)
                                    << ": " << fresh.items.front().message;
   return fixed;

@@ -12,6 +12,7 @@
 // that is being repaired.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -103,6 +104,12 @@ struct Wall {
   ExtraFields extra{};
   friend bool operator==(const Wall&, const Wall&) = default;
 };
+
+/// @return the highest top of wall `w` above its base: its height, or the higher end of a
+///         sloped top. O(1).
+[[nodiscard]] inline double highest_height(const Wall& w) {
+  return std::max(w.height, w.height_at_end.value_or(w.height));
+}
 
 enum class OpeningType { door, window };
 enum class Hinge { left, right };

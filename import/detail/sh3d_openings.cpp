@@ -162,7 +162,7 @@ std::optional<Opening> cut_piece(const ItemRecord& item, const Cut& cut, double 
   const Interval along = span_along(item, cut.fit);
   const Interval u{on_dyadic_grid(along.lo < 0 ? kInset : along.lo),
                    on_dyadic_grid(std::min(along.hi, cut.fit.length - kInset))};
-  const double highest = std::max(w.height, w.height_at_end.value_or(w.height));
+  const double highest = highest_height(w);
   const Interval v{on_dyadic_grid(std::max(cut.z.lo - cut.wall.base_z, 0.0)),
                    std::min(on_dyadic_grid(cut.z.hi - cut.wall.base_z), highest)};
   if (u.hi - u.lo < min_piece || v.hi - v.lo < min_piece) return std::nullopt;

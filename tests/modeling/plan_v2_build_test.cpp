@@ -15,6 +15,7 @@
 #include "modeling/arc_chords.h"
 #include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
+#include "testing/tower_plan.h"
 
 namespace roomcad {
 namespace {
@@ -168,6 +169,29 @@ TEST(V2Build, SlopedTopsAndShapedOpeningsBuildClosedWithTheAnalyticVolume) {
   EXPECT_TRUE(check.is_valid());
   const double analytic = analytic_wall_volume(plan);
   EXPECT_NEAR(check.volume, analytic, 1e-9 * analytic);
+}
+
+TEST(V2Build, AGeneratedTowerOfStoreysAndFloorsIsOneClosedSolid) {
+  // 3 storeys of the 2 x 2 grid (bench/build_bench.cpp builds 6 of 6 x 6), each on its floor.
+  // Walls per storey: plan area 12 x 4 x 0.2 less what the 4 tees (0.2^2 / 2 each) and the
+  // cross (0.2^2) count twice = 9.48 m^2, 2.8 high, less 4 doors 0.9 x 2.1 and 24 windows
+  // 0.8 x 1.2 through 0.2: 20.424 m^3. Floors: 8.2 x 8.2 x 0.2, above the ground storey less
+  // a stair well 1 x 2.6. The walls stand on their floor and reach the next one: no overlap.
+  samples::TowerSpec spec;
+  spec.storey.n = 2;
+  spec.storeys = 3;
+  const Plan plan = samples::make_tower_plan(spec);
+  ASSERT_EQ(plan.walls.size(), 36u);
+  const double expected = 3 * 20.424 + 0.2 * (3 * 67.24 - 2 * 2.6);
+  for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general}) {
+    const Model model = build_model(plan, test::options_for(path));
+    const SolidCheck check = check_solid(model.walls);
+    EXPECT_TRUE(check.is_closed());
+    EXPECT_TRUE(check.is_manifold());
+    EXPECT_TRUE(check.is_valid());
+    EXPECT_NEAR(check.volume, expected, 1e-9 * expected);
+    EXPECT_NEAR(analytic_wall_volume(plan), expected, 1e-9 * expected);
+  }
 }
 
 }  // namespace

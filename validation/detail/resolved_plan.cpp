@@ -9,8 +9,6 @@
 
 namespace roomcad::detail {
 
-double highest_height(const Wall& w) { return std::max(w.height, w.height_at_end.value_or(w.height)); }
-
 ResolvedPlan resolve_plan(const Plan& plan, const Usable& usable) {
   // A level that is missing (an unknown_reference) or has a bad elevation (an invalid_value)
   // leaves its objects unplaced: nothing more is said about them.

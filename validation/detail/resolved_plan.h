@@ -28,8 +28,4 @@ struct ResolvedPlan {
 /// O(walls + chords + openings x chords of their wall).
 [[nodiscard]] ResolvedPlan resolve_plan(const Plan& plan, const Usable& usable);
 
-/// @return the highest top of wall `w` above its base: its height, or the larger end of a
-///         sloped top. O(1).
-[[nodiscard]] double highest_height(const Wall& w);
-
 }  // namespace roomcad::detail

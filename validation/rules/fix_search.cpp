@@ -25,7 +25,7 @@ ValidateOptions local_options() {
 }  // namespace
 
 Heights heights_of(const Wall& w) {
-  return {w.base, w.base + std::max(w.height, w.height_at_end.value_or(w.height))};
+  return {w.base, w.base + highest_height(w)};
 }
 
 Heights heights_of(const Plan& plan, const std::vector<std::size_t>& walls) {

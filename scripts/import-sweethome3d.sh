@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Regenerates examples/sweethome3d/*.json from the Sweet Home 3D homes bundled in
-# examples/sweethome3d/homes (the eTeks example homes and the edge case; THIRD_PARTY.md) with
-# `roomcad import` (build first: scripts/build.sh).
+# examples/sweethome3d/homes (the eTeks example homes, the edge case and the community homes;
+# THIRD_PARTY.md) with `roomcad import` (build first: scripts/build.sh).
 # Warnings about approximations go to examples/sweethome3d/<Name>.import.txt.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -87,7 +87,10 @@ std::vector<Hub> find_hubs(const std::vector<WallFrame>& frames, const Joins& jo
   for (auto& [point, arms] : nodes) {
     if (arms.size() < 3 || !are_all_joined(joins, arms)) continue;
     Hub hub = make_hub(frames, std::move(arms));
-    if (is_valid_hub(frames, hub.arms)) hubs.push_back(std::move(hub));
+    // Arms a denormal off collinear put a corner at infinity: such a node is the general path's.
+    const bool finite = std::all_of(hub.corners.begin(), hub.corners.end(),
+                                    [](Point2 c) { return std::isfinite(c.x) && std::isfinite(c.y); });
+    if (finite && is_valid_hub(frames, hub.arms)) hubs.push_back(std::move(hub));
   }
   auto first_wall = [](const Hub& h) {
     return std::min_element(h.arms.begin(), h.arms.end())->first;

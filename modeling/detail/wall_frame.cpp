@@ -21,6 +21,12 @@ namespace {
 
 bool is_positive(double x) { return std::isfinite(x) && x > 0.0; }
 
+/// The smallest size the build resolves among numbers of magnitude up to m: 64 units in the
+/// last place. The exact solid's corners are written as doubles; a wall thinner or lower than
+/// this folds its faces onto each other when they are rounded. (A wall shorter than this is
+/// built: its ends' faces meet, as a hairline wall's do.)
+double resolvable_size(double m) { return 64.0 * (std::nextafter(m, INFINITY) - m); }
+
 WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   const Wall& w = plan.walls[index];
   const double dx = w.to.x - w.from.x, dy = w.to.y - w.from.y;
@@ -44,6 +50,16 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   if (!is_positive(f.heights[1]))
     throw PreconditionError(fmt::format("build_model: wall '{}' cannot be built: height_at_end {} (must be "
                                         "positive and finite)", w.id, f.heights[1]), Code::not_buildable);
+  const double reach = std::max({std::abs(w.from.x), std::abs(w.from.y), std::abs(w.to.x), std::abs(w.to.y)}) +
+                      w.thickness;
+  const double top = std::abs(w.base) + highest_height(w);
+  const double smallest = std::max(resolvable_size(reach), resolvable_size(top));
+  if (w.thickness < smallest || std::min(f.heights[0], f.heights[1]) < smallest)
+    throw PreconditionError(fmt::format(
+        "build_model: wall '{}' cannot be built: its thickness {} and height {} must each be at least "
+        "{}, 64 units in the last place of its coordinates ({} m from the origin) and of its top ({} m)",
+        w.id, w.thickness, std::min(f.heights[0], f.heights[1]), smallest, reach, top),
+        Code::not_buildable);
   f.top = w.base + w.height;
   f.top_end = w.base + f.heights[1];
   f.capless = {joins.mitre[index][0].has_value(), joins.mitre[index][1].has_value()};

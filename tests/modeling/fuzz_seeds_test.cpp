@@ -53,7 +53,9 @@ TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
       ++built;
     }
   }
-  EXPECT_GE(built, 2 * (seeds.size() - 2));  // zero-length and far-tiny are refused
+  // Refused: zero-length, and far-tiny and crash-far-wall-thinner-than-its-ulps, walls thinner
+  // than 64 units in the last place of their coordinates.
+  EXPECT_GE(built, 2 * (seeds.size() - 3));
 }
 
 }  // namespace

@@ -10,9 +10,9 @@
 #
 # Without TARGETs: every reader target. fuzz_build and fuzz_render (degenerate plans through
 # the build and the renderer) run when named: between them they found a new bug in most of
-# their runs (all fixed, inputs in fuzz/corpus/{build,render}/crash-*; the last runs, 420 s
-# each, found nothing), so they join the default list once more runs stay clean. Their seed
-# corpora run in CTest (FuzzSeeds.*, RenderFuzzSeeds.*).
+# their runs (the fixed ones' inputs in fuzz/corpus/{build,render}/crash-*; README "Hostile
+# input" has the last runs and what is open), so they join the default list once runs stay
+# clean. Their seed corpora run in CTest (FuzzSeeds.*, RenderFuzzSeeds.*).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}

@@ -134,6 +134,7 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
               .floor = detail::assemble_mesh({&floor, 1}, objects),
               .fixtures = detail::assemble_mesh(fixtures, objects, false),
               .objects = std::move(objects)};
+  detail::require_closed(model.walls, model.objects);
   local.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats != nullptr) *stats = local;
   return model;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <set>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -168,6 +169,26 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
     }
   }
   return mesh;
+}
+
+void require_closed(const SolidMesh& mesh, const std::vector<std::string>& objects) {
+  const FacePropertyHandles props = face_property_handles(mesh);
+  std::set<std::string> beside;
+  std::size_t open = 0;
+  SolidMesh::HalfedgeHandle first;
+  for (const auto h : mesh.halfedges()) {
+    if (!mesh.is_boundary(h)) continue;
+    if (open++ == 0) first = h;
+    beside.insert(object_name(objects, mesh.property(props.object, mesh.face_handle(mesh.opposite_halfedge_handle(h)))));
+  }
+  if (open == 0) return;
+  const OpenMesh::Vec3d a = mesh.point(mesh.from_vertex_handle(first)), b = mesh.point(mesh.to_vertex_handle(first));
+  throw PreconditionError(
+      fmt::format("build_model: the solid is not closed beside the faces of '{}': {} edges have a face "
+                  "on one side only, the first from ({}, {}, {}) to ({}, {}, {}) (features finer than the rounding of "
+                  "their corners to doubles, such as a wall an ulp long where walls overlap)",
+                  fmt::join(beside, "', '"), open, a[0], a[1], a[2], b[0], b[1], b[2]),
+      Code::not_buildable);
 }
 
 }  // namespace roomcad::detail

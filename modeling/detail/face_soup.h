@@ -40,6 +40,15 @@ using FaceSoup = std::vector<SoupFace>;
 [[nodiscard]] SolidMesh assemble_mesh(std::span<const FaceSoup> soups,
                                       const std::vector<std::string>& objects, bool share = true);
 
+/// Refuses a solid that is not closed, naming where: its corners are the exact solid's
+/// rounded to doubles, and where walls meet in features finer than that rounding (a wall an
+/// ulp long at a corner of two walls drawn over each other), faces can lose their partners.
+/// @param[in] mesh     an assembled solid (assemble_mesh)
+/// @param[in] objects  object ids, for the message
+/// @throws PreconditionError (not_buildable) naming the objects of the faces beside its open
+///         edges and the first such edge. O(n) in halfedges.
+void require_closed(const SolidMesh& mesh, const std::vector<std::string>& objects);
+
 /// Splits the vertices of an indexed polygon soup into fans: corners around a vertex that
 /// are linked through shared edges use one copy of it, separate fans separate copies.
 /// @param[in] polygons  vertex indices, each polygon counter-clockwise from outside

@@ -43,8 +43,16 @@ TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
     for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general}) {
       SCOPED_TRACE(path == BooleanPath::general ? "general" : "automatic");
       const Outcome made = build_on(plan, path);
-      ASSERT_EQ(made.model.has_value(), nef.model.has_value()) << made.refusal << nef.refusal;
-      if (!made.model) continue;
+      if (!made.model) {
+        // Refused only where Nef refuses too, or where Nef's solid, rounded to doubles, is no
+        // valid solid either (crash-ulp-wall-at-reversed-diagonal-walls: a wall an ulp long at
+        // the end of two walls drawn over each other; Nef's union self-intersects).
+        if (nef.model) {
+          EXPECT_FALSE(check_solid(nef.model->walls).is_valid()) << made.refusal;
+        }
+        continue;
+      }
+      ASSERT_TRUE(nef.model.has_value()) << nef.refusal;
       const SolidCheck c = check_solid(made.model->walls), reference = check_solid(nef.model->walls);
       EXPECT_TRUE(c.is_closed()) << c.border_edges << " border edges";
       EXPECT_TRUE(c.is_manifold());
@@ -53,9 +61,9 @@ TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
       ++built;
     }
   }
-  // Refused: zero-length, and far-tiny and crash-far-wall-thinner-than-its-ulps, walls thinner
-  // than 64 units in the last place of their coordinates.
-  EXPECT_GE(built, 2 * (seeds.size() - 3));
+  // Refused: zero-length, far-tiny and crash-far-wall-thinner-than-its-ulps (walls thinner than
+  // 64 units in the last place of their coordinates) and crash-ulp-wall-at-reversed-diagonal-walls.
+  EXPECT_GE(built, 2 * (seeds.size() - 4));
 }
 
 }  // namespace

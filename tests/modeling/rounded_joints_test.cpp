@@ -101,5 +101,27 @@ TEST(Modeling, FaceAtACornerClosedAllRoundIsAnError) {
   EXPECT_NE(assembly_error(soup).find("complex vertex"), std::string::npos);
 }
 
+std::string closedness_error(const detail::FaceSoup& soup) {
+  const std::vector<std::string> objects{"first", "second"};
+  try {
+    detail::require_closed(detail::assemble_mesh({&soup, 1}, objects), objects);
+  } catch (const PreconditionError& e) {
+    EXPECT_EQ(e.code(), Code::not_buildable);
+    return e.what();
+  }
+  return "";
+}
+
+// A tetrahedron is closed; without one face, the three edges round the gap name the objects
+// of the faces beside them.
+TEST(Modeling, ASolidWithAFaceMissingIsRefusedNamingTheFacesBesideTheGap) {
+  const OpenMesh::Vec3d o(0, 0, 0), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  const detail::FaceSoup closed{triangle(o, y, x, 0), triangle(o, x, z, 0), triangle(o, z, y, 1),
+                                triangle(x, y, z, 1)};
+  EXPECT_EQ(closedness_error(closed), "");
+  const std::string what = closedness_error({closed.begin(), closed.end() - 1});
+  EXPECT_NE(what.find("not closed beside the faces of 'first', 'second': 3 edges"), std::string::npos) << what;
+}
+
 }  // namespace
 }  // namespace roomcad

@@ -13,9 +13,9 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
-#include "cli/rule_loading.h"
 #include "io/floor_plan_dxf.h"
 #include "io/plan_drawing.h"
+#include "io/rule_set_file.h"
 #include "io/svg_writer.h"
 #include "render/floor_plan.h"
 #include "validation/validate.h"
@@ -35,7 +35,7 @@ struct DrawOptions {
 /// @return the places of what `validate --rules` finds (errors, warnings, rule findings),
 ///         each with its code; items without a place are left out.
 Result<std::vector<PlanMark>> find_marks(const Plan& plan, const std::string& rules) {
-  const Result<RuleSet> set = load_rule_set(rules);
+  const Result<RuleSet> set = load_rule_set(rules, "--rules");
   if (!set) return set.error();
   if (const Status rooms = check_accessible_rooms(plan, set.value()); !rooms) return rooms.error();
   ValidateOptions options;

@@ -11,9 +11,9 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
-#include "cli/rule_loading.h"
 #include "io/plan_check.h"
 #include "io/plan_json.h"
+#include "io/rule_set_file.h"
 #include "io/text_file.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
@@ -44,7 +44,7 @@ Result<Report> check_plan_file(const std::string& path, const RuleSet& rules) {
 }
 
 int run_validate(const ValidateCommandOptions& options) {
-  const Result<RuleSet> rules = load_rule_set(options.rules);
+  const Result<RuleSet> rules = load_rule_set(options.rules, "--rules");
   if (!rules) return report_failure("validate", rules.error());
   const Result<Report> report = check_plan_file(options.plan, rules.value());
   if (!report) return report_failure("validate", report.error());

@@ -1,17 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The rule set a command is asked for: a built-in name or a rules file (validate, draw).
+// The rule set a caller asks for by name: a built-in set or a rules file (roomcad validate and
+// draw --rules, the Python module's Plan.validate(rules=...)).
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "core/error.h"
 #include "validation/rule_set.h"
 
-namespace roomcad::cli {
+namespace roomcad {
 
-/// @return the built-in set `name_or_file` (default, accessibility, all) or the rules file of
-///         that path, read; a usage_error (exit 2) naming the file, field and value for a bad
-///         file, an io_error for one that cannot be read.
-[[nodiscard]] Result<RuleSet> load_rule_set(const std::string& name_or_file);
+/// @param[in] name_or_file  a built-in set's name (default, accessibility, all) or a rules
+///                          file's path (JSON, validation/rule_set.h)
+/// @param[in] argument      how the caller's user passed it, for messages ("--rules")
+/// @return the set; a usage_error naming the argument and value for neither a set nor a
+///         file, naming the file, field and value for a bad file; an io_error for a file
+///         that cannot be read.
+[[nodiscard]] Result<RuleSet> load_rule_set(const std::string& name_or_file, std::string_view argument);
 
-}  // namespace roomcad::cli
+}  // namespace roomcad

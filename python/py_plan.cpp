@@ -16,6 +16,7 @@
 #include "io/plan_check.h"
 #include "io/plan_drawing.h"
 #include "io/plan_json.h"
+#include "io/rule_set_file.h"
 #include "io/text_file.h"
 #include "modeling/build_model.h"
 #include "modeling/plan_add.h"
@@ -50,12 +51,14 @@ PyPlan read_text(const std::string& text, const std::string& file, std::string n
 }
 
 PyPlan load(const std::filesystem::path& path) {
-  return read_text(take(read_text_file(path)), path.string(), path.filename().string());
+  PyPlan out = read_text(take(read_text_file(path)), path.string(), path.filename().string());
+  out.file = path.string();
+  return out;
 }
 
-Report check(const PyPlan& self) {
+Report check(const PyPlan& self, const RuleSet& rules = {}) {
   py::gil_scoped_release free;
-  return check_plan(self.plan, self.reading ? &*self.reading : nullptr);
+  return check_plan(self.plan, self.reading ? &*self.reading : nullptr, rules);
 }
 
 /// The validation gate of build, render and draw: errors stop them unless `force`.
@@ -197,13 +200,20 @@ void register_reading(PlanClass& plan) {
       }, py::arg("path"), "Writes the canonical JSON (as `roomcad fmt`), atomically: if anything\n"
                           "fails the old file is left as it was. @raise roomcad.Error io_error")
       .def("validate", [](const PyPlan& self, const std::string& rules) {
-        if (rules != "default")
-          raise(Error{Code::usage_error, fmt::format("validate: rules '{}': only 'default' exists", rules)});
-        return check(self);
+        const RuleSet set = take(load_rule_set(rules, "rules"));
+        require(check_accessible_rooms(self.plan, set));
+        PyReport out{check(self, set), {}};
+        out.format.ids = set.any_enabled();  // as `roomcad validate` prints it
+        out.format.plan_file = self.file;
+        return out;
       }, py::arg("rules") = "default",
          "Checks the plan: every problem at once, exact for the numbers as written.\n"
-         "@param rules  the rule set: 'default' (the checks of `roomcad validate`)\n"
-         "@return a Report; report.to_dict() is what `roomcad validate --format json` prints");
+         "@param rules  the rule set, as `roomcad validate --rules`: 'default' (the format's checks),\n"
+         "              'accessibility', 'all', or the path of a rules file (JSON)\n"
+         "@return a Report; report.to_dict() is what `roomcad validate --format json --rules RULES`\n"
+         "        prints\n"
+         "@raise roomcad.Error usage_error for an unknown set or a bad rules file (naming its field),\n"
+         "       io_error for a file that cannot be read");
 }
 
 /// Plan.add, remove, move, rotate, scale, set: the edits of `roomcad add` ... `set`.

@@ -6,7 +6,6 @@
 
 #include <pybind11/stl.h>
 
-#include "validation/report_format.h"
 
 namespace py = pybind11;
 
@@ -49,22 +48,23 @@ void register_report(py::module_& m) {
                std::string(to_string(d.code)) + ": " + d.message + ">";
       });
 
-  py::class_<Report>(m, "Report",
-                     "What validating a plan found: report.ok, report.errors, report.warnings.")
-      .def_property_readonly("ok", &Report::ok, "True when there is no error (warnings allowed)")
-      .def_property_readonly("findings", [](const Report& r) { return r.items; },
+  py::class_<PyReport>(m, "Report",
+                       "What validating a plan found: report.ok, report.errors, report.warnings.")
+      .def_property_readonly("ok", [](const PyReport& r) { return r.report.ok(); },
+                             "True when there is no error (warnings allowed)")
+      .def_property_readonly("findings", [](const PyReport& r) { return r.report.items; },
                              "every finding, errors first")
-      .def_property_readonly("errors", [](const Report& r) { return of_severity(r, Severity::error); },
+      .def_property_readonly("errors", [](const PyReport& r) { return of_severity(r.report, Severity::error); },
                              "the findings that are errors")
-      .def_property_readonly("warnings", [](const Report& r) { return of_severity(r, Severity::warning); },
+      .def_property_readonly("warnings", [](const PyReport& r) { return of_severity(r.report, Severity::warning); },
                              "the findings that are warnings")
-      .def("to_json", [](const Report& r) { return format_report_json(r); },
-           "The JSON text `roomcad validate --format json` prints for the same plan.")
-      .def("to_dict", [](const Report& r) {
-        return py::module_::import("json").attr("loads")(format_report_json(r));
+      .def("to_json", [](const PyReport& r) { return format_report_json(r.report, r.format); },
+           "The JSON text `roomcad validate --format json` prints for the same plan and rules.")
+      .def("to_dict", [](const PyReport& r) {
+        return py::module_::import("json").attr("loads")(format_report_json(r.report, r.format));
       }, "The object `roomcad validate --format json` prints: {'ok', 'errors', 'warnings'}.")
-      .def("__str__", [](const Report& r) { return format_report_text(r, false); })
-      .def("__repr__", [](const Report& r) { return "<Report: " + format_report_summary(r) + ">"; });
+      .def("__str__", [](const PyReport& r) { return format_report_text(r.report, false, r.format); })
+      .def("__repr__", [](const PyReport& r) { return "<Report: " + format_report_summary(r.report) + ">"; });
 }
 
 }  // namespace roomcad::python

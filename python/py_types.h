@@ -13,6 +13,7 @@
 #include "modeling/plan.h"
 #include "modeling/solid_mesh.h"
 #include "validation/report.h"
+#include "validation/report_format.h"
 
 namespace roomcad::python {
 
@@ -23,7 +24,17 @@ struct PyPlan {
   /// emptied by the first edit (validation then finds unknown fields itself).
   std::optional<Report> reading;
   std::string name;  ///< the file's name (drawing titles), "plan" for a plan made in memory
+  /// The path it was loaded from, as given: what its report's edit commands name, as the
+  /// command's PLAN argument; "PLAN" for a plan made in memory.
+  std::string file = "PLAN";
   Report import_warnings;  ///< what an import approximated or left out (import_sweethome3d)
+};
+
+/// roomcad.Report: a validation report and how `roomcad validate --format json` prints it
+/// (rule findings' ids, the plan file the edit commands name).
+struct PyReport {
+  Report report;
+  ReportFormatOptions format;
 };
 
 /// roomcad.Model: a built model, its plan (for the analytic volume of check()) and its

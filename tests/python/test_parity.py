@@ -21,6 +21,34 @@ def test_report_is_the_commands_json(roomcad_exe, path):
     assert report.ok == (cli.returncode == 0)
 
 
+# The rule sets by name and a rules file: the same findings, fixes and edit commands.
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
+@pytest.mark.parametrize("rules", ["all", "rules/strict.json"])
+def test_report_under_rules_is_the_commands_json(roomcad_exe, source_dir, path, rules):
+    if rules.endswith(".json"):
+        rules = str(source_dir / "examples" / rules)
+    cli = run_cli(roomcad_exe, "validate", "--format", "json", "--rules", rules, path, check=False)
+    assert cli.returncode in (0, 1)
+    report = roomcad.Plan.load(path).validate(rules=rules)
+    assert report.to_json().encode() == cli.stdout
+
+
+def test_rule_sets_add_their_findings(source_dir):
+    plan = roomcad.Plan.load(source_dir / "examples" / "house.json")
+    assert len(plan.validate(rules="all").findings) > len(plan.validate().findings)
+
+
+def test_rules_naming_rooms_the_plan_lacks_fail_as_the_command_does(roomcad_exe, source_dir, tmp_path):
+    rules = source_dir / "examples" / "rules" / "accessible-ground-floor.json"
+    plan = source_dir / "examples" / "studio.json"
+    cli = run_cli(roomcad_exe, "validate", "--rules", rules, plan, check=False)
+    assert cli.returncode == 2
+    with pytest.raises(roomcad.Error) as caught:
+        roomcad.Plan.load(plan).validate(rules=str(rules))
+    assert caught.value.code == "usage_error"
+    assert str(caught.value) in cli.stderr.decode()
+
+
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
 def test_save_writes_the_bytes_of_fmt(roomcad_exe, path, tmp_path):
     run_cli(roomcad_exe, "fmt", path, "-o", tmp_path / "cli.json")

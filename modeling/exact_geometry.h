@@ -115,20 +115,19 @@ Pt<NT> side_point(const WallLine<NT>& w, WallEnd end, int side) {
   return side > 0 ? p + w.half_normal : p - w.half_normal;
 }
 
-/// The corner on `side` (+1 left, -1 right) of wall `a` at `end`, mitred to wall `b` at
-/// `b_end`: where this side line crosses the matching side line of `b`. Walking into the
-/// joint along one wall and out along the other, left meets left and right meets right.
+/// The corner on `side` (+1 left, -1 right) of wall `mine` at `end`, mitred to wall `other` at
+/// `other_end`: where this side line crosses the matching side line of `other`. Walking into
+/// the joint along one wall and out along the other, left meets left and right meets right.
 /// Parallel partners (a straight continuation) give a square end; see below for what counts
 /// as parallel.
 template <class NT>
-Pt<NT> mitre_corner(const Wall& a, WallEnd end, const Wall& b, WallEnd b_end, int side) {
-  const WallLine<NT> mine = wall_line<NT>(a);
-  const WallLine<NT> other = wall_line<NT>(b);
+Pt<NT> mitre_corner(const WallLine<NT>& mine, WallEnd end, const WallLine<NT>& other, WallEnd other_end,
+                    int side) {
   // Travelling into the joint along `mine` reverses it at its from-end; leaving along
   // `other` reverses it at its to-end. Each reversal swaps left and right.
-  const int other_side = side * (end == WallEnd::from ? -1 : 1) * (b_end == WallEnd::to ? -1 : 1);
+  const int other_side = side * (end == WallEnd::from ? -1 : 1) * (other_end == WallEnd::to ? -1 : 1);
   const Pt<NT> p = side_point(mine, end, side);
-  const Pt<NT> q = side_point(other, b_end, other_side);
+  const Pt<NT> q = side_point(other, other_end, other_side);
   const Pt<NT> d1 = mine.to - mine.from;
   const Pt<NT> d2 = other.to - other.from;
   // Parallel partners (a straight continuation) end square. Parallel is decided exactly: an
@@ -143,23 +142,27 @@ Pt<NT> mitre_corner(const Wall& a, WallEnd end, const Wall& b, WallEnd b_end, in
   return p + (cross(q - p, d2) / turn) * d1;
 }
 
-/// The corner of wall `w` at `end` on `side` (+1 left, -1 right), mitred per `joins`
-/// (mitre_corner), or square where the end is not mitred.
+/// mitre_corner of walls `a` and `b` as drawn.
 template <class NT>
-Pt<NT> wall_corner(const Plan& plan, const Joins& joins, std::size_t w, WallEnd end, int side) {
-  const auto partner = joins.mitre[w][static_cast<int>(end)];
-  if (!partner) return side_point(wall_line<NT>(plan.walls[w]), end, side);
-  const WallEnd other_end = joins.mitre[*partner][0] == w ? WallEnd::from : WallEnd::to;
-  return mitre_corner<NT>(plan.walls[w], end, plan.walls[*partner], other_end, side);
+Pt<NT> mitre_corner(const Wall& a, WallEnd end, const Wall& b, WallEnd b_end, int side) {
+  return mitre_corner(wall_line<NT>(a), end, wall_line<NT>(b), b_end, side);
 }
 
-/// All four corners {from-right, to-right, to-left, from-left} (counter-clockwise).
+/// All four corners of wall `w` {from-right, to-right, to-left, from-left} (counter-clockwise),
+/// each mitred per `joins` (mitre_corner) or square where its end is not mitred. Each wall's
+/// line (a square root in exact types) is made once: the wall's own and one per mitred end.
 template <class NT>
 std::array<Pt<NT>, 4> wall_corners(const Plan& plan, const Joins& joins, std::size_t w) {
-  return {wall_corner<NT>(plan, joins, w, WallEnd::from, -1),
-          wall_corner<NT>(plan, joins, w, WallEnd::to, -1),
-          wall_corner<NT>(plan, joins, w, WallEnd::to, 1),
-          wall_corner<NT>(plan, joins, w, WallEnd::from, 1)};
+  const WallLine<NT> line = wall_line<NT>(plan.walls[w]);
+  const auto end_corners = [&](WallEnd end) -> std::array<Pt<NT>, 2> {  // {right, left}
+    const auto partner = joins.mitre[w][static_cast<int>(end)];
+    if (!partner) return {side_point(line, end, -1), side_point(line, end, 1)};
+    const WallEnd other_end = joins.mitre[*partner][0] == w ? WallEnd::from : WallEnd::to;
+    const WallLine<NT> other = wall_line<NT>(plan.walls[*partner]);
+    return {mitre_corner(line, end, other, other_end, -1), mitre_corner(line, end, other, other_end, 1)};
+  };
+  const std::array<Pt<NT>, 2> from = end_corners(WallEnd::from), to = end_corners(WallEnd::to);
+  return {from[0], to[0], to[1], from[1]};
 }
 
 }  // namespace roomcad::exact

@@ -65,7 +65,7 @@ AxisSide axis_side(const Wall& w, WallEnd end, int side) {
 
 /// An axis-aligned wall mitred only to axis-aligned walls has corners whose coordinates are
 /// each an end point's coordinate or the sum of one and +-half a thickness: the nearest
-/// doubles are those sums rounded (what wall_corner<Radical> rounded by round_to_nearest
+/// doubles are those sums rounded (what wall_corners<Radical> rounded by round_to_nearest
 /// gives, bit for bit, at a thousandth of its cost). @return them, or nothing otherwise.
 std::optional<std::array<Point2, 4>> find_axis_aligned_corners(const Plan& plan, const Joins& joins,
                                                                std::size_t wall) {
@@ -84,7 +84,7 @@ std::optional<std::array<Point2, 4>> find_axis_aligned_corners(const Plan& plan,
         const WallEnd other_end = joins.mitre[*partner][0] == wall ? WallEnd::from : WallEnd::to;
         const int other_side = side * (end == WallEnd::from ? -1 : 1) * (other_end == WallEnd::to ? -1 : 1);
         along = axis_side(v, other_end, other_side).value();
-      }  // parallel: a square end, as wall_corner makes it
+      }  // parallel: a square end, as wall_corners makes it
     }
     return axis == 0 ? Point2{along, mine.value()} : Point2{mine.value(), along};
   };

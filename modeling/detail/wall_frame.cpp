@@ -54,11 +54,12 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
                       w.thickness;
   const double top = std::abs(w.base) + highest_height(w);
   const double smallest = std::max(resolvable_size(reach), resolvable_size(top));
-  if (w.thickness < smallest || std::min(f.heights[0], f.heights[1]) < smallest)
+  const double lowest = std::min(f.heights[0], f.heights[1]);
+  if (w.thickness < smallest || lowest < smallest)
     throw PreconditionError(fmt::format(
         "build_model: wall '{}' cannot be built: its thickness {} and height {} must each be at least "
         "{}, 64 units in the last place of its coordinates ({} m from the origin) and of its top ({} m)",
-        w.id, w.thickness, std::min(f.heights[0], f.heights[1]), smallest, reach, top),
+        w.id, w.thickness, lowest, smallest, reach, top),
         Code::not_buildable);
   f.top = w.base + w.height;
   f.top_end = w.base + f.heights[1];

@@ -61,11 +61,19 @@ class PathReader {
   std::size_t pos_ = 0;
 };
 
+/// @return `wanted` chords rounded up, within [1, kMaxCurveChords]. Clamped as a double before
+/// the cast: a radius or a curve many orders above the tolerance makes the count infinite
+/// (which no int holds: crash-cut-out-arc-radius-far-above-tolerance), a degenerate one NaN.
+int chord_count(double wanted) {
+  const double chords = std::ceil(wanted);
+  if (!(chords > 1)) return 1;
+  return chords < kMaxCurveChords ? static_cast<int>(chords) : kMaxCurveChords;
+}
+
 /// Chords for a turn of `sweep` radians on a radius of `radius` metres within `tolerance`.
 int chords_for(double sweep, double radius, double tolerance) {
   if (!(radius > tolerance)) return 1;
-  const double step = 2 * std::acos(1 - tolerance / radius);
-  return std::clamp(static_cast<int>(std::ceil(std::abs(sweep) / step)), 1, kMaxCurveChords);
+  return chord_count(std::abs(sweep) / (2 * std::acos(1 - tolerance / radius)));
 }
 
 /// Appends the SVG elliptical arc from `p` to `q` (SVG 1.1, appendix F.6.5), without `p`.
@@ -107,8 +115,7 @@ void add_bezier(const std::vector<Point2>& control, Point2 scale, double toleran
   for (std::size_t k = 1; k < control.size(); ++k)
     reach += std::hypot((control[k].x - control[k - 1].x) * scale.x,
                         (control[k].y - control[k - 1].y) * scale.y);
-  const int n = std::clamp(static_cast<int>(std::ceil(std::sqrt(reach / tolerance))), 1,
-                           kMaxCurveChords);
+  const int n = chord_count(std::sqrt(reach / tolerance));
   for (int k = 1; k <= n; ++k) {
     std::vector<Point2> p = control;  // de Casteljau
     const double t = static_cast<double>(k) / n;

@@ -76,6 +76,17 @@ TEST(HostileSh3d, Sh3dHomeSpreadBeyondAnySiteIsRefused) {
   EXPECT_NE(again.message().find("more than 1e+09 cells"), std::string::npos) << again.error();
 }
 
+TEST(HostileSh3d, CutOutArcOfAHugeRadiusIsBoundedNotOverflowed) {
+  // Found by fuzz_sh3d_xml (fuzz/corpus/sh3d_xml/crash-cut-out-arc-radius-far-above-tolerance):
+  // an arc of radius 4.4e30 wanted infinitely many chords, cast to int (undefined; the
+  // sanitized build stops on it). Its opening is imported, its outline bounded.
+  const auto found = test::source_dir() / "fuzz/corpus/sh3d_xml/crash-cut-out-arc-radius-far-above-tolerance.Home.xml";
+  const Result<Sh3dImport> imported = import_sweethome3d_file(found);
+  ASSERT_TRUE(imported.ok()) << imported.error();
+  EXPECT_EQ(imported.value().plan.walls.size(), 43u);
+  EXPECT_EQ(imported.value().plan.openings.size(), 20u);
+}
+
 TEST(HostileSh3d, Sh3dHomeWhoseWallsAllHaveZeroLengthIsRefused) {
   // Found by fuzz_sh3d_archive (fuzz/corpus/sh3d_archive/crash-zero-length-walls.sh3d): with
   // every wall left out, the site was made from an empty box and its cell count overflowed.

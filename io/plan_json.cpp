@@ -6,10 +6,13 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "io/atomic_write.h"
 #include "io/detail/json_text.h"
 #include "io/detail/plan_reader.h"
 #include "io/text_file.h"
+#include "io/utf8_text.h"
 #include "modeling/plan_fields.h"
 #include "modeling/plan_objects.h"
 
@@ -115,41 +118,47 @@ void write_array(std::string& out, std::string_view key, const std::vector<Objec
   out += "  ]";
 }
 
-/// Appends "<kind> '<id>' field '<name>'" for the first number of `o` JSON cannot hold.
-template <class Object>
-void find_non_finite(const Object& o, std::string_view kind, std::string& where) {
-  auto bad = [](double x) { return !std::isfinite(x); };
-  for (const Field<Object>& f : fields_of<Object>()) {
-    if (!where.empty()) return;
-    const bool found = std::visit(
-        [&](auto member) {
-          const auto& v = o.*member;
-          using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, double>) return bad(v);
-          else if constexpr (std::is_same_v<T, std::optional<double>>) return v && bad(*v);
-          else if constexpr (std::is_same_v<T, Point2>) return bad(v.x) || bad(v.y);
-          else if constexpr (std::is_same_v<T, Vec3>) return bad(v.x) || bad(v.y) || bad(v.z);
-          else if constexpr (std::is_same_v<T, Polygon>)
-            return std::any_of(v.begin(), v.end(), [&](Point2 p) { return bad(p.x) || bad(p.y); });
-          else if constexpr (std::is_same_v<T, std::vector<Polygon>>)
-            return std::any_of(v.begin(), v.end(), [&](const Polygon& polygon) {
-              return std::any_of(polygon.begin(), polygon.end(),
-                                 [&](Point2 p) { return bad(p.x) || bad(p.y); });
-            });
-          else return false;
-        },
-        f.member);
-    if (found) where = std::string(kind) + " field '" + std::string(f.name) + "'";
-  }
+bool non_finite(double x) { return !std::isfinite(x); }
+bool non_finite(Point2 p) { return non_finite(p.x) || non_finite(p.y); }
+bool non_finite(const Polygon& polygon) {
+  return std::any_of(polygon.begin(), polygon.end(), [](Point2 p) { return non_finite(p); });
 }
 
-/// @return where the first number of the plan that JSON cannot hold is, or "".
-std::string first_non_finite(const Plan& plan) {
+/// @return why JSON cannot hold the value `v` of a field, or "".
+template <class T>
+std::string_view unwritable(const T& v) {
+  constexpr std::string_view not_finite = "holds a number that is not finite";
+  if constexpr (std::is_same_v<T, std::string>) return first_ill_formed_utf8(v) ? "holds text that is not UTF-8" : "";
+  else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, Point2> || std::is_same_v<T, Polygon>)
+    return non_finite(v) ? not_finite : "";
+  else if constexpr (std::is_same_v<T, std::optional<double>>) return v && non_finite(*v) ? not_finite : "";
+  else if constexpr (std::is_same_v<T, Vec3>) return non_finite(v.x) || non_finite(v.y) || non_finite(v.z) ? not_finite : "";
+  else if constexpr (std::is_same_v<T, std::vector<Polygon>>)
+    return std::any_of(v.begin(), v.end(), [](const Polygon& p) { return non_finite(p); }) ? not_finite : "";
+  else return "";
+}
+
+/// Sets `where` to "<object> field '<name>' <why>" for the first field of `o` JSON cannot hold
+/// (an unknown field's name included), unless `where` names one already.
+template <class Object>
+void find_unwritable(const Object& o, std::string_view object, std::string& where) {
+  for (const Field<Object>& f : fields_of<Object>()) {
+    if (!where.empty()) return;
+    const std::string_view why = std::visit([&](auto member) { return unwritable(o.*member); }, f.member);
+    if (!why.empty()) where = fmt::format("{} field '{}' {}", object, f.name, why);
+  }
+  for (const ExtraField& e : o.extra)
+    if (where.empty() && first_ill_formed_utf8(e.key))
+      where = fmt::format("{} has an unknown field named '{}', which is not UTF-8", object, printable_utf8(e.key));
+}
+
+/// @return where the first value of the plan that JSON cannot hold is, and why, or "".
+std::string first_unwritable(const Plan& plan) {
   std::string where;
-  find_non_finite(plan.site, "the site", where);
+  find_unwritable(plan.site, "the site", where);
   for_each_list(plan, [&](const auto& objects, ObjectKind kind) {
     for (const auto& o : objects)
-      find_non_finite(o, std::string(to_string(kind)) + " '" + o.id + "'", where);
+      find_unwritable(o, fmt::format("{} '{}'", to_string(kind), printable_utf8(o.id)), where);
   });
   return where;
 }
@@ -197,10 +206,9 @@ std::string write_plan_text(const Plan& plan) {
 }
 
 Status write_plan_file(const Plan& plan, const std::filesystem::path& path) {
-  if (const std::string where = first_non_finite(plan); !where.empty())
+  if (const std::string where = first_unwritable(plan); !where.empty())
     return Status::failure(Code::invalid_value,
-                           "cannot write " + path.string() + ": " + where +
-                               " holds a number that is not finite (JSON cannot hold it)");
+                           "cannot write " + path.string() + ": " + where + " (JSON cannot hold it)");
   return write_file_atomically(path, write_plan_text(plan));
 }
 

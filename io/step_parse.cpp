@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "io/step_file.h"
+#include "io/utf8_text.h"
 
 namespace roomcad::step {
 namespace {
@@ -19,7 +20,10 @@ struct ParseFailure {
   std::string what;
 };
 
+/// Appends code point `cp` in UTF-8; a surrogate (half of a UTF-16 pair left unpaired) or a
+/// value past U+10FFFF, which UTF-8 cannot hold, as U+FFFD.
 void append_utf8(std::string& out, std::uint32_t cp) {
+  if ((cp >= 0xd800 && cp < 0xe000) || cp > 0x10ffff) cp = 0xfffd;
   if (cp < 0x80) {
     out += static_cast<char>(cp);
   } else if (cp < 0x800) {
@@ -45,6 +49,8 @@ std::uint32_t hex_value(std::string_view digits) {
 
 /// Decodes the escapes of a STEP string's content (quotes already undoubled): \X2\..\X0\ as
 /// UTF-16, \X\hh as ISO 8859-1, a doubled backslash; other escapes (\S\, \P\) stay as written.
+/// STEP allows only ASCII between the quotes, yet exporters write names in raw UTF-8 or
+/// Latin-1: raw bytes that are no UTF-8 are read as Latin-1, so the text is always UTF-8.
 std::string decode_string(std::string_view raw) {
   std::string out;
   out.reserve(raw.size());
@@ -54,8 +60,9 @@ std::string decode_string(std::string_view raw) {
       const std::string_view hex = raw.substr(i + 4, end == std::string_view::npos ? 0 : end - i - 4);
       for (std::size_t k = 0; k + 4 <= hex.size(); k += 4) {
         std::uint32_t cp = hex_value(hex.substr(k, 4));
-        if (cp >= 0xd800 && cp < 0xdc00 && k + 8 <= hex.size()) {
-          cp = 0x10000 + ((cp - 0xd800) << 10) + (hex_value(hex.substr(k + 4, 4)) - 0xdc00);
+        const std::uint32_t next = k + 8 <= hex.size() ? hex_value(hex.substr(k + 4, 4)) : 0;
+        if (cp >= 0xd800 && cp < 0xdc00 && next >= 0xdc00 && next < 0xe000) {  // a pair
+          cp = 0x10000 + ((cp - 0xd800) << 10) + (next - 0xdc00);
           k += 4;
         }
         append_utf8(out, cp);
@@ -71,7 +78,7 @@ std::string decode_string(std::string_view raw) {
       out += raw[i++];
     }
   }
-  return out;
+  return first_ill_formed_utf8(out) ? utf8_from_latin1_where_ill_formed(out) : out;
 }
 
 class Parser {

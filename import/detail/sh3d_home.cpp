@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <pugixml.hpp>
 
+#include "io/utf8_text.h"
+
 namespace roomcad::sh3d {
 namespace {
 
@@ -20,10 +22,19 @@ class AttributeReader {
   AttributeReader(pugi::xml_node node, std::string_view file, std::string* error)
       : node_(node), file_(file), error_(error) {}
 
+  /// An attribute's text. XML that is not well-formed UTF-8 is no XML at all (XML 1.0, 4.3.3):
+  /// such an attribute is an error, so no ill-formed byte reaches a plan.
   std::string text(const char* name, bool required = false) {
     const pugi::xml_attribute a = node_.attribute(name);
     if (!a && required) fail(name, "is missing", "");
-    return a.value();
+    const std::string_view value = a.value();
+    if (const std::optional<std::size_t> at = first_ill_formed_utf8(value)) {
+      fail(name, fmt::format("is not UTF-8 (byte {} is 0x{:02X})", *at + 1,
+                             static_cast<unsigned char>(value[*at])),
+           value);
+      return {};
+    }
+    return std::string(value);
   }
 
   std::optional<double> optional_number(const char* name) {
@@ -63,10 +74,10 @@ class AttributeReader {
  private:
   void fail(const char* name, std::string_view what, std::string_view value) {
     if (!error_->empty()) return;
-    const std::string id = node_.attribute("id").value();
-    *error_ = fmt::format("{}: <{}{}> attribute '{}' {}{}", file_, node_.name(),
+    const std::string id = printable_utf8(node_.attribute("id").value());
+    *error_ = fmt::format("{}: <{}{}> attribute '{}' {}{}", file_, printable_utf8(node_.name()),
                           id.empty() ? "" : fmt::format(" id='{}'", id), name, what,
-                          value.empty() ? "" : fmt::format(": '{}'", value));
+                          value.empty() ? "" : fmt::format(": '{}'", printable_utf8(value)));
   }
 
   pugi::xml_node node_;
@@ -209,7 +220,7 @@ Result<Home> parse_home_xml(std::string_view xml, std::string_view file) {
   if (std::string_view(root.name()) != "home")
     return Result<Home>::failure(Code::parse_error, fmt::format(
         "{}: not a Sweet Home 3D Home.xml: the root element is <{}>, not <home>", file,
-        root.name()));
+        printable_utf8(root.name())));
 
   Home home;
   std::string error;

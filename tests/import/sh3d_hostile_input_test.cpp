@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Limits on hostile Sweet Home 3D input: the importer refuses what would exhaust memory or time
 // with an error naming the file, the field and the value (most found by fuzz/fuzz_sh3d_*).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -79,12 +80,43 @@ TEST(HostileSh3d, Sh3dHomeSpreadBeyondAnySiteIsRefused) {
 TEST(HostileSh3d, CutOutArcOfAHugeRadiusIsBoundedNotOverflowed) {
   // Found by fuzz_sh3d_xml (fuzz/corpus/sh3d_xml/crash-cut-out-arc-radius-far-above-tolerance):
   // an arc of radius 4.4e30 wanted infinitely many chords, cast to int (undefined; the
-  // sanitized build stops on it). Its opening is imported, its outline bounded.
+  // sanitized build stops on it). The fuzzer also wrote bytes 0xFF into a door's id, which no
+  // XML may hold: the file is refused for them, and with them made ASCII its opening is
+  // imported, its outline bounded.
   const auto found = test::source_dir() / "fuzz/corpus/sh3d_xml/crash-cut-out-arc-radius-far-above-tolerance.Home.xml";
-  const Result<Sh3dImport> imported = import_sweethome3d_file(found);
+  const Result<Sh3dImport> refused = import_sweethome3d_file(found);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.code(), Code::parse_error);
+  EXPECT_NE(refused.message().find("> attribute 'id' is not UTF-8 (byte 47 is 0xFF): "
+                                   "'doorOrWindow-846fb04e-4cac-4275-b024-591a74b3e\\xFF\\xFF"),
+            std::string::npos)
+      << refused.error();
+
+  std::string xml = read_text_file(found).value();
+  std::replace(xml.begin(), xml.end(), '\xff', 'f');
+  const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "arc.Home.xml");
   ASSERT_TRUE(imported.ok()) << imported.error();
   EXPECT_EQ(imported.value().plan.walls.size(), 43u);
   EXPECT_EQ(imported.value().plan.openings.size(), 20u);
+}
+
+TEST(HostileSh3d, IllFormedUtf8InAnAttributeIsRefusedNamingIt) {
+  // A plan is UTF-8: an ill-formed byte copied into an id would make the written plan
+  // unreadable. Latin-1 that the XML declares as such is converted by the XML reader.
+  const std::string latin1_wall = "<wall id='K\xfc" "che' xStart='0' yStart='0' xEnd='400' yEnd='0' "
+                                  "thickness='10' height='250'/>";
+  const Result<Sh3dImport> refused =
+      import_sweethome3d_text("<home>" + latin1_wall + "</home>", "k.Home.xml");
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.code(), Code::parse_error);
+  EXPECT_EQ(refused.message(), "k.Home.xml: <wall id='K\\xFCche'> attribute 'id' is not UTF-8 "
+                               "(byte 2 is 0xFC): 'K\\xFCche'");
+
+  const Result<Sh3dImport> declared = import_sweethome3d_text(
+      "<?xml version='1.0' encoding='ISO-8859-1'?><home>" + latin1_wall + "</home>", "k.Home.xml");
+  ASSERT_TRUE(declared.ok()) << declared.error();
+  ASSERT_EQ(declared.value().plan.walls.size(), 1u);
+  EXPECT_EQ(declared.value().plan.walls[0].id, "K\xc3\xbc" "che");
 }
 
 TEST(HostileSh3d, Sh3dHomeWhoseWallsAllHaveZeroLengthIsRefused) {

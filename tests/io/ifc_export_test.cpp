@@ -191,6 +191,19 @@ TEST(StepFile, RealsAndStringsAreWrittenAsTheStandardSays) {
   EXPECT_EQ(p[5].id, 1u);
 }
 
+TEST(StepFile, StringsAreAlwaysReadAsUtf8) {
+  // STEP allows only ASCII between quotes; exporters write raw UTF-8 (kept), raw Latin-1 (read
+  // as such) and unpaired UTF-16 surrogates (U+FFFD), and a plan must hold UTF-8 only.
+  const std::string file = "ISO-10303-21;HEADER;FILE_SCHEMA(('IFC2X3'));ENDSEC;DATA;"
+                           "#1=IFCLABEL('K\xc3\xbc" "che');#2=IFCLABEL('K\xfc" "che');"
+                           "#3=IFCLABEL('a\\X2\\D83C0041\\X0\\b');ENDSEC;END-ISO-10303-21;";
+  const Result<step::File> parsed = step::parse(file, "names.ifc");
+  ASSERT_TRUE(parsed.ok()) << parsed.error();
+  EXPECT_EQ(parsed.value().find(1)->parameters[0].text, "K\xc3\xbc" "che");
+  EXPECT_EQ(parsed.value().find(2)->parameters[0].text, "K\xc3\xbc" "che");
+  EXPECT_EQ(parsed.value().find(3)->parameters[0].text, "a\xef\xbf\xbd" "Ab");
+}
+
 TEST(StepFile, MalformedTextIsAParseErrorNamingTheLine) {
   for (const char* text : {"not a step file", "ISO-10303-21;HEADER;ENDSEC;DATA;\n#1=A('open);",
                            "ISO-10303-21;HEADER;ENDSEC;DATA;\n#1=A(1);\n#1=B(2);ENDSEC;",

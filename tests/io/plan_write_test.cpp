@@ -182,6 +182,29 @@ TEST(PlanWrite, NonFiniteNumbersAreRefusedAndNothingIsWritten) {
   EXPECT_EQ(test::read_bytes(dir / "p.json"), "old");
 }
 
+TEST(PlanWrite, TextThatIsNotUtf8IsRefusedAndNothingIsWritten) {
+  // A plan is UTF-8: written, an ill-formed byte would make the file unreadable.
+  test::TempDir dir;
+  ASSERT_TRUE(test::write_bytes(dir / "p.json", "old"));
+  Plan plan;
+  Wall w;
+  w.id = "w\xff";
+  w.to = {1, 0};
+  plan.walls.push_back(w);
+  Status s = write_plan_file(plan, dir / "p.json");
+  EXPECT_EQ(s.code(), Code::invalid_value);
+  EXPECT_EQ(s.message(), "cannot write " + (dir / "p.json").string() +
+                             ": wall 'w\\xFF' field 'id' holds text that is not UTF-8 (JSON "
+                             "cannot hold it)");
+  plan.walls[0].id = "w1";
+  plan.walls[0].extra.push_back({"note\xc3", "1"});
+  s = write_plan_file(plan, dir / "p.json");
+  EXPECT_EQ(s.message(), "cannot write " + (dir / "p.json").string() +
+                             ": wall 'w1' has an unknown field named 'note\\xC3', which is not "
+                             "UTF-8 (JSON cannot hold it)");
+  EXPECT_EQ(test::read_bytes(dir / "p.json"), "old");
+}
+
 TEST(PlanWrite, FailedWriteLeavesTheOldFile) {
   test::TempDir dir;
   const Status s = write_plan_file(Plan{}, dir / "missing" / "p.json");

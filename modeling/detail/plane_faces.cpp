@@ -9,12 +9,13 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "modeling/detail/bounds_grid.h"
 #include "modeling/detail/plane_loops.h"
 
 namespace roomcad::detail {
 namespace {
 
-using Bounds = std::array<double, 4>;  // low i, low j, high i, high j in the plane's view axes
+// Bounds (bounds_grid.h) here are low i, low j, high i, high j in the plane's view axes.
 
 struct Context {
   const PlaneSet& set;
@@ -50,10 +51,6 @@ Bounds bounds_of(const Context& cx, std::size_t a, std::size_t b) {
   const auto pi = bounds(p, cx.i), pj = bounds(p, cx.j), qi = bounds(q, cx.i), qj = bounds(q, cx.j);
   return {std::min(pi.first, qi.first), std::min(pj.first, qj.first), std::max(pi.second, qi.second),
           std::max(pj.second, qj.second)};
-}
-
-bool do_overlap(const Bounds& a, const Bounds& b) {
-  return !(a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1]);
 }
 
 // The cut line's segment across the box, directed along n x n_cut.
@@ -140,7 +137,7 @@ void split_edges(const Context& cx, std::vector<Edge>& edges) {
                  active.end());
     for (std::size_t a : active) {
       Edge& f = edges[a];
-      if (f.source != e.source && do_overlap(e.bounds, f.bounds)) split_pair(cx, e, f);
+      if (f.source != e.source && boxes_meet(e.bounds, f.bounds)) split_pair(cx, e, f);
     }
     active.push_back(idx);
   }
@@ -256,10 +253,9 @@ std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
   return cells;
 }
 
-std::array<SideLabel, 2> classify(const Context& cx, const Piece& p, const std::vector<Bounds>& cbounds) {
+std::array<SideLabel, 2> classify(const Context& cx, const Piece& p, BoundsGrid& near) {
   std::array<Presence, 2> at;
-  for (std::size_t c = 0; c < cx.contributions.size(); ++c) {
-    if (!do_overlap(p.bounds, cbounds[c])) continue;
+  near.for_each_meeting(p.bounds, [&](std::size_t c) {
     std::array<bool, 2> inside{true, true};
     if (c == p.source) {
       inside[1] = false;  // the piece lies on its own polygon's edge, the polygon on its left
@@ -271,7 +267,7 @@ std::array<SideLabel, 2> classify(const Context& cx, const Piece& p, const std::
     }
     for (std::size_t s = 0; s < 2; ++s)
       if (inside[s]) at[s].add(cx.contributions[c]);
-  }
+  });
   std::array<SideLabel, 2> out;
   for (std::size_t s = 0; s < 2; ++s) {
     const Presence& a = at[s];
@@ -321,8 +317,9 @@ PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef
     }
     cbounds.push_back(b);
   }
+  BoundsGrid near(cbounds);
   std::map<GroupKey, std::vector<DirectedPiece>> groups;
-  for (const Piece& p : pieces) add_boundary(groups, p, rep[p.a], rep[p.b], classify(cx, p, cbounds));
+  for (const Piece& p : pieces) add_boundary(groups, p, rep[p.a], rep[p.b], classify(cx, p, near));
   PlaneFaces out;
   for (auto& [key, directed] : groups) {
     std::sort(directed.begin(), directed.end(), [](const DirectedPiece& x, const DirectedPiece& y) {

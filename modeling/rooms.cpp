@@ -33,17 +33,36 @@ Line inner_line(const detail::FaceEdge& e, double half) {
   return {{e.source.x - d.y / len * half, e.source.y + d.x / len * half}, d};
 }
 
-/// Adds the clear-floor corner(s) between consecutive inner side lines a then b.
+/// How far a clear-floor corner may lie from its centre-line corner, in the larger of the two
+/// walls' half-thicknesses: a corner of 11.5 degrees reaches 10. Sides nearly in line (walls
+/// drawn with a kink of a hundredth of a degree, of different thicknesses) would meet a
+/// kilometre away; they are joined by a step across, as sides exactly in line are.
+constexpr double kCornerReach = 10.0;
+
+/// @return the foot of the perpendicular from `at` on line a.
+Point2 foot_on(const Line& a, Point2 at) {
+  const double t = ((at.x - a.p.x) * a.d.x + (at.y - a.p.y) * a.d.y) / (a.d.x * a.d.x + a.d.y * a.d.y);
+  return {a.p.x + t * a.d.x, a.p.y + t * a.d.y};
+}
+
+/// Adds the clear-floor corner(s) between consecutive inner side lines a then b, which turn
+/// at centre-line corner `at`.
 void add_corner(const Line& a, const Line& b, Point2 at, std::vector<Point2>& out) {
+  const Point2 on_a = foot_on(a, at), on_b = foot_on(b, at);
+  const double reach = kCornerReach * std::max(std::hypot(on_a.x - at.x, on_a.y - at.y),
+                                               std::hypot(on_b.x - at.x, on_b.y - at.y));
   const double denom = a.d.x * b.d.y - a.d.y * b.d.x;
-  if (denom == 0.0) {  // straight on, or the tip of a wall end poking into the room
-    const double ta = ((at.x - a.p.x) * a.d.x + (at.y - a.p.y) * a.d.y) / (a.d.x * a.d.x + a.d.y * a.d.y);
-    out.push_back({a.p.x + ta * a.d.x, a.p.y + ta * a.d.y});
-    if (b.p != out.back()) out.push_back(b.p);
-    return;
+  if (denom != 0.0) {
+    const double s = ((b.p.x - a.p.x) * b.d.y - (b.p.y - a.p.y) * b.d.x) / denom;
+    const Point2 corner{a.p.x + s * a.d.x, a.p.y + s * a.d.y};
+    if (std::hypot(corner.x - at.x, corner.y - at.y) <= reach) {
+      out.push_back(corner);
+      return;
+    }
   }
-  const double s = ((b.p.x - a.p.x) * b.d.y - (b.p.y - a.p.y) * b.d.x) / denom;
-  out.push_back({a.p.x + s * a.d.x, a.p.y + s * a.d.y});
+  // In line (or nearly), or the tip of a wall end poking into the room: a step across.
+  out.push_back(on_a);
+  if (on_b != out.back()) out.push_back(on_b);
 }
 
 /// Opening indices by host wall index (the first wall with the id, as validation reads it).

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Rooms from the wall arrangement, their clear areas, and the room warnings.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "plan_cases.h"
@@ -98,6 +100,37 @@ TEST(Rooms, TwoBoundaryVerticesThatRoundToOneDoubleLeaveAFiniteOutline) {
   ASSERT_EQ(rooms.size(), 1u);
   for (const Point2& c : rooms[0].outline) EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y)) << c.x << ", " << c.y;
   EXPECT_NEAR(rooms[0].area, (13.455 - 11.252909 - 0.26) * (0.055 + 4.661 - 0.26), 1e-6);
+}
+
+TEST(Rooms, SidesNearlyInLineMeetByAStepNotAKilometreAway) {
+  // A 4 x 3 m room whose south side is two walls of different thickness with a kink of a
+  // thousandth of a degree: their inner faces, 5 cm apart and nearly parallel, would meet
+  // 3 km away (how walls drawn over each other gave rooms of 400,000 m2). They meet by a
+  // step, and the clear floor stays inside the walls.
+  const Plan plan = plan_with({make_wall("s1", {0, 0}, {2, 0}, 0.2), make_wall("s2", {2, 0}, {4, 0.00004}, 0.1),
+                               make_wall("e", {4, 0.00004}, {4, 3}, 0.2), make_wall("n", {4, 3}, {0, 3}, 0.2),
+                               make_wall("w", {0, 3}, {0, 0}, 0.2)});
+  const std::vector<Room> rooms = find_rooms(plan);
+  ASSERT_EQ(rooms.size(), 1u);
+  for (const Point2& c : rooms[0].outline) {
+    EXPECT_GE(c.x, 0.1 - 1e-9);
+    EXPECT_LE(c.x, 3.9 + 1e-9);
+    EXPECT_GE(c.y, 0.05 - 1e-9);
+    EXPECT_LE(c.y, 2.9 + 1e-9);
+  }
+  EXPECT_NEAR(rooms[0].area, 1.9 * 2.8 + 1.9 * 2.85, 1e-3);  // west half 10 cm off the centre line, east 5
+}
+
+TEST(Rooms, ASliverBetweenWallsAHairApartHasNoClearFloor) {
+  // Two walls 15 cm thick drawn 1 um apart and slightly askew (arif-home): the sliver between
+  // their centre lines is a closed region thinner than its walls.
+  const Plan plan = plan_with({make_wall("a", {0, 0}, {5, 0}, 0.15), make_wall("b", {0, 0}, {5, 0.000001}, 0.15),
+                               make_wall("c", {5, 0}, {5, 0.000001}, 0.15)});
+  const std::vector<Room> rooms = find_rooms(plan);
+  for (const Room& r : rooms) {
+    EXPECT_LT(r.area, 0.01);
+    for (const Point2& c : r.outline) EXPECT_LT(std::hypot(c.x - 2.5, c.y), 3.0) << c.x << ", " << c.y;
+  }
 }
 
 TEST(Openings, OutsideWallMessageSaysHowFarAndHowToFix) {

@@ -22,6 +22,10 @@ namespace roomcad::rules {
 /// Height above a storey's floor that walking needs: walls meeting this band are obstacles
 /// to people, and bound the storey's rooms.
 inline constexpr double kHeadroom = 2.0;
+/// m² of clear floor: a smaller closed region is a gap between walls (as drawing tools leave
+/// them: walls drawn a hair apart), not a room anyone goes into; the room rules report none,
+/// though it may join rooms they report.
+inline constexpr double kMinRoomArea = 0.5;
 
 /// The rooms on one floor. A storey's floor is the base of some wall; its walls are the
 /// usable walls whose height range meets (floor, floor + kHeadroom). Version 1 plans have no

@@ -19,9 +19,6 @@ namespace roomcad::rules {
 namespace {
 
 constexpr double kProbe = 0.01;  // as the door sides in context.cpp
-/// m²: a smaller closed region is a gap between walls (as drawing tools leave them), not a
-/// room anyone goes into; it is not reported, though it may join reported rooms.
-constexpr double kMinRoomArea = 0.5;
 
 /// The rooms and doors of a storey; node `rooms.size()` is the outside.
 struct RoomGraph {

@@ -131,7 +131,7 @@ void check_turning_circles(const Context& cx, const Scene& scene, Report& report
     const RoomLocator locator(s.rooms);
     for (std::size_t r = 0; r < s.rooms.size(); ++r) {
       const Room& room = s.rooms[r];
-      if (!s.accessible[r] || room.doors.empty() || room.outline.size() < 3) continue;
+      if (!s.accessible[r] || room.doors.empty() || room.area < kMinRoomArea) continue;
       if (find_free_disc(walls, s.rooms, locator, r, diameter).fits) continue;
       const double largest = largest_free_diameter(walls, s.rooms, locator, r, diameter);
       const std::optional<WallMove> move = widen_room(scene, s, room, diameter - largest, diameter);

@@ -34,6 +34,24 @@ std::size_t well_formed_length(std::string_view text, std::size_t at) {
   return length;
 }
 
+/// @return `text` with each byte that starts no well-formed sequence given to
+/// `replace(byte, out)`, which appends what stands for it; the rest copied as it is.
+template <class Replace>
+std::string with_ill_formed_bytes_replaced(std::string_view text, Replace&& replace) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t length = well_formed_length(text, at);
+    if (length > 0) {
+      out.append(text.substr(at, length));
+      at += length;
+    } else {
+      replace(static_cast<unsigned char>(text[at++]), out);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<std::size_t> first_ill_formed_utf8(std::string_view text) {
@@ -46,35 +64,15 @@ std::optional<std::size_t> first_ill_formed_utf8(std::string_view text) {
 }
 
 std::string utf8_from_latin1_where_ill_formed(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t at = 0; at < text.size();) {
-    const std::size_t length = well_formed_length(text, at);
-    if (length > 0) {
-      out.append(text.substr(at, length));
-      at += length;
-      continue;
-    }
-    const auto byte = static_cast<unsigned char>(text[at++]);  // >= 0x80: two bytes in UTF-8
-    out += static_cast<char>(0xc0 | (byte >> 6));
+  return with_ill_formed_bytes_replaced(text, [](unsigned char byte, std::string& out) {
+    out += static_cast<char>(0xc0 | (byte >> 6));  // >= 0x80: two bytes in UTF-8
     out += static_cast<char>(0x80 | (byte & 0x3f));
-  }
-  return out;
+  });
 }
 
 std::string printable_utf8(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t at = 0; at < text.size();) {
-    const std::size_t length = well_formed_length(text, at);
-    if (length > 0) {
-      out.append(text.substr(at, length));
-      at += length;
-    } else {
-      out += fmt::format("\\x{:02X}", static_cast<unsigned char>(text[at++]));
-    }
-  }
-  return out;
+  return with_ill_formed_bytes_replaced(
+      text, [](unsigned char byte, std::string& out) { out += fmt::format("\\x{:02X}", byte); });
 }
 
 }  // namespace roomcad

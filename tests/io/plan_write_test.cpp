@@ -166,15 +166,20 @@ TEST(PlanWrite, FileIsWrittenAndReadBack) {
   EXPECT_EQ(*r.plan, plan);
 }
 
+/// @return a plan of one wall 1 m long named `id`.
+Plan one_wall(std::string id) {
+  Plan plan;
+  Wall& w = plan.walls.emplace_back();
+  w.id = std::move(id);
+  w.to = {1, 0};
+  return plan;
+}
+
 TEST(PlanWrite, NonFiniteNumbersAreRefusedAndNothingIsWritten) {
   test::TempDir dir;
   ASSERT_TRUE(test::write_bytes(dir / "p.json", "old"));
-  Plan plan;
-  Wall w;
-  w.id = "w1";
-  w.to = {1, 0};
-  w.thickness = std::nan("");
-  plan.walls.push_back(w);
+  Plan plan = one_wall("w1");
+  plan.walls[0].thickness = std::nan("");
   const Status s = write_plan_file(plan, dir / "p.json");
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.message().find("wall 'w1' field 'thickness'"), std::string::npos) << s.message();
@@ -186,11 +191,7 @@ TEST(PlanWrite, TextThatIsNotUtf8IsRefusedAndNothingIsWritten) {
   // A plan is UTF-8: written, an ill-formed byte would make the file unreadable.
   test::TempDir dir;
   ASSERT_TRUE(test::write_bytes(dir / "p.json", "old"));
-  Plan plan;
-  Wall w;
-  w.id = "w\xff";
-  w.to = {1, 0};
-  plan.walls.push_back(w);
+  Plan plan = one_wall("w\xff");
   Status s = write_plan_file(plan, dir / "p.json");
   EXPECT_EQ(s.code(), Code::invalid_value);
   EXPECT_EQ(s.message(), "cannot write " + (dir / "p.json").string() +

@@ -42,7 +42,8 @@ struct PlanInfo {
   double total_wall_length = 0.0;
   double max_wall_height = 0.0;
   std::optional<Box3> bounds;  ///< of the walls' footprints, base to top
-  std::vector<Room> rooms;     ///< closed regions of the walls, with their clear floor areas
+  std::vector<LevelRooms> rooms;  ///< closed regions of the walls, level by level, with their
+                                  ///< clear floor areas
 };
 
 /// A wall's centre line seen from one of its ends: that end, the unit direction away from it,
@@ -111,7 +112,7 @@ PlanInfo measure(const Plan& plan) {
     }
     i = j;
   }
-  info.rooms = find_rooms(plan);
+  info.rooms = find_rooms_by_level(plan);
   return info;
 }
 
@@ -147,28 +148,39 @@ std::string json_strings(const std::vector<std::string>& items) {
   return out + ']';
 }
 
-/// `"rooms": [...]`: name, clear floor area (m^2) and the walls, doors and windows of each.
-std::string json_rooms(const std::vector<Room>& rooms) {
+/// `"rooms": [...]`: name, level (in a plan with levels), clear floor area (m^2) and the walls,
+/// doors and windows of each. Rooms are numbered level by level, as validation names them.
+std::string json_rooms(const std::vector<LevelRooms>& levels) {
   std::string out = "  \"rooms\": [";
-  for (std::size_t i = 0; i < rooms.size(); ++i)
-    out += fmt::format("{}\n    {{\"name\": \"room {}\", \"area\": {}, \"walls\": {}, \"doors\": {}, "
-                       "\"windows\": {}}}", i ? "," : "", i + 1, json_number(rooms[i].area),
-                       json_strings(rooms[i].walls), json_strings(rooms[i].doors),
-                       json_strings(rooms[i].windows));
-  return out + (rooms.empty() ? "],\n" : "\n  ],\n");
+  bool first = true;
+  for (const LevelRooms& l : levels)
+    for (std::size_t i = 0; i < l.rooms.size(); ++i, first = false) {
+      const Room& r = l.rooms[i];
+      out += fmt::format("{}\n    {{\"name\": \"room {}\", {}\"area\": {}, \"walls\": {}, \"doors\": {}, "
+                         "\"windows\": {}}}", first ? "" : ",", i + 1,
+                         l.level.empty() ? "" : fmt::format("\"level\": {}, ", json_string(l.level)),
+                         json_number(r.area), json_strings(r.walls), json_strings(r.doors),
+                         json_strings(r.windows));
+    }
+  return out + (first ? "],\n" : "\n  ],\n");
 }
 
-/// One line per room: "room 1  14.44 m2  walls a, b  doors d  windows none".
-std::string text_rooms(const std::vector<Room>& rooms) {
+/// One line per room: "room 1  14.44 m2  walls a, b  doors d  windows none", after the name of
+/// its level in a plan with levels ("room 1 of level 'L1'").
+std::string text_rooms(const std::vector<LevelRooms>& levels) {
   const auto list = [](const std::vector<std::string>& ids) {
     return ids.empty() ? std::string("none") : fmt::format("{}", fmt::join(ids, ", "));
   };
-  std::string out = fmt::format("  rooms     {}{}\n", rooms.size(),
-                                rooms.empty() ? " (no closed region of walls)" : "");
-  for (std::size_t i = 0; i < rooms.size(); ++i)
-    out += fmt::format("    room {}  {:.2f} m2 clear  walls {}  doors {}  windows {}\n", i + 1,
-                       rooms[i].area, list(rooms[i].walls), list(rooms[i].doors),
-                       list(rooms[i].windows));
+  std::size_t count = 0;
+  for (const LevelRooms& l : levels) count += l.rooms.size();
+  std::string out = fmt::format("  rooms     {}{}\n", count, count == 0 ? " (no closed region of walls)" : "");
+  for (const LevelRooms& l : levels)
+    for (std::size_t i = 0; i < l.rooms.size(); ++i) {
+      const Room& r = l.rooms[i];
+      out += fmt::format("    room {}{}  {:.2f} m2 clear  walls {}  doors {}  windows {}\n", i + 1,
+                         l.level.empty() ? "" : fmt::format(" of level '{}'", l.level), r.area,
+                         list(r.walls), list(r.doors), list(r.windows));
+    }
   return out;
 }
 
@@ -250,7 +262,8 @@ void add_info_command(CLI::App& root, Commands& commands) {
       "(doors and windows), lights and cameras it has, the total length of its walls (along\n"
       "their centre lines), the tallest wall, the bounds of the walls (their footprints,\n"
       "mitred corners included, from base to top), and its rooms (closed regions of the walls'\n"
-      "centre lines) with their clear floor areas inside the walls. Problems found while\n"
+      "centre lines; level by level in a plan with levels) with their clear floor areas inside\n"
+      "the walls. Problems found while\n"
       "reading are printed to stderr; warnings (such as unknown fields) do not stop it. It does\n"
       "not validate the geometry (see `roomcad validate`).");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");

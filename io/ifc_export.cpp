@@ -290,9 +290,7 @@ class IfcBuilder {
 
   /// One IfcSpace per room of the storey's walls, with its NetFloorArea.
   void write_spaces(Storey& storey) {
-    Plan own = storey.level.empty() ? plan_ : plan_of_level(plan_, storey.level);
-    if (storey.level.empty()) std::erase_if(own.walls, [](const Wall& w) { return !w.level.empty(); });
-    const std::vector<Room> rooms = find_rooms(own);
+    const std::vector<Room> rooms = find_rooms_on_level(plan_, storey.level);
     for (std::size_t r = 0; r < rooms.size(); ++r) {
       const std::string id = fmt::format("{}room-{}", storey.level.empty() ? "" : storey.level + ':', r + 1);
       const int placement = local_placement(storey.placement, 0.0);

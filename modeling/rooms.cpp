@@ -16,6 +16,7 @@
 #include "modeling/joins.h"
 #include "modeling/detail/arrangement.h"
 #include "modeling/detail/centre_lines.h"
+#include "modeling/plan_levels.h"
 #include "modeling/rooms.h"
 #include "modeling/signed_area.h"
 
@@ -143,6 +144,22 @@ std::vector<Room> find_rooms(const Plan& plan, const Joins& joins) {
   std::stable_sort(rooms.begin(), rooms.end(),
                    [&](const Room& a, const Room& b) { return key(a) < key(b); });
   return rooms;
+}
+
+std::vector<Room> find_rooms_on_level(const Plan& plan, std::string_view level) {
+  if (!level.empty()) return find_rooms(plan_of_level(plan, level));
+  Plan unlevelled = plan;
+  std::erase_if(unlevelled.walls, [](const Wall& w) { return !w.level.empty(); });
+  return find_rooms(unlevelled);
+}
+
+std::vector<LevelRooms> find_rooms_by_level(const Plan& plan) {
+  std::vector<LevelRooms> out;
+  const bool unlevelled = plan.levels.empty() ||
+                          std::any_of(plan.walls.begin(), plan.walls.end(), [](const Wall& w) { return w.level.empty(); });
+  if (unlevelled) out.push_back({"", find_rooms_on_level(plan, "")});
+  for (const Level& l : plan.levels) out.push_back({l.id, find_rooms_on_level(plan, l.id)});
+  return out;
 }
 
 }  // namespace roomcad

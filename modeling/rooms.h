@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "modeling/joins.h"
@@ -32,5 +33,20 @@ struct Room {
 /// find_rooms with the plan's joins already found (validation finds them once for all checks).
 /// @pre joins == find_joins(plan).
 [[nodiscard]] std::vector<Room> find_rooms(const Plan& plan, const Joins& joins);
+
+/// find_rooms on the walls of one level alone (`level` empty: the walls that name no level), so
+/// that walls of different storeys never bound one room (a ground-floor wall and a roof wall
+/// drawn over it make no room). @pre `level` is empty or names a level of the plan.
+[[nodiscard]] std::vector<Room> find_rooms_on_level(const Plan& plan, std::string_view level);
+
+/// The rooms of one level of a plan.
+struct LevelRooms {
+  std::string level;        ///< the level's id; empty: the walls that name no level
+  std::vector<Room> rooms;  ///< find_rooms_on_level
+};
+
+/// Rooms level by level: the walls that name no level first (if any, or if the plan has no
+/// levels), then each level in the plan's order. O(levels * n log n) for n walls.
+[[nodiscard]] std::vector<LevelRooms> find_rooms_by_level(const Plan& plan);
 
 }  // namespace roomcad

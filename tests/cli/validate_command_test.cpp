@@ -120,5 +120,22 @@ TEST(InfoCommand, ListsRoomsWithClearAreas) {
   EXPECT_TRUE(j["rooms"][1]["windows"].empty());
 }
 
+TEST(InfoCommand, RoomsAreFoundLevelByLevel) {
+  // The bundled two-storey house: the first floor's partition stands over the ground floor's
+  // living room, which is one room of 65 m2, not two halves.
+  const std::string plan = (test::source_dir() / "examples/version2/two-storey.json").string();
+  const auto text = run_roomcad({"info", plan});
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("rooms     3\n    room 1 of level 'ground'  65.33 m2 clear  walls bow, hall, "
+                          "north, south, west  doors entry, hall_door"),
+            std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("    room 2 of level 'first'  32.48 m2 clear"), std::string::npos) << text.out;
+  const auto j = nlohmann::json::parse(run_roomcad({"info", "--format", "json", plan}).out);
+  ASSERT_EQ(j["rooms"].size(), 3u);
+  EXPECT_EQ(j["rooms"][0]["level"], "ground");
+  EXPECT_EQ(j["rooms"][2]["level"], "first");
+  EXPECT_EQ(j["rooms"][2]["name"], "room 2");
+}
+
 }  // namespace
 }  // namespace roomcad

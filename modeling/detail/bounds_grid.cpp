@@ -12,11 +12,23 @@ BoundsGrid::BoundsGrid(const std::vector<Bounds>& boxes) : boxes_(boxes), seen_(
     for (std::size_t a = 0; a < 2; ++a)
       for (const double v : {b[a], b[a + 2]})
         if (std::isfinite(v)) low[a] = std::min(low[a], v), high[a] = std::max(high[a], v);
-  side_ = std::clamp(int(std::ceil(std::sqrt(double(boxes.size())))), 1, 64);
-  for (std::size_t a = 0; a < 2; ++a) {
-    origin_[a] = low[a] <= high[a] ? low[a] : 0.0;
-    cell_[a] = low[a] < high[a] ? (high[a] - low[a]) / side_ : 1.0;
+  auto set_side = [&](int side) {
+    side_ = side;
+    for (std::size_t a = 0; a < 2; ++a) {
+      origin_[a] = low[a] <= high[a] ? low[a] : 0.0;
+      cell_[a] = low[a] < high[a] ? (high[a] - low[a]) / side_ : 1.0;
+    }
+  };
+  set_side(std::clamp(int(std::ceil(std::sqrt(double(boxes.size())))), 1, 64));
+  // Boxes that each cover much of the grid (polygons drawn over one another) would be filed
+  // in n cells each: past kMaxFiledPerBox on average, one cell holds them all (a scan, as
+  // without a grid), so memory stays linear in the boxes.
+  std::size_t filed = 0;
+  for (const Bounds& b : boxes) {
+    const Span x = span(b[0], b[2], 0), y = span(b[1], b[3], 1);
+    if (x.valid && y.valid) filed += std::size_t(x.high - x.low + 1) * std::size_t(y.high - y.low + 1);
   }
+  if (filed > kMaxFiledPerBox * boxes.size()) set_side(1);
   // Count, then file: each box in every cell its bounds cover.
   const std::size_t cells = std::size_t(side_) * std::size_t(side_);
   first_.assign(cells + 1, 0);

@@ -24,7 +24,11 @@ using Bounds = std::array<double, 4>;
 
 class BoundsGrid {
  public:
-  /// Files every box by the cells it covers. O(n + cells covered).
+  /// Most cells a box is filed in, on average, before the grid is given up for one cell.
+  static constexpr std::size_t kMaxFiledPerBox = 16;
+
+  /// Files every box by the cells it covers. O(n) time and memory: on average a box covers
+  /// at most kMaxFiledPerBox cells, or the grid is one cell.
   explicit BoundsGrid(const std::vector<Bounds>& boxes);
 
   /// Calls `visit(k)` once for every box k that meets `query` (boxes_meet), in no set order.

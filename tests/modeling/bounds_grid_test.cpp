@@ -54,6 +54,16 @@ TEST(BoundsGrid, VisitsExactlyTheBoxesThatMeetTheQueryOnce) {
   for (const Bounds& q : queries) EXPECT_EQ(visited(grid, q), meeting(boxes, q)) << q[0] << " " << q[1];
 }
 
+TEST(BoundsGrid, BoxesDrawnOverOneAnotherAreAllFound) {
+  // 3,000 boxes over one another and a few small ones: filed cell by cell, each would fill
+  // the grid's 55 x 55 cells; the grid falls back to one cell and still finds exactly them.
+  std::vector<Bounds> boxes(3000, Bounds{0.0, 0.0, 10.0, 10.0});
+  for (int k = 0; k < 10; ++k) boxes.push_back({k * 1.0, k * 1.0, k + 0.5, k + 0.5});
+  BoundsGrid grid(boxes);
+  for (const Bounds& q : {Bounds{3.6, 3.6, 3.7, 3.7}, Bounds{2.0, 2.0, 2.1, 2.1}, Bounds{20, 20, 21, 21}})
+    EXPECT_EQ(visited(grid, q), meeting(boxes, q));
+}
+
 TEST(BoundsGrid, NoBoxesAndBoxesAtOnePoint) {
   const std::vector<Bounds> none;
   BoundsGrid empty(none);

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/detail/cgal_booleans.h"
 
+#include <algorithm>
 #include <array>
+#include <numeric>
 #include <vector>
 
 #include <CGAL/Nef_polyhedron_3.h>
@@ -76,10 +78,35 @@ IndexedSoup round_soup(const std::vector<EK::Point_3>& exact, std::vector<std::v
   return snap_soup(std::move(out), tolerance);
 }
 
+// Puts the soup in an order of its own: points sorted by their exact coordinates, each polygon
+// starting at its lowest point, polygons sorted. CGAL gives them in the order of its records,
+// which follows memory addresses: without this the same plan built twice gave different files.
+void sort_soup(std::vector<EK::Point_3>& points, std::vector<std::vector<std::size_t>>& polygons) {
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return CGAL::compare_xyz(points[a], points[b]) == CGAL::SMALLER;
+  });
+  std::vector<std::size_t> rank(points.size());
+  std::vector<EK::Point_3> sorted;
+  sorted.reserve(points.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    rank[order[k]] = k;
+    sorted.push_back(points[order[k]]);
+  }
+  points = std::move(sorted);
+  for (std::vector<std::size_t>& polygon : polygons) {
+    for (std::size_t& i : polygon) i = rank[i];
+    std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
+  }
+  std::sort(polygons.begin(), polygons.end());
+}
+
 FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int first_opening_object) {
   std::vector<EK::Point_3> exact;
   std::vector<std::vector<std::size_t>> polygons;
   CGAL::convert_nef_polyhedron_to_polygon_soup(solid, exact, polygons, false);
+  sort_soup(exact, polygons);
   const IndexedSoup r = round_soup(exact, std::move(polygons));
   std::pair<std::size_t, std::size_t> bad;
   const auto copies = split_fans(r.polygons, r.points.size(), bad);

@@ -16,7 +16,8 @@ namespace roomcad::detail {
 /// @param[in] first_opening_object Model::objects index of opening 0
 /// @return faces, rounded to the nearest doubles, classified (classify_face). Faces with
 ///         holes come triangulated (by CGAL), all triangles of one facet in one colour
-///         (unify_facet_labels); others are single polygons.
+///         (unify_facet_labels); others are single polygons. In an order of their own
+///         (corners sorted by their exact coordinates), the same in every run.
 ///         Cost about O(n log n) Nef operations for n walls and holes (seconds for hundreds).
 /// @throws PreconditionError if the result is empty while the walls are not.
 [[nodiscard]] FaceSoup build_cluster_cgal(std::span<const WallFrame* const> walls,

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@ TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
   const auto seeds = fuzz::corpus_files(ROOMCAD_SOURCE_DIR "/fuzz/corpus/build");
   ASSERT_GE(seeds.size(), 10u);
   std::size_t built = 0;
+  std::set<std::string> nef_open;  // seeds built here whose Nef solid, rounded, is open
   for (const auto& seed : seeds) {
     SCOPED_TRACE(seed.filename().string());
     const Plan plan = fuzz::decode_plan_file(seed);
@@ -52,15 +54,24 @@ TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
         }
         continue;
       }
-      ASSERT_TRUE(nef.model.has_value()) << nef.refusal;
-      const SolidCheck c = check_solid(made.model->walls), reference = check_solid(nef.model->walls);
+      const SolidCheck c = check_solid(made.model->walls);
       EXPECT_TRUE(c.is_closed()) << c.border_edges << " border edges";
       EXPECT_TRUE(c.is_manifold());
+      ++built;
+      if (!nef.model) {
+        // Nef's exact solid, rounded to doubles, is not closed: features finer than that
+        // rounding (crash-rounded-end-3: a wall an ulp long and a nanometre high where three
+        // walls meet), which the general path builds exactly. Only that refusal, on one seed.
+        EXPECT_NE(nef.refusal.find("is not closed"), std::string::npos) << nef.refusal;
+        nef_open.insert(seed.filename().string());
+        continue;
+      }
+      const SolidCheck reference = check_solid(nef.model->walls);
       EXPECT_EQ(c.genus, reference.genus);
       EXPECT_NEAR(c.volume, reference.volume, 2 * test::volume_tolerance(nef.model->walls, reference.volume));
-      ++built;
     }
   }
+  EXPECT_LE(nef_open.size(), 1u);
   // Refused: zero-length, far-tiny and crash-far-wall-thinner-than-its-ulps (walls thinner than
   // 64 units in the last place of their coordinates) and crash-ulp-wall-at-reversed-diagonal-walls.
   EXPECT_GE(built, 2 * (seeds.size() - 4));

@@ -42,16 +42,14 @@ class BoundsGrid {
       if (boxes_meet(query, boxes_[k])) visit(std::size_t(k));
     };
     for (const std::uint32_t k : everywhere_) consider(k);
-    const Span x = span(query[0], query[2], 0), y = span(query[1], query[3], 1);
-    if (!x.valid || !y.valid) {  // NaN or low above high: considered against every box
+    const Cells covered = cells_of(query);
+    if (!covered.valid()) {  // NaN or low above high: considered against every box
       for (std::uint32_t k = 0; k < boxes_.size(); ++k) consider(k);
       return;
     }
-    for (int cy = y.low; cy <= y.high; ++cy)
-      for (int cx = x.low; cx <= x.high; ++cx) {
-        const std::size_t cell = std::size_t(cy) * std::size_t(side_) + std::size_t(cx);
-        for (std::uint32_t at = first_[cell]; at < first_[cell + 1]; ++at) consider(filed_[at]);
-      }
+    for_each_cell(covered, [&](std::size_t cell) {
+      for (std::uint32_t at = first_[cell]; at < first_[cell + 1]; ++at) consider(filed_[at]);
+    });
   }
 
  private:
@@ -72,6 +70,23 @@ class BoundsGrid {
       return int(t);
     };
     return {cell(from), cell(to), true};
+  }
+
+  /// The cells a box covers, along x and along y.
+  struct Cells {
+    Span x, y;
+    [[nodiscard]] bool valid() const { return x.valid && y.valid; }
+    [[nodiscard]] std::size_t count() const {
+      return std::size_t(x.high - x.low + 1) * std::size_t(y.high - y.low + 1);
+    }
+  };
+  [[nodiscard]] Cells cells_of(const Bounds& b) const { return {span(b[0], b[2], 0), span(b[1], b[3], 1)}; }
+  /// Calls `f(cell)` with the index of every cell in `covered` (valid).
+  template <class F>
+  void for_each_cell(const Cells& covered, F&& f) const {
+    for (int cy = covered.y.low; cy <= covered.y.high; ++cy)
+      for (int cx = covered.x.low; cx <= covered.x.high; ++cx)
+        f(std::size_t(cy) * std::size_t(side_) + std::size_t(cx));
   }
 
   const std::vector<Bounds>& boxes_;

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// wall_footprint: mitred corners constructed exactly (exact::Radical), then rounded to nearest.
+// wall_footprint: mitred corners constructed exactly, then rounded to nearest: at once where
+// they are doubles, from 128-bit intervals where those tell the nearest double, else in
+// exact::Radical.
 #include <cmath>
 #include <limits>
 #include <optional>
 
+#include "modeling/detail/precise_interval.h"
 #include "modeling/exact_geometry.h"
 #include "modeling/joins.h"
 
@@ -24,6 +27,24 @@ std::optional<std::array<Point2, 4>> find_exact_corners_fast(const Plan& plan, c
     }
     return out;
   } catch (const CGAL::Uncertain_conversion_exception&) {
+    return std::nullopt;
+  }
+}
+
+/// Corners held by 128-bit intervals (a skewed wall's: the square roots of the walls' squared
+/// lengths) whose nearest doubles the intervals tell; @return them, or nothing when a corner
+/// lies too near a midpoint between doubles (a tie) or a parallel mitre cannot be told.
+std::optional<std::array<Point2, 4>> find_corners_precisely(const Plan& plan, const Joins& joins, std::size_t wall) {
+  try {
+    const auto corners = exact::wall_corners<exact::PreciseInterval>(plan, joins, wall);
+    std::array<Point2, 4> out;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::optional<double> x = corners[i].x.nearest_double(), y = corners[i].y.nearest_double();
+      if (!x || !y) return std::nullopt;
+      out[i] = {*x, *y};
+    }
+    return out;
+  } catch (const exact::UndecidedComparison&) {
     return std::nullopt;
   }
 }
@@ -103,6 +124,7 @@ std::optional<std::array<Point2, 4>> find_axis_aligned_corners(const Plan& plan,
 std::array<Point2, 4> wall_footprint(const Plan& plan, const Joins& joins, std::size_t wall) {
   if (const auto axis_aligned = find_axis_aligned_corners(plan, joins, wall)) return *axis_aligned;
   if (const auto fast = find_exact_corners_fast(plan, joins, wall)) return *fast;
+  if (const auto precise = find_corners_precisely(plan, joins, wall)) return *precise;
   const exact::Exact::Scope scope;
   const std::array<exact::Pt<exact::Exact>, 4> corners =
       exact::wall_corners<exact::Exact>(plan, joins, wall);

@@ -2,6 +2,8 @@
 // Radical: exact sums of rational multiples of products of square roots (see radical.h).
 #include "modeling/detail/radical.h"
 
+#include "modeling/detail/precise_interval.h"
+
 #include <CGAL/Interval_nt.h>
 #include <mpfr.h>
 
@@ -225,13 +227,9 @@ std::optional<double> round_if_clear(const Radical& x) {
     mpfr_add(lo, lo, tl, MPFR_RNDD);
     mpfr_add(hi, hi, th, MPFR_RNDU);
   }
-  const double a = mpfr_get_d(lo, MPFR_RNDN), b = mpfr_get_d(hi, MPFR_RNDN);
-  // Equal bounds could sit on a midpoint, where MPFR ties to even and round_to_nearest to the
-  // lower double: leave those to it.
-  const bool clear = a == b && mpfr_equal_p(lo, hi) == 0 && std::isfinite(a);
+  const std::optional<double> nearest = nearest_double_if_clear(lo, hi);
   for (mpfr_ptr v : {lo, hi, tl, th, rl, rh}) mpfr_clear(v);
-  if (clear) return a;
-  return std::nullopt;
+  return nearest;
 }
 
 namespace {

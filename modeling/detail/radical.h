@@ -65,7 +65,8 @@ class Radical {
   friend std::pair<double, double> to_interval(const Radical& x);
 
   /// @return the double nearest to x when bounds of x at 192 bits (MPFR, rounded outward)
-  ///         round to the same double, else nothing (x within 2^-190 or so of a midpoint).
+  ///         lie strictly between the midpoints around one double, else nothing (x within
+  ///         2^-190 or so of a midpoint: nearest_double_if_clear, precise_interval.h).
   ///         Cost: a few MPFR operations per term.
   friend std::optional<double> round_if_clear(const Radical& x);
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// wall_footprint's shortcut for axis-aligned walls (sums of doubles rounded, ties down) gives
-// bit for bit what the exact construction (exact::wall_corners in Radical, rounded by
-// exact::round_to_nearest) gives: a mitre's shared corner must not depend on which way each
-// of its two walls was computed.
+// wall_footprint's shortcuts, for axis-aligned walls (sums of doubles rounded, ties down) and
+// for skewed ones (128-bit intervals that tell the nearest double), give bit for bit what the
+// exact construction (exact::wall_corners in Radical, rounded by exact::round_to_nearest)
+// gives: a mitre's shared corner must not depend on which way each of its two walls was
+// computed.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -62,6 +63,26 @@ TEST(Footprint, TiesRoundDownAsTheExactPathDoes) {
   test::add_wall(plan, "b", {7.4, -1.17}, {7.4, -4.5}).thickness = 0.26;
   expect_exact_footprints(plan);
   EXPECT_EQ(wall_footprint(plan, find_joins(plan), 0)[0].y, -1.3);
+}
+
+TEST(Footprint, SkewedCornersAreTheExactOnesRounded) {
+  // Chains of walls at random angles (the chords of an arc, a bay window), mitred at every
+  // node: every corner involves the square roots of two walls' squared lengths.
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> milli(-20000, 20000);
+  std::uniform_int_distribution<int> thick(10, 400);
+  auto decimal = [&] { return milli(rng) / 1000.0; };
+  for (int trial = 0; trial < 100; ++trial) {
+    Plan plan = test::empty_plan();
+    Point2 from{decimal(), decimal()};
+    for (int k = 0; k < 4; ++k) {
+      const Point2 to{decimal(), decimal()};
+      const char* const names[] = {"w0", "w1", "w2", "w3"};
+      test::add_wall(plan, names[k], from, to).thickness = thick(rng) / 1000.0;
+      from = to;
+    }
+    expect_exact_footprints(plan);
+  }
 }
 
 }  // namespace

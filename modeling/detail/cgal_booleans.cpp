@@ -67,12 +67,14 @@ std::string wall_list(std::span<const WallFrame* const> walls) {
 IndexedSoup round_soup(const std::vector<EK::Point_3>& exact, std::vector<std::vector<std::size_t>> polygons) {
   IndexedSoup out;
   out.points.reserve(exact.size());
-  out.exact.reserve(exact.size());
+  std::vector<char> is_exact;
+  is_exact.reserve(exact.size());
   for (const EK::Point_3& p : exact) {
     const OpenMesh::Vec3d& r = out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
                                                        round_to_nearest(p.z()) + 0.0);
-    out.exact.push_back(EK::FT(r[0]) == p.x() && EK::FT(r[1]) == p.y() && EK::FT(r[2]) == p.z());
+    is_exact.push_back(EK::FT(r[0]) == p.x() && EK::FT(r[1]) == p.y() && EK::FT(r[2]) == p.z());
   }
+  out.is_exact = [is_exact = std::move(is_exact)](std::size_t i) { return is_exact[i] != 0; };
   out.polygons = std::move(polygons);
   const double tolerance = snap_tolerance(out.points);
   return snap_soup(std::move(out), tolerance);

@@ -105,16 +105,6 @@ XPoint with_coordinate(XPoint p, int axis, double value) {
   return p;
 }
 
-Box3 box_of(const std::vector<XPoint>& points) {
-  Box3 b{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
-  for (const XPoint& p : points)
-    for (std::size_t k = 0; k < 3; ++k) {
-      b.low[k] = std::min(b.low[k], p.approx[k].inf());
-      b.high[k] = std::max(b.high[k], p.approx[k].sup());
-    }
-  return b;
-}
-
 // The prism over `base` (a convex polygon in plane C0, counter-clockwise seen from the side
 // C1 lies on) between the outward caps c0 and c1. @pre the caps do not meet inside (parallel
 // caps, base on the inner side of c1).
@@ -292,6 +282,16 @@ std::optional<Primitive> make_hole_piece(PlaneSet& set, const BoxPlanes& box, co
 }
 
 }  // namespace
+
+Box3 box_of(std::span<const XPoint> points) {
+  Box3 b{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+  for (const XPoint& p : points)
+    for (std::size_t k = 0; k < 3; ++k) {
+      b.low[k] = std::min(b.low[k], p.approx[k].inf());
+      b.high[k] = std::max(b.high[k], p.approx[k].sup());
+    }
+  return b;
+}
 
 BoxPlanes add_box_planes(PlaneSet& set, double largest_coordinate) {
   const double m = std::ldexp(1.0, std::ilogb(4.0 * (largest_coordinate + 1.0)) + 1);

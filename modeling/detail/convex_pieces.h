@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "modeling/detail/exact_planes.h"
@@ -52,6 +53,9 @@ bool clip_polygon(const PlaneSet& set, PlanePolygon& polygon, PlaneRef h);
 struct Box3 {
   std::array<double, 3> low{}, high{};
 };
+
+/// @return the box of the points' intervals (empty: low +inf, high -inf). O(n).
+[[nodiscard]] Box3 box_of(std::span<const XPoint> points);
 
 /// A convex polyhedron: a solid (wall piece, or a convex piece of a slab) or a hole (an
 /// opening's, or a convex part of it).

@@ -177,9 +177,7 @@ PlaneId PlaneSet::add_axis(int axis, double value) {
 }
 
 const std::array<Exact, 4>& PlaneSet::exact(PlaneId id) const {
-  ExactSlot& slot = exact_[id];
-  std::call_once(slot.once, [&] { slot.coefficients = coefficients<Exact>(recipes_[id]); });
-  return slot.coefficients;
+  return exact_[id].get([&] { return coefficients<Exact>(recipes_[id]); });
 }
 
 XPoint make_point(double x, double y, double z) {
@@ -337,8 +335,7 @@ std::size_t PointCache::add(const XPoint& p) {
 }
 
 const XHom& PointCache::exact(std::size_t i) {
-  if (!exact_[i]) exact_[i] = std::make_unique<XHom>(homogeneous(set_, points_[i]));
-  return *exact_[i];
+  return exact_[i].get([&] { return homogeneous(set_, points_[i]); });
 }
 
 int PointCache::side(PlaneRef plane, std::size_t i) {

@@ -23,11 +23,12 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
-#include <mutex>
 #include <vector>
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
+
+#include "modeling/detail/once_slot.h"
 
 namespace roomcad::detail {
 
@@ -129,14 +130,10 @@ class PlaneSet {
   [[nodiscard]] std::vector<PlaneRef> find_equal_planes() const;
 
  private:
-  struct ExactSlot {
-    std::once_flag once;
-    std::array<Exact, 4> coefficients;
-  };
   std::vector<PlaneRecipe> recipes_;
   std::vector<std::array<Interval, 4>> approx_;
   std::vector<std::pair<int, double>> axis_;
-  mutable std::deque<ExactSlot> exact_;  // a deque: adding keeps the slots (and flags) in place
+  std::deque<OnceSlot<std::array<Exact, 4>>> exact_;  // a deque: adding keeps the slots in place
 };
 
 /// @return the explicit point (x, y, z). @pre finite.
@@ -167,7 +164,8 @@ class PlaneSet {
 /// @return the point's coordinates, each rounded to the nearest double (ties to even).
 [[nodiscard]] std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p);
 /// Points of one computation with their exact homogeneous coordinates, computed once on
-/// first need and kept (the predicates of exact_planes.h, by point index). Single-threaded.
+/// first need and kept (the predicates of exact_planes.h, by point index). Adding is
+/// single-threaded; the predicates may run on many threads.
 class PointCache {
  public:
   explicit PointCache(const PlaneSet& set) : set_(set) {}
@@ -186,7 +184,7 @@ class PointCache {
   const XHom& exact(std::size_t i);
   const PlaneSet& set_;
   std::vector<XPoint> points_;
-  std::vector<std::unique_ptr<XHom>> exact_;
+  std::deque<OnceSlot<XHom>> exact_;  // a deque: adding keeps the slots in place
 };
 
 /// @return {axis, offset} if the plane is x[axis] = offset with offset a double, else {-1, 0}.

@@ -5,8 +5,12 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <numeric>
 #include <tuple>
 #include <unordered_map>
+
+#include <tbb/parallel_for.h>
 
 namespace roomcad::detail {
 namespace {
@@ -147,46 +151,49 @@ bool is_exact_corner(PointTable& t, std::size_t i) {
 }  // namespace
 
 IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
-  PointTable t = number_faces(set, faces);
-  const PointGrid grid(t.points);
+  // Shared with the soup's is_exact, which snapping may ask after this returns.
+  const auto t = std::make_shared<PointTable>(number_faces(set, faces));
+  const PointGrid grid(t->points);
   IndexedSoup out;
-  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
+  out.polygons.resize(faces.size());
+  // Faces are independent (the exact points' cache is safe to share): in parallel, each
+  // polygon in its own slot, so the result does not depend on the thread count.
+  tbb::parallel_for(std::size_t{0}, faces.size(), [&](std::size_t fi) {
     const SolidFace& f = faces[fi];
-    const std::vector<std::size_t>& poly = t.polygons[fi];
-    const std::vector<std::size_t>& exact_poly = t.exact_polygons[fi];
-    std::vector<std::size_t> result;
+    const std::vector<std::size_t>& poly = t->polygons[fi];
+    const std::vector<std::size_t>& exact_poly = t->exact_polygons[fi];
+    std::vector<std::size_t>& result = out.polygons[fi];
     for (std::size_t k = 0; k < poly.size(); ++k) {
       const std::size_t next = (k + 1) % poly.size();
       const std::size_t ui = poly[k], vi = poly[next], eu = exact_poly[k], ev = exact_poly[next];
       result.push_back(ui);
-      const OpenMesh::Vec3d& u = t.points[ui];
-      const OpenMesh::Vec3d& v = t.points[vi];
+      const OpenMesh::Vec3d& u = t->points[ui];
+      const OpenMesh::Vec3d& v = t->points[vi];
       // Candidates near the edge in doubles; each decided on its exact points: on the face's
       // plane and the edge's line, strictly between the face's own exact ends.
       std::vector<std::pair<std::size_t, std::size_t>> on_edge;  // (point, its exact point)
       int axis = -1, dir = 0;
       grid.for_each_near(u, v, 1e-9 * (1.0 + u.norm()), [&](std::size_t wi) {
-        if (wi == ui || wi == vi || !is_near_segment(u, v, t.points[wi])) return;
+        if (wi == ui || wi == vi || !is_near_segment(u, v, t->points[wi])) return;
         if (std::find(poly.begin(), poly.end(), wi) != poly.end()) return;
-        for (const std::size_t w : t.exact_of[wi]) {
-          if (t.exact.side(f.plane, w) != 0 || t.exact.side(f.lines[k], w) != 0) continue;
-          if (axis < 0) std::tie(axis, dir) = edge_axis(t.exact, eu, ev, v - u);
-          if (t.exact.compare(w, eu, axis) != dir || t.exact.compare(ev, w, axis) != dir) continue;
+        for (const std::size_t w : t->exact_of[wi]) {
+          if (t->exact.side(f.plane, w) != 0 || t->exact.side(f.lines[k], w) != 0) continue;
+          if (axis < 0) std::tie(axis, dir) = edge_axis(t->exact, eu, ev, v - u);
+          if (t->exact.compare(w, eu, axis) != dir || t->exact.compare(ev, w, axis) != dir) continue;
           on_edge.emplace_back(wi, w);
           break;
         }
       });
       std::sort(on_edge.begin(), on_edge.end(), [&](const auto& a, const auto& b) {
-        return t.exact.compare(a.second, b.second, axis) * dir < 0;
+        return t->exact.compare(a.second, b.second, axis) * dir < 0;
       });
       for (const auto& [wi, w] : on_edge) result.push_back(wi);
     }
-    out.polygons.push_back(std::move(result));
-    out.tags.push_back(fi);
-  }
-  out.exact.reserve(t.points.size());
-  for (std::size_t i = 0; i < t.points.size(); ++i) out.exact.push_back(is_exact_corner(t, i));
-  out.points = std::move(t.points);
+  });
+  out.tags.resize(faces.size());
+  std::iota(out.tags.begin(), out.tags.end(), std::size_t{0});
+  out.points = t->points;
+  out.is_exact = [t](std::size_t i) { return is_exact_corner(*t, i); };
   return out;
 }
 

@@ -25,9 +25,10 @@ struct SolidFace {
 };
 
 /// @return the faces as rounded polygons with every vertex lying on an edge inserted into it;
-///         tags[k] is the index of the face polygon k came from. O(e c) for e edges and c
-///         vertices near each (a uniform grid), exact tests only for vertices within a few
-///         ulps of an edge.
+///         tags[k] is the index of the face polygon k came from; is_exact tells, when asked,
+///         whether a rounded point is its exact point (an exact test: snap_soup asks it only of
+///         points that snap). O(e c) for e edges and c vertices near each (a uniform grid),
+///         exact tests only for vertices within a few ulps of an edge; faces in parallel.
 [[nodiscard]] IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& faces);
 
 }  // namespace roomcad::detail

@@ -64,12 +64,13 @@ std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primit
   works.reserve(by_plane.size());
   for (auto& [id, w] : by_plane) {
     Box3 box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
-    for (const auto& [p, f] : w.faces)
-      for (const XPoint& v : prims[p].faces[f].vertices)
-        for (std::size_t k = 0; k < 3; ++k) {
-          box.low[k] = std::min(box.low[k], v.approx[k].inf());
-          box.high[k] = std::max(box.high[k], v.approx[k].sup());
-        }
+    for (const auto& [p, f] : w.faces) {
+      const Box3 face = box_of(prims[p].faces[f].vertices);
+      for (std::size_t k = 0; k < 3; ++k) {
+        box.low[k] = std::min(box.low[k], face.low[k]);
+        box.high[k] = std::max(box.high[k], face.high[k]);
+      }
+    }
     for (std::size_t p = 0; p < prims.size(); ++p) {
       if (!do_overlap(box, prims[p].box)) continue;
       if (std::any_of(w.faces.begin(), w.faces.end(), [&](const auto& pf) { return pf.first == p; })) continue;
@@ -117,9 +118,19 @@ PlaneFaces run_plane(const PlaneSet& set, const BoxPlanes& box, const std::vecto
                      const PlaneWork& w) {
   const IntervalScope intervals;
   std::vector<Contribution> contributions;
-  for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
-  for (std::size_t p : w.crossing)
+  std::vector<Box3> face_boxes;
+  for (const auto& [p, f] : w.faces) {
+    contributions.push_back(face_contribution(prims[p], p, f));
+    face_boxes.push_back(box_of(contributions.back().polygon.vertices));
+  }
+  // Faces of the solid lie on faces of primitives: where only sections lie, the solid is
+  // above and below alike. So a primitive meeting no face here has no part in them (nor do
+  // its section's edges: they split only edges they meet).
+  for (std::size_t p : w.crossing) {
+    if (std::none_of(face_boxes.begin(), face_boxes.end(), [&](const Box3& b) { return do_overlap(b, prims[p].box); }))
+      continue;
     if (auto c = section(set, box, prims[p], p, w.plane)) contributions.push_back(std::move(*c));
+  }
   return build_plane_faces(set, box, {w.plane, 1}, contributions, w.cuts);
 }
 

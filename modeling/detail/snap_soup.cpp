@@ -28,15 +28,15 @@ struct CellHash {
 // of each other (transitively), never joining two groups that each hold an exact point; a
 // group's root is its exact point, else its lowest index. Points hash into cubes of side
 // 2 * tolerance, so near points are in adjacent cubes.
-std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points, const std::vector<char>& exact,
-                                           double tolerance) {
+std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points,
+                                           const std::function<bool(std::size_t)>& exact, double tolerance) {
   std::vector<std::size_t> parent(points.size());
   std::iota(parent.begin(), parent.end(), std::size_t{0});
   auto find = [&](std::size_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  auto is_exact = [&](std::size_t root) { return !exact.empty() && exact[root] != 0; };
+  auto is_exact = [&](std::size_t root) { return exact && exact(root); };
   auto unite = [&](std::size_t a, std::size_t b) {
     if (a == b || (is_exact(a) && is_exact(b))) return;
     const bool a_root = is_exact(a) || (!is_exact(b) && a < b);
@@ -257,11 +257,14 @@ bool has_paired_edges(const std::vector<Polygon>& polygons) {
 }
 
 // Whether snapping to `target` puts two exact points (`exact`, possibly empty) in one group.
-bool merges_exact_points(const std::vector<std::size_t>& target, const std::vector<char>& exact) {
-  if (exact.empty()) return false;
+// Asks `exact` only of points in groups of two or more.
+bool merges_exact_points(const std::vector<std::size_t>& target, const std::function<bool(std::size_t)>& exact) {
+  if (!exact) return false;
+  std::vector<std::size_t> group_size(target.size(), 0);
+  for (const std::size_t t : target) ++group_size[t];
   std::vector<char> holds_exact(target.size(), 0);
   for (std::size_t i = 0; i < target.size(); ++i) {
-    if (!exact[i]) continue;
+    if (group_size[target[i]] < 2 || !exact(i)) continue;
     if (holds_exact[target[i]]) return true;
     holds_exact[target[i]] = 1;
   }
@@ -271,16 +274,16 @@ bool merges_exact_points(const std::vector<std::size_t>& target, const std::vect
 }  // namespace
 
 IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
-  const std::vector<std::size_t> merging = find_snap_targets(soup.points, {}, tolerance);
+  const std::vector<std::size_t> merging = find_snap_targets(soup.points, nullptr, tolerance);
   // Keeping exact corners apart changes nothing unless two of them would merge (rare): only
   // then is the result checked and, where it must be, the soup snapped again.
-  if (!merges_exact_points(merging, soup.exact)) return snap_to(std::move(soup), merging);
+  if (!merges_exact_points(merging, soup.is_exact)) return snap_to(std::move(soup), merging);
   IndexedSoup merged = snap_to(soup, merging);
   if (has_paired_edges(merged.polygons)) return merged;
   // Merging two exact corners pinched the surface (walls an ulp apart, each corner exact:
   // an edge of four faces). Keeping exact corners apart leaves them as the exact solid has
   // them; taken only where that closes the surface.
-  const std::vector<std::size_t> apart_targets = find_snap_targets(soup.points, soup.exact, tolerance);
+  const std::vector<std::size_t> apart_targets = find_snap_targets(soup.points, soup.is_exact, tolerance);
   IndexedSoup apart = snap_to(std::move(soup), apart_targets);
   return has_paired_edges(apart.polygons) ? apart : merged;
 }

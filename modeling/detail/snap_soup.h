@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include <OpenMesh/Core/Geometry/VectorT.hh>
@@ -19,10 +20,11 @@ struct IndexedSoup {
   /// Optional, one per polygon (what face it came from): snap_soup carries each to the
   /// polygons its polygon becomes.
   std::vector<std::size_t> tags;
-  /// Optional, one per point: nonzero where the point is its exact corner, not a rounding of
-  /// it. Two such points are distinct corners of the exact solid, so they are never snapped
-  /// together, however near (walls drawn an ulp apart stay apart, as they are).
-  std::vector<char> exact;
+  /// Optional: whether point i is its exact corner, not a rounding of it. Two such points are
+  /// distinct corners of the exact solid, so they are never snapped together, however near
+  /// (walls drawn an ulp apart stay apart, as they are). Asked only of points within the
+  /// tolerance of another (few: an exact answer can cost an exact construction).
+  std::function<bool(std::size_t)> is_exact;
 };
 
 /// Snaps together points within `tolerance` of each other (per coordinate, transitively; each

@@ -26,8 +26,8 @@ struct CellHash {
 
 // For each point, the point whose coordinates it takes: groups of points within `tolerance`
 // of each other (transitively), never joining two groups that each hold an exact point; a
-// group's root is its exact point, else its lowest index. Points hash into cubes of side
-// 2 * tolerance, so near points are in adjacent cubes.
+// group's root is its exact point, else its lowest index. Points hash into cubes, so near
+// points are in the same or adjacent cubes.
 std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points,
                                            const std::function<bool(std::size_t)>& exact, double tolerance) {
   std::vector<std::size_t> parent(points.size());
@@ -43,28 +43,41 @@ std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& p
     if (a_root) parent[b] = a;
     else parent[a] = b;
   };
-  // Cells no smaller than an ulp of the largest coordinate, so that every cell index fits an
-  // int64 whatever the tolerance (a larger cell only adds candidates, never loses one).
+  // Cells of 64 tolerances, no smaller than an ulp of the largest coordinate (so that every
+  // cell index fits an int64 whatever the tolerance): a point's near neighbours lie in its
+  // own cell, or in the next one along an axis where it lies within the tolerance of that
+  // side (2 tolerances, for the rounding of the division: a larger reach only adds
+  // candidates). So most points look in one cell, not 27, and every candidate is met in the
+  // same order as over all 27.
   double largest = 0.0;
   for (const OpenMesh::Vec3d& p : points)
     for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(p[k]));
-  const double cell = std::max({2.0 * tolerance, largest * 0x1p-52, 1e-300});
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::size_t>, CellHash> cells;
+  const double cell = std::max({64.0 * tolerance, largest * 0x1p-52, 1e-300});
+  // Per cell, its points in order of index: the first and the last, each linked to the next.
+  constexpr std::size_t kNone = SIZE_MAX;
+  std::unordered_map<std::array<std::int64_t, 3>, std::pair<std::size_t, std::size_t>, CellHash> cells;
+  std::vector<std::size_t> next(points.size(), kNone);
+  auto index = [&](double v) { return std::int64_t(std::floor(v / cell)); };
   for (std::size_t i = 0; i < points.size(); ++i) {
-    std::array<std::int64_t, 3> c;
-    for (int k = 0; k < 3; ++k) c[std::size_t(k)] = std::int64_t(std::floor(points[i][k] / cell));
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+    std::array<std::int64_t, 3> c, low, high;
+    for (std::size_t k = 0; k < 3; ++k) {
+      c[k] = index(points[i][int(k)]);
+      low[k] = index(points[i][int(k)] - 2.0 * tolerance) - c[k];
+      high[k] = index(points[i][int(k)] + 2.0 * tolerance) - c[k];
+    }
+    for (std::int64_t dx = low[0]; dx <= high[0]; ++dx)
+      for (std::int64_t dy = low[1]; dy <= high[1]; ++dy)
+        for (std::int64_t dz = low[2]; dz <= high[2]; ++dz) {
           const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
           if (it == cells.end()) continue;
-          for (std::size_t j : it->second) {
+          for (std::size_t j = it->second.first; j != kNone; j = next[j]) {
             const OpenMesh::Vec3d d = points[i] - points[j];
             if (std::abs(d[0]) > tolerance || std::abs(d[1]) > tolerance || std::abs(d[2]) > tolerance) continue;
             unite(find(i), find(j));
           }
         }
-    cells[c].push_back(i);
+    const auto [it, fresh] = cells.try_emplace(c, i, i);
+    if (!fresh) next[it->second.second] = i, it->second.second = i;
   }
   for (std::size_t i = 0; i < points.size(); ++i) parent[i] = find(i);
   return parent;

@@ -87,7 +87,11 @@ std::vector<std::vector<std::uint32_t>> split_fans(const std::vector<std::vector
                                                    std::size_t points,
                                                    std::pair<std::size_t, std::size_t>& bad_edge) {
   Corners c;
+  std::size_t corners = 0;
+  for (const auto& poly : polygons) corners += poly.size();
+  c.vertex.reserve(corners), c.next.reserve(corners), c.parent.reserve(corners);
   std::unordered_map<std::uint64_t, std::size_t> corner_after;  // edge a->b: the corner at b
+  corner_after.reserve(corners);
   for (const auto& poly : polygons)
     for (std::size_t k = 0; k < poly.size(); ++k) {
       const std::size_t prev = poly[(k + poly.size() - 1) % poly.size()];
@@ -108,12 +112,14 @@ std::vector<std::vector<std::uint32_t>> split_fans(const std::vector<std::vector
   std::vector<std::uint32_t> copy_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0);
   std::vector<std::vector<std::uint32_t>> copies(polygons.size());
   std::size_t id = 0;
-  for (std::size_t p = 0; p < polygons.size(); ++p)
+  for (std::size_t p = 0; p < polygons.size(); ++p) {
+    copies[p].reserve(polygons[p].size());
     for (std::size_t k = 0; k < polygons[p].size(); ++k, ++id) {
       std::uint32_t& copy = copy_of_root[c.find(id)];
       if (copy == UINT32_MAX) copy = copies_used[c.vertex[id]]++;
       copies[p].push_back(copy);
     }
+  }
   return copies;
 }
 

@@ -54,10 +54,15 @@ struct PointTable {
 
 PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
   PointTable t(set);
+  std::size_t corners = 0;
+  for (const SolidFace& f : faces) corners += f.vertices.size();
   std::unordered_map<Key, std::size_t, KeyHash> by_coordinates, by_representation;
+  by_coordinates.reserve(corners), by_representation.reserve(corners);
+  t.polygons.reserve(faces.size()), t.exact_polygons.reserve(faces.size());
   for (const SolidFace& f : faces) {
     std::vector<std::size_t>& poly = t.polygons.emplace_back();
     std::vector<std::size_t>& exact_poly = t.exact_polygons.emplace_back();
+    poly.reserve(f.vertices.size()), exact_poly.reserve(f.vertices.size());
     for (std::size_t k = 0; k < f.vertices.size(); ++k) {
       const OpenMesh::Vec3d p(f.rounded[k][0], f.rounded[k][1], f.rounded[k][2]);
       const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), t.points.size());

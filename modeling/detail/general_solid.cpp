@@ -51,7 +51,8 @@ bool do_overlap(const Box3& a, const Box3& b) {
   return true;
 }
 
-// The planes carrying faces, each with the primitives near it. O(planes x primitives) box tests.
+// The planes carrying faces, each with the primitives crossing it near its faces. O(planes x
+// primitives) box tests, planes in parallel.
 std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primitive>& prims) {
   std::map<PlaneId, PlaneWork> by_plane;
   for (std::size_t p = 0; p < prims.size(); ++p)
@@ -62,29 +63,31 @@ std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primit
     }
   std::vector<PlaneWork> works;
   works.reserve(by_plane.size());
-  for (auto& [id, w] : by_plane) {
+  for (auto& [id, w] : by_plane) works.push_back(std::move(w));
+  tbb::parallel_for(std::size_t{0}, works.size(), [&](std::size_t k) {
+    PlaneWork& w = works[k];
     Box3 box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
     for (const auto& [p, f] : w.faces) {
       const Box3 face = box_of(prims[p].faces[f].vertices);
-      for (std::size_t k = 0; k < 3; ++k) {
-        box.low[k] = std::min(box.low[k], face.low[k]);
-        box.high[k] = std::max(box.high[k], face.high[k]);
+      for (std::size_t a = 0; a < 3; ++a) {
+        box.low[a] = std::min(box.low[a], face.low[a]);
+        box.high[a] = std::max(box.high[a], face.high[a]);
       }
     }
+    const IntervalScope intervals;
     for (std::size_t p = 0; p < prims.size(); ++p) {
       if (!do_overlap(box, prims[p].box)) continue;
       if (std::any_of(w.faces.begin(), w.faces.end(), [&](const auto& pf) { return pf.first == p; })) continue;
       bool below = false, above = false;
       for (const XPoint& v : prims[p].vertices) {
-        const int s = side(set, {id, 1}, v);
+        const int s = side(set, {w.plane, 1}, v);
         below = below || s < 0;
         above = above || s > 0;
         if (below && above) break;
       }
       if (below && above) w.crossing.push_back(p);
     }
-    works.push_back(std::move(w));
-  }
+  });
   return works;
 }
 

@@ -3,8 +3,10 @@
 //
 // A predicate is written once as a generic lambda over a number type NT and evaluated first
 // in interval arithmetic; only when the intervals cannot decide (the shapes touch or nearly
-// touch) is it evaluated again in Radical (radical.h), which is exact for + - * / and the
-// square roots of rationals and decides signs in a bounded number of rational operations.
+// touch) is it evaluated again in 128-bit intervals (precise_interval.h), in which sums and
+// products of doubles are exact, and only when those cannot either (a square root of an exact
+// zero) in Radical (radical.h), which is exact for + - * / and the square roots of rationals
+// and decides signs in a bounded number of rational operations.
 // So wall corners, which involve the square root of a wall's squared length, are compared
 // exactly for the coordinates as read at the cost of double arithmetic in all but touching
 // cases, and never for long (CORE::Expr, used before, took minutes near degenerate shapes).
@@ -18,6 +20,7 @@
 
 #include <CGAL/Interval_nt.h>
 
+#include "modeling/detail/precise_interval.h"
 #include "modeling/detail/radical.h"
 #include "modeling/joins.h"
 #include "modeling/plan.h"
@@ -25,6 +28,7 @@
 namespace roomcad::exact {
 
 using Approx = CGAL::Interval_nt<false>;  ///< needs upward rounding: see decide()
+using Precise = PreciseInterval;          ///< 128-bit intervals (MPFR), any rounding mode
 using Exact = Radical;
 
 template <class NT>
@@ -65,7 +69,8 @@ NT root(const NT& x) {
   return sqrt(x);
 }
 
-/// Evaluates `predicate(NT{})` exactly: in intervals first, in Radical if they cannot decide.
+/// Evaluates `predicate(NT{})` exactly: in double intervals first, then in 128-bit ones, in
+/// Radical if neither can decide.
 /// @param predicate  generic callable taking a number-type tag and returning a truth value
 ///                   (bool, or CGAL::Uncertain<bool> for intervals).
 /// @return the exact verdict. Cost: a few double operations unless the case is degenerate;
@@ -77,8 +82,13 @@ bool decide(Predicate&& predicate) {
     try {
       return static_cast<bool>(predicate(Approx{}));
     } catch (const CGAL::Uncertain_conversion_exception&) {
-      // The intervals straddle the decision: fall through to exact arithmetic.
+      // The intervals straddle the decision: fall through to finer ones.
     }
+  }
+  try {
+    return static_cast<bool>(predicate(Precise{}));
+  } catch (const UndecidedComparison&) {
+    // Still straddled (a root of an exact zero, or a tie): fall through to exact arithmetic.
   }
   const Exact::Scope scope;
   return static_cast<bool>(predicate(Exact{}));

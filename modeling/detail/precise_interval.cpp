@@ -104,6 +104,12 @@ bool operator==(const PreciseInterval& a, const PreciseInterval& b) {
   throw UndecidedComparison();
 }
 
+bool operator<(const PreciseInterval& a, const PreciseInterval& b) {
+  if (mpfr_less_p(a.hi_, b.lo_)) return true;
+  if (!mpfr_less_p(a.lo_, b.hi_)) return false;  // a.lo >= b.hi: every a at least every b
+  throw UndecidedComparison();
+}
+
 std::optional<double> PreciseInterval::nearest_double() const { return nearest_double_if_clear(lo_, hi_); }
 
 std::optional<double> nearest_double_if_clear(mpfr_srcptr lo, mpfr_srcptr hi) {

@@ -43,6 +43,23 @@ TEST(PreciseInterval, ComparisonsItCannotDecideThrow) {
   EXPECT_THROW((void)sqrt(PreciseInterval(-1)), UndecidedComparison);
 }
 
+TEST(PreciseInterval, SumsOfDoublesAreExactSoTouchingIsDecided) {
+  // 0.1 + 0.2 - 0.1 is 0.2 exactly in real numbers; double intervals straddle it, 128 bits
+  // hold it as one number: the comparisons a touch needs are decided, not thrown.
+  const PreciseInterval sum = PreciseInterval(0.1) + PreciseInterval(0.2) - PreciseInterval(0.1);
+  EXPECT_TRUE(sum == PreciseInterval(0.2));
+  EXPECT_TRUE(sum <= PreciseInterval(0.2));
+  EXPECT_FALSE(sum < PreciseInterval(0.2));
+  // The doubles 0.1 and 0.2 add to a little more than the double 0.3.
+  EXPECT_TRUE(PreciseInterval(0.1) + PreciseInterval(0.2) > PreciseInterval(0.3));
+  EXPECT_TRUE(PreciseInterval(0.3) < PreciseInterval(0.1) + PreciseInterval(0.2));
+  // A root of 2 squared is 2 in real numbers, not in 128 bits: left to exact arithmetic.
+  const PreciseInterval two = sqrt(PreciseInterval(2)) * sqrt(PreciseInterval(2));
+  EXPECT_THROW((void)(two < PreciseInterval(2)), UndecidedComparison);
+  EXPECT_THROW((void)(two >= PreciseInterval(2)), UndecidedComparison);
+  EXPECT_TRUE(two < PreciseInterval(2.0000001));
+}
+
 TEST(PreciseInterval, SignsAndProductsKeepTheNumberInside) {
   // Products of intervals of mixed signs take the extreme corners.
   const PreciseInterval a = PreciseInterval(-2) / PreciseInterval(3);  // about -0.667

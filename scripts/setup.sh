@@ -16,8 +16,6 @@ packages=(
   g++ make cmake pkg-config
   # geometry, meshes, maths
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenmesh-dev libglm-dev libeigen3-dev
-  # the allocator of the executables that build models (CMakeLists.txt)
-  libjemalloc-dev
   # formats, command line, threads, images, windows, archives
   nlohmann-json3-dev libsimdjson-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libsdl2-dev libzip-dev libpugixml-dev
   # the Python module (python/) and its tests; dpkg-dev and file: `cpack -G DEB` reads Depends

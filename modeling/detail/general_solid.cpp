@@ -21,7 +21,7 @@ namespace {
 struct PlaneWork {
   PlaneId plane = 0;
   std::vector<std::pair<std::size_t, std::size_t>> faces;  // (primitive, face) lying on it
-  std::vector<std::size_t> crossing;                       // primitives crossing it
+  std::vector<std::size_t> crossing;                       // primitives crossing it at a face
   std::vector<Cut> cuts;
   PlaneFaces result;
 };
@@ -51,8 +51,11 @@ bool do_overlap(const Box3& a, const Box3& b) {
   return true;
 }
 
-// The planes carrying faces, each with the primitives crossing it near its faces. O(planes x
-// primitives) box tests, planes in parallel.
+// The planes carrying faces, each with the primitives crossing it whose boxes meet a face's.
+// Faces of the solid lie on faces of primitives: where only sections lie, the solid is above
+// and below alike, so a primitive meeting no face has no part in the plane's faces (nor do
+// its section's edges: they split only edges they meet). O(planes x primitives) box tests,
+// planes in parallel.
 std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primitive>& prims) {
   std::map<PlaneId, PlaneWork> by_plane;
   for (std::size_t p = 0; p < prims.size(); ++p)
@@ -66,17 +69,18 @@ std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primit
   for (auto& [id, w] : by_plane) works.push_back(std::move(w));
   tbb::parallel_for(std::size_t{0}, works.size(), [&](std::size_t k) {
     PlaneWork& w = works[k];
-    Box3 box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+    std::vector<Box3> faces;
+    Box3 all{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
     for (const auto& [p, f] : w.faces) {
-      const Box3 face = box_of(prims[p].faces[f].vertices);
+      const Box3& face = faces.emplace_back(box_of(prims[p].faces[f].vertices));
       for (std::size_t a = 0; a < 3; ++a) {
-        box.low[a] = std::min(box.low[a], face.low[a]);
-        box.high[a] = std::max(box.high[a], face.high[a]);
+        all.low[a] = std::min(all.low[a], face.low[a]);
+        all.high[a] = std::max(all.high[a], face.high[a]);
       }
     }
     const IntervalScope intervals;
     for (std::size_t p = 0; p < prims.size(); ++p) {
-      if (!do_overlap(box, prims[p].box)) continue;
+      if (!do_overlap(all, prims[p].box)) continue;
       if (std::any_of(w.faces.begin(), w.faces.end(), [&](const auto& pf) { return pf.first == p; })) continue;
       bool below = false, above = false;
       for (const XPoint& v : prims[p].vertices) {
@@ -85,7 +89,9 @@ std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primit
         above = above || s > 0;
         if (below && above) break;
       }
-      if (below && above) w.crossing.push_back(p);
+      if (below && above &&
+          std::any_of(faces.begin(), faces.end(), [&](const Box3& b) { return do_overlap(b, prims[p].box); }))
+        w.crossing.push_back(p);
     }
   });
   return works;
@@ -121,19 +127,9 @@ PlaneFaces run_plane(const PlaneSet& set, const BoxPlanes& box, const std::vecto
                      const PlaneWork& w) {
   const IntervalScope intervals;
   std::vector<Contribution> contributions;
-  std::vector<Box3> face_boxes;
-  for (const auto& [p, f] : w.faces) {
-    contributions.push_back(face_contribution(prims[p], p, f));
-    face_boxes.push_back(box_of(contributions.back().polygon.vertices));
-  }
-  // Faces of the solid lie on faces of primitives: where only sections lie, the solid is
-  // above and below alike. So a primitive meeting no face here has no part in them (nor do
-  // its section's edges: they split only edges they meet).
-  for (std::size_t p : w.crossing) {
-    if (std::none_of(face_boxes.begin(), face_boxes.end(), [&](const Box3& b) { return do_overlap(b, prims[p].box); }))
-      continue;
+  for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
+  for (std::size_t p : w.crossing)
     if (auto c = section(set, box, prims[p], p, w.plane)) contributions.push_back(std::move(*c));
-  }
   return build_plane_faces(set, box, {w.plane, 1}, contributions, w.cuts);
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -23,6 +24,7 @@ struct PlaneWork {
   std::vector<std::pair<std::size_t, std::size_t>> faces;  // (primitive, face) lying on it
   std::vector<std::size_t> crossing;                       // primitives crossing it at a face
   std::vector<Cut> cuts;
+  std::optional<PlaneBoolean> boolean;  // kept while its faces have holes
   PlaneFaces result;
 };
 
@@ -123,18 +125,22 @@ std::optional<Contribution> section(const PlaneSet& set, const BoxPlanes& box, c
   return Contribution{std::move(poly), p, prim.kind == Primitive::Kind::solid, true, true};
 }
 
-PlaneFaces run_plane(const PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
-                     const PlaneWork& w) {
+PlaneBoolean run_plane(const PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
+                       const PlaneWork& w) {
   const IntervalScope intervals;
   std::vector<Contribution> contributions;
   for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
   for (std::size_t p : w.crossing)
     if (auto c = section(set, box, prims[p], p, w.plane)) contributions.push_back(std::move(*c));
-  return build_plane_faces(set, box, {w.plane, 1}, contributions, w.cuts);
+  return PlaneBoolean(set, {w.plane, 1}, std::move(contributions));
 }
 
-// A line of the plane through the middle of a hole loop (along a view axis).
-Cut cut_through(PlaneSet& set, PlaneId plane, std::size_t owner, const std::vector<XPoint>& loop) {
+// A segment of a line of the plane through the middle of a hole loop (along a view axis),
+// across the owner's box: the owner's faces lie in its polygon, inside that box. None when
+// the owner already has a cut on that line (two holes level with each other).
+std::optional<Cut> cut_through(PlaneSet& set, const BoxPlanes& box, PlaneId plane, std::size_t owner,
+                               const Box3& owner_box, const std::vector<XPoint>& loop,
+                               const std::vector<Cut>& cuts) {
   const int k = dominant_axis(set, plane);
   for (const int a : {(k + 1) % 3, (k + 2) % 3}) {
     double lo = INFINITY, hi = -INFINITY;
@@ -147,32 +153,55 @@ Cut cut_through(PlaneSet& set, PlaneId plane, std::size_t owner, const std::vect
     const double c = lo + (hi - lo) / 2.0;
     const bool left = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) < 0; });
     const bool right = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) > 0; });
-    if (left && right) return {{set.add_axis(a, c), 1}, owner};
+    if (!left || !right) continue;
+    for (const Cut& cut : cuts)
+      if (cut.owner == owner && simple_axis(set, cut.line.id) == std::pair{a, c}) return std::nullopt;
+    // Along the cut: the axis other than a and k (the plane's normal has a k part, so the
+    // line runs along b). Ends strictly outside the owner's box, or the box's planes where
+    // the owner's box is unbounded (a corner of nearly parallel planes).
+    const auto b = std::size_t(3 - a - k);
+    const double low = owner_box.low[b], high = owner_box.high[b];
+    if (!std::isfinite(low) || !std::isfinite(high))
+      return Cut{{set.add_axis(a, c), 1}, owner, box.low[b], box.high[b]};
+    const double margin = (high - low) / 16.0 + (std::abs(low) + std::abs(high) + 1.0) * 0x1p-30;
+    const PlaneId line = set.add_axis(a, c);
+    return Cut{{line, 1}, owner, set.add_axis(int(b), low - margin), set.add_axis(int(b), high + margin)};
   }
   throw PreconditionError("build_model: a hole in a face of the general path is too thin to cut "
                           "(narrower than the doubles can split)", Code::not_buildable);
 }
 
-// Builds every plane's faces; planes whose faces would have holes get cuts and run again.
+// Builds every plane's faces; planes whose faces would have holes get cuts, and only the
+// pieces these meet are made again.
 void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
                 std::vector<PlaneWork>& works) {
-  std::vector<std::size_t> todo(works.size());
-  for (std::size_t k = 0; k < works.size(); ++k) todo[k] = k;
-  for (int round = 0; !todo.empty(); ++round) {
+  tbb::parallel_for(std::size_t{0}, works.size(), [&](std::size_t k) {
+    PlaneWork& w = works[k];
+    w.boolean = run_plane(set, box, prims, w);
+    w.result = w.boolean->faces();
+    if (w.result.holes.empty()) w.boolean.reset();
+  });
+  std::vector<std::size_t> todo;
+  for (std::size_t k = 0; k < works.size(); ++k)
+    if (!works[k].result.holes.empty()) todo.push_back(k);
+  for (int round = 1; !todo.empty(); ++round) {
     if (round == 8)
       throw PreconditionError("build_model: the general path could not cut the faces of a plane "
                               "into simple polygons (internal error)", Code::internal);
-    tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t k) {
-      works[todo[k]].result = run_plane(set, box, prims, works[todo[k]]);
-    });
-    std::vector<std::size_t> again;
-    for (std::size_t k : todo) {
-      PlaneWork& w = works[k];
-      if (w.result.holes.empty()) continue;
-      for (const auto& [owner, loop] : w.result.holes) w.cuts.push_back(cut_through(set, w.plane, owner, loop));
-      again.push_back(k);
+    std::vector<std::size_t> first_new(todo.size());
+    for (std::size_t t = 0; t < todo.size(); ++t) {  // serial: cuts add planes to the set
+      PlaneWork& w = works[todo[t]];
+      first_new[t] = w.cuts.size();
+      for (const auto& [owner, loop] : w.result.holes)
+        if (auto cut = cut_through(set, box, w.plane, owner, prims[owner].box, loop, w.cuts)) w.cuts.push_back(*cut);
     }
-    todo = std::move(again);
+    tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t t) {
+      PlaneWork& w = works[todo[t]];
+      w.boolean->add_cuts(std::span(w.cuts).subspan(first_new[t]));
+      w.result = w.boolean->faces();
+      if (w.result.holes.empty()) w.boolean.reset();
+    });
+    std::erase_if(todo, [&](std::size_t k) { return works[k].result.holes.empty(); });
   }
 }
 

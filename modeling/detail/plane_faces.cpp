@@ -19,7 +19,6 @@ namespace {
 
 struct Context {
   const PlaneSet& set;
-  const BoxPlanes& box;
   PlaneRef plane;
   int i, j;  // the two coordinate axes the plane is seen along (dominant_axis dropped)
   const std::vector<Contribution>& contributions;
@@ -27,7 +26,7 @@ struct Context {
   PointCache& points;  // every point of the plane, by index
 };
 
-// A polygon edge (or a cut line across the box): the segment of `line` where from_end <= 0
+// A polygon edge (or a cut): the segment of `line` where from_end <= 0
 // and to_end <= 0, from `start` to `end` in direction n x n_line (the polygon on its left).
 struct Edge {
   PlaneRef line, from_end, to_end;
@@ -42,6 +41,7 @@ struct Piece {
   std::size_t a = 0, b = 0;
   PlaneRef line;
   std::size_t source = 0;  // the edge's
+  std::size_t edge = 0;    // the edge's index
   Bounds bounds{};
 };
 
@@ -53,17 +53,10 @@ Bounds bounds_of(const Context& cx, std::size_t a, std::size_t b) {
           std::max(pj.second, qj.second)};
 }
 
-// The cut line's segment across the box, directed along n x n_cut.
+// The cut's segment, directed along n x n_cut.
 Edge make_cut_edge(const Context& cx, const Cut& cut, std::size_t source) {
-  int b = cx.i;
-  PlaneRef high{cx.box.high[std::size_t(b)], 1};
-  int d = orient_normals(cx.set, cx.plane, cut.line, high);
-  if (d == 0) {
-    b = cx.j;
-    high = {cx.box.high[std::size_t(b)], 1};
-    d = orient_normals(cx.set, cx.plane, cut.line, high);
-  }
-  const PlaneRef low{cx.box.low[std::size_t(b)], -1};
+  const PlaneRef high{cut.high, 1}, low{cut.low, -1};
+  const int d = orient_normals(cx.set, cx.plane, cut.line, high);
   const std::size_t at_low = cx.points.add(make_point(cx.set, cx.plane.id, cut.line.id, low.id));
   const std::size_t at_high = cx.points.add(make_point(cx.set, cx.plane.id, cut.line.id, high.id));
   Edge e = d > 0 ? Edge{cut.line, low, high, at_low, at_high, source, {}, {}}
@@ -72,6 +65,7 @@ Edge make_cut_edge(const Context& cx, const Cut& cut, std::size_t source) {
   return e;
 }
 
+// The contributions' edges.
 std::vector<Edge> make_edges(const Context& cx) {
   std::vector<Edge> edges;
   for (std::size_t c = 0; c < cx.contributions.size(); ++c) {
@@ -85,8 +79,6 @@ std::vector<Edge> make_edges(const Context& cx) {
       edges.push_back(std::move(e));
     }
   }
-  for (std::size_t k = 0; k < cx.cuts.size(); ++k)
-    edges.push_back(make_cut_edge(cx, cx.cuts[k], cx.contributions.size() + k));
   return edges;
 }
 
@@ -144,7 +136,7 @@ void split_edges(const Context& cx, std::vector<Edge>& edges) {
 }
 
 // The edge's pieces, its splits sorted along it.
-void append_pieces(const Context& cx, Edge& e, std::vector<Piece>& pieces) {
+void append_pieces(const Context& cx, std::size_t index, Edge& e, std::vector<Piece>& pieces) {
   const XPoint& start = cx.points[e.start];
   const XPoint& end = cx.points[e.end];
   const double di = std::abs(bounds(end, cx.i).first - bounds(start, cx.i).first);
@@ -161,10 +153,10 @@ void append_pieces(const Context& cx, Edge& e, std::vector<Piece>& pieces) {
           s.end());
   std::size_t from = e.start;
   for (const std::size_t p : s) {
-    pieces.push_back({from, p, e.line, e.source, bounds_of(cx, from, p)});
+    pieces.push_back({from, p, e.line, e.source, index, bounds_of(cx, from, p)});
     from = p;
   }
-  pieces.push_back({from, e.end, e.line, e.source, bounds_of(cx, from, e.end)});
+  pieces.push_back({from, e.end, e.line, e.source, index, bounds_of(cx, from, e.end)});
 }
 
 // Gives equal points one index (of the first of them): @return per point index its
@@ -226,11 +218,10 @@ std::array<int, 2> side_signs(const Context& cx, PlaneRef t, const Piece& p) {
   return aligned > 0 ? std::array<int, 2>{-1, 1} : std::array<int, 2>{1, -1};
 }
 
-// What lies on one side of a piece: the owners of the faces there (-1 none) and, per owner,
-// on which side of its cuts the point is.
-struct SideLabel {
-  long up_owner = -1, down_owner = -1;  // faces looking along (+) and against (-) the normal
-  std::string up_cells, down_cells;     // a character per cut of the owner (short: no allocation)
+// The owners of the faces on one side of a piece (-1 none): faces looking along (+) and
+// against (-) the plane's normal.
+struct Owners {
+  long up = -1, down = -1;
 };
 
 struct Presence {
@@ -245,6 +236,8 @@ struct Presence {
   }
 };
 
+// On which side of each of the owner's cuts side s of the piece lies: a character per cut
+// (short: no allocation).
 std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
   std::string cells;
   if (owner < 0) return cells;
@@ -253,7 +246,7 @@ std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
   return cells;
 }
 
-std::array<SideLabel, 2> classify(const Context& cx, const Piece& p, BoundsGrid& near) {
+std::array<Owners, 2> classify(const Context& cx, const Piece& p, BoundsGrid& near) {
   std::array<Presence, 2> at;
   near.for_each_meeting(p.bounds, [&](std::size_t c) {
     std::array<bool, 2> inside{true, true};
@@ -268,58 +261,137 @@ std::array<SideLabel, 2> classify(const Context& cx, const Piece& p, BoundsGrid&
     for (std::size_t s = 0; s < 2; ++s)
       if (inside[s]) at[s].add(cx.contributions[c]);
   });
-  std::array<SideLabel, 2> out;
+  std::array<Owners, 2> out;
   for (std::size_t s = 0; s < 2; ++s) {
     const Presence& a = at[s];
     const bool below = a.solid_below && !a.hole_below, above = a.solid_above && !a.hole_above;
-    if (below && !above) out[s].up_owner = a.solid_above ? a.hole_face_above : a.solid_face_below;
-    if (above && !below) out[s].down_owner = a.solid_below ? a.hole_face_below : a.solid_face_above;
-    out[s].up_cells = cells_of(cx, p, out[s].up_owner, int(s));
-    out[s].down_cells = cells_of(cx, p, out[s].down_owner, int(s));
+    if (below && !above) out[s].up = a.solid_above ? a.hole_face_above : a.solid_face_below;
+    if (above && !below) out[s].down = a.solid_below ? a.hole_face_below : a.solid_face_above;
   }
   return out;
 }
 
 using GroupKey = std::tuple<int, long, std::string>;  // side, owner, cut cells
 
-void add_boundary(std::map<GroupKey, std::vector<DirectedPiece>>& groups, const Piece& p, std::size_t a,
-                  std::size_t b, const std::array<SideLabel, 2>& l) {
+// Files the piece with the faces it bounds: where an owner, or its cut cell, differs between
+// its sides.
+void add_boundary(const Context& cx, std::map<GroupKey, std::vector<DirectedPiece>>& groups, const Piece& p,
+                  std::size_t a, std::size_t b, const std::array<Owners, 2>& o) {
   // The negative side lies on the left of a -> b seen from the plane's positive side.
-  if (l[0].up_owner != l[1].up_owner || l[0].up_cells != l[1].up_cells) {
-    if (l[0].up_owner >= 0) groups[{1, l[0].up_owner, l[0].up_cells}].push_back({a, b, p.line, 1});
-    if (l[1].up_owner >= 0) groups[{1, l[1].up_owner, l[1].up_cells}].push_back({b, a, p.line, -1});
+  const std::array<std::string, 2> up{cells_of(cx, p, o[0].up, 0), cells_of(cx, p, o[1].up, 1)};
+  if (o[0].up != o[1].up || up[0] != up[1]) {
+    if (o[0].up >= 0) groups[{1, o[0].up, up[0]}].push_back({a, b, p.line, 1});
+    if (o[1].up >= 0) groups[{1, o[1].up, up[1]}].push_back({b, a, p.line, -1});
   }
-  if (l[0].down_owner != l[1].down_owner || l[0].down_cells != l[1].down_cells) {
-    if (l[0].down_owner >= 0) groups[{-1, l[0].down_owner, l[0].down_cells}].push_back({b, a, p.line, -1});
-    if (l[1].down_owner >= 0) groups[{-1, l[1].down_owner, l[1].down_cells}].push_back({a, b, p.line, 1});
+  const std::array<std::string, 2> down{cells_of(cx, p, o[0].down, 0), cells_of(cx, p, o[1].down, 1)};
+  if (o[0].down != o[1].down || down[0] != down[1]) {
+    if (o[0].down >= 0) groups[{-1, o[0].down, down[0]}].push_back({b, a, p.line, -1});
+    if (o[1].down >= 0) groups[{-1, o[1].down, down[1]}].push_back({a, b, p.line, 1});
   }
 }
 
 }  // namespace
 
-PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef plane,
-                             const std::vector<Contribution>& contributions, const std::vector<Cut>& cuts) {
-  const IntervalScope intervals;
-  const int k = dominant_axis(set, plane.id);
-  PointCache points(set);
-  const Context cx{set, box, plane, (k + 1) % 3, (k + 2) % 3, contributions, cuts, points};
-  std::vector<Edge> edges = make_edges(cx);
-  split_edges(cx, edges);
+struct PlaneBoolean::State {
+  const PlaneSet& set;
+  PlaneRef plane;
+  int i, j;  // the view axes
+  std::vector<Contribution> contributions;
+  std::vector<Cut> cuts;
+  PointCache points;
+  std::vector<Edge> edges;
+  std::vector<Bounds> polygon_bounds;  // per contribution
+  BoundsGrid near;                     // of polygon_bounds
+  // Every edge's pieces with the owners on their two sides.
   std::vector<Piece> pieces;
-  for (Edge& e : edges) append_pieces(cx, e, pieces);
-  const std::vector<std::size_t> rep = find_equal_points(cx);
-  std::vector<Bounds> cbounds;
-  for (const Contribution& c : contributions) {
-    Bounds b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    for (const XPoint& v : c.polygon.vertices) {
-      const auto vi = bounds(v, cx.i), vj = bounds(v, cx.j);
-      b = {std::min(b[0], vi.first), std::min(b[1], vj.first), std::max(b[2], vi.second), std::max(b[3], vj.second)};
+  std::vector<std::array<Owners, 2>> owners;
+
+  State(const PlaneSet& s, PlaneRef p, int view_i, int view_j, std::vector<Contribution> c)
+      : set(s), plane(p), i(view_i), j(view_j), contributions(std::move(c)), points(s),
+        polygon_bounds(bounds_of_polygons()), near(polygon_bounds) {}
+  [[nodiscard]] Context context() { return {set, plane, i, j, contributions, cuts, points}; }
+
+  [[nodiscard]] std::vector<Bounds> bounds_of_polygons() const {
+    std::vector<Bounds> out;
+    out.reserve(contributions.size());
+    for (const Contribution& c : contributions) {
+      Bounds b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+      for (const XPoint& v : c.polygon.vertices) {
+        const auto vi = bounds(v, i), vj = bounds(v, j);
+        b = {std::min(b[0], vi.first), std::min(b[1], vj.first), std::max(b[2], vi.second), std::max(b[3], vj.second)};
+      }
+      out.push_back(b);
     }
-    cbounds.push_back(b);
+    return out;
   }
-  BoundsGrid near(cbounds);
+
+  // Appends the pieces of the given edges, with the owners on their sides.
+  void add_pieces(const Context& cx, const std::vector<std::size_t>& of_edges) {
+    const std::size_t first = pieces.size();
+    for (const std::size_t e : of_edges) append_pieces(cx, e, edges[e], pieces);
+    owners.resize(pieces.size());
+    for (std::size_t k = first; k < pieces.size(); ++k) owners[k] = classify(cx, pieces[k], near);
+  }
+};
+
+PlaneBoolean::PlaneBoolean(const PlaneSet& set, PlaneRef plane, std::vector<Contribution> contributions)
+    : state_(std::make_unique<State>(set, plane, (dominant_axis(set, plane.id) + 1) % 3,
+                                     (dominant_axis(set, plane.id) + 2) % 3, std::move(contributions))) {
+  const IntervalScope intervals;
+  State& st = *state_;
+  const Context cx = st.context();
+  st.edges = make_edges(cx);
+  split_edges(cx, st.edges);
+  std::vector<std::size_t> all(st.edges.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  st.add_pieces(cx, all);
+}
+
+PlaneBoolean::~PlaneBoolean() = default;
+PlaneBoolean::PlaneBoolean(PlaneBoolean&&) noexcept = default;
+PlaneBoolean& PlaneBoolean::operator=(PlaneBoolean&&) noexcept = default;
+
+void PlaneBoolean::add_cuts(std::span<const Cut> cuts) {
+  const IntervalScope intervals;
+  State& st = *state_;
+  const std::size_t old_edges = st.edges.size();
+  for (const Cut& cut : cuts) st.cuts.push_back(cut);
+  const Context cx = st.context();
+  for (std::size_t k = st.cuts.size() - cuts.size(); k < st.cuts.size(); ++k)
+    st.edges.push_back(make_cut_edge(cx, st.cuts[k], st.contributions.size() + k));
+  // Each new cut against every edge before it; an edge it splits is cut into pieces again.
+  std::vector<char> split_again(old_edges, 0);
+  for (std::size_t c = old_edges; c < st.edges.size(); ++c)
+    for (std::size_t e = 0; e < c; ++e) {
+      Edge& f = st.edges[e];
+      if (f.source == st.edges[c].source || !boxes_meet(f.bounds, st.edges[c].bounds)) continue;
+      const std::size_t before = f.splits.size();
+      split_pair(cx, st.edges[c], f);
+      if (e < old_edges && f.splits.size() != before) split_again[e] = 1;
+    }
+  // The pieces of the edges no cut meets stay as they are.
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < st.pieces.size(); ++k)
+    if (!split_again[st.pieces[k].edge]) {
+      st.pieces[kept] = st.pieces[k];
+      st.owners[kept++] = st.owners[k];
+    }
+  st.pieces.resize(kept);
+  st.owners.resize(kept);
+  std::vector<std::size_t> again;
+  for (std::size_t e = 0; e < st.edges.size(); ++e)
+    if (e >= old_edges || split_again[e]) again.push_back(e);
+  st.add_pieces(cx, again);
+}
+
+PlaneFaces PlaneBoolean::faces() {
+  const IntervalScope intervals;
+  State& st = *state_;
+  const Context cx = st.context();
+  const std::vector<std::size_t> rep = find_equal_points(cx);
   std::map<GroupKey, std::vector<DirectedPiece>> groups;
-  for (const Piece& p : pieces) add_boundary(groups, p, rep[p.a], rep[p.b], classify(cx, p, near));
+  for (std::size_t k = 0; k < st.pieces.size(); ++k)
+    add_boundary(cx, groups, st.pieces[k], rep[st.pieces[k].a], rep[st.pieces[k].b], st.owners[k]);
   PlaneFaces out;
   for (auto& [key, directed] : groups) {
     std::sort(directed.begin(), directed.end(), [](const DirectedPiece& x, const DirectedPiece& y) {
@@ -330,10 +402,10 @@ PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef
                    }),
                    directed.end());
     const auto& [side_of, owner, cells] = key;
-    for (PieceLoop& loop : link_loops(plane, side_of, std::move(directed), points)) {
+    for (PieceLoop& loop : link_loops(st.plane, side_of, std::move(directed), st.points)) {
       PlaneFace face{side_of, std::size_t(owner), {}, {}, {}};
       for (const DirectedPiece& p : loop.pieces) {
-        face.vertices.push_back(points[p.from]);
+        face.vertices.push_back(st.points[p.from]);
         face.lines.push_back(p.line);
       }
       if (loop.is_hole) {
@@ -342,7 +414,7 @@ PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef
       }
       // Rounded here, where the exact coordinates found on the way are at hand (and planes
       // run in parallel).
-      for (const DirectedPiece& p : loop.pieces) face.rounded.push_back(points.round(p.from));
+      for (const DirectedPiece& p : loop.pieces) face.rounded.push_back(st.points.round(p.from));
       out.faces.push_back(std::move(face));
     }
   }

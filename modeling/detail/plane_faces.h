@@ -17,6 +17,8 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include "modeling/detail/convex_pieces.h"
@@ -33,10 +35,14 @@ struct Contribution {
   bool below = false;
 };
 
-/// A line of the plane that splits the faces of one owner.
+/// A segment of a line of the plane that splits the faces of one owner: the part of `line`
+/// between the planes `low` and `high` (planes across it, normals pointing the same way along
+/// it), which reaches across the owner's polygon, so no other owner's edges need splitting
+/// far away.
 struct Cut {
   PlaneRef line;
   std::size_t owner = 0;
+  PlaneId low = 0, high = 0;
 };
 
 /// One face of the solid on the plane.
@@ -54,14 +60,32 @@ struct PlaneFaces {
   std::vector<std::pair<std::size_t, std::vector<XPoint>>> holes;
 };
 
-/// The faces of the solid on `plane`.
-/// @param[in] plane          canonical orientation (sign +1)
-/// @param[in] contributions  every primitive near the plane with area in it
-/// @param[in] cuts           lines splitting their owners' faces
-/// @return faces (complete when `holes` is empty). O(n log n + k) predicates for n polygon
-///         edges and k crossings, plus O(p c) for p pieces and the c polygons around each.
-[[nodiscard]] PlaneFaces build_plane_faces(const PlaneSet& set, const BoxPlanes& box, PlaneRef plane,
-                                           const std::vector<Contribution>& contributions,
-                                           const std::vector<Cut>& cuts);
+/// The faces of the solid on one plane. Built once; where faces have holes, cuts are added
+/// and only the pieces they meet are made and classified again.
+class PlaneBoolean {
+ public:
+  /// Splits every edge of the contributions where others cross or touch it and classifies
+  /// the pieces. O(n log n + k) predicates for n polygon edges and k crossings, plus O(p c)
+  /// for p pieces and the c polygons around each.
+  /// @param[in] plane          canonical orientation (sign +1)
+  /// @param[in] contributions  every primitive near the plane with area in it
+  PlaneBoolean(const PlaneSet& set, PlaneRef plane, std::vector<Contribution> contributions);
+  ~PlaneBoolean();
+  PlaneBoolean(PlaneBoolean&&) noexcept;
+  PlaneBoolean& operator=(PlaneBoolean&&) noexcept;
+
+  /// Adds lines splitting their owners' faces. O(m n) box tests for m cuts, plus the
+  /// predicates of the pieces they make.
+  /// @pre every plane the cuts name is in `set`.
+  void add_cuts(std::span<const Cut> cuts);
+
+  /// @return the faces, each owner's split by its cuts (complete when `holes` is empty).
+  ///         O(p log p) plus the loops' angular sorts.
+  [[nodiscard]] PlaneFaces faces();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace roomcad::detail

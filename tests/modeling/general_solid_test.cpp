@@ -3,6 +3,7 @@
 // plans with errors hold (built as `--force` builds them): each solid is checked (closed,
 // 2-manifold, no self-intersection, outward, genus) and its volume is compared with the
 // analytic volume and with the Nef reference's, face kind by face kind (expect_paths_agree).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "model_support.h"
@@ -95,6 +96,21 @@ TEST(GeneralPath, WallStandingOnAnotherIsFused) {
   Wall& high = add_wall(plan, "high", {1, 0}, {5, 0});
   high.base = 2.5;
   expect_paths_agree(plan, 0, 4 * 0.2 * 2.5 * 2);
+}
+
+TEST(GeneralPath, WindowsLevelWithEachOtherStoreyOverStorey) {
+  // Every side face of these walls has holes (the windows); two holes of one face level with
+  // each other share a cut, and each cut reaches across its own wall only, not across the
+  // neighbour on the same plane nor the storey above.
+  Plan plan = empty_plan();
+  for (const double base : {0.0, 2.5})
+    for (const double x : {0.0, 4.0}) {
+      const std::string id = fmt::format("w{}-{}", x, base);
+      add_wall(plan, id, {x, 0}, {x + 4, 0}).base = base;
+      add_opening(plan, id + "a", kWindow, id, 0.5, 1.0, 1.0, 1.0);
+      add_opening(plan, id + "b", kWindow, id, 2.5, 1.0, 1.0, 1.0);
+    }
+  expect_paths_agree(plan, 8, 4 * (4 * 0.2 * 2.5 - 2 * 0.2 * 1.0 * 1.0));
 }
 
 TEST(GeneralPath, RoomsWithWindowsTurnedAndFarAway) {

@@ -35,13 +35,12 @@ bool is_near_segment(Point2 p, Point2 a, Point2 b, double tol) {
     const NT c = exact::cross(ba, pa);
     if (!(c * c <= t2 * length2)) return false;
     // Before the start or past the end the nearest point is an end point; between, the
-    // line's distance is the segment's.
-    const NT along = exact::dot(pa, ba);
-    if (along <= NT(0)) return exact::dot(pa, pa) <= t2;
-    if (along >= length2) {
-      const exact::Pt<NT> pb = exact::to_pt<NT>(p) - exact::to_pt<NT>(b);
-      return exact::dot(pb, pb) <= t2;
-    }
+    // line's distance is the segment's. "Past the end" is measured from b (dot(p - b, b - a),
+    // which is dot(pa, ba) - length2): at p == b it is an exact 0, which double intervals
+    // decide, where the difference of two rounded equal products would straddle it.
+    if (exact::dot(pa, ba) <= NT(0)) return exact::dot(pa, pa) <= t2;
+    const exact::Pt<NT> pb = exact::to_pt<NT>(p) - exact::to_pt<NT>(b);
+    if (exact::dot(pb, ba) >= NT(0)) return exact::dot(pb, pb) <= t2;
     return true;
   });
 }

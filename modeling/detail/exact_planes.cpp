@@ -180,6 +180,17 @@ const std::array<Exact, 4>& PlaneSet::exact(PlaneId id) const {
   return exact_[id].get([&] { return coefficients<Exact>(recipes_[id]); });
 }
 
+std::array<std::uint64_t, 3> representation_key(const XPoint& p) {
+  if (p.is_explicit())  // + 0.0: -0.0 and 0.0 are one coordinate
+    return {std::bit_cast<std::uint64_t>(p.approx[0].inf() + 0.0), std::bit_cast<std::uint64_t>(p.approx[1].inf() + 0.0),
+            std::bit_cast<std::uint64_t>(p.approx[2].inf() + 0.0)};
+  auto ids = p.planes;
+  std::sort(ids.begin(), ids.end());
+  // A NaN's bits last: an explicit point's coordinates are finite, so the kinds never meet.
+  constexpr std::uint64_t kPlanesTag = 0x7FF4'0000'0000'B1E5ull;
+  return {ids[0] | (std::uint64_t(ids[1]) << 32), ids[2], kPlanesTag};
+}
+
 XPoint make_point(double x, double y, double z) {
   XPoint p;
   p.approx = {Interval(x), Interval(y), Interval(z)};

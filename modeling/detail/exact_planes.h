@@ -136,6 +136,11 @@ class PlaneSet {
   std::deque<OnceSlot<std::array<Exact, 4>>> exact_;  // a deque: adding keeps the slots in place
 };
 
+/// @return a key equal for two points of the same representation: the same explicit doubles,
+///         or the same three planes in any order. (Equal points of different representations
+///         have different keys: only an exact test finds those.) O(1).
+[[nodiscard]] std::array<std::uint64_t, 3> representation_key(const XPoint& p);
+
 /// @return the explicit point (x, y, z). @pre finite.
 [[nodiscard]] XPoint make_point(double x, double y, double z);
 /// @return the point where planes a, b, c meet. @pre their normals are independent.

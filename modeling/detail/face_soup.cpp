@@ -2,38 +2,22 @@
 #include "modeling/detail/face_soup.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <set>
-#include <unordered_map>
 
 #include <fmt/format.h>
 
 #include "modeling/build_model.h"
+#include "modeling/detail/flat_index.h"
 
 namespace roomcad::detail {
 namespace {
 
-struct PointKey {
-  std::uint64_t x, y, z;
-  std::uint32_t copy;
-  friend bool operator==(const PointKey&, const PointKey&) = default;
-};
-
-struct PointKeyHash {
-  // splitmix64's finaliser on each coordinate: doubles of a grid differ in few bits.
-  static std::uint64_t mix(std::uint64_t x) {
-    x ^= x >> 30, x *= 0xBF58476D1CE4E5B9ull;
-    x ^= x >> 27, x *= 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-  }
-  std::size_t operator()(const PointKey& k) const {
-    return static_cast<std::size_t>(mix(k.x) ^ mix(k.y + 0x9E3779B97F4A7C15ull) ^ mix(k.z * 3 + 1) ^
-                                    k.copy);
-  }
-};
+using PointKey = std::array<std::uint64_t, 4>;  // a point's coordinates' bits, and its copy
 
 // Adding 0.0 turns -0.0 into +0.0, so that the two zeros share a vertex.
 PointKey key_of(const OpenMesh::Vec3d& p, std::uint32_t copy) {
@@ -90,8 +74,7 @@ std::vector<std::vector<std::uint32_t>> split_fans(const std::vector<std::vector
   std::size_t corners = 0;
   for (const auto& poly : polygons) corners += poly.size();
   c.vertex.reserve(corners), c.next.reserve(corners), c.parent.reserve(corners);
-  std::unordered_map<std::uint64_t, std::size_t> corner_after;  // edge a->b: the corner at b
-  corner_after.reserve(corners);
+  FlatIndex<std::uint64_t> corner_after(corners);  // edge a->b: the corner at b
   for (const auto& poly : polygons)
     for (std::size_t k = 0; k < poly.size(); ++k) {
       const std::size_t prev = poly[(k + poly.size() - 1) % poly.size()];
@@ -99,15 +82,15 @@ std::vector<std::vector<std::uint32_t>> split_fans(const std::vector<std::vector
       c.vertex.push_back(poly[k]);
       c.next.push_back(poly[(k + 1) % poly.size()]);
       c.parent.push_back(id);
-      if (!corner_after.emplace(std::uint64_t(prev) * points + poly[k], id).second) {
+      if (!corner_after.try_emplace(std::uint64_t(prev) * points + poly[k], std::uint32_t(id)).second) {
         bad_edge = {prev, poly[k]};
         return {};
       }
     }
   // A corner joins the corner of the neighbouring face across its outgoing edge.
   for (std::size_t id = 0; id < c.vertex.size(); ++id) {
-    const auto it = corner_after.find(std::uint64_t(c.next[id]) * points + c.vertex[id]);
-    if (it != corner_after.end()) c.parent[c.find(id)] = c.find(it->second);
+    const std::uint32_t across = corner_after.find(std::uint64_t(c.next[id]) * points + c.vertex[id]);
+    if (across != FlatIndex<std::uint64_t>::kNone) c.parent[c.find(id)] = c.find(across);
   }
   std::vector<std::uint32_t> copy_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0);
   std::vector<std::vector<std::uint32_t>> copies(polygons.size());
@@ -138,31 +121,32 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
   SolidMesh mesh;
   add_face_properties(mesh);
   const FacePropertyHandles props = face_property_handles(mesh);
-  std::size_t faces = 0, corners = 0, largest_soup = 0;
-  for (const FaceSoup& soup : soups) {
-    std::size_t soup_corners = 0;
-    for (const SoupFace& f : soup) ++faces, soup_corners += f.points.size();
-    corners += soup_corners, largest_soup = std::max(largest_soup, soup_corners);
-  }
+  const auto corners_of = [](const FaceSoup& soup) {
+    std::size_t n = 0;
+    for (const SoupFace& f : soup) n += f.points.size();
+    return n;
+  };
+  std::size_t faces = 0, corners = 0;
+  for (const FaceSoup& soup : soups) faces += soup.size(), corners += corners_of(soup);
   // Each corner is shared by about three faces; reserving avoids rehashing and regrowing.
   mesh.reserve(corners / 3 + 1, corners / 2 + faces, faces);
-  // Unshared soups empty the map for each soup, which clears every bucket: sized for one soup
-  // (the 70 x 70 grid's fixtures, sized for all, spent 13% of its build clearing buckets).
-  std::unordered_map<PointKey, SolidMesh::VertexHandle, PointKeyHash> vertices;
-  vertices.reserve((share ? corners : largest_soup) / 3 + 1);
+  // Unshared soups start a table each, sized for that soup (the 70 x 70 grid's fixtures, in
+  // one table sized for all, spent 13% of their build clearing it).
+  FlatIndex<PointKey> vertices(share ? corners / 3 + 1 : 0);
   std::vector<SolidMesh::VertexHandle> face;
   const ObjectNamer name_face = [&](SolidMesh::FaceHandle fh) {
     return object_name(objects, mesh.property(props.object, fh));
   };
   for (const FaceSoup& soup : soups) {
-    if (!share) vertices.clear();
+    if (!share) vertices = FlatIndex<PointKey>(corners_of(soup) / 3 + 1);
     for (const SoupFace& f : soup) {
       face.clear();
       for (std::size_t k = 0; k < f.points.size(); ++k) {
         const OpenMesh::Vec3d& p = f.points[k];
-        auto [it, added] = vertices.try_emplace(key_of(p, f.copies.empty() ? 0 : f.copies[k]));
-        if (added) it->second = mesh.add_vertex(p);
-        face.push_back(it->second);
+        const auto next = std::uint32_t(mesh.n_vertices());
+        const auto [vertex, added] = vertices.try_emplace(key_of(p, f.copies.empty() ? 0 : f.copies[k]), next);
+        if (added) mesh.add_vertex(p);
+        face.push_back(SolidMesh::VertexHandle(int(vertex)));
       }
       std::optional<std::string> problem = find_add_face_problem(mesh, face, name_face);
       const SolidMesh::FaceHandle fh = problem ? SolidMesh::FaceHandle() : mesh.add_face(face);

@@ -8,37 +8,19 @@
 #include <memory>
 #include <numeric>
 #include <tuple>
-#include <unordered_map>
 
 #include <tbb/parallel_for.h>
+
+#include "modeling/detail/flat_index.h"
 
 namespace roomcad::detail {
 namespace {
 
 using Key = std::array<std::uint64_t, 3>;
 
-struct KeyHash {
-  std::size_t operator()(const Key& k) const {
-    std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
-    h ^= (k[1] + 0x632BE59BD9B4E019ull) * 0xBF58476D1CE4E5B9ull;
-    h ^= (k[2] + 0x94D049BB133111EBull) * 0x2545F4914F6CDD1Dull;
-    return std::size_t(h ^ (h >> 29));
-  }
-};
-
-Key coordinates_key(const OpenMesh::Vec3d& p) {
+Key coordinates_key(const OpenMesh::Vec3d& p) {  // + 0.0: -0.0 and 0.0 are one coordinate
   return {std::bit_cast<std::uint64_t>(p[0] + 0.0), std::bit_cast<std::uint64_t>(p[1] + 0.0),
           std::bit_cast<std::uint64_t>(p[2] + 0.0)};
-}
-
-// A point's representation (explicit doubles or its three planes) as a hash key.
-Key representation(const XPoint& p) {
-  if (p.is_explicit())
-    return {std::bit_cast<std::uint64_t>(p.approx[0].inf() + 0.0), std::bit_cast<std::uint64_t>(p.approx[1].inf() + 0.0),
-            std::bit_cast<std::uint64_t>(p.approx[2].inf() + 0.0)};
-  auto ids = p.planes;
-  std::sort(ids.begin(), ids.end());
-  return {ids[0] | (std::uint64_t(1) << 63), ids[1], ids[2]};
 }
 
 // The distinct rounded points of the faces and the exact points behind each (distinct exact
@@ -56,8 +38,7 @@ PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces
   PointTable t(set);
   std::size_t corners = 0;
   for (const SolidFace& f : faces) corners += f.vertices.size();
-  std::unordered_map<Key, std::size_t, KeyHash> by_coordinates, by_representation;
-  by_coordinates.reserve(corners), by_representation.reserve(corners);
+  FlatIndex<Key> by_coordinates(corners), by_representation(corners);
   t.polygons.reserve(faces.size()), t.exact_polygons.reserve(faces.size());
   for (const SolidFace& f : faces) {
     std::vector<std::size_t>& poly = t.polygons.emplace_back();
@@ -65,24 +46,26 @@ PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces
     poly.reserve(f.vertices.size()), exact_poly.reserve(f.vertices.size());
     for (std::size_t k = 0; k < f.vertices.size(); ++k) {
       const OpenMesh::Vec3d p(f.rounded[k][0], f.rounded[k][1], f.rounded[k][2]);
-      const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), t.points.size());
+      const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), std::uint32_t(t.points.size()));
       if (added) t.points.push_back(p), t.exact_of.emplace_back();
-      const auto [rep, fresh] = by_representation.try_emplace(representation(f.vertices[k]), t.exact.size());
+      const auto [rep, fresh] =
+          by_representation.try_emplace(representation_key(f.vertices[k]), std::uint32_t(t.exact.size()));
       if (fresh) {
         t.exact.add(f.vertices[k]);
-        t.exact_of[at->second].push_back(rep->second);
+        t.exact_of[at].push_back(rep);
       }
-      poly.push_back(at->second);
-      exact_poly.push_back(rep->second);
+      poly.push_back(at);
+      exact_poly.push_back(rep);
     }
   }
   return t;
 }
 
-// A uniform grid of the points, for finding those near an edge.
+// A uniform grid of the points, for finding those near an edge: the points sorted by cell,
+// each occupied cell's range found by its key.
 class PointGrid {
  public:
-  explicit PointGrid(const std::vector<OpenMesh::Vec3d>& points) {
+  explicit PointGrid(const std::vector<OpenMesh::Vec3d>& points) : cells_(points.size()) {
     for (const auto& p : points)
       for (int k = 0; k < 3; ++k) {
         low_[k] = std::min(low_[k], p[k]);
@@ -91,7 +74,20 @@ class PointGrid {
     double extent = 0.0;
     for (int k = 0; k < 3; ++k) extent = std::max(extent, high_[k] - low_[k]);
     cell_ = std::max(extent / 32.0, std::numeric_limits<double>::min());
-    for (std::size_t i = 0; i < points.size(); ++i) cells_[cell_of(points[i])].push_back(i);
+    // Number the occupied cells in order of first point, count their points, then file them.
+    std::vector<std::uint32_t> cell_of_point(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto [cell, fresh] = cells_.try_emplace(cell_of(points[i]), std::uint32_t(first_.size()));
+      if (fresh) first_.push_back(0);
+      cell_of_point[i] = cell;
+      ++first_[cell];
+    }
+    std::uint32_t sum = 0;
+    for (std::uint32_t& f : first_) sum += std::exchange(f, sum);
+    first_.push_back(sum);
+    filed_.resize(points.size());
+    std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i) filed_[next[cell_of_point[i]]++] = std::uint32_t(i);
   }
   /// Calls f(i) for every point in the cells the box [a, b] (grown by `margin`) touches.
   template <class F>
@@ -104,9 +100,9 @@ class PointGrid {
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
         for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-          const auto it = cells_.find({std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)});
-          if (it != cells_.end())
-            for (std::size_t i : it->second) f(i);
+          const std::uint32_t cell = cells_.find({std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)});
+          if (cell == FlatIndex<Key>::kNone) continue;
+          for (std::uint32_t at = first_[cell]; at < first_[cell + 1]; ++at) f(std::size_t(filed_[at]));
         }
   }
 
@@ -120,7 +116,9 @@ class PointGrid {
   }
   double low_[3] = {INFINITY, INFINITY, INFINITY}, high_[3] = {-INFINITY, -INFINITY, -INFINITY};
   double cell_ = 1.0;
-  std::unordered_map<Key, std::vector<std::size_t>, KeyHash> cells_;
+  FlatIndex<Key> cells_;                // cell key -> its number
+  std::vector<std::uint32_t> first_;   // per cell number, where its points start in filed_
+  std::vector<std::uint32_t> filed_;   // point indices, cell by cell
 };
 
 // Whether rounded point w lies within a few ulps of the segment u-v, strictly between them.

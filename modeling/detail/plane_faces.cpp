@@ -2,14 +2,13 @@
 #include "modeling/detail/plane_faces.h"
 
 #include <algorithm>
-#include <bit>
 #include <map>
 #include <string>
 #include <numeric>
 #include <tuple>
-#include <unordered_map>
 
 #include "modeling/detail/bounds_grid.h"
+#include "modeling/detail/flat_index.h"
 #include "modeling/detail/plane_loops.h"
 
 namespace roomcad::detail {
@@ -163,28 +162,13 @@ void append_pieces(const Context& cx, std::size_t index, Edge& e, std::vector<Pi
 // representative's. Points of the same representation (explicit doubles, or the same three
 // planes) by hashing, then the others by a sweep over their bounds on the first axis.
 std::vector<std::size_t> find_equal_points(const Context& cx) {
-  using Key = std::array<std::uint64_t, 3>;
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-      return std::size_t((k[0] * 0x9E3779B97F4A7C15ull) ^ ((k[1] + 0x7F4A7C15ull) * 0xBF58476D1CE4E5B9ull) ^ k[2]);
-    }
-  };
   const std::size_t n = cx.points.size();
-  std::unordered_map<Key, std::size_t, KeyHash> by_key;
+  FlatIndex<std::array<std::uint64_t, 3>> first_of(n);
   std::vector<std::size_t> rep(n), reps;
   for (std::size_t k = 0; k < n; ++k) {
-    const XPoint& p = cx.points[k];
-    Key key;
-    if (p.is_explicit()) {
-      for (std::size_t c = 0; c < 3; ++c) key[c] = std::bit_cast<std::uint64_t>(p.approx[c].inf() + 0.0);
-    } else {
-      auto ids = p.planes;
-      std::sort(ids.begin(), ids.end());
-      key = {ids[0] | (std::uint64_t(1) << 63), ids[1], ids[2]};
-    }
-    const auto [it, fresh] = by_key.try_emplace(key, k);
+    const auto [first, fresh] = first_of.try_emplace(representation_key(cx.points[k]), std::uint32_t(k));
     if (fresh) reps.push_back(k);
-    rep[k] = it->second;
+    rep[k] = first;
   }
   std::sort(reps.begin(), reps.end(), [&](std::size_t a, std::size_t b) {
     const double la = bounds(cx.points[a], cx.i).first, lb = bounds(cx.points[b], cx.i).first;

@@ -10,19 +10,13 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "modeling/detail/flat_index.h"
 #include "modeling/exact_geometry.h"
 
 namespace roomcad::detail {
 namespace {
 
 using Polygon = std::vector<std::size_t>;
-
-struct CellHash {
-  std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
-    return std::size_t(std::uint64_t(c[0]) * 73856093u ^ std::uint64_t(c[1]) * 19349663u ^
-                       std::uint64_t(c[2]) * 83492791u);
-  }
-};
 
 // For each point, the point whose coordinates it takes: groups of points within `tolerance`
 // of each other (transitively), never joining two groups that each hold an exact point; a
@@ -53,11 +47,17 @@ std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& p
   for (const OpenMesh::Vec3d& p : points)
     for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(p[k]));
   const double cell = std::max({64.0 * tolerance, largest * 0x1p-52, 1e-300});
-  // Per cell, its points in order of index: the first and the last, each linked to the next.
+  // Per cell (numbered in order of first point), its points in order of index: the first and
+  // the last, each linked to the next.
   constexpr std::size_t kNone = SIZE_MAX;
-  std::unordered_map<std::array<std::int64_t, 3>, std::pair<std::size_t, std::size_t>, CellHash> cells;
+  using CellKey = std::array<std::uint64_t, 3>;
+  FlatIndex<CellKey> cells(points.size());
+  std::vector<std::pair<std::size_t, std::size_t>> ends;
   std::vector<std::size_t> next(points.size(), kNone);
   auto index = [&](double v) { return std::int64_t(std::floor(v / cell)); };
+  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+    return CellKey{std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)};
+  };
   for (std::size_t i = 0; i < points.size(); ++i) {
     std::array<std::int64_t, 3> c, low, high;
     for (std::size_t k = 0; k < 3; ++k) {
@@ -68,16 +68,17 @@ std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& p
     for (std::int64_t dx = low[0]; dx <= high[0]; ++dx)
       for (std::int64_t dy = low[1]; dy <= high[1]; ++dy)
         for (std::int64_t dz = low[2]; dz <= high[2]; ++dz) {
-          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == cells.end()) continue;
-          for (std::size_t j = it->second.first; j != kNone; j = next[j]) {
+          const std::uint32_t at = cells.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
+          if (at == FlatIndex<CellKey>::kNone) continue;
+          for (std::size_t j = ends[at].first; j != kNone; j = next[j]) {
             const OpenMesh::Vec3d d = points[i] - points[j];
             if (std::abs(d[0]) > tolerance || std::abs(d[1]) > tolerance || std::abs(d[2]) > tolerance) continue;
             unite(find(i), find(j));
           }
         }
-    const auto [it, fresh] = cells.try_emplace(c, i, i);
-    if (!fresh) next[it->second.second] = i, it->second.second = i;
+    const auto [at, fresh] = cells.try_emplace(key(c[0], c[1], c[2]), std::uint32_t(ends.size()));
+    if (fresh) ends.emplace_back(i, i);
+    else next[ends[at].second] = i, ends[at].second = i;
   }
   for (std::size_t i = 0; i < points.size(); ++i) parent[i] = find(i);
   return parent;
@@ -128,20 +129,34 @@ Polygon canonical(const Polygon& p) {
   return c;
 }
 
-// Removes both polygons (and their tags) of every pair that are one another's reverse.
-// O(n log n).
+// Removes both polygons (and their tags) of every pair that are one another's reverse. Only
+// polygons with the same corners can pair, so cycles are compared only within groups of one
+// corner hash (the same for a polygon and its reverse), each in order. O(n log n).
 void drop_fins(std::vector<Polygon>& polygons, std::vector<std::size_t>& tags) {
-  std::map<Polygon, std::vector<std::size_t>> open;  // cycle -> unmatched polygons with it
-  std::vector<char> gone(polygons.size(), 0);
+  std::vector<std::pair<std::uint64_t, std::size_t>> by_corners;  // (corner hash, polygon)
+  by_corners.reserve(polygons.size());
   for (std::size_t k = 0; k < polygons.size(); ++k) {
-    const Polygon reversed = canonical(Polygon(polygons[k].rbegin(), polygons[k].rend()));
-    const auto match = open.find(reversed);
-    if (match != open.end() && !match->second.empty()) {
-      gone[k] = gone[match->second.back()] = 1;
-      match->second.pop_back();
-      continue;
+    std::uint64_t hash = polygons[k].size();
+    for (const std::size_t i : polygons[k]) hash += mix_bits(i);
+    by_corners.emplace_back(hash, k);
+  }
+  std::sort(by_corners.begin(), by_corners.end());
+  std::vector<char> gone(polygons.size(), 0);
+  for (auto group = by_corners.begin(); group != by_corners.end();) {
+    const auto end = std::find_if(group, by_corners.end(), [&](const auto& e) { return e.first != group->first; });
+    std::map<Polygon, std::vector<std::size_t>> open;  // cycle -> unmatched polygons with it
+    for (auto it = group; it != end && end - group > 1; ++it) {
+      const std::size_t k = it->second;
+      const Polygon reversed = canonical(Polygon(polygons[k].rbegin(), polygons[k].rend()));
+      const auto match = open.find(reversed);
+      if (match != open.end() && !match->second.empty()) {
+        gone[k] = gone[match->second.back()] = 1;
+        match->second.pop_back();
+        continue;
+      }
+      open[canonical(polygons[k])].push_back(k);
     }
-    open[canonical(polygons[k])].push_back(k);
+    group = end;
   }
   std::size_t kept = 0;
   for (std::size_t k = 0; k < polygons.size(); ++k)

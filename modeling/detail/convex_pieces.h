@@ -57,6 +57,13 @@ struct Box3 {
 /// @return the box of the points' intervals (empty: low +inf, high -inf). O(n).
 [[nodiscard]] Box3 box_of(std::span<const XPoint> points);
 
+/// @return whether closed boxes a and b meet.
+[[nodiscard]] inline bool boxes_meet(const Box3& a, const Box3& b) {
+  for (std::size_t k = 0; k < 3; ++k)
+    if (a.high[k] < b.low[k] || b.high[k] < a.low[k]) return false;
+  return true;
+}
+
 /// A convex polyhedron: a solid (wall piece, or a convex piece of a slab) or a hole (an
 /// opening's, or a convex part of it).
 struct Primitive {

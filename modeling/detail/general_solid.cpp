@@ -47,12 +47,6 @@ struct Labels {
   int first_opening_object, first_slab_object;
 };
 
-bool do_overlap(const Box3& a, const Box3& b) {
-  for (std::size_t k = 0; k < 3; ++k)
-    if (a.high[k] < b.low[k] || b.high[k] < a.low[k]) return false;
-  return true;
-}
-
 // The planes carrying faces, each with the primitives crossing it whose boxes meet a face's.
 // Faces of the solid lie on faces of primitives: where only sections lie, the solid is above
 // and below alike, so a primitive meeting no face has no part in the plane's faces (nor do
@@ -82,7 +76,7 @@ std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primit
     }
     const IntervalScope intervals;
     for (std::size_t p = 0; p < prims.size(); ++p) {
-      if (!do_overlap(all, prims[p].box)) continue;
+      if (!boxes_meet(all, prims[p].box)) continue;
       if (std::any_of(w.faces.begin(), w.faces.end(), [&](const auto& pf) { return pf.first == p; })) continue;
       bool below = false, above = false;
       for (const XPoint& v : prims[p].vertices) {
@@ -92,7 +86,7 @@ std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primit
         if (below && above) break;
       }
       if (below && above &&
-          std::any_of(faces.begin(), faces.end(), [&](const Box3& b) { return do_overlap(b, prims[p].box); }))
+          std::any_of(faces.begin(), faces.end(), [&](const Box3& b) { return boxes_meet(b, prims[p].box); }))
         w.crossing.push_back(p);
     }
   });
@@ -125,13 +119,15 @@ std::optional<Contribution> section(const PlaneSet& set, const BoxPlanes& box, c
   return Contribution{std::move(poly), p, prim.kind == Primitive::Kind::solid, true, true};
 }
 
-PlaneBoolean run_plane(const PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
-                       const PlaneWork& w) {
+// The plane's 2D boolean, none where the plane surely has no face.
+std::optional<PlaneBoolean> run_plane(const PlaneSet& set, const BoxPlanes& box,
+                                      const std::vector<Primitive>& prims, const PlaneWork& w) {
   const IntervalScope intervals;
   std::vector<Contribution> contributions;
   for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
   for (std::size_t p : w.crossing)
     if (auto c = section(set, box, prims[p], p, w.plane)) contributions.push_back(std::move(*c));
+  if (has_no_faces(set, contributions)) return std::nullopt;
   return PlaneBoolean(set, {w.plane, 1}, std::move(contributions));
 }
 
@@ -178,6 +174,7 @@ void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive
   tbb::parallel_for(std::size_t{0}, works.size(), [&](std::size_t k) {
     PlaneWork& w = works[k];
     w.boolean = run_plane(set, box, prims, w);
+    if (!w.boolean) return;
     w.result = w.boolean->faces();
     if (w.result.holes.empty()) w.boolean.reset();
   });

@@ -274,7 +274,35 @@ void add_boundary(const Context& cx, std::map<GroupKey, std::vector<DirectedPiec
   }
 }
 
+// Whether convex polygon `inner` lies in convex polygon `outer` (both closed). Exact.
+bool lies_in(const PlaneSet& set, const PlanePolygon& inner, const PlanePolygon& outer) {
+  for (const PlaneRef& t : outer.lines)
+    for (const XPoint& v : inner.vertices)
+      if (side(set, t, v) > 0) return false;
+  return true;
+}
+
 }  // namespace
+
+bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contributions) {
+  const IntervalScope intervals;
+  std::vector<Box3> boxes;
+  boxes.reserve(contributions.size());
+  for (const Contribution& c : contributions) boxes.push_back(box_of(c.polygon.vertices));
+  for (std::size_t f = 0; f < contributions.size(); ++f) {
+    const Contribution& face = contributions[f];
+    if (face.above == face.below) continue;  // a section
+    if (!face.solid) return false;
+    bool covered = false;
+    for (std::size_t g = 0; g < contributions.size() && !covered; ++g) {
+      const Contribution& other = contributions[g];
+      covered = other.solid && (face.below ? other.above : other.below) && boxes_meet(boxes[f], boxes[g]) &&
+                lies_in(set, face.polygon, other.polygon);
+    }
+    if (!covered) return false;
+  }
+  return true;
+}
 
 struct PlaneBoolean::State {
   const PlaneSet& set;

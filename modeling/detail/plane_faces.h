@@ -60,6 +60,14 @@ struct PlaneFaces {
   std::vector<std::pair<std::size_t, std::vector<XPoint>>> holes;
 };
 
+/// Whether the plane surely holds no face of the solid: every solid polygon with a face there
+/// lies whole in a solid polygon on its other side (a section, or a face of a primitive
+/// beyond), and no hole has a face there. Then solid lies on both sides of every point that
+/// has solid on either (holes' sections take both sides away alike): a storey's wall tops under
+/// the next storey's walls, faces inside walls drawn over one another. A shortcut: false does
+/// not mean faces. O(n^2) box tests, and the predicates of containment tests where boxes meet.
+[[nodiscard]] bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contributions);
+
 /// The faces of the solid on one plane. Built once; where faces have holes, cuts are added
 /// and only the pieces they meet are made and classified again.
 class PlaneBoolean {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <span>
 #include <tuple>
 
 #include <tbb/parallel_for.h>
@@ -24,40 +25,55 @@ Key coordinates_key(const OpenMesh::Vec3d& p) {  // + 0.0: -0.0 and 0.0 are one 
 }
 
 // The distinct rounded points of the faces and the exact points behind each (distinct exact
-// points may round to one double point, where features are thinner than an ulp).
+// points may round to one double point, where features are thinner than an ulp), in flat
+// arrays: a build has tens of thousands of corners.
 struct PointTable {
+  static constexpr std::uint32_t kNone = UINT32_MAX;
   explicit PointTable(const PlaneSet& set) : exact(set) {}
   std::vector<OpenMesh::Vec3d> points;
-  std::vector<std::vector<std::size_t>> exact_of;  // per point, indices into `exact`
-  PointCache exact;                                 // every distinct exact point
-  std::vector<std::vector<std::size_t>> polygons;   // per face, point indices
-  std::vector<std::vector<std::size_t>> exact_polygons;  // per face, its own exact points
+  // Per point, its exact points in order of first use: the first, then each one's next.
+  std::vector<std::uint32_t> first_exact, last_exact, next_exact;
+  PointCache exact;                         // every distinct exact point
+  std::vector<std::size_t> first_corner;    // per face, where its corners start (and the end)
+  std::vector<std::uint32_t> corner_point;  // per corner, its point
+  std::vector<std::uint32_t> corner_exact;  // per corner, its face's own exact point
+
+  [[nodiscard]] std::span<const std::uint32_t> polygon(std::size_t face) const {
+    return std::span(corner_point).subspan(first_corner[face], first_corner[face + 1] - first_corner[face]);
+  }
+  [[nodiscard]] std::span<const std::uint32_t> exact_polygon(std::size_t face) const {
+    return std::span(corner_exact).subspan(first_corner[face], first_corner[face + 1] - first_corner[face]);
+  }
 };
 
 PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
   PointTable t(set);
-  std::size_t corners = 0;
-  for (const SolidFace& f : faces) corners += f.vertices.size();
+  t.first_corner.reserve(faces.size() + 1);
+  t.first_corner.push_back(0);
+  for (const SolidFace& f : faces) t.first_corner.push_back(t.first_corner.back() + f.vertices.size());
+  const std::size_t corners = t.first_corner.back();
   FlatIndex<Key> by_coordinates(corners), by_representation(corners);
-  t.polygons.reserve(faces.size()), t.exact_polygons.reserve(faces.size());
-  for (const SolidFace& f : faces) {
-    std::vector<std::size_t>& poly = t.polygons.emplace_back();
-    std::vector<std::size_t>& exact_poly = t.exact_polygons.emplace_back();
-    poly.reserve(f.vertices.size()), exact_poly.reserve(f.vertices.size());
+  t.corner_point.reserve(corners), t.corner_exact.reserve(corners);
+  for (const SolidFace& f : faces)
     for (std::size_t k = 0; k < f.vertices.size(); ++k) {
       const OpenMesh::Vec3d p(f.rounded[k][0], f.rounded[k][1], f.rounded[k][2]);
       const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), std::uint32_t(t.points.size()));
-      if (added) t.points.push_back(p), t.exact_of.emplace_back();
+      if (added) {
+        t.points.push_back(p);
+        t.first_exact.push_back(PointTable::kNone);
+        t.last_exact.push_back(PointTable::kNone);
+      }
       const auto [rep, fresh] =
           by_representation.try_emplace(representation_key(f.vertices[k]), std::uint32_t(t.exact.size()));
       if (fresh) {
         t.exact.add(f.vertices[k]);
-        t.exact_of[at].push_back(rep);
+        t.next_exact.push_back(PointTable::kNone);
+        (t.last_exact[at] == PointTable::kNone ? t.first_exact[at] : t.next_exact[t.last_exact[at]]) = rep;
+        t.last_exact[at] = rep;
       }
-      poly.push_back(at);
-      exact_poly.push_back(rep);
+      t.corner_point.push_back(at);
+      t.corner_exact.push_back(rep);
     }
-  }
   return t;
 }
 
@@ -144,8 +160,8 @@ std::pair<int, int> edge_axis(PointCache& exact, std::size_t u, std::size_t v, c
 
 // Whether rounded point i is its exact point (the only one behind it), not a rounding.
 bool is_exact_corner(PointTable& t, std::size_t i) {
-  if (t.exact_of[i].size() != 1) return false;
-  const std::size_t e = t.exact_of[i].front();
+  const std::uint32_t e = t.first_exact[i];
+  if (e == PointTable::kNone || t.next_exact[e] != PointTable::kNone) return false;
   for (int k = 0; k < 3; ++k)
     if (t.exact.compare(e, t.points[i][k], k) != 0) return false;
   return true;
@@ -163,8 +179,7 @@ IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& face
   // polygon in its own slot, so the result does not depend on the thread count.
   tbb::parallel_for(std::size_t{0}, faces.size(), [&](std::size_t fi) {
     const SolidFace& f = faces[fi];
-    const std::vector<std::size_t>& poly = t->polygons[fi];
-    const std::vector<std::size_t>& exact_poly = t->exact_polygons[fi];
+    const std::span<const std::uint32_t> poly = t->polygon(fi), exact_poly = t->exact_polygon(fi);
     std::vector<std::size_t>& result = out.polygons[fi];
     for (std::size_t k = 0; k < poly.size(); ++k) {
       const std::size_t next = (k + 1) % poly.size();
@@ -179,7 +194,7 @@ IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& face
       grid.for_each_near(u, v, 1e-9 * (1.0 + u.norm()), [&](std::size_t wi) {
         if (wi == ui || wi == vi || !is_near_segment(u, v, t->points[wi])) return;
         if (std::find(poly.begin(), poly.end(), wi) != poly.end()) return;
-        for (const std::size_t w : t->exact_of[wi]) {
+        for (std::size_t w = t->first_exact[wi]; w != PointTable::kNone; w = t->next_exact[w]) {
           if (t->exact.side(f.plane, w) != 0 || t->exact.side(f.lines[k], w) != 0) continue;
           if (axis < 0) std::tie(axis, dir) = edge_axis(t->exact, eu, ev, v - u);
           if (t->exact.compare(w, eu, axis) != dir || t->exact.compare(ev, w, axis) != dir) continue;

@@ -274,6 +274,49 @@ void add_boundary(const Context& cx, std::map<GroupKey, std::vector<DirectedPiec
   }
 }
 
+// The contributions with equal polygons of one kind (solid or hole, above, below) made one: the
+// first of them, owned by the lowest-numbered primitive among them (the owner classify picks
+// where they lie). They would only repeat each other's edges and pieces: walls drawn over one
+// another give many. O(n log n) plus the corners of polygons of one hash.
+std::vector<Contribution> without_duplicates(std::vector<Contribution> contributions) {
+  using Corners = std::vector<std::array<std::uint64_t, 3>>;
+  std::vector<Corners> corners(contributions.size());
+  std::vector<std::pair<std::uint64_t, std::size_t>> by_hash;  // (hash, contribution)
+  by_hash.reserve(contributions.size());
+  for (std::size_t k = 0; k < contributions.size(); ++k) {
+    const Contribution& c = contributions[k];
+    Corners& key = corners[k];
+    for (const XPoint& v : c.polygon.vertices) key.push_back(representation_key(v));
+    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+    std::uint64_t hash = (c.solid ? 1 : 0) | (c.above ? 2 : 0) | (c.below ? 4 : 0);
+    for (const auto& corner : key) hash = mix_bits(hash ^ BitsHash{}(corner));
+    by_hash.emplace_back(hash, k);
+  }
+  std::sort(by_hash.begin(), by_hash.end());
+  std::vector<char> dropped(contributions.size(), 0);
+  for (std::size_t a = 0; a < by_hash.size(); ++a) {
+    const std::size_t first = by_hash[a].second;
+    if (dropped[first]) continue;
+    Contribution& kept = contributions[first];
+    for (std::size_t b = a + 1; b < by_hash.size() && by_hash[b].first == by_hash[a].first; ++b) {
+      Contribution& other = contributions[by_hash[b].second];
+      if (dropped[by_hash[b].second] || corners[by_hash[b].second] != corners[first] || other.solid != kept.solid ||
+          other.above != kept.above || other.below != kept.below)
+        continue;
+      kept.primitive = std::min(kept.primitive, other.primitive);
+      dropped[by_hash[b].second] = 1;
+    }
+  }
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < contributions.size(); ++k)
+    if (!dropped[k]) {
+      if (n != k) contributions[n] = std::move(contributions[k]);
+      ++n;
+    }
+  contributions.resize(n);
+  return contributions;
+}
+
 // Whether convex polygon `inner` lies in convex polygon `outer` (both closed). Exact.
 bool lies_in(const PlaneSet& set, const PlanePolygon& inner, const PlanePolygon& outer) {
   for (const PlaneRef& t : outer.lines)
@@ -319,7 +362,7 @@ struct PlaneBoolean::State {
   std::vector<std::array<Owners, 2>> owners;
 
   State(const PlaneSet& s, PlaneRef p, int view_i, int view_j, std::vector<Contribution> c)
-      : set(s), plane(p), i(view_i), j(view_j), contributions(std::move(c)), points(s),
+      : set(s), plane(p), i(view_i), j(view_j), contributions(without_duplicates(std::move(c))), points(s),
         polygon_bounds(bounds_of_polygons()), near(polygon_bounds) {}
   [[nodiscard]] Context context() { return {set, plane, i, j, contributions, cuts, points}; }
 

@@ -230,9 +230,20 @@ std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
   return cells;
 }
 
-std::array<Owners, 2> classify(const Context& cx, const Piece& p, BoundsGrid& near) {
-  std::array<Presence, 2> at;
+// The owners on the piece's two sides. Only polygons with a face on the plane (on one side of
+// it) make the two sides of the plane differ, so a piece none of those comes near bounds no
+// face and is not tested further. `near_piece` is scratch space.
+std::array<Owners, 2> classify(const Context& cx, const Piece& p, BoundsGrid& near,
+                               std::vector<std::size_t>& near_piece) {
+  near_piece.clear();
+  bool one_sided = false;
   near.for_each_meeting(p.bounds, [&](std::size_t c) {
+    near_piece.push_back(c);
+    one_sided = one_sided || cx.contributions[c].above != cx.contributions[c].below;
+  });
+  if (!one_sided) return {};
+  std::array<Presence, 2> at;
+  for (const std::size_t c : near_piece) {
     std::array<bool, 2> inside{true, true};
     if (c == p.source) {
       inside[1] = false;  // the piece lies on its own polygon's edge, the polygon on its left
@@ -244,7 +255,7 @@ std::array<Owners, 2> classify(const Context& cx, const Piece& p, BoundsGrid& ne
     }
     for (std::size_t s = 0; s < 2; ++s)
       if (inside[s]) at[s].add(cx.contributions[c]);
-  });
+  }
   std::array<Owners, 2> out;
   for (std::size_t s = 0; s < 2; ++s) {
     const Presence& a = at[s];
@@ -385,7 +396,8 @@ struct PlaneBoolean::State {
     const std::size_t first = pieces.size();
     for (const std::size_t e : of_edges) append_pieces(cx, e, edges[e], pieces);
     owners.resize(pieces.size());
-    for (std::size_t k = first; k < pieces.size(); ++k) owners[k] = classify(cx, pieces[k], near);
+    std::vector<std::size_t> scratch;
+    for (std::size_t k = first; k < pieces.size(); ++k) owners[k] = classify(cx, pieces[k], near, scratch);
   }
 };
 

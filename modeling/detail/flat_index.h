@@ -36,6 +36,19 @@ struct BitsHash {
   }
 };
 
+/// Key equality, word by word for arrays (std::array's == calls memcmp, which cost more than
+/// the rest of a lookup).
+template <class Key>
+[[nodiscard]] bool same_key(const Key& a, const Key& b) {
+  return a == b;
+}
+template <std::size_t N>
+[[nodiscard]] bool same_key(const std::array<std::uint64_t, N>& a, const std::array<std::uint64_t, N>& b) {
+  bool same = true;
+  for (std::size_t k = 0; k < N; ++k) same = same && a[k] == b[k];
+  return same;
+}
+
 template <class Key, class Hash = BitsHash>
 class FlatIndex {
  public:
@@ -50,7 +63,7 @@ class FlatIndex {
     if (2 * (size_ + 1) > values_.size()) grow(2 * (size_ + 1));
     std::size_t at = slot_of(key);
     for (; values_[at] != kNone; at = (at + 1) & mask_)
-      if (keys_[at] == key) return {values_[at], false};
+      if (same_key(keys_[at], key)) return {values_[at], false};
     keys_[at] = key;
     values_[at] = index;
     ++size_;
@@ -60,7 +73,7 @@ class FlatIndex {
   /// @return the key's index, or kNone. O(1) expected.
   [[nodiscard]] std::uint32_t find(const Key& key) const {
     for (std::size_t at = slot_of(key); values_[at] != kNone; at = (at + 1) & mask_)
-      if (keys_[at] == key) return values_[at];
+      if (same_key(keys_[at], key)) return values_[at];
     return kNone;
   }
 

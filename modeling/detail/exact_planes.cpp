@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include <gmpxx.h>
 #include <mpfr.h>
@@ -293,8 +294,40 @@ int compare_value(const XPoint& p, double value, int axis, HomOf&& hom_of) {
   return exact_sign(coordinate(h, k) - Exact(value) * h.w) * exact_sign(h.w);
 }
 
+// The double nearest to hi + lo (ties to even) when lo is within half an ulp of hi, as
+// two_sum leaves it; nothing otherwise. Every operation here is exact, so the rounding mode
+// does not matter.
+std::optional<double> nearest_to_sum(double hi, double lo) {
+  if (lo == 0.0) return hi;
+  if (!(std::abs(hi) >= 0x1p-1000 && std::abs(hi) <= 0x1p1000)) return std::nullopt;  // normal, with room
+  const double next = std::nextafter(hi, lo > 0.0 ? INFINITY : -INFINITY);
+  const double half = (next - hi) / 2.0;  // half an ulp toward lo, signed (Sterbenz: exact)
+  if (std::abs(lo) < std::abs(half)) return hi;
+  if (lo == half) return (std::bit_cast<std::uint64_t>(hi) & 1u) == 0 ? hi : next;
+  return std::nullopt;
+}
+
+// The coordinates of a point where three axis planes meet (an axis-aligned wall's faces at
+// exact sums from its centre line, a storey's heights): each is its plane's sum of two
+// doubles, rounded without exact arithmetic. Nothing for other points.
+std::optional<std::array<double, 3>> round_axis_point(const PlaneSet& set, const XPoint& p) {
+  if (p.is_explicit()) return std::nullopt;
+  std::array<double, 3> out{};
+  std::array<bool, 3> done{};
+  for (const PlaneId id : p.planes) {
+    const PlaneRecipe& r = set.recipe(id);
+    if (r.kind != PlaneRecipe::Kind::axis) return std::nullopt;
+    const auto axis = std::size_t(r.v[0]);
+    const std::optional<double> x = nearest_to_sum(r.v[1], r.v[2]);
+    if (done[axis] || !x) return std::nullopt;
+    done[axis] = true;
+    out[axis] = *x + 0.0;
+  }
+  return out;
+}
+
 template <class HomOf>
-std::array<double, 3> round_of(const XPoint& p, HomOf&& hom_of) {
+std::array<double, 3> round_of(const PlaneSet& set, const XPoint& p, HomOf&& hom_of) {
   std::array<double, 3> out{};
   bool all_points = true;
   for (std::size_t k = 0; k < 3; ++k) {
@@ -302,6 +335,7 @@ std::array<double, 3> round_of(const XPoint& p, HomOf&& hom_of) {
     all_points = all_points && p.approx[k].inf() == p.approx[k].sup();
   }
   if (all_points) return out;
+  if (const auto axis_point = round_axis_point(set, p)) return *axis_point;
   const XHom& h = hom_of();
   for (std::size_t k = 0; k < 3; ++k) out[k] = round_quotient(coordinate(h, k), h.w) + 0.0;
   return out;
@@ -336,7 +370,7 @@ int compare_coordinate(const PlaneSet& set, const XPoint& p, double value, int a
 
 std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p) {
   XHom h;
-  return round_of(p, [&]() -> const XHom& { return h = homogeneous(set, p); });
+  return round_of(set, p, [&]() -> const XHom& { return h = homogeneous(set, p); });
 }
 
 std::size_t PointCache::add(const XPoint& p) {
@@ -368,7 +402,7 @@ int PointCache::compare(std::size_t i, double value, int axis) {
 }
 
 std::array<double, 3> PointCache::round(std::size_t i) {
-  return round_of(points_[i], [&]() -> const XHom& { return exact(i); });
+  return round_of(set_, points_[i], [&]() -> const XHom& { return exact(i); });
 }
 
 int orient_normals(const PlaneSet& set, PlaneRef a, PlaneRef b, PlaneRef c) {

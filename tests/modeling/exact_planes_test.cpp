@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
+#include <cmath>
 #include <random>
 
 namespace roomcad {
@@ -111,6 +113,47 @@ TEST(ExactPlanes, RoundingIsToTheNearestDouble) {
       const Q err = abs(Q(x[k] - Q(rounded[k])));
       EXPECT_LE(err, Q(abs(Q(x[k] - Q(std::nextafter(rounded[k], INFINITY)))))) << trial;
       EXPECT_LE(err, Q(abs(Q(x[k] - Q(std::nextafter(rounded[k], -INFINITY)))))) << trial;
+    }
+  }
+}
+
+// An axis plane x[axis] = hi + lo (an axis-aligned wall's face at an exact sum).
+PlaneId add_axis_sum(PlaneSet& set, int axis, double hi, double lo) {
+  PlaneRecipe r;
+  r.kind = PlaneRecipe::Kind::axis;
+  r.v[0] = axis, r.v[1] = hi, r.v[2] = lo;
+  return set.add(r);
+}
+
+TEST(ExactPlanes, CornersOfAxisPlanesAtSumsRoundToTheNearestDoubleTiesToEven) {
+  // Each coordinate is hi + lo with |lo| at most half an ulp of hi, ties included: below a
+  // power of two the ulp is half as large. Checked against the exact sum's nearest double,
+  // ties to even, worked out in rationals.
+  const double u = 0x1p-52;  // ulp of 1
+  const std::array<std::pair<double, double>, 8> sums{{{1.0, u / 2},             // tie: 1 is even
+                                                        {1.0 + u, u / 2},       // tie: up to even
+                                                        {1.0, -u / 4},          // tie below 2^0
+                                                        {1.0 + u, -u / 2},      // tie: down to even
+                                                        {4.1, 0x1p-53 * 0.3},   // not a tie
+                                                        {-3.9, -0x1p-52 * 0.7}, // not a tie, negative
+                                                        {2.0, -u / 2 * 0.99},   // just short of a tie
+                                                        {0.1, 1e-18}}};
+  PlaneSet set;
+  for (const auto& [hi, lo] : sums) {
+    const XPoint point = detail::make_point(set, add_axis_sum(set, 0, hi, lo), add_axis_sum(set, 1, -hi, -lo),
+                                            add_axis_sum(set, 2, hi, 0.0));
+    const auto rounded = detail::round_point(set, point);
+    const std::array<Q, 3> exact{Q(Q(hi) + Q(lo)), Q(-(Q(hi) + Q(lo))), Q(hi)};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Q& x = exact[k];
+      const double r = rounded[k];
+      const Q err = abs(Q(x - Q(r)));
+      const Q up = abs(Q(x - Q(std::nextafter(r, INFINITY)))), down = abs(Q(x - Q(std::nextafter(r, -INFINITY))));
+      EXPECT_LE(err, up) << hi << " + " << lo << " axis " << k;
+      EXPECT_LE(err, down) << hi << " + " << lo << " axis " << k;
+      if (err == up || err == down) {  // a tie: the even one
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(r) & 1u, 0u) << hi << " + " << lo << " axis " << k;
+      }
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <numeric>
+#include <span>
 #include <tuple>
 
 #include "modeling/detail/bounds_grid.h"
@@ -32,7 +33,10 @@ struct Edge {
   std::size_t start = 0, end = 0;  // point indices
   std::size_t source = 0;          // contribution index; contributions.size() + k for cut k
   Bounds bounds{};
-  std::vector<std::size_t> splits;
+  // Where other edges split it: (point, the splitting edge's source), in no order.
+  std::vector<std::pair<std::size_t, std::size_t>> splits;
+
+  void split_at(std::size_t point, const Edge& by) { splits.emplace_back(point, by.source); }
 };
 
 // A piece of an edge no other boundary crosses; a -> b in the edge's direction.
@@ -95,22 +99,22 @@ void split_pair(const Context& cx, Edge& e, Edge& f) {
   if (s3 * s4 > 0) return;
   if (s1 == 0 && s2 == 0) {  // the same trace: each splits the other at its ends inside it
     for (const std::size_t q : {f.start, f.end})
-      if (is_strictly_inside(cx, e, q)) e.splits.push_back(q);
+      if (is_strictly_inside(cx, e, q)) e.split_at(q, f);
     for (const std::size_t q : {e.start, e.end})
-      if (is_strictly_inside(cx, f, q)) f.splits.push_back(q);
+      if (is_strictly_inside(cx, f, q)) f.split_at(q, e);
     return;
   }
   if (s1 != 0 && s2 != 0 && s3 != 0 && s4 != 0) {  // a proper crossing
     const std::size_t x = cx.points.add(make_point(cx.set, cx.plane.id, e.line.id, f.line.id));
-    e.splits.push_back(x);
-    f.splits.push_back(x);
+    e.split_at(x, f);
+    f.split_at(x, e);
     return;
   }
   // An end of one lies on the other's line: it splits the other if inside it.
-  if (s1 == 0 && is_strictly_inside(cx, f, e.start)) f.splits.push_back(e.start);
-  if (s2 == 0 && is_strictly_inside(cx, f, e.end)) f.splits.push_back(e.end);
-  if (s3 == 0 && is_strictly_inside(cx, e, f.start)) e.splits.push_back(f.start);
-  if (s4 == 0 && is_strictly_inside(cx, e, f.end)) e.splits.push_back(f.end);
+  if (s1 == 0 && is_strictly_inside(cx, f, e.start)) f.split_at(e.start, e);
+  if (s2 == 0 && is_strictly_inside(cx, f, e.end)) f.split_at(e.end, e);
+  if (s3 == 0 && is_strictly_inside(cx, e, f.start)) e.split_at(f.start, f);
+  if (s4 == 0 && is_strictly_inside(cx, e, f.end)) e.split_at(f.end, f);
 }
 
 // Sweeps the edges' bounds along the first view axis and splits every overlapping pair.
@@ -134,8 +138,11 @@ void split_edges(const Context& cx, std::vector<Edge>& edges) {
   }
 }
 
-// The edge's pieces, its splits sorted along it.
-void append_pieces(const Context& cx, std::size_t index, Edge& e, std::vector<Piece>& pieces) {
+// The edge's pieces, its split points in order along it (equal points once), appended to
+// `pieces`. Piece k of the edge starts where the edges of sources[first_source[k]] ..
+// sources[first_source[k + 1] - 1] split it off from piece k - 1 (none for the first).
+void append_pieces(const Context& cx, std::size_t index, Edge& e, std::vector<Piece>& pieces,
+                   std::vector<std::size_t>& sources, std::vector<std::size_t>& first_source) {
   const XPoint& start = cx.points[e.start];
   const XPoint& end = cx.points[e.end];
   const double di = std::abs(bounds(end, cx.i).first - bounds(start, cx.i).first);
@@ -147,15 +154,19 @@ void append_pieces(const Context& cx, std::size_t index, Edge& e, std::vector<Pi
     dir = cx.points.compare(e.end, e.start, axis);
   }
   auto& s = e.splits;
-  std::sort(s.begin(), s.end(), [&](std::size_t p, std::size_t q) { return cx.points.compare(p, q, axis) * dir < 0; });
-  s.erase(std::unique(s.begin(), s.end(), [&](std::size_t p, std::size_t q) { return cx.points.is_same(p, q); }),
-          s.end());
+  std::sort(s.begin(), s.end(), [&](const auto& p, const auto& q) { return cx.points.compare(p.first, q.first, axis) * dir < 0; });
+  sources.clear();
+  first_source.assign(1, 0);
   std::size_t from = e.start;
-  for (const std::size_t p : s) {
+  for (std::size_t k = 0; k < s.size();) {
+    const std::size_t p = s[k].first;
     pieces.push_back({from, p, e.line, e.source, index, bounds_of(cx, from, p)});
+    first_source.push_back(sources.size());
+    for (; k < s.size() && cx.points.is_same(s[k].first, p); ++k) sources.push_back(s[k].second);
     from = p;
   }
   pieces.push_back({from, e.end, e.line, e.source, index, bounds_of(cx, from, e.end)});
+  first_source.push_back(sources.size());
 }
 
 // Gives equal points one index (of the first of them): @return per point index its
@@ -230,32 +241,29 @@ std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
   return cells;
 }
 
-// The owners on the piece's two sides. Only polygons with a face on the plane (on one side of
-// it) make the two sides of the plane differ, so a piece none of those comes near bounds no
-// face and is not tested further. `near_piece` is scratch space.
-std::array<Owners, 2> classify(const Context& cx, const Piece& p, BoundsGrid& near,
-                               std::vector<std::size_t>& near_piece) {
-  near_piece.clear();
-  bool one_sided = false;
-  near.for_each_meeting(p.bounds, [&](std::size_t c) {
-    near_piece.push_back(c);
-    one_sided = one_sided || cx.contributions[c].above != cx.contributions[c].below;
-  });
-  if (!one_sided) return {};
-  std::array<Presence, 2> at;
-  for (const std::size_t c : near_piece) {
-    std::array<bool, 2> inside{true, true};
-    if (c == p.source) {
-      inside[1] = false;  // the piece lies on its own polygon's edge, the polygon on its left
-    } else for (const PlaneRef& t : cx.contributions[c].polygon.lines) {
-      const auto s = side_signs(cx, t, p);
-      inside[0] = inside[0] && s[0] < 0;
-      inside[1] = inside[1] && s[1] < 0;
-      if (!inside[0] && !inside[1]) break;
-    }
-    for (std::size_t s = 0; s < 2; ++s)
-      if (inside[s]) at[s].add(cx.contributions[c]);
+// Which sides of piece p lie inside polygon c (not p's own).
+std::array<bool, 2> inside_sides(const Context& cx, std::size_t c, const Piece& p) {
+  std::array<bool, 2> inside{true, true};
+  for (const PlaneRef& t : cx.contributions[c].polygon.lines) {
+    const auto s = side_signs(cx, t, p);
+    inside[0] = inside[0] && s[0] < 0;
+    inside[1] = inside[1] && s[1] < 0;
+    if (!inside[0] && !inside[1]) break;
   }
+  return inside;
+}
+
+// A polygon with a piece inside it on one side or both.
+struct Inside {
+  std::size_t polygon = 0;
+  std::array<bool, 2> sides{};
+};
+
+std::array<Owners, 2> owners_of(const Context& cx, const std::vector<Inside>& inside) {
+  std::array<Presence, 2> at;
+  for (const Inside& in : inside)
+    for (std::size_t s = 0; s < 2; ++s)
+      if (in.sides[s]) at[s].add(cx.contributions[in.polygon]);
   std::array<Owners, 2> out;
   for (std::size_t s = 0; s < 2; ++s) {
     const Presence& a = at[s];
@@ -264,6 +272,42 @@ std::array<Owners, 2> classify(const Context& cx, const Piece& p, BoundsGrid& ne
     if (above && !below) out[s].down = a.solid_below ? a.hole_face_below : a.solid_face_above;
   }
   return out;
+}
+
+// The owners on the two sides of each piece of one edge, walking along it: the first piece is
+// tested against every polygon near it, each next piece only against the polygons whose edges
+// split it off from the one before (append_pieces' sources), as no other polygon's boundary
+// passes between them. `inside` is scratch space.
+void classify_edge(const Context& cx, std::span<const Piece> pieces, const std::vector<std::size_t>& sources,
+                   const std::vector<std::size_t>& first_source, BoundsGrid& near, std::vector<Inside>& inside,
+                   std::span<std::array<Owners, 2>> out) {
+  const Piece& first = pieces.front();
+  inside.clear();
+  near.for_each_meeting(first.bounds, [&](std::size_t c) {
+    // The piece lies on its own polygon's edge, the polygon on its left.
+    const std::array<bool, 2> sides = c == first.source ? std::array<bool, 2>{true, false} : inside_sides(cx, c, first);
+    if (sides[0] || sides[1]) inside.push_back({c, sides});
+  });
+  out[0] = owners_of(cx, inside);
+  for (std::size_t k = 1; k < pieces.size(); ++k) {
+    for (std::size_t at = first_source[k]; at < first_source[k + 1]; ++at) {
+      const std::size_t c = sources[at];
+      if (c >= cx.contributions.size()) continue;  // a cut: no polygon
+      if (std::find(sources.begin() + std::ptrdiff_t(first_source[k]), sources.begin() + std::ptrdiff_t(at), c) !=
+          sources.begin() + std::ptrdiff_t(at))
+        continue;  // its polygon is done
+      const std::array<bool, 2> sides = inside_sides(cx, c, pieces[k]);
+      const auto it = std::find_if(inside.begin(), inside.end(), [&](const Inside& in) { return in.polygon == c; });
+      if (!sides[0] && !sides[1]) {
+        if (it != inside.end()) inside.erase(it);
+      } else if (it != inside.end()) {
+        it->sides = sides;
+      } else {
+        inside.push_back({c, sides});
+      }
+    }
+    out[k] = owners_of(cx, inside);
+  }
 }
 
 using GroupKey = std::tuple<int, long, std::string>;  // side, owner, cut cells
@@ -393,11 +437,15 @@ struct PlaneBoolean::State {
 
   // Appends the pieces of the given edges, with the owners on their sides.
   void add_pieces(const Context& cx, const std::vector<std::size_t>& of_edges) {
-    const std::size_t first = pieces.size();
-    for (const std::size_t e : of_edges) append_pieces(cx, e, edges[e], pieces);
-    owners.resize(pieces.size());
-    std::vector<std::size_t> scratch;
-    for (std::size_t k = first; k < pieces.size(); ++k) owners[k] = classify(cx, pieces[k], near, scratch);
+    std::vector<std::size_t> sources, first_source;
+    std::vector<Inside> inside;
+    for (const std::size_t e : of_edges) {
+      const std::size_t first = pieces.size();
+      append_pieces(cx, e, edges[e], pieces, sources, first_source);
+      owners.resize(pieces.size());
+      classify_edge(cx, std::span(pieces).subspan(first), sources, first_source, near, inside,
+                    std::span(owners).subspan(first));
+    }
   }
 };
 

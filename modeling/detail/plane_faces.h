@@ -73,8 +73,9 @@ struct PlaneFaces {
 class PlaneBoolean {
  public:
   /// Splits every edge of the contributions where others cross or touch it and classifies
-  /// the pieces. O(n log n + k) predicates for n polygon edges and k crossings, plus O(p c)
-  /// for p pieces and the c polygons around each.
+  /// the pieces, walking along each edge: its first piece against the c polygons around it,
+  /// each next one against the polygons whose edges split it off. O(n log n + k) predicates
+  /// for n polygon edges and k crossings, plus O(n c + k) for the classification.
   /// @param[in] plane          canonical orientation (sign +1)
   /// @param[in] contributions  every primitive near the plane with area in it
   PlaneBoolean(const PlaneSet& set, PlaneRef plane, std::vector<Contribution> contributions);

@@ -46,16 +46,17 @@ struct PointTable {
   }
 };
 
-PointTable number_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
+PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> faces) {
   PointTable t(set);
   t.first_corner.reserve(faces.size() + 1);
   t.first_corner.push_back(0);
-  for (const SolidFace& f : faces) t.first_corner.push_back(t.first_corner.back() + f.vertices.size());
+  for (const SolidFace* f : faces) t.first_corner.push_back(t.first_corner.back() + f->vertices.size());
   const std::size_t corners = t.first_corner.back();
   FlatIndex<Key> by_coordinates(corners), by_representation(corners);
   t.corner_point.reserve(corners), t.corner_exact.reserve(corners);
-  for (const SolidFace& f : faces)
-    for (std::size_t k = 0; k < f.vertices.size(); ++k) {
+  for (const SolidFace* face : faces)
+    for (std::size_t k = 0; k < face->vertices.size(); ++k) {
+      const SolidFace& f = *face;
       const OpenMesh::Vec3d p(f.rounded[k][0], f.rounded[k][1], f.rounded[k][2]);
       const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), std::uint32_t(t.points.size()));
       if (added) {
@@ -169,7 +170,7 @@ bool is_exact_corner(PointTable& t, std::size_t i) {
 
 }  // namespace
 
-IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& faces) {
+IndexedSoup stitch_faces(const PlaneSet& set, std::span<const SolidFace* const> faces) {
   // Shared with the soup's is_exact, which snapping may ask after this returns.
   const auto t = std::make_shared<PointTable>(number_faces(set, faces));
   const PointGrid grid(t->points);
@@ -178,7 +179,7 @@ IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& face
   // Faces are independent (the exact points' cache is safe to share): in parallel, each
   // polygon in its own slot, so the result does not depend on the thread count.
   tbb::parallel_for(std::size_t{0}, faces.size(), [&](std::size_t fi) {
-    const SolidFace& f = faces[fi];
+    const SolidFace& f = *faces[fi];
     const std::span<const std::uint32_t> poly = t->polygon(fi), exact_poly = t->exact_polygon(fi);
     std::vector<std::size_t>& result = out.polygons[fi];
     for (std::size_t k = 0; k < poly.size(); ++k) {

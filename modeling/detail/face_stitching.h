@@ -8,27 +8,19 @@
 #pragma once
 
 #include <cstddef>
-#include <vector>
+#include <span>
 
 #include "modeling/detail/exact_planes.h"
+#include "modeling/detail/plane_faces.h"
 #include "modeling/detail/snap_soup.h"
 
 namespace roomcad::detail {
-
-/// A face of the solid: a simple polygon on `plane` (oriented outward).
-struct SolidFace {
-  PlaneRef plane;
-  std::size_t owner = 0;         ///< the primitive whose face it is
-  std::vector<XPoint> vertices;  ///< counter-clockwise seen from outside
-  std::vector<PlaneRef> lines;   ///< lines[k]: the line of edge vertices[k] -> vertices[k + 1]
-  std::vector<std::array<double, 3>> rounded;  ///< each vertex rounded to the nearest doubles
-};
 
 /// @return the faces as rounded polygons with every vertex lying on an edge inserted into it;
 ///         tags[k] is the index of the face polygon k came from; is_exact tells, when asked,
 ///         whether a rounded point is its exact point (an exact test: snap_soup asks it only of
 ///         points that snap). O(e c) for e edges and c vertices near each (a uniform grid),
 ///         exact tests only for vertices within a few ulps of an edge; faces in parallel.
-[[nodiscard]] IndexedSoup stitch_faces(const PlaneSet& set, const std::vector<SolidFace>& faces);
+[[nodiscard]] IndexedSoup stitch_faces(const PlaneSet& set, std::span<const SolidFace* const> faces);
 
 }  // namespace roomcad::detail

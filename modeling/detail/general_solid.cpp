@@ -237,7 +237,7 @@ std::string owner_name(const Primitive& prim, const Labels& labels) {
   return fmt::format("#{}", labels.walls[prim.frame]->wall);
 }
 
-FaceSoup to_face_soup(IndexedSoup soup, const std::vector<SolidFace>& faces, const std::vector<Primitive>& prims,
+FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces, const std::vector<Primitive>& prims,
                       const PlaneSet& set, const Labels& labels) {
   const double tolerance = snap_tolerance(soup.points);
   const IndexedSoup r = snap_soup(std::move(soup), tolerance);
@@ -250,7 +250,7 @@ FaceSoup to_face_soup(IndexedSoup soup, const std::vector<SolidFace>& faces, con
       for (std::size_t m = 0; m < poly.size(); ++m)
         if ((poly[m] == bad.first && poly[(m + 1) % poly.size()] == bad.second) ||
             (poly[m] == bad.second && poly[(m + 1) % poly.size()] == bad.first))
-          owners += fmt::format("{}{}", owners.empty() ? "" : ", ", owner_name(prims[faces[r.tags[k]].owner], labels));
+          owners += fmt::format("{}{}", owners.empty() ? "" : ", ", owner_name(prims[faces[r.tags[k]]->owner], labels));
     }
     const auto& a = r.points[bad.first];
     const auto& b = r.points[bad.second];
@@ -263,7 +263,7 @@ FaceSoup to_face_soup(IndexedSoup soup, const std::vector<SolidFace>& faces, con
   FaceSoup out;
   out.reserve(r.polygons.size());
   for (std::size_t k = 0; k < r.polygons.size(); ++k) {
-    const SolidFace& f = faces[r.tags[k]];
+    const SolidFace& f = *faces[r.tags[k]];
     SoupFace face = label_face(prims[f.owner], set, f.plane, labels);
     for (std::size_t i : r.polygons[k]) face.points.push_back(r.points[i]);
     face.copies = copies[k];
@@ -284,9 +284,9 @@ FaceSoup build_cluster_general(std::span<const WallFrame* const> walls, std::spa
   use_plane_groups(prims, set.find_equal_planes());
   std::vector<PlaneWork> works = plan_planes(set, prims);
   run_planes(set, box, prims, works);
-  std::vector<SolidFace> faces;
+  std::vector<const SolidFace*> faces;
   for (const PlaneWork& w : works)
-    for (const PlaneFace& f : w.result.faces) faces.push_back({{w.plane, f.side}, f.owner, f.vertices, f.lines, f.rounded});
+    for (const SolidFace& f : w.result.faces) faces.push_back(&f);
   return to_face_soup(stitch_faces(set, faces), faces, prims, set, {walls, slabs, first_opening_object, first_slab_object});
 }
 

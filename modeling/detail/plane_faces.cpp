@@ -518,7 +518,7 @@ PlaneFaces PlaneBoolean::faces() {
                    directed.end());
     const auto& [side_of, owner, cells] = key;
     for (PieceLoop& loop : link_loops(st.plane, side_of, std::move(directed), st.points)) {
-      PlaneFace face{side_of, std::size_t(owner), {}, {}, {}};
+      SolidFace face{{st.plane.id, side_of}, std::size_t(owner), {}, {}, {}};
       for (const DirectedPiece& p : loop.pieces) {
         face.vertices.push_back(st.points[p.from]);
         face.lines.push_back(p.line);

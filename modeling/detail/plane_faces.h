@@ -45,17 +45,18 @@ struct Cut {
   PlaneId low = 0, high = 0;
 };
 
-/// One face of the solid on the plane.
-struct PlaneFace {
-  int side = 1;  ///< +1: outward along the plane's normal, -1: against it
-  std::size_t owner = 0;
+/// A face of the solid: a simple polygon on `plane` (oriented outward: along the normal of
+/// the plane a PlaneBoolean is built on, or against it).
+struct SolidFace {
+  PlaneRef plane;
+  std::size_t owner = 0;         ///< the primitive whose face it is
   std::vector<XPoint> vertices;  ///< counter-clockwise seen from outside
   std::vector<PlaneRef> lines;   ///< lines[k]: the line of edge vertices[k] -> vertices[k + 1]
   std::vector<std::array<double, 3>> rounded;  ///< each vertex rounded to the nearest doubles
 };
 
 struct PlaneFaces {
-  std::vector<PlaneFace> faces;
+  std::vector<SolidFace> faces;
   /// Loops that would be holes of a face (owner, vertices): cut through them and run again.
   std::vector<std::pair<std::size_t, std::vector<XPoint>>> holes;
 };

@@ -380,6 +380,28 @@ bool lies_in(const PlaneSet& set, const PlanePolygon& inner, const PlanePolygon&
   return true;
 }
 
+// Whether convex polygon `face` lies in the union of the convex polygons `covers` (of its
+// plane): nothing is left of it once each cover is taken away (a convex polygon minus a convex
+// one is at most one convex piece per line of the latter). Gives up (false) past 64 pieces.
+// Exact.
+bool lies_in_union(const PlaneSet& set, const PlanePolygon& face, const std::vector<const PlanePolygon*>& covers) {
+  constexpr std::size_t kMostPieces = 64;
+  std::vector<PlanePolygon> left{face}, next;
+  for (const PlanePolygon* cover : covers) {
+    next.clear();
+    for (PlanePolygon& piece : left)
+      for (const PlaneRef& t : cover->lines) {
+        PlanePolygon outside = piece;  // the part beyond t, inside the lines before it
+        if (clip_polygon(set, outside, {t.id, -t.sign})) next.push_back(std::move(outside));
+        if (!clip_polygon(set, piece, t)) break;  // none of it within t
+      }
+    if (next.size() > kMostPieces) return false;
+    left.swap(next);
+    if (left.empty()) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contributions) {
@@ -387,17 +409,21 @@ bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contribu
   std::vector<Box3> boxes;
   boxes.reserve(contributions.size());
   for (const Contribution& c : contributions) boxes.push_back(box_of(c.polygon.vertices));
+  std::vector<const PlanePolygon*> covers;
   for (std::size_t f = 0; f < contributions.size(); ++f) {
     const Contribution& face = contributions[f];
     if (face.above == face.below) continue;  // a section
     if (!face.solid) return false;
-    bool covered = false;
-    for (std::size_t g = 0; g < contributions.size() && !covered; ++g) {
+    // The solid polygons on the face's other side, near it: usually one holds it whole.
+    covers.clear();
+    for (std::size_t g = 0; g < contributions.size(); ++g) {
       const Contribution& other = contributions[g];
-      covered = other.solid && (face.below ? other.above : other.below) && boxes_meet(boxes[f], boxes[g]) &&
-                lies_in(set, face.polygon, other.polygon);
+      if (other.solid && (face.below ? other.above : other.below) && boxes_meet(boxes[f], boxes[g]))
+        covers.push_back(&other.polygon);
     }
-    if (!covered) return false;
+    if (std::none_of(covers.begin(), covers.end(), [&](const PlanePolygon* c) { return lies_in(set, face.polygon, *c); }) &&
+        !lies_in_union(set, face.polygon, covers))
+      return false;
   }
   return true;
 }

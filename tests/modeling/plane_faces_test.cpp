@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// has_no_faces (detail/plane_faces.h): the shortcut that skips a plane's 2D boolean must
+// never skip a plane with a face on it. Rectangles on the plane z = 0: a face with solid below
+// it, and solid polygons above.
+#include "modeling/detail/plane_faces.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace roomcad::detail {
+namespace {
+
+struct Plane {
+  PlaneSet set;
+  PlaneId z = set.add_axis(2, 0.0);
+
+  // The rectangle [x0, x1] x [y0, y1] of z = 0, counter-clockwise seen from above.
+  PlanePolygon rectangle(double x0, double y0, double x1, double y1) {
+    const PlaneRef left{set.add_axis(0, x0), -1}, bottom{set.add_axis(1, y0), -1};
+    const PlaneRef right{set.add_axis(0, x1), 1}, top{set.add_axis(1, y1), 1};
+    PlanePolygon p{{z, 1}, {left, bottom, right, top}, {}};
+    for (const auto& [a, b] : {std::pair{left, bottom}, std::pair{bottom, right}, std::pair{right, top},
+                               std::pair{top, left}})
+      p.vertices.push_back(make_point(set, z, a.id, b.id));
+    return p;
+  }
+  // A solid's face on the plane with the solid below it (primitive 0).
+  Contribution face_below(double x0, double y0, double x1, double y1) {
+    return {rectangle(x0, y0, x1, y1), 0, true, false, true};
+  }
+  // A solid above the plane there, with a face on it (primitive k).
+  Contribution solid_above(double x0, double y0, double x1, double y1, std::size_t k) {
+    return {rectangle(x0, y0, x1, y1), k, true, true, false};
+  }
+};
+
+TEST(HasNoFaces, AFaceCoveredByOneSolidOnItsOtherSide) {
+  Plane p;
+  // The covering face has solid above and nothing below beyond the face: a face remains there.
+  EXPECT_FALSE(has_no_faces(p.set, {p.face_below(0, 0, 2, 2), p.solid_above(-1, -1, 3, 3, 1)}));
+  EXPECT_TRUE(has_no_faces(p.set, {p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 2, 2, 1)}));
+}
+
+TEST(HasNoFaces, AFaceCoveredByTheUnionOfSeveral) {
+  Plane p;
+  // Two storeys' walls meeting on the plane: the lower one's top under two upper ones.
+  const std::vector<Contribution> whole{p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 1, 2, 1),
+                                        p.solid_above(1, 0, 2, 2, 2), p.face_below(0, 0, 1, 2),
+                                        p.face_below(1, 0, 2, 2)};
+  EXPECT_TRUE(has_no_faces(p.set, whole));
+  // A strip of the lower top left uncovered (1.5 .. 1.6): a face there.
+  const std::vector<Contribution> gap{p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 1.5, 2, 1),
+                                      p.solid_above(1.6, 0, 2, 2, 2)};
+  EXPECT_FALSE(has_no_faces(p.set, gap));
+  // Covered, but the upper faces reach beyond the lower one (y up to 3): faces there.
+  const std::vector<Contribution> beyond{p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 1, 3, 1),
+                                         p.solid_above(1, 0, 2, 3, 2)};
+  EXPECT_FALSE(has_no_faces(p.set, beyond));
+}
+
+TEST(HasNoFaces, AHoleWithAFaceOnThePlaneKeepsIt) {
+  Plane p;
+  Contribution hole = p.solid_above(0.5, 0.5, 1, 1, 3);
+  hole.solid = false;
+  EXPECT_FALSE(has_no_faces(p.set, {p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 2, 2, 1), hole}));
+}
+
+}  // namespace
+}  // namespace roomcad::detail

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "modeling/detail/flat_index.h"
 
@@ -52,29 +53,43 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
   t.first_corner.push_back(0);
   for (const SolidFace* f : faces) t.first_corner.push_back(t.first_corner.back() + f->vertices.size());
   const std::size_t corners = t.first_corner.back();
-  FlatIndex<Key> by_coordinates(corners), by_representation(corners);
-  t.corner_point.reserve(corners), t.corner_exact.reserve(corners);
-  for (const SolidFace* face : faces)
-    for (std::size_t k = 0; k < face->vertices.size(); ++k) {
-      const SolidFace& f = *face;
-      const OpenMesh::Vec3d p(f.rounded[k][0], f.rounded[k][1], f.rounded[k][2]);
-      const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), std::uint32_t(t.points.size()));
-      if (added) {
-        t.points.push_back(p);
-        t.first_exact.push_back(PointTable::kNone);
-        t.last_exact.push_back(PointTable::kNone);
-      }
-      const auto [rep, fresh] =
-          by_representation.try_emplace(representation_key(f.vertices[k]), std::uint32_t(t.exact.size()));
-      if (fresh) {
-        t.exact.add(f.vertices[k]);
-        t.next_exact.push_back(PointTable::kNone);
-        (t.last_exact[at] == PointTable::kNone ? t.first_exact[at] : t.next_exact[t.last_exact[at]]) = rep;
-        t.last_exact[at] = rep;
-      }
-      t.corner_point.push_back(at);
-      t.corner_exact.push_back(rep);
-    }
+  t.corner_point.resize(corners), t.corner_exact.resize(corners);
+  std::vector<const XPoint*> exact_points;  // in order of first use
+  // The two numberings, by rounded coordinates and by exact representation, are independent.
+  tbb::parallel_invoke(
+      [&] {
+        FlatIndex<Key> by_coordinates(corners);
+        std::size_t c = 0;
+        for (const SolidFace* f : faces)
+          for (const auto& r : f->rounded) {
+            const OpenMesh::Vec3d p(r[0], r[1], r[2]);
+            const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), std::uint32_t(t.points.size()));
+            if (added) t.points.push_back(p);
+            t.corner_point[c++] = at;
+          }
+      },
+      [&] {
+        FlatIndex<Key> by_representation(corners);
+        std::size_t c = 0;
+        for (const SolidFace* f : faces)
+          for (const XPoint& v : f->vertices) {
+            const auto [rep, fresh] = by_representation.try_emplace(representation_key(v), std::uint32_t(exact_points.size()));
+            if (fresh) exact_points.push_back(&v);
+            t.corner_exact[c++] = rep;
+          }
+      });
+  // Each exact point, at its first corner, joins its rounded point's list.
+  t.first_exact.assign(t.points.size(), PointTable::kNone);
+  t.last_exact.assign(t.points.size(), PointTable::kNone);
+  t.next_exact.assign(exact_points.size(), PointTable::kNone);
+  for (const XPoint* v : exact_points) t.exact.add(*v);
+  for (std::size_t c = 0, known = 0; c < corners; ++c) {
+    const std::uint32_t rep = t.corner_exact[c], at = t.corner_point[c];
+    if (rep < known) continue;  // not its first corner: exact points are numbered in order of first corner
+    known = rep + 1;
+    (t.last_exact[at] == PointTable::kNone ? t.first_exact[at] : t.next_exact[t.last_exact[at]]) = rep;
+    t.last_exact[at] = rep;
+  }
   return t;
 }
 

@@ -171,12 +171,15 @@ std::optional<Cut> cut_through(PlaneSet& set, const BoxPlanes& box, PlaneId plan
 // pieces these meet are made again.
 void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
                 std::vector<PlaneWork>& works) {
+  // The plane's faces; its boolean is kept only while they have holes to cut.
+  const auto take_faces = [](PlaneWork& w) {
+    w.result = w.boolean->faces();
+    if (w.result.holes.empty()) w.boolean.reset();
+  };
   tbb::parallel_for(std::size_t{0}, works.size(), [&](std::size_t k) {
     PlaneWork& w = works[k];
     w.boolean = run_plane(set, box, prims, w);
-    if (!w.boolean) return;
-    w.result = w.boolean->faces();
-    if (w.result.holes.empty()) w.boolean.reset();
+    if (w.boolean) take_faces(w);
   });
   std::vector<std::size_t> todo;
   for (std::size_t k = 0; k < works.size(); ++k)
@@ -195,8 +198,7 @@ void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive
     tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t t) {
       PlaneWork& w = works[todo[t]];
       w.boolean->add_cuts(std::span(w.cuts).subspan(first_new[t]));
-      w.result = w.boolean->faces();
-      if (w.result.holes.empty()) w.boolean.reset();
+      take_faces(w);
     });
     std::erase_if(todo, [&](std::size_t k) { return works[k].result.holes.empty(); });
   }

@@ -431,7 +431,7 @@ bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contribu
 struct PlaneBoolean::State {
   const PlaneSet& set;
   PlaneRef plane;
-  int i, j;  // the view axes
+  int i, j;  // the view axes: dominant_axis dropped
   std::vector<Contribution> contributions;
   std::vector<Cut> cuts;
   PointCache points;
@@ -442,8 +442,9 @@ struct PlaneBoolean::State {
   std::vector<Piece> pieces;
   std::vector<std::array<Owners, 2>> owners;
 
-  State(const PlaneSet& s, PlaneRef p, int view_i, int view_j, std::vector<Contribution> c)
-      : set(s), plane(p), i(view_i), j(view_j), contributions(without_duplicates(std::move(c))), points(s),
+  State(const PlaneSet& s, PlaneRef p, std::vector<Contribution> c)
+      : set(s), plane(p), i((dominant_axis(s, p.id) + 1) % 3), j((i + 1) % 3),
+        contributions(without_duplicates(std::move(c))), points(s),
         polygon_bounds(bounds_of_polygons()), near(polygon_bounds) {}
   [[nodiscard]] Context context() { return {set, plane, i, j, contributions, cuts, points}; }
 
@@ -476,8 +477,7 @@ struct PlaneBoolean::State {
 };
 
 PlaneBoolean::PlaneBoolean(const PlaneSet& set, PlaneRef plane, std::vector<Contribution> contributions)
-    : state_(std::make_unique<State>(set, plane, (dominant_axis(set, plane.id) + 1) % 3,
-                                     (dominant_axis(set, plane.id) + 2) % 3, std::move(contributions))) {
+    : state_(std::make_unique<State>(set, plane, std::move(contributions))) {
   const IntervalScope intervals;
   State& st = *state_;
   const Context cx = st.context();

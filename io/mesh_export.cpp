@@ -15,7 +15,7 @@
 namespace roomcad {
 namespace {
 
-void append_number(std::string& out, double x) {
+void append_coordinate(std::string& out, double x) {
   char buffer[32];
   const auto end = std::to_chars(buffer, buffer + sizeof buffer, x + 0.0).ptr;  // -0 -> 0
   out.append(buffer, end);
@@ -28,11 +28,11 @@ void append_int(std::string& out, long long x) {
 }
 
 void append_point(std::string& out, const OpenMesh::Vec3d& p) {
-  append_number(out, p[0]);
+  append_coordinate(out, p[0]);
   out += ' ';
-  append_number(out, p[1]);
+  append_coordinate(out, p[1]);
   out += ' ';
-  append_number(out, p[2]);
+  append_coordinate(out, p[2]);
 }
 
 // STL stores float32, little endian.

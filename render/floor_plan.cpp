@@ -15,13 +15,13 @@
 namespace roomcad {
 namespace {
 
+using detail::kSheetFooterMm;
+using detail::kSheetMarginMm;
 using detail::PaperMap;
 using detail::operator+;
 using detail::operator-;
 using detail::operator*;
 
-constexpr double kMarginMm = 10.0;        // blank border around everything drawn
-constexpr double kFooterMm = 25.0;        // scale bar and title under the plan
 constexpr double kWallDimensionMm = 5.0;  // per-wall dimension beyond the wall face
 constexpr double kOverallDimensionMm = 18.0;
 constexpr double kMarkMm = 2.0;       // half the side of a point finding's box; a box's margin
@@ -139,8 +139,8 @@ void for_each_point(Drawing& d, F f) {
   }
 }
 
-/// Moves everything drawn so that it starts kMarginMm from the top-left corner, and sizes the
-/// page to it plus the footer: door swings and dimensions reach beyond the walls.
+/// Moves everything drawn so that it starts kSheetMarginMm from the top-left corner, and sizes
+/// the page to it plus the footer: door swings and dimensions reach beyond the walls.
 void fit_page(FloorPlanDrawing& d) {
   Box box;
   for_each_point(std::as_const(d), [&box](const Point2& p, double pad) {
@@ -148,11 +148,11 @@ void fit_page(FloorPlanDrawing& d) {
     box.add(p + Point2{pad, pad});
   });
   if (box.empty()) box.add({0.0, 0.0});
-  const Point2 shift{kMarginMm - box.x0, kMarginMm - box.y0};
+  const Point2 shift{kSheetMarginMm - box.x0, kSheetMarginMm - box.y0};
   for_each_point(d, [shift](Point2& p, double) { p = p + shift; });
   d.origin = d.origin + shift;
-  d.width = box.x1 - box.x0 + 2.0 * kMarginMm;
-  d.height = box.y1 - box.y0 + 2.0 * kMarginMm + kFooterMm;
+  d.width = box.x1 - box.x0 + 2.0 * kSheetMarginMm;
+  d.height = box.y1 - box.y0 + 2.0 * kSheetMarginMm + kSheetFooterMm;
 }
 
 }  // namespace
@@ -188,11 +188,10 @@ FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& optio
   }
   add_marks(options.marks, map, out);
   fit_page(out);
-  const double footer = out.height - kFooterMm;
-  detail::add_scale_bar({kMarginMm, footer}, std::max(40.0, 0.35 * (out.width - 2.0 * kMarginMm)),
-                        map.mm_per_m, {out.scale_bar_black, out.scale_bar_white, out.labels});
+  const double footer = out.height - kSheetFooterMm;
+  detail::add_scale_bar(out.width, out.height, map.mm_per_m, {out.scale_bar_black, out.scale_bar_white, out.labels});
   out.labels.push_back(
-      {{kMarginMm, footer + 16.0},
+      {{kSheetMarginMm, footer + 16.0},
        fmt::format("Floor plan, section at {:.2f} m, scale 1:{}, dimensions in metres",
                    options.cut_height, options.scale),
        3.5,

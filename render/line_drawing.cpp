@@ -15,8 +15,8 @@
 namespace roomcad {
 namespace {
 
-constexpr double kMarginMm = 10.0;
-constexpr double kFooterMm = 25.0;  // scale bar and title under the picture
+using detail::kSheetFooterMm;
+using detail::kSheetMarginMm;
 constexpr double kPerspectiveWidthMm = 270.0;
 constexpr double kPerspectiveAspect = 1.5;
 
@@ -78,12 +78,10 @@ detail::Box2 picture_box(const HiddenLineResult& r) {
 /// Orthographic layout: the picture at 1:scale with margins, a scale bar and the title below.
 PictureToPaper lay_out_to_scale(const detail::Box2& box, double scale, LineDrawing& out) {
   PictureToPaper m{.mm_per_unit = 1000.0 / scale, .origin = {box.min.x, box.max.y},
-                   .left = kMarginMm, .top = kMarginMm};
-  out.width = std::max(120.0, (box.max.x - box.min.x) * m.mm_per_unit + 2.0 * kMarginMm);
-  out.height = (box.max.y - box.min.y) * m.mm_per_unit + 2.0 * kMarginMm + kFooterMm;
-  const double footer = out.height - kFooterMm;
-  detail::add_scale_bar({kMarginMm, footer}, std::max(40.0, 0.35 * (out.width - 2.0 * kMarginMm)),
-                        m.mm_per_unit, {out.scale_bar_black, out.scale_bar_white, out.labels});
+                   .left = kSheetMarginMm, .top = kSheetMarginMm};
+  out.width = std::max(120.0, (box.max.x - box.min.x) * m.mm_per_unit + 2.0 * kSheetMarginMm);
+  out.height = (box.max.y - box.min.y) * m.mm_per_unit + 2.0 * kSheetMarginMm + kSheetFooterMm;
+  detail::add_scale_bar(out.width, out.height, m.mm_per_unit, {out.scale_bar_black, out.scale_bar_white, out.labels});
   return m;
 }
 
@@ -94,9 +92,9 @@ PictureToPaper lay_out_frame(const LineView& view, detail::Box2& frame, LineDraw
   frame.add({-half_w, -half_h});
   frame.add({half_w, half_h});
   PictureToPaper m{.mm_per_unit = kPerspectiveWidthMm / (2.0 * half_w), .origin = {-half_w, half_h},
-                   .left = kMarginMm, .top = kMarginMm};
-  out.width = kPerspectiveWidthMm + 2.0 * kMarginMm;
-  out.height = kPerspectiveWidthMm / kPerspectiveAspect + 2.0 * kMarginMm + kFooterMm;
+                   .left = kSheetMarginMm, .top = kSheetMarginMm};
+  out.width = kPerspectiveWidthMm + 2.0 * kSheetMarginMm;
+  out.height = kPerspectiveWidthMm / kPerspectiveAspect + 2.0 * kSheetMarginMm + kSheetFooterMm;
   const Point2 c[4] = {m.map({-half_w, -half_h}), m.map({half_w, -half_h}),
                        m.map({half_w, half_h}), m.map({-half_w, half_h})};
   for (int i = 0; i < 4; ++i) out.frame.push_back({c[i], c[(i + 1) % 4]});
@@ -155,7 +153,7 @@ LineDrawing draw_line_view(const Model& model, const LineView& view,
   const std::string scale_text =
       view.perspective ? std::string("perspective, not to scale")
                        : fmt::format("scale 1:{}", options.scale);
-  out.labels.push_back({{kMarginMm, out.height - kFooterMm + 16.0},
+  out.labels.push_back({{kSheetMarginMm, out.height - kSheetFooterMm + 16.0},
                         fmt::format("{}, {}, {}", title, view.name, scale_text), 3.5, 0.0,
                         TextAnchor::start});
   return out;

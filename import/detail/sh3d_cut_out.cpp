@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "modeling/signed_area.h"
+
 namespace roomcad::sh3d {
 namespace {
 
@@ -198,15 +200,6 @@ std::optional<Polygon> trace(std::string_view path, Point2 scale, double toleran
 }
 
 }  // namespace
-
-double signed_area(const Polygon& polygon) {
-  double twice = 0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Point2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-    twice += a.x * b.y - a.y * b.x;
-  }
-  return twice / 2;
-}
 
 std::optional<Polygon> parse_cut_out(std::string_view path, double width, double height,
                                      double tolerance) {

@@ -25,7 +25,4 @@ namespace roomcad::sh3d {
 /// O(corners).
 [[nodiscard]] Polygon clip_half_plane(const Polygon& polygon, double a, double b, double c);
 
-/// @return the signed area of `polygon` (positive when counter-clockwise). O(corners).
-[[nodiscard]] double signed_area(const Polygon& polygon);
-
 }  // namespace roomcad::sh3d

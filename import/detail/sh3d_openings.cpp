@@ -11,6 +11,7 @@
 
 #include "import/detail/sh3d_cut_out.h"
 #include "modeling/plan_chords.h"
+#include "modeling/signed_area.h"
 
 namespace roomcad::sh3d {
 namespace {

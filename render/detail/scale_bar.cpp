@@ -2,13 +2,16 @@
 // The five-cell scale bar of drawings.
 #include "render/detail/scale_bar.h"
 
+#include <algorithm>
 #include <array>
 
 #include <fmt/format.h>
 
 namespace roomcad::detail {
 
-void add_scale_bar(Point2 origin, double room_mm, double mm_per_m, ScaleBarOut out) {
+void add_scale_bar(double width, double height, double mm_per_m, ScaleBarOut out) {
+  const Point2 origin{kSheetMarginMm, height - kSheetFooterMm};
+  const double room_mm = std::max(40.0, 0.35 * (width - 2.0 * kSheetMarginMm));
   constexpr std::array kLengths{0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0};
   double metres = kLengths.front();
   for (const double l : kLengths) {

@@ -8,6 +8,11 @@
 
 namespace roomcad::detail {
 
+/// The sheet of every drawing: a blank border around everything drawn, and under it a footer
+/// that holds the scale bar and the title (mm).
+constexpr double kSheetMarginMm = 10.0;
+constexpr double kSheetFooterMm = 25.0;
+
 /// Where a scale bar is added.
 struct ScaleBarOut {
   std::vector<PaperPolygon>& black;  ///< filled cells
@@ -15,8 +20,9 @@ struct ScaleBarOut {
   std::vector<PaperText>& labels;    ///< "0" and the length
 };
 
-/// Adds a scale bar of five cells at `origin` (its top-left corner, mm), as long as a round
-/// number of metres (0.5 ... 1000) that fits in `room_mm` at `mm_per_m`. O(1).
-void add_scale_bar(Point2 origin, double room_mm, double mm_per_m, ScaleBarOut out);
+/// Adds a scale bar of five cells in the footer of a sheet `width` x `height` mm, at its left
+/// margin: as long as a round number of metres (0.5 ... 1000) that fits in about a third of
+/// the drawing's width at `mm_per_m`. O(1).
+void add_scale_bar(double width, double height, double mm_per_m, ScaleBarOut out);
 
 }  // namespace roomcad::detail

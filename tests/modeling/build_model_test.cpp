@@ -16,9 +16,8 @@ using test::add_wall;
 using test::empty_plan;
 using test::expect_paths_agree;
 using test::expect_valid_walls;
-
-constexpr auto kDoor = OpeningType::door;
-constexpr auto kWindow = OpeningType::window;
+using test::kDoor;
+using test::kWindow;
 
 // Expects build_model to throw PreconditionError with `text` in its message.
 void expect_build_error(const Plan& plan, const std::string& text) {

@@ -16,9 +16,8 @@ using test::add_room;
 using test::add_wall;
 using test::empty_plan;
 using test::expect_paths_agree;
-
-constexpr auto kDoor = OpeningType::door;
-constexpr auto kWindow = OpeningType::window;
+using test::kDoor;
+using test::kWindow;
 
 BuildStats stats_of(const Plan& plan, BooleanPath path) {
   BuildStats stats;

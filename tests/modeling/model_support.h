@@ -12,6 +12,9 @@
 
 namespace roomcad::test {
 
+constexpr auto kDoor = OpeningType::door;
+constexpr auto kWindow = OpeningType::window;
+
 /// A plan on a large site with no walls.
 Plan empty_plan();
 /// Appends a wall (thickness 0.2, height 2.5, base 0).

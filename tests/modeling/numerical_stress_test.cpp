@@ -22,9 +22,8 @@ using test::add_opening;
 using test::add_room;
 using test::add_wall;
 using test::empty_plan;
-
-constexpr auto kDoor = OpeningType::door;
-constexpr auto kWindow = OpeningType::window;
+using test::kDoor;
+using test::kWindow;
 
 /// A 5 x 4 room of walls `t` thick: a door, a window inside a wall, a window flush with the
 /// inner face of the mitred corner, a window reaching the top; and a free 3 m wall with a door

@@ -8,7 +8,7 @@
 namespace roomcad {
 namespace {
 
-Plan two_storeys() {
+Plan storeys_with_own_bases() {
   Plan plan;
   plan.levels = {{.id = "ground", .elevation = 0.0}, {.id = "first", .elevation = 3.0}};
   plan.walls = {{.id = "a", .level = "ground", .from = {0, 0}, .to = {4, 0}, .base = 0.5},
@@ -20,7 +20,7 @@ Plan two_storeys() {
 }
 
 TEST(PlanLevels, BasesAndTopsAreTheLevelsElevationPlusTheirOwn) {
-  const Plan plan = two_storeys();
+  const Plan plan = storeys_with_own_bases();
   EXPECT_EQ(base_z(plan, plan.walls[0]), 0.5);
   EXPECT_EQ(base_z(plan, plan.walls[1]), 3.1);
   EXPECT_EQ(base_z(plan, plan.walls[2]), 0.2);  // no level: as in version 1
@@ -30,7 +30,7 @@ TEST(PlanLevels, BasesAndTopsAreTheLevelsElevationPlusTheirOwn) {
 }
 
 TEST(PlanLevels, AbsoluteHeightsClearTheLevels) {
-  const Plan plan = with_absolute_heights(two_storeys());
+  const Plan plan = with_absolute_heights(storeys_with_own_bases());
   EXPECT_EQ(plan.walls[1].base, 3.1);
   EXPECT_TRUE(plan.walls[1].level.empty());
   EXPECT_EQ(plan.slabs[0].top, 3.0);
@@ -39,17 +39,17 @@ TEST(PlanLevels, AbsoluteHeightsClearTheLevels) {
 }
 
 TEST(PlanLevels, APlanOfOneLevelKeepsItsWallsTheirOpeningsAndItsSlabs) {
-  const Plan first = plan_of_level(two_storeys(), "first");
+  const Plan first = plan_of_level(storeys_with_own_bases(), "first");
   ASSERT_EQ(first.walls.size(), 1u);
   EXPECT_EQ(first.walls[0].id, "b");
   ASSERT_EQ(first.openings.size(), 1u);
   EXPECT_EQ(first.openings[0].id, "e");
   EXPECT_EQ(first.slabs.size(), 1u);
-  const Plan ground = plan_of_level(two_storeys(), "ground");
+  const Plan ground = plan_of_level(storeys_with_own_bases(), "ground");
   EXPECT_EQ(ground.slabs.size(), 0u);
   EXPECT_EQ(ground.openings.size(), 1u);
   try {
-    (void)plan_of_level(two_storeys(), "attic");
+    (void)plan_of_level(storeys_with_own_bases(), "attic");
     FAIL() << "no such level";
   } catch (const PreconditionError& e) {
     EXPECT_EQ(e.code(), Code::precondition);

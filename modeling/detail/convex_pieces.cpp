@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <boost/container/small_vector.hpp>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/partition_2.h>
@@ -332,7 +333,7 @@ PlanePolygon box_polygon(const PlaneSet& set, const BoxPlanes& box, PlaneRef pla
 
 bool clip_polygon(const PlaneSet& set, PlanePolygon& poly, PlaneRef h) {
   const std::size_t n = poly.lines.size();
-  std::vector<int> s(n);
+  boost::container::small_vector<int, 32> s(n);  // on the stack: most calls clip nothing
   bool any_out = false, any_in = false;
   for (std::size_t i = 0; i < n; ++i) {
     s[i] = side(set, h, poly.vertices[i]);
@@ -349,6 +350,8 @@ bool clip_polygon(const PlaneSet& set, PlanePolygon& poly, PlaneRef h) {
   while (s[(b + 1) % n] > 0) b = (b + 1) % n;
   const std::size_t before = (a + n - 1) % n, after = (b + 1) % n;
   PlanePolygon out{poly.plane, {}, {}};
+  out.lines.reserve(n + 1);
+  out.vertices.reserve(n + 1);
   // Walk from `after` round to `before`, keeping lines and vertices, then close over h.
   const bool drop_first = s[after] == 0, drop_last = s[before] == 0;
   std::size_t i = drop_first ? (after + 1) % n : after;  // the first line to keep

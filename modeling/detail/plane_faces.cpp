@@ -329,6 +329,18 @@ void add_boundary(const Context& cx, std::map<GroupKey, std::vector<DirectedPiec
   }
 }
 
+// The contributions whose flag in `dropped` is 0, in their order.
+std::vector<Contribution> without_dropped(std::vector<Contribution> contributions, const std::vector<char>& dropped) {
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < contributions.size(); ++k)
+    if (!dropped[k]) {
+      if (n != k) contributions[n] = std::move(contributions[k]);
+      ++n;
+    }
+  contributions.resize(n);
+  return contributions;
+}
+
 // The contributions with equal polygons of one kind (solid or hole, above, below) made one: the
 // first of them, owned by the lowest-numbered primitive among them (the owner classify picks
 // where they lie). They would only repeat each other's edges and pieces: walls drawn over one
@@ -362,14 +374,7 @@ std::vector<Contribution> without_duplicates(std::vector<Contribution> contribut
       dropped[by_hash[b].second] = 1;
     }
   }
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < contributions.size(); ++k)
-    if (!dropped[k]) {
-      if (n != k) contributions[n] = std::move(contributions[k]);
-      ++n;
-    }
-  contributions.resize(n);
-  return contributions;
+  return without_dropped(std::move(contributions), dropped);
 }
 
 // Whether convex polygon `inner` lies in convex polygon `outer` (both closed). Exact.
@@ -400,6 +405,29 @@ bool lies_in_union(const PlaneSet& set, const PlanePolygon& face, const std::vec
     if (left.empty()) return true;
   }
   return false;
+}
+
+// The contributions without those lying in a section that makes them irrelevant: in a solid
+// section every solid polygon (solid lies above and below there whatever they say), in a hole
+// section every polygon (holes take both sides away). Where a face lies inside a solid
+// section, only holes make it and own it. Walls drawn over one another give many: a lower
+// storey's wall top inside the section of a wall across it. O(n^2) box tests, plus the side
+// tests of containment where boxes meet; each polygon is tested against the kept sections.
+std::vector<Contribution> without_covered(const PlaneSet& set, std::vector<Contribution> contributions) {
+  std::vector<Box3> boxes;
+  boxes.reserve(contributions.size());
+  for (const Contribution& c : contributions) boxes.push_back(box_of(c.polygon.vertices));
+  std::vector<char> dropped(contributions.size(), 0);
+  for (std::size_t p = 0; p < contributions.size(); ++p)
+    for (std::size_t s = 0; s < contributions.size(); ++s) {
+      const Contribution& section = contributions[s];
+      if (s == p || dropped[s] || !(section.above && section.below) || (section.solid && !contributions[p].solid) ||
+          !boxes_meet(boxes[p], boxes[s]) || !lies_in(set, contributions[p].polygon, section.polygon))
+        continue;
+      dropped[p] = 1;
+      break;
+    }
+  return without_dropped(std::move(contributions), dropped);
 }
 
 }  // namespace
@@ -444,7 +472,7 @@ struct PlaneBoolean::State {
 
   State(const PlaneSet& s, PlaneRef p, std::vector<Contribution> c)
       : set(s), plane(p), i((dominant_axis(s, p.id) + 1) % 3), j((i + 1) % 3),
-        contributions(without_duplicates(std::move(c))), points(s),
+        contributions(without_covered(s, without_duplicates(std::move(c)))), points(s),
         polygon_bounds(bounds_of_polygons()), near(polygon_bounds) {}
   [[nodiscard]] Context context() { return {set, plane, i, j, contributions, cuts, points}; }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // has_no_faces (detail/plane_faces.h): the shortcut that skips a plane's 2D boolean must
-// never skip a plane with a face on it. Rectangles on the plane z = 0: a face with solid below
-// it, and solid polygons above.
+// never skip a plane with a face on it; and what PlaneBoolean leaves out. Rectangles on the
+// plane z = 0: a face with solid below it, and solid polygons above.
 #include "modeling/detail/plane_faces.h"
 
 #include <gtest/gtest.h>
@@ -64,6 +64,22 @@ TEST(HasNoFaces, AHoleWithAFaceOnThePlaneKeepsIt) {
   Contribution hole = p.solid_above(0.5, 0.5, 1, 1, 3);
   hole.solid = false;
   EXPECT_FALSE(has_no_faces(p.set, {p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 2, 2, 1), hole}));
+}
+
+// A polygon inside a solid section has no say in the faces (solid lies above and below there
+// whatever it says): it leaves no vertex on them. Here its corners touch the edge that a face
+// beside the section shares with it.
+TEST(PlaneBoolean, APolygonInsideASolidSectionLeavesNoVertexOnTheFaces) {
+  Plane p;
+  const Contribution section{p.rectangle(0, 0, 2, 2), 1, true, true, true};
+  const Contribution inside = p.face_below(1, 0.5, 2, 1.5);
+  Contribution beside = p.face_below(2, 0, 4, 2);
+  beside.primitive = 2;
+  const PlaneFaces faces = PlaneBoolean(p.set, {p.z, 1}, {section, inside, beside}).faces();
+  ASSERT_EQ(faces.faces.size(), 1u);
+  EXPECT_TRUE(faces.holes.empty());
+  EXPECT_EQ(faces.faces[0].owner, 2u);
+  EXPECT_EQ(faces.faces[0].vertices.size(), 4u);  // not 6: (2, 0.5) and (2, 1.5) are no corners
 }
 
 }  // namespace

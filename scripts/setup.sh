@@ -16,8 +16,9 @@ packages=(
   g++ make cmake pkg-config
   # geometry, meshes, maths
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenmesh-dev libglm-dev libeigen3-dev
-  # formats, command line, threads, images, windows, archives
-  nlohmann-json3-dev libsimdjson-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libsdl2-dev libzip-dev libpugixml-dev
+  # formats, command line, threads, allocation, images, windows, archives
+  nlohmann-json3-dev libsimdjson-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libjemalloc-dev libsdl2-dev
+  libzip-dev libpugixml-dev
   # the Python module (python/) and its tests; dpkg-dev and file: `cpack -G DEB` reads Depends
   # with dpkg-shlibdeps, on the files that `file` says are executables and libraries
   python3-dev python3-pybind11 python3-numpy python3-pytest dpkg-dev file

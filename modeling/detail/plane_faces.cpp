@@ -377,19 +377,27 @@ std::vector<Contribution> without_duplicates(std::vector<Contribution> contribut
   return without_dropped(std::move(contributions), dropped);
 }
 
+// Whether point v lies in convex polygon `polygon` (closed). Exact.
+bool holds_point(const PlaneSet& set, const PlanePolygon& polygon, const XPoint& v) {
+  return std::none_of(polygon.lines.begin(), polygon.lines.end(), [&](PlaneRef t) { return side(set, t, v) > 0; });
+}
+
 // Whether convex polygon `inner` lies in convex polygon `outer` (both closed). Exact.
 bool lies_in(const PlaneSet& set, const PlanePolygon& inner, const PlanePolygon& outer) {
-  for (const PlaneRef& t : outer.lines)
-    for (const XPoint& v : inner.vertices)
-      if (side(set, t, v) > 0) return false;
-  return true;
+  return std::all_of(inner.vertices.begin(), inner.vertices.end(),
+                     [&](const XPoint& v) { return holds_point(set, outer, v); });
 }
 
 // Whether convex polygon `face` lies in the union of the convex polygons `covers` (of its
 // plane): nothing is left of it once each cover is taken away (a convex polygon minus a convex
-// one is at most one convex piece per line of the latter). Gives up (false) past 64 pieces.
-// Exact.
+// one is at most one convex piece per line of the latter). A corner in no cover says no at
+// once, before any piece is made: most faces that are not covered have one. Gives up (false)
+// past 64 pieces. Exact.
 bool lies_in_union(const PlaneSet& set, const PlanePolygon& face, const std::vector<const PlanePolygon*>& covers) {
+  const auto in_a_cover = [&](const XPoint& v) {
+    return std::any_of(covers.begin(), covers.end(), [&](const PlanePolygon* c) { return holds_point(set, *c, v); });
+  };
+  if (!std::all_of(face.vertices.begin(), face.vertices.end(), in_a_cover)) return false;
   constexpr std::size_t kMostPieces = 64;
   std::vector<PlanePolygon> left{face}, next;
   for (const PlanePolygon* cover : covers) {

@@ -53,6 +53,10 @@ TEST(HasNoFaces, AFaceCoveredByTheUnionOfSeveral) {
   const std::vector<Contribution> gap{p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 1.5, 2, 1),
                                       p.solid_above(1.6, 0, 2, 2, 2)};
   EXPECT_FALSE(has_no_faces(p.set, gap));
+  // A corner of the lower top (2, 2) beyond both upper ones (the second stops at y = 1.9).
+  const std::vector<Contribution> corner{p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 1, 2, 1),
+                                         p.solid_above(1, 0, 2, 1.9, 2)};
+  EXPECT_FALSE(has_no_faces(p.set, corner));
   // Covered, but the upper faces reach beyond the lower one (y up to 3): faces there.
   const std::vector<Contribution> beyond{p.face_below(0, 0, 2, 2), p.solid_above(0, 0, 1, 3, 1),
                                          p.solid_above(1, 0, 2, 3, 2)};

@@ -93,11 +93,12 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
   return t;
 }
 
-// A uniform grid of the points, for finding those near an edge: the points sorted by cell,
-// each occupied cell's range found by its key.
+// A uniform grid of the points, for finding those near an edge: up to 32 cells along each axis
+// (fewer for few points, about two per cube root of their number), the points sorted by cell,
+// each cell's range in one dense array (no hashing per cell visited: a long edge visits dozens).
 class PointGrid {
  public:
-  explicit PointGrid(const std::vector<OpenMesh::Vec3d>& points) : cells_(points.size()) {
+  explicit PointGrid(const std::vector<OpenMesh::Vec3d>& points) {
     for (const auto& p : points)
       for (int k = 0; k < 3; ++k) {
         low_[k] = std::min(low_[k], p[k]);
@@ -105,18 +106,16 @@ class PointGrid {
       }
     double extent = 0.0;
     for (int k = 0; k < 3; ++k) extent = std::max(extent, high_[k] - low_[k]);
-    cell_ = std::max(extent / 32.0, std::numeric_limits<double>::min());
-    // Number the occupied cells in order of first point, count their points, then file them.
+    side_ = std::clamp(int(2.0 * std::cbrt(double(points.size()))), 1, 32);
+    cell_ = std::max(extent / side_, std::numeric_limits<double>::min());
+    // Count the points of each cell, then file them.
     std::vector<std::uint32_t> cell_of_point(points.size());
+    first_.assign(std::size_t(side_) * std::size_t(side_) * std::size_t(side_) + 1, 0);
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto [cell, fresh] = cells_.try_emplace(cell_of(points[i]), std::uint32_t(first_.size()));
-      if (fresh) first_.push_back(0);
-      cell_of_point[i] = cell;
-      ++first_[cell];
+      cell_of_point[i] = cell_of(points[i]);
+      ++first_[cell_of_point[i] + 1];
     }
-    std::uint32_t sum = 0;
-    for (std::uint32_t& f : first_) sum += std::exchange(f, sum);
-    first_.push_back(sum);
+    for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
     filed_.resize(points.size());
     std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
     for (std::size_t i = 0; i < points.size(); ++i) filed_[next[cell_of_point[i]]++] = std::uint32_t(i);
@@ -124,33 +123,36 @@ class PointGrid {
   /// Calls f(i) for every point in the cells the box [a, b] (grown by `margin`) touches.
   template <class F>
   void for_each_near(const OpenMesh::Vec3d& a, const OpenMesh::Vec3d& b, double margin, F&& f) const {
-    std::array<std::int64_t, 3> lo{}, hi{};
+    std::array<int, 3> lo{}, hi{};
     for (int k = 0; k < 3; ++k) {
       lo[std::size_t(k)] = index(std::min(a[k], b[k]) - margin, k);
       hi[std::size_t(k)] = index(std::max(a[k], b[k]) + margin, k);
     }
-    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-          const std::uint32_t cell = cells_.find({std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)});
-          if (cell == FlatIndex<Key>::kNone) continue;
+    for (int x = lo[0]; x <= hi[0]; ++x)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int z = lo[2]; z <= hi[2]; ++z) {
+          const std::size_t cell = cell_at(x, y, z);
           for (std::uint32_t at = first_[cell]; at < first_[cell + 1]; ++at) f(std::size_t(filed_[at]));
         }
   }
 
  private:
-  std::int64_t index(double v, int k) const {
+  // The cell along axis k holding coordinate v, clamped to the grid (a NaN to cell 0).
+  int index(double v, int k) const {
     const double c = std::floor((std::clamp(v, low_[k], high_[k]) - low_[k]) / cell_);
-    return std::int64_t(std::min(c, 1e6));
+    return c >= 0.0 ? int(std::min(c, double(side_ - 1))) : 0;
   }
-  Key cell_of(const OpenMesh::Vec3d& p) const {
-    return {std::uint64_t(index(p[0], 0)), std::uint64_t(index(p[1], 1)), std::uint64_t(index(p[2], 2))};
+  std::size_t cell_at(int x, int y, int z) const {
+    return (std::size_t(x) * std::size_t(side_) + std::size_t(y)) * std::size_t(side_) + std::size_t(z);
+  }
+  std::uint32_t cell_of(const OpenMesh::Vec3d& p) const {
+    return std::uint32_t(cell_at(index(p[0], 0), index(p[1], 1), index(p[2], 2)));
   }
   double low_[3] = {INFINITY, INFINITY, INFINITY}, high_[3] = {-INFINITY, -INFINITY, -INFINITY};
+  int side_ = 1;  // cells along each axis
   double cell_ = 1.0;
-  FlatIndex<Key> cells_;                // cell key -> its number
-  std::vector<std::uint32_t> first_;   // per cell number, where its points start in filed_
-  std::vector<std::uint32_t> filed_;   // point indices, cell by cell
+  std::vector<std::uint32_t> first_;  // per cell, where its points start in filed_ (and the end)
+  std::vector<std::uint32_t> filed_;  // point indices, cell by cell
 };
 
 // Whether rounded point w lies within a few ulps of the segment u-v, strictly between them.

@@ -1,0 +1,15 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# roomcad_allocator: what the executables (the command, the tests, the benchmarks) link to
+# allocate through jemalloc. The exact general path makes many small short-lived vectors per
+# plane, from two threads, where glibc's malloc took 12-15% of a real home's build
+# (bench/homes_side_by_side.sh, 2026-11-28: 0.86 of the time on arif-putra-pertama-1, 0.92 on
+# the 504-wall tower, 0.75-1.03 on the other homes). jemalloc_options.cpp keeps the pages it
+# frees (see there). The libraries do not link it: a program using them (the Python module
+# too) keeps its own allocator. Not with the sanitizers, which bring theirs.
+option(ROOMCAD_JEMALLOC "Link the executables with jemalloc (libjemalloc-dev)" ON)
+add_library(roomcad_allocator INTERFACE)
+if(ROOMCAD_JEMALLOC AND NOT ROOMCAD_SANITIZE)
+  pkg_check_modules(JEMALLOC REQUIRED IMPORTED_TARGET GLOBAL jemalloc)
+  target_link_libraries(roomcad_allocator INTERFACE PkgConfig::JEMALLOC)
+  target_sources(roomcad_allocator INTERFACE ${CMAKE_CURRENT_LIST_DIR}/jemalloc_options.cpp)
+endif()

@@ -415,6 +415,14 @@ bool lies_in_union(const PlaneSet& set, const PlanePolygon& face, const std::vec
   return false;
 }
 
+// Each contribution's polygon's box, in their order.
+std::vector<Box3> boxes_of(const std::vector<Contribution>& contributions) {
+  std::vector<Box3> boxes;
+  boxes.reserve(contributions.size());
+  for (const Contribution& c : contributions) boxes.push_back(box_of(c.polygon.vertices));
+  return boxes;
+}
+
 // The contributions without those lying in a section that makes them irrelevant: in a solid
 // section every solid polygon (solid lies above and below there whatever they say), in a hole
 // section every polygon (holes take both sides away). Where a face lies inside a solid
@@ -422,9 +430,7 @@ bool lies_in_union(const PlaneSet& set, const PlanePolygon& face, const std::vec
 // storey's wall top inside the section of a wall across it. O(n^2) box tests, plus the side
 // tests of containment where boxes meet; each polygon is tested against the kept sections.
 std::vector<Contribution> without_covered(const PlaneSet& set, std::vector<Contribution> contributions) {
-  std::vector<Box3> boxes;
-  boxes.reserve(contributions.size());
-  for (const Contribution& c : contributions) boxes.push_back(box_of(c.polygon.vertices));
+  const std::vector<Box3> boxes = boxes_of(contributions);
   std::vector<char> dropped(contributions.size(), 0);
   for (std::size_t p = 0; p < contributions.size(); ++p)
     for (std::size_t s = 0; s < contributions.size(); ++s) {
@@ -442,9 +448,7 @@ std::vector<Contribution> without_covered(const PlaneSet& set, std::vector<Contr
 
 bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contributions) {
   const IntervalScope intervals;
-  std::vector<Box3> boxes;
-  boxes.reserve(contributions.size());
-  for (const Contribution& c : contributions) boxes.push_back(box_of(c.polygon.vertices));
+  const std::vector<Box3> boxes = boxes_of(contributions);
   std::vector<const PlanePolygon*> covers;
   for (std::size_t f = 0; f < contributions.size(); ++f) {
     const Contribution& face = contributions[f];

@@ -10,12 +10,14 @@
 // reported (no false warnings).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <string_view>
-#include <unordered_map>
 
 #include "modeling/joins.h"
 #include "modeling/detail/arrangement.h"
 #include "modeling/detail/centre_lines.h"
+#include "modeling/flat_index.h"
 #include "modeling/plan_levels.h"
 #include "modeling/rooms.h"
 #include "modeling/signed_area.h"
@@ -70,13 +72,12 @@ void add_corner(const Line& a, const Line& b, Point2 at, std::vector<Point2>& ou
 using OpeningsByWall = std::vector<std::vector<std::size_t>>;
 
 OpeningsByWall openings_by_wall(const Plan& plan) {
-  std::unordered_map<std::string_view, std::size_t> wall_index;
-  wall_index.reserve(plan.walls.size());
-  for (std::size_t w = plan.walls.size(); w-- > 0;) wall_index[plan.walls[w].id] = w;
+  FlatIndex<std::string_view, std::hash<std::string_view>> wall_index(plan.walls.size());
+  for (std::size_t w = 0; w < plan.walls.size(); ++w) wall_index.try_emplace(plan.walls[w].id, std::uint32_t(w));
   OpeningsByWall out(plan.walls.size());
   for (std::size_t i = 0; i < plan.openings.size(); ++i)
-    if (const auto it = wall_index.find(plan.openings[i].wall); it != wall_index.end())
-      out[it->second].push_back(i);
+    if (const std::uint32_t w = wall_index.find(plan.openings[i].wall); w != wall_index.kNone)
+      out[w].push_back(i);
   return out;
 }
 

@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 
 #include "modeling/build_model.h"
-#include "modeling/detail/flat_index.h"
+#include "modeling/flat_index.h"
 
 namespace roomcad::detail {
 namespace {

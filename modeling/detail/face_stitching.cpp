@@ -13,7 +13,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
-#include "modeling/detail/flat_index.h"
+#include "modeling/flat_index.h"
 
 namespace roomcad::detail {
 namespace {

@@ -9,7 +9,7 @@
 #include <tuple>
 
 #include "modeling/detail/bounds_grid.h"
-#include "modeling/detail/flat_index.h"
+#include "modeling/flat_index.h"
 #include "modeling/detail/plane_loops.h"
 
 namespace roomcad::detail {

@@ -10,7 +10,7 @@
 #include <numeric>
 #include <unordered_map>
 
-#include "modeling/detail/flat_index.h"
+#include "modeling/flat_index.h"
 #include "modeling/exact_geometry.h"
 
 namespace roomcad::detail {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "modeling/detail/flat_index.h"
+#include "modeling/flat_index.h"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-namespace roomcad::detail {
+namespace roomcad {
 namespace {
 
 // Every key's slot is 0: each probe runs through all the keys stored before it.
@@ -55,4 +55,4 @@ TEST(FlatIndex, MixedBitsSpreadNeighbouringKeys) {
 }
 
 }  // namespace
-}  // namespace roomcad::detail
+}  // namespace roomcad

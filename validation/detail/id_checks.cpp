@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // duplicate_id (ids are unique across ALL objects of a plan) and unknown_reference.
 #include <algorithm>
+#include <cstdint>
+#include <functional>
 #include <string_view>
-#include <unordered_map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "modeling/flat_index.h"
 #include "modeling/plan_objects.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
@@ -48,16 +50,22 @@ void check_level_references(const Plan& plan, const std::vector<Object>& objects
 
 /// @return the uses of each id used more than once, in order of first use. O(n) expected.
 std::vector<std::vector<const IdUse*>> find_duplicate_groups(const std::vector<IdUse>& uses) {
-  std::unordered_map<std::string_view, std::size_t> count;
-  count.reserve(uses.size());
-  for (const IdUse& u : uses) ++count[u.id];
-  std::unordered_map<std::string_view, std::size_t> group_of;
+  FlatIndex<std::string_view, std::hash<std::string_view>> first_use(uses.size());
+  std::vector<std::uint32_t> first(uses.size());
+  std::vector<bool> repeated(uses.size(), false);  // by first use
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    first[i] = first_use.try_emplace(uses[i].id, std::uint32_t(i)).first;
+    if (first[i] != i) repeated[first[i]] = true;
+  }
+  std::vector<std::size_t> group_of(uses.size());
   std::vector<std::vector<const IdUse*>> groups;
-  for (const IdUse& u : uses) {
-    if (count[u.id] < 2) continue;
-    const auto [it, added] = group_of.emplace(u.id, groups.size());
-    if (added) groups.emplace_back();
-    groups[it->second].push_back(&u);
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    if (!repeated[first[i]]) continue;
+    if (first[i] == i) {
+      group_of[i] = groups.size();
+      groups.emplace_back();
+    }
+    groups[group_of[first[i]]].push_back(&uses[i]);
   }
   return groups;
 }
@@ -82,13 +90,12 @@ void check_ids(const Plan& plan, Usable& usable, Report& report) {
   report_duplicates(plan, report);
   check_level_references(plan, plan.walls, "wall", report);
   check_level_references(plan, plan.slabs, "slab", report);
-  std::unordered_map<std::string_view, std::size_t> walls;
-  walls.reserve(plan.walls.size());
-  for (std::size_t i = plan.walls.size(); i-- > 0;) walls[plan.walls[i].id] = i;  // first wins
+  FlatIndex<std::string_view, std::hash<std::string_view>> walls(plan.walls.size());
+  for (std::size_t i = 0; i < plan.walls.size(); ++i) walls.try_emplace(plan.walls[i].id, std::uint32_t(i));  // first wins
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     const Opening& o = plan.openings[i];
-    const auto found = walls.find(o.wall);
-    if (found == walls.end()) {
+    const std::uint32_t found = walls.find(o.wall);
+    if (found == walls.kNone) {
       usable.host[i].reset();
       report.add(make_diagnostic(
           Severity::error, Code::unknown_reference, {o.id},
@@ -99,7 +106,7 @@ void check_ids(const Plan& plan, Usable& usable, Report& report) {
                             plan.walls.front().id)));
       continue;
     }
-    if (usable.host[i] && usable.walls[found->second]) usable.host[i] = found->second;
+    if (usable.host[i] && usable.walls[found]) usable.host[i] = found;
     else usable.host[i].reset();
   }
 }

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// FlatIndex: a hash table from keys to 32-bit indices, for the general path's "which point
-// (or corner) had this key first" questions: open addressing with linear probing in two
-// flat arrays. std::unordered_map allocates a node per entry; on tables of tens of thousands
-// of points and corners per build those allocations and their scattered nodes were most of
-// the tables' cost. Entries are never removed, and the table is never iterated, so nothing
+// FlatIndex: a hash table from keys to 32-bit indices, for "which point (or corner, or object)
+// had this key first" questions: open addressing with linear probing in two flat arrays.
+// std::unordered_map allocates a node per entry; on tables of tens of thousands of points and
+// corners per build (the general path), or of a large plan's ids (validation), those
+// allocations and their scattered nodes were most of the tables' cost. Entries are never removed, and the table is never iterated, so nothing
 // depends on its slot order.
 #pragma once
 
@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace roomcad::detail {
+namespace roomcad {
 
 /// @return x's bits mixed so that every input bit moves about half the output bits
 ///         (splitmix64's finaliser): linear probing needs well spread low bits.
@@ -104,4 +104,4 @@ class FlatIndex {
   std::size_t mask_ = 0, size_ = 0;
 };
 
-}  // namespace roomcad::detail
+}  // namespace roomcad

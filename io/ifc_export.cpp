@@ -11,6 +11,7 @@
 #include "io/atomic_write.h"
 #include "io/detail/ifc_shapes.h"
 #include "io/step_file.h"
+#include "modeling/flat_index.h"
 #include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
 #include "modeling/rooms.h"
@@ -90,11 +91,10 @@ class IfcBuilder {
     pieces_.resize(plan_.openings.size());
     for (std::size_t p = 0; p < chorded_.source_opening.size(); ++p) pieces_[chorded_.source_opening[p]].push_back(p);
     openings_of_.resize(plan_.walls.size());
-    std::unordered_map<std::string_view, std::size_t> wall_index;
-    for (std::size_t i = 0; i < plan_.walls.size(); ++i) wall_index.emplace(plan_.walls[i].id, i);
+    const IdIndex wall_index = index_by_id(plan_.walls);
     for (std::size_t o = 0; o < plan_.openings.size(); ++o)
-      if (const auto it = wall_index.find(plan_.openings[o].wall); it != wall_index.end())
-        openings_of_[it->second].push_back(o);
+      if (const std::uint32_t w = wall_index.find(plan_.openings[o].wall); w != wall_index.kNone)
+        openings_of_[w].push_back(o);
   }
 
   std::string build(std::string_view name) {

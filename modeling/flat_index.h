@@ -10,6 +10,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -103,5 +105,18 @@ class FlatIndex {
   std::vector<std::uint32_t> values_;  // kNone: an empty slot
   std::size_t mask_ = 0, size_ = 0;
 };
+
+/// Object indices by id: which object had the id first. Its keys view the objects' ids.
+using IdIndex = FlatIndex<std::string_view, std::hash<std::string_view>>;
+
+/// @param[in] objects  anything with an `id` (a plan's walls, openings, ...); must outlive the
+///                     index, whose keys view their ids
+/// @return each id's index among `objects`, the first where several share it. O(n) expected.
+template <class Objects>
+[[nodiscard]] IdIndex index_by_id(const Objects& objects) {
+  IdIndex index(objects.size());
+  for (std::size_t i = 0; i < objects.size(); ++i) index.try_emplace(objects[i].id, std::uint32_t(i));
+  return index;
+}
 
 }  // namespace roomcad

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <string_view>
 
 #include "modeling/joins.h"
@@ -72,8 +71,7 @@ void add_corner(const Line& a, const Line& b, Point2 at, std::vector<Point2>& ou
 using OpeningsByWall = std::vector<std::vector<std::size_t>>;
 
 OpeningsByWall openings_by_wall(const Plan& plan) {
-  FlatIndex<std::string_view, std::hash<std::string_view>> wall_index(plan.walls.size());
-  for (std::size_t w = 0; w < plan.walls.size(); ++w) wall_index.try_emplace(plan.walls[w].id, std::uint32_t(w));
+  const IdIndex wall_index = index_by_id(plan.walls);
   OpeningsByWall out(plan.walls.size());
   for (std::size_t i = 0; i < plan.openings.size(); ++i)
     if (const std::uint32_t w = wall_index.find(plan.openings[i].wall); w != wall_index.kNone)

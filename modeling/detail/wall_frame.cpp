@@ -8,12 +8,12 @@
 #include <map>
 #include <optional>
 #include <string_view>
-#include <unordered_map>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
 #include "modeling/build_model.h"
+#include "modeling/flat_index.h"
 #include "modeling/segment_predicates.h"
 
 namespace roomcad::detail {
@@ -177,15 +177,14 @@ std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_join
   });
   for (const auto& failure : failures)
     if (failure) throw *failure;
-  std::unordered_map<std::string_view, std::size_t> by_id;
-  for (std::size_t i = 0; i < plan.walls.size(); ++i) by_id.emplace(plan.walls[i].id, i);
+  const IdIndex by_id = index_by_id(plan.walls);
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
-    const auto it = by_id.find(plan.openings[i].wall);
-    if (it == by_id.end())
+    const std::uint32_t w = by_id.find(plan.openings[i].wall);
+    if (w == by_id.kNone)
       throw PreconditionError(fmt::format("build_model: opening '{}' cannot be cut: its wall '{}' "
                                           "does not exist",
                                           plan.openings[i].id, plan.openings[i].wall), Code::not_buildable);
-    Hole& hole = frames[it->second].holes.emplace_back(make_hole(plan, i, frames[it->second]));
+    Hole& hole = frames[w].holes.emplace_back(make_hole(plan, i, frames[w]));
     if (i < through_mitre.size()) hole.through_mitre = through_mitre[i];
   }
   for (WallFrame& f : frames)

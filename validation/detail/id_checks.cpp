@@ -2,7 +2,6 @@
 // duplicate_id (ids are unique across ALL objects of a plan) and unknown_reference.
 #include <algorithm>
 #include <cstdint>
-#include <functional>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -50,7 +49,7 @@ void check_level_references(const Plan& plan, const std::vector<Object>& objects
 
 /// @return the uses of each id used more than once, in order of first use. O(n) expected.
 std::vector<std::vector<const IdUse*>> find_duplicate_groups(const std::vector<IdUse>& uses) {
-  FlatIndex<std::string_view, std::hash<std::string_view>> first_use(uses.size());
+  IdIndex first_use(uses.size());
   std::vector<std::uint32_t> first(uses.size());
   std::vector<bool> repeated(uses.size(), false);  // by first use
   for (std::size_t i = 0; i < uses.size(); ++i) {
@@ -90,8 +89,7 @@ void check_ids(const Plan& plan, Usable& usable, Report& report) {
   report_duplicates(plan, report);
   check_level_references(plan, plan.walls, "wall", report);
   check_level_references(plan, plan.slabs, "slab", report);
-  FlatIndex<std::string_view, std::hash<std::string_view>> walls(plan.walls.size());
-  for (std::size_t i = 0; i < plan.walls.size(); ++i) walls.try_emplace(plan.walls[i].id, std::uint32_t(i));  // first wins
+  const IdIndex walls = index_by_id(plan.walls);
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     const Opening& o = plan.openings[i];
     const std::uint32_t found = walls.find(o.wall);

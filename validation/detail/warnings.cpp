@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Warnings that do not depend on geometry: unknown_field and door_above_floor.
 #include <cmath>
+#include <cstdint>
 #include <string_view>
-#include <unordered_map>
 
 #include <fmt/format.h>
 
+#include "modeling/flat_index.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 
@@ -39,14 +40,13 @@ void warn_unknown_fields(const Plan& plan, Report& report) {
 
 void check_warnings(const Plan& plan, const ValidateOptions& options, Report& report) {
   if (options.unknown_field_warnings) warn_unknown_fields(plan, report);
-  std::unordered_map<std::string_view, const Wall*> walls;
-  for (const Wall& w : plan.walls) walls.emplace(w.id, &w);
+  const IdIndex walls = index_by_id(plan.walls);
   for (const Opening& o : plan.openings) {
     if (o.type != OpeningType::door || !std::isfinite(o.sill) || o.sill <= 0) continue;
     // A wall of a level that reaches down through its floor (base < 0) has the floor at
     // v = -base: a door standing there is at the floor.
-    const auto found = walls.find(o.wall);
-    const Wall* w = found == walls.end() ? nullptr : found->second;
+    const std::uint32_t found = walls.find(o.wall);
+    const Wall* w = found == walls.kNone ? nullptr : &plan.walls[found];
     const bool below_floor = w && !w->level.empty() && w->base < 0;
     if (below_floor && o.sill == -w->base) continue;
     report.add(make_diagnostic(

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "validation/detail/shapes.h"
 #include "validation/rules/door_geometry.h"
@@ -61,7 +60,7 @@ void Scene::index_walls() {
     usable_boxes_.push_back(b);
   }
   grid_ = BoxGrid(usable_boxes_);
-  for (std::size_t w = plan_.walls.size(); w-- > 0;) wall_ids_[plan_.walls[w].id] = w;
+  wall_ids_ = index_by_id(plan_.walls);
 }
 
 void Scene::index_doors() {
@@ -74,9 +73,9 @@ void Scene::index_doors() {
 }
 
 std::optional<std::size_t> Scene::wall_named(std::string_view id) const {
-  const auto it = wall_ids_.find(id);
-  if (it == wall_ids_.end()) return std::nullopt;
-  return it->second;
+  const std::uint32_t w = wall_ids_.find(id);
+  if (w == wall_ids_.kNone) return std::nullopt;
+  return w;
 }
 
 std::vector<Span> Scene::door_holes(std::size_t wall) const {

@@ -8,10 +8,10 @@
 #include <memory>
 #include <optional>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "modeling/broad_phase.h"
+#include "modeling/flat_index.h"
 #include "modeling/joins.h"
 #include "modeling/plan.h"
 #include "validation/rules/box_grid.h"
@@ -56,7 +56,7 @@ class Scene {
   const Joins* joins_;
   std::vector<bool> usable_;
   std::vector<std::optional<std::size_t>> host_;
-  std::unordered_map<std::string_view, std::size_t> wall_ids_;
+  IdIndex wall_ids_;
   std::vector<std::vector<std::size_t>> openings_of_;  ///< by wall: openings naming it
   std::vector<std::vector<std::size_t>> doors_of_;     ///< by wall: hosted doors  ///< by wall: hosted doors
   std::vector<Box2> boxes_;

@@ -3,8 +3,8 @@
 // had this key first" questions: open addressing with linear probing in two flat arrays.
 // std::unordered_map allocates a node per entry; on tables of tens of thousands of points and
 // corners per build (the general path), or of a large plan's ids (validation), those
-// allocations and their scattered nodes were most of the tables' cost. Entries are never removed, and the table is never iterated, so nothing
-// depends on its slot order.
+// allocations and their scattered nodes were most of the tables' cost. Entries are never
+// removed, and the table is never iterated, so nothing depends on its slot order.
 #pragma once
 
 #include <array>

@@ -11,9 +11,9 @@
 #include "io/atomic_write.h"
 #include "io/detail/ifc_shapes.h"
 #include "io/step_file.h"
-#include "modeling/flat_index.h"
 #include "modeling/plan_chords.h"
 #include "modeling/plan_levels.h"
+#include "modeling/plan_objects.h"
 #include "modeling/rooms.h"
 
 namespace roomcad {
@@ -84,17 +84,13 @@ class IfcBuilder {
  public:
   IfcBuilder(const Plan& plan, IfcExportSummary& summary)
       : plan_(plan), chorded_(with_arcs_as_chords(with_absolute_heights(plan))),
-        joins_(find_joins(chorded_.plan)), joined_(chorded_.plan, joins_), summary_(summary) {
+        joins_(find_joins(chorded_.plan)), joined_(chorded_.plan, joins_),
+        openings_of_(openings_by_wall(plan_)), summary_(summary) {
     // Each wall's chords (one for a straight wall) and each opening's pieces, in order.
     chords_.resize(plan_.walls.size());
     for (std::size_t j = 0; j < chorded_.source_wall.size(); ++j) chords_[chorded_.source_wall[j]].push_back(j);
     pieces_.resize(plan_.openings.size());
     for (std::size_t p = 0; p < chorded_.source_opening.size(); ++p) pieces_[chorded_.source_opening[p]].push_back(p);
-    openings_of_.resize(plan_.walls.size());
-    const IdIndex wall_index = index_by_id(plan_.walls);
-    for (std::size_t o = 0; o < plan_.openings.size(); ++o)
-      if (const std::uint32_t w = wall_index.find(plan_.openings[o].wall); w != wall_index.kNone)
-        openings_of_[w].push_back(o);
   }
 
   std::string build(std::string_view name) {
@@ -132,7 +128,7 @@ class IfcBuilder {
   const io_detail::JoinedWalls joined_;
   std::vector<std::vector<std::size_t>> chords_;       ///< per wall, its walls in chorded_
   std::vector<std::vector<std::size_t>> pieces_;       ///< per opening, its openings in chorded_
-  std::vector<std::vector<std::size_t>> openings_of_;  ///< per wall, its openings
+  const OpeningsByWall openings_of_;                   ///< per wall, its openings
   IfcExportSummary& summary_;
   step::Writer w_;
   IfcShapeWriter shapes_{w_};

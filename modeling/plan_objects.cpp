@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "modeling/flat_index.h"
 
 namespace roomcad {
 namespace {
@@ -88,6 +89,14 @@ void require_unused_id(const Plan& plan, std::string_view id, std::string_view v
   if (const auto ref = find_object(plan, id))
     throw PreconditionError(fmt::format("{}: id '{}' is already used by {} '{}'", verb, id,
                                         kind_name(plan, *ref), id));
+}
+
+OpeningsByWall openings_by_wall(const Plan& plan) {
+  const IdIndex wall_index = index_by_id(plan.walls);
+  OpeningsByWall out(plan.walls.size());
+  for (std::size_t i = 0; i < plan.openings.size(); ++i)
+    if (const std::uint32_t w = wall_index.find(plan.openings[i].wall); w != wall_index.kNone) out[w].push_back(i);
+  return out;
 }
 
 }  // namespace roomcad

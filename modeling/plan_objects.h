@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "modeling/plan.h"
 
@@ -19,6 +20,12 @@ enum class ObjectKind { level, wall, opening, slab, light, camera };
 
 /// "levels", "walls", "openings", ...: the kind's list in the plan file.
 [[nodiscard]] std::string_view list_name(ObjectKind kind);
+
+/// Opening indices by host wall: per wall index, the openings naming the wall, in plan order.
+/// Where walls share an id, the first of them hosts (as validation reads a plan); an opening
+/// naming no wall is in no list. O(walls + openings) expected.
+using OpeningsByWall = std::vector<std::vector<std::size_t>>;
+[[nodiscard]] OpeningsByWall openings_by_wall(const Plan& plan);
 
 /// An object of a plan: which vector, which index.
 struct ObjectRef {

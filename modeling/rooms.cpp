@@ -12,12 +12,13 @@
 #include <cmath>
 #include <cstdint>
 #include <string_view>
+#include <tuple>
 
 #include "modeling/joins.h"
 #include "modeling/detail/arrangement.h"
 #include "modeling/detail/centre_lines.h"
-#include "modeling/flat_index.h"
 #include "modeling/plan_levels.h"
+#include "modeling/plan_objects.h"
 #include "modeling/rooms.h"
 #include "modeling/signed_area.h"
 
@@ -65,18 +66,6 @@ void add_corner(const Line& a, const Line& b, Point2 at, std::vector<Point2>& ou
   // In line (or nearly), or the tip of a wall end poking into the room: a step across.
   out.push_back(on_a);
   if (on_b != out.back()) out.push_back(on_b);
-}
-
-/// Opening indices by host wall index (the first wall with the id, as validation reads it).
-using OpeningsByWall = std::vector<std::vector<std::size_t>>;
-
-OpeningsByWall openings_by_wall(const Plan& plan) {
-  const IdIndex wall_index = index_by_id(plan.walls);
-  OpeningsByWall out(plan.walls.size());
-  for (std::size_t i = 0; i < plan.openings.size(); ++i)
-    if (const std::uint32_t w = wall_index.find(plan.openings[i].wall); w != wall_index.kNone)
-      out[w].push_back(i);
-  return out;
 }
 
 /// Openings whose span along their wall overlaps the face edge's piece of that wall.

@@ -51,7 +51,8 @@ bool meet_only_at_ends(const Segments& segments) {
   std::vector<Box2> boxes(segments.size());
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const auto& [a, b] = segments[i];
-    boxes[i] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y), i};
+    boxes[i] = grown_segment_box(a.x, a.y, b.x, b.y, 0.0);  // outward by an ulp: more pairs, decided exactly
+    boxes[i].index = i;
   }
   for (const auto& [i, j] : find_meeting_boxes(boxes)) {
     const auto& [a, b] = segments[i];

@@ -2,9 +2,8 @@
 // The walls of the floor plan: cut parts between the openings the section passes through,
 // window symbols, door leaves and swings, and walls wholly below or above the cut.
 #include <algorithm>
-#include <map>
-#include <string_view>
 
+#include "modeling/plan_objects.h"
 #include "render/detail/plan_paper.h"
 
 namespace roomcad::detail {
@@ -92,13 +91,11 @@ void draw_cut_wall(const std::vector<Point2>& footprint, const WallFrame& f, dou
 }
 
 /// The openings of each wall (by index), sorted along the wall.
-std::vector<std::vector<const Opening*>> openings_by_wall(const Plan& plan) {
-  std::map<std::string_view, std::size_t> index;
-  for (std::size_t i = 0; i < plan.walls.size(); ++i) index.emplace(plan.walls[i].id, i);
+std::vector<std::vector<const Opening*>> openings_along_walls(const Plan& plan) {
   std::vector<std::vector<const Opening*>> out(plan.walls.size());
-  for (const Opening& o : plan.openings) {
-    if (const auto it = index.find(o.wall); it != index.end()) out[it->second].push_back(&o);
-  }
+  const OpeningsByWall by_wall = openings_by_wall(plan);
+  for (std::size_t w = 0; w < by_wall.size(); ++w)
+    for (const std::size_t o : by_wall[w]) out[w].push_back(&plan.openings[o]);
   for (auto& list : out) {
     std::stable_sort(list.begin(), list.end(),
                      [](const Opening* a, const Opening* b) { return a->offset < b->offset; });
@@ -110,7 +107,7 @@ std::vector<std::vector<const Opening*>> openings_by_wall(const Plan& plan) {
 
 void draw_plan_walls(const Plan& plan, const Joins& joins, const FloorPlanOptions& options,
                      const PaperMap& map, FloorPlanDrawing& out) {
-  const auto openings = openings_by_wall(plan);
+  const auto openings = openings_along_walls(plan);
   for (std::size_t i = 0; i < plan.walls.size(); ++i) {
     const Wall& wall = plan.walls[i];
     if (!(length(wall.to - wall.from) > 0.0 && wall.thickness > 0.0)) continue;

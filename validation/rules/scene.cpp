@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "modeling/plan_objects.h"
 #include "validation/detail/shapes.h"
 #include "validation/rules/door_geometry.h"
 
@@ -64,9 +65,7 @@ void Scene::index_walls() {
 }
 
 void Scene::index_doors() {
-  openings_of_.assign(plan_.walls.size(), {});
-  for (std::size_t i = 0; i < plan_.openings.size(); ++i)
-    if (const auto w = wall_named(plan_.openings[i].wall)) openings_of_[*w].push_back(i);
+  openings_of_ = openings_by_wall(plan_);
   doors_of_.assign(plan_.walls.size(), {});
   for (std::size_t i = 0; i < plan_.openings.size(); ++i)
     if (host_[i] && plan_.openings[i].type == OpeningType::door) doors_of_[*host_[i]].push_back(i);

@@ -192,12 +192,6 @@ void add_move(const Scene& scene, std::size_t w, Point2 by, double step, std::ve
   out.push_back({std::move(text), std::move(edits)});
 }
 
-std::optional<std::size_t> wall_named(const Plan& plan, const std::string& id) {
-  for (std::size_t w = 0; w < plan.walls.size(); ++w)
-    if (plan.walls[w].id == id) return w;
-  return std::nullopt;
-}
-
 }  // namespace
 
 std::optional<PassageFix> PassageGeometry::find_fix(const Barrier& bar, double width) const {
@@ -223,7 +217,7 @@ std::optional<PassageFix> PassageGeometry::find_fix(const Barrier& bar, double w
     const std::optional<Plan> edited = near.try_edits(c.edits);
     if (!edited) continue;
     const Scene local(*edited);
-    const auto lx = wall_named(*edited, plan.walls[x].id), ly = wall_named(*edited, plan.walls[y].id);
+    const auto lx = local.wall_named(plan.walls[x].id), ly = local.wall_named(plan.walls[y].id);
     if (!lx || !ly || !local.is_usable(*lx) || !local.is_usable(*ly)) continue;
     const std::vector<Piece> px = pieces_of(local, {*lx}), py = pieces_of(local, {*ly});
     bool apart = true;

@@ -23,7 +23,11 @@
 #include "modeling/joins.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
+
+#include <tbb/parallel_for.h>
 
 #include "modeling/broad_phase.h"
 #include "modeling/exact_geometry.h"
@@ -48,36 +52,61 @@ struct EndNeighbours {
   int matched_end = 0;
 };
 
-struct PairContact {
-  bool joined = false;
-  std::optional<Point2> point;  ///< first end within tolerance of the other wall
+/// What one end of a candidate pair's wall sees of the other wall's centre line.
+struct EndTouch {
+  bool near = false;     ///< the end lies within tolerance of the other centre line
+  int matched_ends = 0;  ///< ends of the other wall within tolerance of this end
+  int matched_end = 0;
 };
 
-/// Tests the four ends of a candidate pair against the other centre line and records them.
-PairContact touch_ends(const Plan& plan, std::size_t a, std::size_t b, double tol,
-                       std::vector<std::array<EndNeighbours, 2>>& ends) {
-  PairContact contact;
-  const std::size_t walls[2] = {a, b};
+/// A candidate pair's tests, made on their own (in parallel) and recorded in pair order.
+struct PairTest {
+  std::array<std::array<EndTouch, 2>, 2> ends{};  ///< [wall a or b][its end]
+  bool meets = false;                             ///< an end touches, or the centre lines meet
+  std::optional<Point2> point;                    ///< first end within tolerance of the other wall
+};
+
+/// Tests the four ends of a candidate pair against the other centre line. Exact.
+PairTest test_pair(const Plan& plan, std::size_t a, std::size_t b, double tol) {
+  PairTest test;
+  const Wall& wa = plan.walls[a];
+  const Wall& wb = plan.walls[b];
+  if (!share_heights(wa, wb)) return test;  // one above the other: they cannot meet
+  const Wall* walls[2] = {&wa, &wb};
   for (int k = 0; k < 2; ++k) {
-    const Wall& w = plan.walls[walls[k]];
-    const Wall& v = plan.walls[walls[1 - k]];
+    const Wall& w = *walls[k];
+    const Wall& v = *walls[1 - k];
     for (int e = 0; e < 2; ++e) {
       const Point2 p = end_point(w, e);
       if (!is_near_segment(p, v.from, v.to, tol)) continue;
-      contact.joined = true;
-      if (!contact.point) contact.point = p;
-      EndNeighbours& n = ends[walls[k]][e];
-      ++n.count;
-      n.wall = walls[1 - k];
-      n.matched_ends = 0;
+      if (!test.point) test.point = p;
+      EndTouch& t = test.ends[std::size_t(k)][std::size_t(e)];
+      t.near = true;
       for (int f = 0; f < 2; ++f)
         if (is_near_point(p, end_point(v, f), tol)) {
-          ++n.matched_ends;
-          n.matched_end = f;
+          ++t.matched_ends;
+          t.matched_end = f;
         }
     }
   }
-  return contact;
+  test.meets = test.point.has_value() || segments_meet(wa.from, wa.to, wb.from, wb.to);
+  return test;
+}
+
+/// Records what the pair's ends see in `ends`: the count of centre lines near each end, and
+/// the last of them with its matched ends.
+void record_ends(const PairTest& test, std::size_t a, std::size_t b, std::vector<std::array<EndNeighbours, 2>>& ends) {
+  const std::size_t walls[2] = {a, b};
+  for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t e = 0; e < 2; ++e) {
+      const EndTouch& t = test.ends[k][e];
+      if (!t.near) continue;
+      EndNeighbours& n = ends[walls[k]][e];
+      ++n.count;
+      n.wall = walls[1 - k];
+      n.matched_ends = t.matched_ends;
+      n.matched_end = t.matched_end;
+    }
 }
 
 /// @return the crossing of two centre lines that meet (rounded; only for reports).
@@ -140,14 +169,19 @@ Joins find_joins(const Plan& plan) {
   Joins joins;
   joins.mitre.assign(plan.walls.size(), {});
   std::vector<std::array<EndNeighbours, 2>> ends(plan.walls.size());
-  for (const auto& [a, b] : find_meeting_boxes(centre_line_boxes(plan, tol))) {
-    const Wall& wa = plan.walls[a];
-    const Wall& wb = plan.walls[b];
-    if (!share_heights(wa, wb)) continue;  // one above the other: they cannot meet
-    const PairContact contact = touch_ends(plan, a, b, tol, ends);
-    if (contact.joined || segments_meet(wa.from, wa.to, wb.from, wb.to))
+  // The pairs' exact tests are independent: made in parallel, recorded in pair order.
+  const IndexPairs candidates = find_meeting_boxes(centre_line_boxes(plan, tol));
+  std::vector<PairTest> tests(candidates.size());
+  tbb::parallel_for(std::size_t{0}, candidates.size(), [&](std::size_t k) {
+    tests[k] = test_pair(plan, candidates[k].first, candidates[k].second, tol);
+  });
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const auto [a, b] = candidates[k];
+    const PairTest& test = tests[k];
+    record_ends(test, a, b, ends);
+    if (test.meets)
       joins.pairs.push_back(
-          Join{a, b, JoinKind::unite, contact.point.value_or(crossing_point(wa, wb))});
+          Join{a, b, JoinKind::unite, test.point.value_or(crossing_point(plan.walls[a], plan.walls[b]))});
   }
   for (Join& j : joins.pairs)
     for (int e = 0; e < 2; ++e) {

@@ -58,7 +58,7 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
   // The two numberings, by rounded coordinates and by exact representation, are independent.
   tbb::parallel_invoke(
       [&] {
-        FlatIndex<Key> by_coordinates(corners);
+        FlatIndex<Key> by_coordinates(corners / 3 + 1);
         std::size_t c = 0;
         for (const SolidFace* f : faces)
           for (const auto& r : f->rounded) {
@@ -69,7 +69,7 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
           }
       },
       [&] {
-        FlatIndex<Key> by_representation(corners);
+        FlatIndex<Key> by_representation(corners / 3 + 1);
         std::size_t c = 0;
         for (const SolidFace* f : faces)
           for (const XPoint& v : f->vertices) {
@@ -167,6 +167,30 @@ bool is_near_segment(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, const O
   return t > 0.0 && t < 1.0 && (r - d * t).norm() <= tol;
 }
 
+// The axis along which u and v differ if they differ along that one only, else -1.
+int only_differing_axis(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v) {
+  int axis = -1;
+  for (int a = 0; a < 3; ++a)
+    if (u[a] != v[a]) {
+      if (axis >= 0) return -1;
+      axis = a;
+    }
+  return axis;
+}
+
+// Whether rounded point w may be the rounding of an exact point strictly inside the exact edge
+// whose ends round to u and v. Along an axis (u and v differing in coordinate `along` only:
+// most edges of a home), w equals them in the other two coordinates and lies strictly between
+// them: each coordinate of such a point lies between the exact ends', and rounding is
+// monotone (between u and v inclusive, and at u or v it is that end's own point). Otherwise
+// (along < 0), w lies within a few ulps of the segment.
+bool may_lie_on_edge(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, int along, const OpenMesh::Vec3d& w) {
+  if (along < 0) return is_near_segment(u, v, w);
+  const int b = (along + 1) % 3, c = (along + 2) % 3;
+  return w[b] == u[b] && w[c] == u[c] && std::min(u[along], v[along]) < w[along] &&
+         w[along] < std::max(u[along], v[along]);
+}
+
 // The axis along which u -> v changes most, and the sign of that change (exact).
 std::pair<int, int> edge_axis(PointCache& exact, std::size_t u, std::size_t v, const OpenMesh::Vec3d& d) {
   std::array<int, 3> axes{0, 1, 2};
@@ -209,8 +233,9 @@ IndexedSoup stitch_faces(const PlaneSet& set, std::span<const SolidFace* const> 
       // plane and the edge's line, strictly between the face's own exact ends.
       std::vector<std::pair<std::size_t, std::size_t>> on_edge;  // (point, its exact point)
       int axis = -1, dir = 0;
+      const int along = only_differing_axis(u, v);
       grid.for_each_near(u, v, 1e-9 * (1.0 + u.norm()), [&](std::size_t wi) {
-        if (wi == ui || wi == vi || !is_near_segment(u, v, t->points[wi])) return;
+        if (wi == ui || wi == vi || !may_lie_on_edge(u, v, along, t->points[wi])) return;
         if (std::find(poly.begin(), poly.end(), wi) != poly.end()) return;
         for (std::size_t w = t->first_exact[wi]; w != PointTable::kNone; w = t->next_exact[w]) {
           if (t->exact.side(f.plane, w) != 0 || t->exact.side(f.lines[k], w) != 0) continue;

@@ -262,15 +262,15 @@ FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces,
                                         owners, a[0], a[1], a[2], b[0], b[1], b[2]),
                             Code::not_buildable);
   }
-  FaceSoup out;
-  out.reserve(r.polygons.size());
-  for (std::size_t k = 0; k < r.polygons.size(); ++k) {
+  // Each face in its own slot (in parallel: tens of thousands of faces in a tall home).
+  FaceSoup out(r.polygons.size());
+  tbb::parallel_for(std::size_t{0}, r.polygons.size(), [&](std::size_t k) {
     const SolidFace& f = *faces[r.tags[k]];
-    SoupFace face = label_face(prims[f.owner], set, f.plane, labels);
+    SoupFace& face = out[k];
+    face = label_face(prims[f.owner], set, f.plane, labels);
     for (std::size_t i : r.polygons[k]) face.points.push_back(r.points[i]);
     face.copies = copies[k];
-    out.push_back(std::move(face));
-  }
+  });
   return out;
 }
 

@@ -2,7 +2,8 @@
 #include "modeling/detail/plane_faces.h"
 
 #include <algorithm>
-#include <map>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <numeric>
 #include <span>
@@ -169,37 +170,81 @@ void append_pieces(const Context& cx, std::size_t index, Edge& e, std::vector<Pi
   first_source.push_back(sources.size());
 }
 
-// Gives equal points one index (of the first of them): @return per point index its
-// representative's. Points of the same representation (explicit doubles, or the same three
-// planes) by hashing, then the others by a sweep over their bounds on the first axis.
+// Calls f(cell) for each cell of a fine square grid in the view axes (side `cell`) that point
+// p's bounds cover, at most four, and returns true; false (no calls) when they cover more or
+// are not finite. Equal points have overlapping bounds, so they share a cell: rounded
+// division and floor are monotone, so the cell of the higher of the two low bounds is in both.
+template <class F>
+bool for_each_fine_cell(const Context& cx, const XPoint& p, double cell, F&& f) {
+  const auto [li, hi] = bounds(p, cx.i);
+  const auto [lj, hj] = bounds(p, cx.j);
+  const double i0 = std::floor(li / cell), i1 = std::floor(hi / cell);
+  const double j0 = std::floor(lj / cell), j1 = std::floor(hj / cell);
+  if (!(i1 - i0 <= 1.0 && j1 - j0 <= 1.0)) return false;  // NaN and infinite bounds too
+  for (double ci = i0; ci <= i1; ++ci)
+    for (double cj = j0; cj <= j1; ++cj)
+      f(std::array<std::uint64_t, 2>{std::uint64_t(std::int64_t(ci)), std::uint64_t(std::int64_t(cj))});
+  return true;
+}
+
+// Gives equal points one index: @return per point index its representative's, the first of
+// its equals in order of their low bounds on the first view axis (then index). Points are
+// tested exactly where their bounds share a cell of a fine grid (2^-24 of the largest
+// coordinate: far wider than a point's bounds, far narrower than a plan's features), and
+// points whose bounds are wider than two cells (corners of nearly parallel planes) against
+// all. O(n) expected hashing plus the exact tests of near points (most are repeats of one
+// representation, decided without arithmetic).
 std::vector<std::size_t> find_equal_points(const Context& cx) {
   const std::size_t n = cx.points.size();
-  FlatIndex<std::array<std::uint64_t, 3>> first_of(n);
-  std::vector<std::size_t> rep(n), reps;
+  double largest = 0.0;
+  for (std::size_t k = 0; k < n; ++k)
+    for (const int axis : {cx.i, cx.j})
+      for (const double v : {bounds(cx.points[k], axis).first, bounds(cx.points[k], axis).second})
+        if (std::isfinite(v)) largest = std::max(largest, std::abs(v));
+  const double cell = std::max(largest * 0x1p-24, std::numeric_limits<double>::min());
+  // Equal points united (a union-find forest), cell by cell.
+  std::vector<std::size_t> parent(n);
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  const auto root = [&](std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  const auto unite_if_same = [&](std::size_t a, std::size_t b) {
+    const std::size_t ra = root(a), rb = root(b);
+    if (ra != rb && cx.points.is_same(a, b)) parent[std::max(ra, rb)] = std::min(ra, rb);
+  };
+  using CellKey = std::array<std::uint64_t, 2>;
+  FlatIndex<CellKey> cell_of(n);
+  std::vector<std::uint32_t> last_in_cell;                  // per cell, its last filed entry
+  std::vector<std::pair<std::size_t, std::uint32_t>> filed;  // (point, the cell's entry before it)
+  std::vector<std::size_t> wide;
   for (std::size_t k = 0; k < n; ++k) {
-    const auto [first, fresh] = first_of.try_emplace(representation_key(cx.points[k]), std::uint32_t(k));
-    if (fresh) reps.push_back(k);
-    rep[k] = first;
+    const bool fine = for_each_fine_cell(cx, cx.points[k], cell, [&](const CellKey& key) {
+      const auto [c, added] = cell_of.try_emplace(key, std::uint32_t(last_in_cell.size()));
+      if (added) last_in_cell.push_back(FlatIndex<CellKey>::kNone);
+      for (std::uint32_t e = last_in_cell[c]; e != FlatIndex<CellKey>::kNone; e = filed[e].second)
+        unite_if_same(k, filed[e].first);
+      filed.emplace_back(k, last_in_cell[c]);
+      last_in_cell[c] = std::uint32_t(filed.size() - 1);
+    });
+    if (!fine) wide.push_back(k);
   }
-  std::sort(reps.begin(), reps.end(), [&](std::size_t a, std::size_t b) {
+  for (const std::size_t w : wide)
+    for (std::size_t k = 0; k < n; ++k)
+      if (k != w) unite_if_same(w, k);
+  // Each group's representative: its first point in order of low bound, then index.
+  const auto earlier = [&](std::size_t a, std::size_t b) {
     const double la = bounds(cx.points[a], cx.i).first, lb = bounds(cx.points[b], cx.i).first;
     return la < lb || (la == lb && a < b);
-  });
-  std::vector<std::size_t> active;
-  for (const std::size_t r : reps) {
-    const double low = bounds(cx.points[r], cx.i).first;
-    active.erase(std::remove_if(active.begin(), active.end(),
-                                [&](std::size_t a) { return bounds(cx.points[a], cx.i).second < low; }),
-                 active.end());
-    for (const std::size_t a : active)
-      if (cx.points.is_same(r, a)) {
-        rep[r] = a;
-        break;
-      }
-    if (rep[r] == r) active.push_back(r);
+  };
+  std::vector<std::size_t> first_of_group(n, n);
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t& first = first_of_group[root(k)];
+    if (first == n || earlier(k, first)) first = k;
   }
-  for (std::size_t k = 0; k < n; ++k) rep[k] = rep[rep[k]];
-  return rep;
+  std::vector<std::size_t> out(n);
+  for (std::size_t k = 0; k < n; ++k) out[k] = first_of_group[root(k)];
+  return out;
 }
 
 // The sides of a piece against line t: {its negative side, its positive side}, each -1 when
@@ -312,20 +357,55 @@ void classify_edge(const Context& cx, std::span<const Piece> pieces, const std::
 
 using GroupKey = std::tuple<int, long, std::string>;  // side, owner, cut cells
 
+// The pieces bounding the faces of each group (side, owner, cut cells), each group's in the
+// order they were filed. A hash of the key finds the group (a plane files tens of thousands
+// of pieces in a few dozen groups); the groups are read in order of their keys.
+class FaceGroups {
+ public:
+  void add(int side, long owner, const std::string& cells, const DirectedPiece& piece) {
+    const auto name = std::size_t(std::find(cell_names_.begin(), cell_names_.end(), cells) - cell_names_.begin());
+    if (name == cell_names_.size()) cell_names_.push_back(cells);
+    const std::array<std::uint64_t, 2> key{(std::uint64_t(owner) << 1) | (side > 0 ? 1u : 0u), name};
+    const auto [group, added] = index_.try_emplace(key, std::uint32_t(keys_.size()));
+    if (added) {
+      keys_.emplace_back(side, owner, cells);
+      pieces_.emplace_back();
+    }
+    pieces_[group].push_back(piece);
+  }
+  /// @return the groups' indices in order of their keys.
+  [[nodiscard]] std::vector<std::size_t> in_key_order() const {
+    std::vector<std::size_t> order(keys_.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys_[a] < keys_[b]; });
+    return order;
+  }
+  [[nodiscard]] const GroupKey& key(std::size_t group) const { return keys_[group]; }
+  [[nodiscard]] std::vector<DirectedPiece>& pieces(std::size_t group) { return pieces_[group]; }
+
+ private:
+  std::vector<std::string> cell_names_;  // the distinct cut cells filed, in order of first use
+  FlatIndex<std::array<std::uint64_t, 2>> index_;  // (owner and side, cells' name) -> group
+  std::vector<GroupKey> keys_;
+  std::vector<std::vector<DirectedPiece>> pieces_;
+};
+
 // Files the piece with the faces it bounds: where an owner, or its cut cell, differs between
 // its sides.
-void add_boundary(const Context& cx, std::map<GroupKey, std::vector<DirectedPiece>>& groups, const Piece& p,
-                  std::size_t a, std::size_t b, const std::array<Owners, 2>& o) {
+void add_boundary(const Context& cx, FaceGroups& groups, const Piece& p, std::size_t a, std::size_t b,
+                  const std::array<Owners, 2>& o) {
+  // Most pieces lie inside a face, one owner on both sides: without cuts, nothing to file.
+  if (cx.cuts.empty() && o[0].up == o[1].up && o[0].down == o[1].down) return;
   // The negative side lies on the left of a -> b seen from the plane's positive side.
   const std::array<std::string, 2> up{cells_of(cx, p, o[0].up, 0), cells_of(cx, p, o[1].up, 1)};
   if (o[0].up != o[1].up || up[0] != up[1]) {
-    if (o[0].up >= 0) groups[{1, o[0].up, up[0]}].push_back({a, b, p.line, 1});
-    if (o[1].up >= 0) groups[{1, o[1].up, up[1]}].push_back({b, a, p.line, -1});
+    if (o[0].up >= 0) groups.add(1, o[0].up, up[0], {a, b, p.line, 1});
+    if (o[1].up >= 0) groups.add(1, o[1].up, up[1], {b, a, p.line, -1});
   }
   const std::array<std::string, 2> down{cells_of(cx, p, o[0].down, 0), cells_of(cx, p, o[1].down, 1)};
   if (o[0].down != o[1].down || down[0] != down[1]) {
-    if (o[0].down >= 0) groups[{-1, o[0].down, down[0]}].push_back({b, a, p.line, -1});
-    if (o[1].down >= 0) groups[{-1, o[1].down, down[1]}].push_back({a, b, p.line, 1});
+    if (o[0].down >= 0) groups.add(-1, o[0].down, down[0], {b, a, p.line, -1});
+    if (o[1].down >= 0) groups.add(-1, o[1].down, down[1], {a, b, p.line, 1});
   }
 }
 
@@ -570,11 +650,15 @@ PlaneFaces PlaneBoolean::faces() {
   State& st = *state_;
   const Context cx = st.context();
   const std::vector<std::size_t> rep = find_equal_points(cx);
-  std::map<GroupKey, std::vector<DirectedPiece>> groups;
+  FaceGroups groups;
   for (std::size_t k = 0; k < st.pieces.size(); ++k)
     add_boundary(cx, groups, st.pieces[k], rep[st.pieces[k].a], rep[st.pieces[k].b], st.owners[k]);
+  // Every group's loops first: where some are holes, the plane is cut and run again, so its
+  // faces are not made (nor their corners rounded) this time.
   PlaneFaces out;
-  for (auto& [key, directed] : groups) {
+  std::vector<std::pair<std::size_t, std::vector<PieceLoop>>> loops_of_group;
+  for (const std::size_t group : groups.in_key_order()) {
+    std::vector<DirectedPiece>& directed = groups.pieces(group);
     std::sort(directed.begin(), directed.end(), [](const DirectedPiece& x, const DirectedPiece& y) {
       return std::tie(x.from, x.to) < std::tie(y.from, y.to);
     });
@@ -582,20 +666,27 @@ PlaneFaces PlaneBoolean::faces() {
                      return x.from == y.from && x.to == y.to;
                    }),
                    directed.end());
-    const auto& [side_of, owner, cells] = key;
-    for (PieceLoop& loop : link_loops(st.plane, side_of, std::move(directed), st.points)) {
+    const auto& [side_of, owner, cells] = groups.key(group);
+    std::vector<PieceLoop> loops = link_loops(st.plane, side_of, std::move(directed), st.points);
+    for (const PieceLoop& loop : loops) {
+      if (!loop.is_hole) continue;
+      std::vector<XPoint>& hole = out.holes.emplace_back(std::size_t(owner), std::vector<XPoint>{}).second;
+      for (const DirectedPiece& p : loop.pieces) hole.push_back(st.points[p.from]);
+    }
+    loops_of_group.emplace_back(group, std::move(loops));
+  }
+  if (!out.holes.empty()) return out;
+  for (const auto& [group, loops] : loops_of_group) {
+    const auto& [side_of, owner, cells] = groups.key(group);
+    for (const PieceLoop& loop : loops) {
       SolidFace face{{st.plane.id, side_of}, std::size_t(owner), {}, {}, {}};
       for (const DirectedPiece& p : loop.pieces) {
         face.vertices.push_back(st.points[p.from]);
         face.lines.push_back(p.line);
+        // Rounded here, where the exact coordinates found on the way are at hand (and planes
+        // run in parallel).
+        face.rounded.push_back(st.points.round(p.from));
       }
-      if (loop.is_hole) {
-        out.holes.emplace_back(std::size_t(owner), std::move(face.vertices));
-        continue;
-      }
-      // Rounded here, where the exact coordinates found on the way are at hand (and planes
-      // run in parallel).
-      for (const DirectedPiece& p : loop.pieces) face.rounded.push_back(st.points.round(p.from));
       out.faces.push_back(std::move(face));
     }
   }

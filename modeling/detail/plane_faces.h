@@ -56,7 +56,7 @@ struct SolidFace {
 };
 
 struct PlaneFaces {
-  std::vector<SolidFace> faces;
+  std::vector<SolidFace> faces;  ///< none while there are holes
   /// Loops that would be holes of a face (owner, vertices): cut through them and run again.
   std::vector<std::pair<std::size_t, std::vector<XPoint>>> holes;
 };
@@ -89,8 +89,9 @@ class PlaneBoolean {
   /// @pre every plane the cuts name is in `set`.
   void add_cuts(std::span<const Cut> cuts);
 
-  /// @return the faces, each owner's split by its cuts (complete when `holes` is empty).
-  ///         O(p log p) plus the loops' angular sorts.
+  /// @return the faces, each owner's split by its cuts, when no loop is a hole; else only the
+  ///         hole loops (no faces: the plane is to be cut). O(p log p) plus the loops'
+  ///         angular sorts.
   [[nodiscard]] PlaneFaces faces();
 
  private:

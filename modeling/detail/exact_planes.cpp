@@ -10,6 +10,8 @@
 #include <gmpxx.h>
 #include <mpfr.h>
 
+#include "modeling/flat_index.h"
+
 namespace roomcad::detail {
 namespace {
 
@@ -472,19 +474,35 @@ bool are_same_plane(const PlaneSet& set, PlaneId a, PlaneId b) {
 
 std::vector<PlaneRef> PlaneSet::find_equal_planes() const {
   const std::size_t n = recipes_.size();
+  // Axis planes with the same recipe are the same plane (are_same_plane compares axis planes
+  // by their recipes): hashed first, so the sweep below sees one of each, the lowest id.
+  // Every face of an axis-aligned wall lies on one, repeated by each wall along the line.
+  std::vector<PlaneId> rep_of(n), swept;
+  FlatIndex<std::array<std::uint64_t, 3>> axis_first(n);
+  for (PlaneId id = 0; id < n; ++id) {
+    const PlaneRecipe& r = recipes_[id];
+    rep_of[id] = id;
+    if (r.kind == PlaneRecipe::Kind::axis && !std::isnan(r.v[1]) && !std::isnan(r.v[2])) {
+      // + 0.0: -0.0 and 0.0 are one coordinate, as == has them.
+      const std::array<std::uint64_t, 3> key{std::uint64_t(r.v[0]), std::bit_cast<std::uint64_t>(r.v[1] + 0.0),
+                                             std::bit_cast<std::uint64_t>(r.v[2] + 0.0)};
+      const auto [first, fresh] = axis_first.try_emplace(key, id);
+      rep_of[id] = first;
+      if (!fresh) continue;
+    }
+    swept.push_back(id);
+  }
   std::vector<std::array<Interval, 4>> inv(n);
   {
     const UpwardRounding upward;
-    for (std::size_t i = 0; i < n; ++i) inv[i] = invariants(approx_[i]);
+    for (const PlaneId id : swept) inv[id] = invariants(approx_[id]);
   }
-  std::vector<PlaneId> order(n);
-  std::iota(order.begin(), order.end(), PlaneId{0});
+  std::vector<PlaneId> order = swept;
   // Planes in order of their lowest possible |d| / |n|; equal planes overlap in every invariant.
   std::stable_sort(order.begin(), order.end(),
                    [&](PlaneId x, PlaneId y) { return inv[x][0].inf() < inv[y][0].inf(); });
   std::vector<PlaneRef> group(n);
   std::vector<PlaneId> active;  // representatives whose |d| / |n| may still overlap
-  std::vector<PlaneId> rep_of(n);
   for (PlaneId id : order) {
     const double lo = inv[id][0].inf();
     active.erase(std::remove_if(active.begin(), active.end(), [&](PlaneId r) { return inv[r][0].sup() < lo; }),
@@ -501,6 +519,7 @@ std::vector<PlaneRef> PlaneSet::find_equal_planes() const {
     rep_of[id] = found;
     if (found == id) active.push_back(id);
   }
+  for (PlaneId id = 0; id < n; ++id) rep_of[id] = rep_of[rep_of[id]];  // a hashed repeat: its first's
   // The group's representative is its lowest id, so the result does not depend on the sort.
   std::vector<PlaneId> lowest(n, PlaneId(n));
   for (PlaneId id = 0; id < n; ++id) lowest[rep_of[id]] = std::min(lowest[rep_of[id]], id);

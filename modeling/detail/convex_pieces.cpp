@@ -3,12 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <iterator>
 
 #include <boost/container/small_vector.hpp>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/partition_2.h>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include "modeling/build_model.h"
 
@@ -184,33 +187,6 @@ bool is_strictly_convex(const PlaneSet& set, const std::array<Point2, 4>& c, con
   return true;
 }
 
-// The wall piece: its footprint between base and top.
-std::optional<Primitive> make_wall_piece(PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
-                                         const std::array<PlaneRef, 4>& sides, const std::vector<PlaneRef>& lines,
-                                         const std::string& name) {
-  if (is_sloped(f)) {
-    std::vector<PlaneRef> planes = lines;
-    planes.push_back(plane_at_z(set, f.base, -1));
-    planes.push_back(sloped_top_plane(set, f));
-    return make_convex(set, box, planes);
-  }
-  if (!(f.base < f.top)) return std::nullopt;
-  const PlaneRef c0 = plane_at_z(set, f.base, -1), c1 = plane_at_z(set, f.top, 1);
-  PlanePolygon base{{c0.id, -c0.sign}, {}, {}};
-  if (is_strictly_convex(set, f.footprint, lines)) {
-    base.lines.assign(sides.begin(), sides.end());
-    for (std::size_t i = 0; i < 4; ++i) {
-      const Point2 q = f.footprint[(i + 1) % 4];
-      base.vertices.push_back(make_point(q.x, q.y, f.base));
-    }
-  } else if (auto poly = intersect_half_planes(set, box, base.plane, lines, name)) {
-    base = std::move(*poly);
-  } else {
-    return std::nullopt;
-  }
-  return make_prism(set, base, c0, c1);
-}
-
 // The wall's side planes oriented so that the wall's centre line is on their negative side.
 // The corners' order does not say which when a mitre overshoots the other end (a "bow-tie"
 // wall; exact_hole_footprint spans the same lines). @return nullopt for a wall thinner than
@@ -228,58 +204,129 @@ std::optional<std::array<PlaneRef, 2>> inward_sides(const PlaneSet& set, const W
   return std::array<PlaneRef, 2>{*right, *left};
 }
 
-// The hole of a shaped opening: each convex part of its outline through the wall.
-void add_shaped_hole(PlaneSet& set, const BoxPlanes& box, const WallFrame& f, const Hole& h,
-                     const std::array<PlaneRef, 4>& sides, const std::string& name, std::vector<Primitive>& out) {
-  const auto walls_sides = inward_sides(set, f, sides);
-  if (!walls_sides) return;
-  const auto [c0, c1] = *walls_sides;
+// The planes of an opening's hole: its outline (one per convex part of a shaped opening) and
+// the wall's sides it lies between (none: no hole).
+struct HolePlanes {
+  const Hole* hole = nullptr;
+  std::vector<std::vector<PlaneRef>> outlines;
+  bool at_end = false;  // a rectangle reaching an end's line: not a prism (add_hole)
+  std::optional<std::array<PlaneRef, 2>> sides;
+};
+
+// The planes of one wall's primitives. They are made for every wall in plan order first, so
+// plane ids are what one pass in that order gives, and then each wall's primitives are built
+// from its planes alone, walls in parallel (predicates only read the set).
+struct WallPlanes {
+  std::array<PlaneRef, 4> sides{};
+  std::vector<PlaneRef> lines;   // the footprint's sides that exist
+  std::vector<PlaneRef> sloped;  // a sloped wall's sides, base and top
+  std::optional<std::array<PlaneRef, 2>> base_top;  // a flat-topped wall with height: c0, c1
+  std::vector<HolePlanes> holes;
+};
+
+// A rectangular opening's hole planes: its outline in the wall's plane, counter-clockwise
+// seen along +normal from the right side plane (sides[0]) to the left one. A notch at a capped
+// end takes the end's own plane (exact_hole_footprint does the same).
+HolePlanes rectangle_hole_planes(PlaneSet& set, const WallFrame& f, const Hole& h,
+                                 const std::array<PlaneRef, 4>& sides) {
+  HolePlanes p{&h, {}, false, std::nullopt};
+  if (!(h.u0 < h.u1) || !(h.z0 < h.z1)) return p;
+  const bool from_cap = hole_reaches_end_line(f, h, 0), to_cap = hole_reaches_end_line(f, h, 1);
+  p.outlines.push_back({plane_at_z(set, h.z0, -1), from_cap ? sides[3] : plane_at_u(set, f, h.u0, -1),
+                        plane_at_z(set, h.z1, 1), to_cap ? sides[1] : plane_at_u(set, f, h.u1, 1)});
+  p.at_end = from_cap || to_cap;
+  p.sides = inward_sides(set, f, sides);
+  return p;
+}
+
+// A shaped opening's hole planes: each convex part of its outline, through the wall.
+HolePlanes shaped_hole_planes(PlaneSet& set, const WallFrame& f, const Hole& h, const std::array<PlaneRef, 4>& sides) {
+  HolePlanes p{&h, {}, false, inward_sides(set, f, sides)};
+  if (!p.sides) return p;
   for (const Polygon& part : convex_parts(h.shape)) {
-    std::vector<PlaneRef> outline;
+    std::vector<PlaneRef>& outline = p.outlines.emplace_back();
     for (std::size_t i = 0; i < part.size(); ++i)
       if (part[i] != part[(i + 1) % part.size()])
         outline.push_back(shape_edge_plane(set, f, h, part[i], part[(i + 1) % part.size()]));
-    auto poly = intersect_half_planes(set, box, {c0.id, -c0.sign}, outline, name);
-    if (!poly) continue;
-    Primitive p = make_prism(set, *poly, c0, c1);
-    p.kind = Primitive::Kind::hole;
-    p.opening = h.opening;
-    out.push_back(std::move(p));
+  }
+  return p;
+}
+
+WallPlanes wall_planes(PlaneSet& set, const WallFrame& f) {
+  WallPlanes p;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Point2 a = f.footprint[i], b = f.footprint[(i + 1) % 4];
+    if (a == b) continue;
+    p.sides[i] = plane_through(set, a, b);
+    p.lines.push_back(p.sides[i]);
+  }
+  if (is_sloped(f)) {
+    p.sloped = p.lines;
+    p.sloped.push_back(plane_at_z(set, f.base, -1));
+    p.sloped.push_back(sloped_top_plane(set, f));
+  } else if (f.base < f.top) {
+    const PlaneRef c0 = plane_at_z(set, f.base, -1);
+    p.base_top = {c0, plane_at_z(set, f.top, 1)};
+  }
+  if (p.lines.size() < 4) return p;  // holds no hole (make_wall_frames refuses such a hole)
+  for (const Hole& h : f.holes)
+    p.holes.push_back(h.shape.empty() ? rectangle_hole_planes(set, f, h, p.sides) : shaped_hole_planes(set, f, h, p.sides));
+  return p;
+}
+
+// The wall piece: its footprint between base and top.
+std::optional<Primitive> make_wall_piece(const PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
+                                         const WallPlanes& planes, const std::string& name) {
+  if (!planes.sloped.empty()) return make_convex(set, box, planes.sloped);
+  if (!planes.base_top) return std::nullopt;
+  const auto [c0, c1] = *planes.base_top;
+  PlanePolygon base{{c0.id, -c0.sign}, {}, {}};
+  if (is_strictly_convex(set, f.footprint, planes.lines)) {
+    base.lines.assign(planes.sides.begin(), planes.sides.end());
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Point2 q = f.footprint[(i + 1) % 4];
+      base.vertices.push_back(make_point(q.x, q.y, f.base));
+    }
+  } else if (auto poly = intersect_half_planes(set, box, base.plane, planes.lines, name)) {
+    base = std::move(*poly);
+  } else {
+    return std::nullopt;
+  }
+  return make_prism(set, base, c0, c1);
+}
+
+// The hole's primitives (a shaped opening's: one per convex part) appended to `out`.
+void add_hole(const PlaneSet& set, const BoxPlanes& box, const HolePlanes& planes, const std::string& name,
+              std::vector<Primitive>& out) {
+  if (!planes.sides) return;
+  const auto [c0, c1] = *planes.sides;
+  for (const std::vector<PlaneRef>& outline : planes.outlines) {
+    std::optional<Primitive> made;
+    if (planes.at_end) {
+      // An end's plane is not parallel to the jambs (its corners are rounded): over the
+      // thickness it may cross the other jamb, so the hole is no prism between the sides.
+      std::vector<PlaneRef> all = outline;
+      all.push_back(c0), all.push_back(c1);
+      made = make_convex(set, box, all);
+    } else if (auto poly = intersect_half_planes(set, box, {c0.id, -c0.sign}, outline, name)) {
+      made = make_prism(set, *poly, c0, c1);
+    }
+    if (!made) continue;
+    made->kind = Primitive::Kind::hole;
+    made->opening = planes.hole->opening;
+    out.push_back(std::move(*made));
   }
 }
 
-// The hole of an opening: its outline in the wall's plane between the two side planes.
-std::optional<Primitive> make_hole_piece(PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
-                                         const Hole& h, const std::array<PlaneRef, 4>& sides,
-                                         const std::string& name) {
-  if (!(h.u0 < h.u1) || !(h.z0 < h.z1)) return std::nullopt;
-  // A notch at a capped end takes the end's own plane (exact_hole_footprint does the same).
-  const bool from_cap = hole_reaches_end_line(f, h, 0), to_cap = hole_reaches_end_line(f, h, 1);
-  // Counter-clockwise seen along +normal, from the right side plane (sides[0]) to the left one.
-  const std::vector<PlaneRef> outline{plane_at_z(set, h.z0, -1),
-                                      from_cap ? sides[3] : plane_at_u(set, f, h.u0, -1),
-                                      plane_at_z(set, h.z1, 1),
-                                      to_cap ? sides[1] : plane_at_u(set, f, h.u1, 1)};
-  // The hole lies between the wall's two side lines, on the side of each where the wall's
-  // centre line is.
-  const auto walls_sides = inward_sides(set, f, sides);
-  if (!walls_sides) return std::nullopt;
-  const auto [c0, c1] = *walls_sides;
-  std::optional<Primitive> made;
-  if (from_cap || to_cap) {
-    // An end's plane is not parallel to the jambs (its corners are rounded): over the
-    // thickness it may cross the other jamb, so the hole is no prism between the sides.
-    std::vector<PlaneRef> planes = outline;
-    planes.push_back(c0), planes.push_back(c1);
-    made = make_convex(set, box, planes);
-  } else if (auto poly = intersect_half_planes(set, box, {c0.id, -c0.sign}, outline, name)) {
-    made = make_prism(set, *poly, c0, c1);
-  }
-  if (!made) return std::nullopt;
-  Primitive& p = *made;
-  p.kind = Primitive::Kind::hole;
-  p.opening = h.opening;
-  return made;
+// The wall's piece, then its holes' primitives.
+std::vector<Primitive> wall_primitives(const PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
+                                       const WallPlanes& planes, std::size_t frame) {
+  const std::string name = fmt::format("the footprint of wall #{}", f.wall);
+  std::vector<Primitive> out;
+  if (auto piece = make_wall_piece(set, box, f, planes, name)) out.push_back(std::move(*piece));
+  for (const HolePlanes& hole : planes.holes) add_hole(set, box, hole, name, out);
+  for (Primitive& p : out) p.frame = frame;
+  return out;
 }
 
 }  // namespace
@@ -394,33 +441,24 @@ Primitive make_slab_piece(PlaneSet& set, const SlabFrame& s, const Polygon& piec
 std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
                                        const std::vector<const WallFrame*>& walls,
                                        const std::vector<const SlabFrame*>& slabs) {
+  std::vector<WallPlanes> planes;
+  planes.reserve(walls.size());
+  for (const WallFrame* f : walls) planes.push_back(wall_planes(set, *f));
+  // Each wall's primitives in its own slot, and the first failure in wall order rethrown, so
+  // neither depends on the threads.
+  std::vector<std::vector<Primitive>> of_wall(walls.size());
+  std::vector<std::exception_ptr> failure(walls.size());
+  tbb::parallel_for(std::size_t{0}, walls.size(), [&](std::size_t w) {
+    try {
+      of_wall[w] = wall_primitives(set, box, *walls[w], planes[w], w);
+    } catch (...) {
+      failure[w] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& e : failure)
+    if (e) std::rethrow_exception(e);
   std::vector<Primitive> out;
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    const WallFrame& f = *walls[w];
-    std::array<PlaneRef, 4> sides{};
-    std::vector<PlaneRef> lines;
-    for (std::size_t i = 0; i < 4; ++i) {
-      const Point2 p = f.footprint[i], q = f.footprint[(i + 1) % 4];
-      if (p == q) continue;
-      sides[i] = plane_through(set, p, q);
-      lines.push_back(sides[i]);
-    }
-    const std::string name = fmt::format("the footprint of wall #{}", f.wall);
-    if (auto piece = make_wall_piece(set, box, f, sides, lines, name)) {
-      piece->frame = w;
-      out.push_back(std::move(*piece));
-    }
-    if (lines.size() < 4) continue;  // holds no hole (make_wall_frames refuses such a hole)
-    for (const Hole& h : f.holes) {
-      const std::size_t first = out.size();
-      if (!h.shape.empty()) {
-        add_shaped_hole(set, box, f, h, sides, name, out);
-      } else if (auto hole = make_hole_piece(set, box, f, h, sides, name)) {
-        out.push_back(std::move(*hole));
-      }
-      for (std::size_t k = first; k < out.size(); ++k) out[k].frame = w;
-    }
-  }
+  for (std::vector<Primitive>& prims : of_wall) std::move(prims.begin(), prims.end(), std::back_inserter(out));
   for (std::size_t s = 0; s < slabs.size(); ++s)
     for (const Polygon& piece : slabs[s]->pieces) {
       out.push_back(make_slab_piece(set, *slabs[s], piece));

@@ -81,7 +81,10 @@ struct Primitive {
 /// each slab's pieces.
 /// @param[in,out] set  receives every plane used.
 /// @return primitives; a wall or hole with no volume in doubles (a footprint of no area, a
-///         height that rounds to 0) has none. Cost O(walls + holes + slab corners) predicates.
+///         height that rounds to 0) has none. Cost O(walls + holes + slab corners) predicates;
+///         the planes are made in order, then the walls' primitives in parallel (the same
+///         primitives and plane ids at any thread count). A wall whose footprint is unbounded
+///         throws; where several do, the first in order.
 [[nodiscard]] std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
                                                      const std::vector<const WallFrame*>& walls,
                                                      const std::vector<const SlabFrame*>& slabs);

@@ -473,14 +473,15 @@ void use_plane_groups(std::vector<Primitive>& primitives, const std::vector<Plan
     if (!p.is_explicit())
       for (PlaneId& id : p.planes) id = groups[id].id;
   };
-  for (Primitive& p : primitives) {
+  tbb::parallel_for(std::size_t{0}, primitives.size(), [&](std::size_t k) {
+    Primitive& p = primitives[k];
     for (XPoint& v : p.vertices) remap_point(v);
     for (PlanePolygon& f : p.faces) {
       remap_ref(f.plane);
       for (PlaneRef& l : f.lines) remap_ref(l);
       for (XPoint& v : f.vertices) remap_point(v);
     }
-  }
+  });
 }
 
 }  // namespace roomcad::detail

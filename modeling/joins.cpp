@@ -95,7 +95,8 @@ PairTest test_pair(const Plan& plan, std::size_t a, std::size_t b, double tol) {
 
 /// Records what the pair's ends see in `ends`: the count of centre lines near each end, and
 /// the last of them with its matched ends.
-void record_ends(const PairTest& test, std::size_t a, std::size_t b, std::vector<std::array<EndNeighbours, 2>>& ends) {
+void record_ends(const PairTest& test, std::size_t a, std::size_t b,
+                 std::vector<std::array<EndNeighbours, 2>>& ends) {
   const std::size_t walls[2] = {a, b};
   for (std::size_t k = 0; k < 2; ++k)
     for (std::size_t e = 0; e < 2; ++e) {

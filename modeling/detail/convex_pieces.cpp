@@ -240,7 +240,8 @@ HolePlanes rectangle_hole_planes(PlaneSet& set, const WallFrame& f, const Hole& 
 }
 
 // A shaped opening's hole planes: each convex part of its outline, through the wall.
-HolePlanes shaped_hole_planes(PlaneSet& set, const WallFrame& f, const Hole& h, const std::array<PlaneRef, 4>& sides) {
+HolePlanes shaped_hole_planes(PlaneSet& set, const WallFrame& f, const Hole& h,
+                              const std::array<PlaneRef, 4>& sides) {
   HolePlanes p{&h, {}, false, inward_sides(set, f, sides)};
   if (!p.sides) return p;
   for (const Polygon& part : convex_parts(h.shape)) {
@@ -270,7 +271,8 @@ WallPlanes wall_planes(PlaneSet& set, const WallFrame& f) {
   }
   if (p.lines.size() < 4) return p;  // holds no hole (make_wall_frames refuses such a hole)
   for (const Hole& h : f.holes)
-    p.holes.push_back(h.shape.empty() ? rectangle_hole_planes(set, f, h, p.sides) : shaped_hole_planes(set, f, h, p.sides));
+    p.holes.push_back(h.shape.empty() ? rectangle_hole_planes(set, f, h, p.sides)
+                                      : shaped_hole_planes(set, f, h, p.sides));
   return p;
 }
 

@@ -363,7 +363,8 @@ using GroupKey = std::tuple<int, long, std::string>;  // side, owner, cut cells
 class FaceGroups {
  public:
   void add(int side, long owner, const std::string& cells, const DirectedPiece& piece) {
-    const auto name = std::size_t(std::find(cell_names_.begin(), cell_names_.end(), cells) - cell_names_.begin());
+    const auto name =
+        std::size_t(std::find(cell_names_.begin(), cell_names_.end(), cells) - cell_names_.begin());
     if (name == cell_names_.size()) cell_names_.push_back(cells);
     const std::array<std::uint64_t, 2> key{(std::uint64_t(owner) << 1) | (side > 0 ? 1u : 0u), name};
     const auto [group, added] = index_.try_emplace(key, std::uint32_t(keys_.size()));

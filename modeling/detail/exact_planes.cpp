@@ -224,6 +224,26 @@ XPoint make_point(const PlaneSet& set, PlaneId a, PlaneId b, PlaneId c) {
 
 namespace {
 
+// The exact tails of the predicates below: out of line, so that their filters, which decide
+// nearly every call, keep a small frame (Mpzf temporaries need a large one).
+[[gnu::noinline]] int exact_side(const std::array<Exact, 4>& q, const XHom& h) {
+  return exact_sign(q[0] * h.x + q[1] * h.y + q[2] * h.z + q[3] * h.w) * exact_sign(h.w);
+}
+
+const Exact& coordinate(const XHom& h, std::size_t k) { return k == 0 ? h.x : k == 1 ? h.y : h.z; }
+
+[[gnu::noinline]] bool exact_same(const XHom& hp, const XHom& hq) {
+  return hp.x * hq.w == hq.x * hp.w && hp.y * hq.w == hq.y * hp.w && hp.z * hq.w == hq.z * hp.w;
+}
+
+[[gnu::noinline]] int exact_compare(const XHom& hp, const XHom& hq, std::size_t k) {
+  return exact_sign(coordinate(hp, k) * hq.w - coordinate(hq, k) * hp.w) * exact_sign(hp.w) * exact_sign(hq.w);
+}
+
+[[gnu::noinline]] int exact_compare(const XHom& h, double value, std::size_t k) {
+  return exact_sign(coordinate(h, k) - Exact(value) * h.w) * exact_sign(h.w);
+}
+
 // The predicates on points, given how to get a point's exact homogeneous coordinates (computed
 // only when the filters cannot decide).
 template <class HomOf>
@@ -245,9 +265,7 @@ int side_of(const PlaneSet& set, PlaneRef plane, const XPoint& p, HomOf&& hom_of
     const int sw = interval_sign(h[3]);
     if (sq != kUnknown && sw != kUnknown) return sq * sw * plane.sign;
   }
-  const auto& q = set.exact(plane.id);
-  const XHom& h = hom_of();
-  return exact_sign(q[0] * h.x + q[1] * h.y + q[2] * h.z + q[3] * h.w) * exact_sign(h.w) * plane.sign;
+  return exact_side(set.exact(plane.id), hom_of()) * plane.sign;
 }
 
 template <class HomOf>
@@ -268,12 +286,8 @@ bool same_point(const XPoint& p, const XPoint& q, HomOf&& hom_of) {
     std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
     if (a == b) return true;
   }
-  const XHom& hp = hom_of(0);
-  const XHom& hq = hom_of(1);
-  return hp.x * hq.w == hq.x * hp.w && hp.y * hq.w == hq.y * hp.w && hp.z * hq.w == hq.z * hp.w;
+  return exact_same(hom_of(0), hom_of(1));
 }
-
-const Exact& coordinate(const XHom& h, std::size_t k) { return k == 0 ? h.x : k == 1 ? h.y : h.z; }
 
 template <class HomOf>
 int compare_points(const XPoint& p, const XPoint& q, int axis, HomOf&& hom_of) {
@@ -281,9 +295,7 @@ int compare_points(const XPoint& p, const XPoint& q, int axis, HomOf&& hom_of) {
   if (p.approx[k].sup() < q.approx[k].inf()) return -1;
   if (p.approx[k].inf() > q.approx[k].sup()) return 1;
   if (p.approx[k].inf() == p.approx[k].sup() && q.approx[k].inf() == q.approx[k].sup()) return 0;
-  const XHom& hp = hom_of(0);
-  const XHom& hq = hom_of(1);
-  return exact_sign(coordinate(hp, k) * hq.w - coordinate(hq, k) * hp.w) * exact_sign(hp.w) * exact_sign(hq.w);
+  return exact_compare(hom_of(0), hom_of(1), k);
 }
 
 template <class HomOf>
@@ -292,8 +304,7 @@ int compare_value(const XPoint& p, double value, int axis, HomOf&& hom_of) {
   if (p.approx[k].sup() < value) return -1;
   if (p.approx[k].inf() > value) return 1;
   if (p.approx[k].inf() == p.approx[k].sup()) return 0;
-  const XHom& h = hom_of();
-  return exact_sign(coordinate(h, k) - Exact(value) * h.w) * exact_sign(h.w);
+  return exact_compare(hom_of(), value, k);
 }
 
 // The double nearest to hi + lo (ties to even) when lo is within half an ulp of hi, as
@@ -350,29 +361,26 @@ XHom homogeneous(const PlaneSet& set, const XPoint& p) {
   return {std::move(h[0]), std::move(h[1]), std::move(h[2]), std::move(h[3])};
 }
 
+// The free predicates make a point's exact coordinates, as temporaries, only where a filter
+// fails (an XHom is four Mpzf to construct and destroy).
 int side(const PlaneSet& set, PlaneRef plane, const XPoint& p) {
-  XHom h;
-  return side_of(set, plane, p, [&]() -> const XHom& { return h = homogeneous(set, p); });
+  return side_of(set, plane, p, [&] { return homogeneous(set, p); });
 }
 
 bool is_same_point(const PlaneSet& set, const XPoint& p, const XPoint& q) {
-  XHom h[2];
-  return same_point(p, q, [&](int i) -> const XHom& { return h[i] = homogeneous(set, i == 0 ? p : q); });
+  return same_point(p, q, [&](int i) { return homogeneous(set, i == 0 ? p : q); });
 }
 
 int compare_coordinate(const PlaneSet& set, const XPoint& p, const XPoint& q, int axis) {
-  XHom h[2];
-  return compare_points(p, q, axis, [&](int i) -> const XHom& { return h[i] = homogeneous(set, i == 0 ? p : q); });
+  return compare_points(p, q, axis, [&](int i) { return homogeneous(set, i == 0 ? p : q); });
 }
 
 int compare_coordinate(const PlaneSet& set, const XPoint& p, double value, int axis) {
-  XHom h;
-  return compare_value(p, value, axis, [&]() -> const XHom& { return h = homogeneous(set, p); });
+  return compare_value(p, value, axis, [&] { return homogeneous(set, p); });
 }
 
 std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p) {
-  XHom h;
-  return round_of(set, p, [&]() -> const XHom& { return h = homogeneous(set, p); });
+  return round_of(set, p, [&] { return homogeneous(set, p); });
 }
 
 std::size_t PointCache::add(const XPoint& p) {

@@ -111,8 +111,8 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
   sort_soup(exact, polygons);
   const IndexedSoup r = round_soup(exact, std::move(polygons));
   std::pair<std::size_t, std::size_t> bad;
-  const auto copies = split_fans(r.polygons, r.points.size(), bad);
-  if (copies.empty() && !r.polygons.empty())
+  const FanSplit fans = split_fans(r.polygons, r.points.size(), bad);
+  if (fans.vertex.empty() && !r.polygons.empty())
     throw PreconditionError(fmt::format(
         "build_model: the solid of walls {} is not 2-manifold: more than two of its faces meet at "
         "the edge from ({}, {}, {}) to ({}, {}, {}) (walls touching along an edge)", wall_list(walls),
@@ -120,10 +120,9 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
         r.points[bad.second][0], r.points[bad.second][1], r.points[bad.second][2]), Code::not_buildable);
   FaceSoup soup;
   soup.reserve(r.polygons.size());
-  for (std::size_t k = 0; k < r.polygons.size(); ++k) {
+  for (std::size_t k = 0, first_corner = 0; k < r.polygons.size(); first_corner += r.polygons[k++].size()) {
     SoupFace f;
-    for (std::size_t i : r.polygons[k]) f.points.push_back(r.points[i]);
-    f.copies = copies[k];
+    set_corners(f, r.polygons[k], r.points, fans, first_corner);
     const FaceLabel label = classify_face(f.points, walls, first_opening_object);
     f.kind = label.kind;
     f.object = label.object;

@@ -18,6 +18,7 @@ namespace roomcad::detail {
 namespace {
 
 using PointKey = std::array<std::uint64_t, 4>;  // a point's coordinates' bits, and its copy
+constexpr std::uint32_t kNoVertex = UINT32_MAX;
 
 // Adding 0.0 turns -0.0 into +0.0, so that the two zeros share a vertex.
 PointKey key_of(const OpenMesh::Vec3d& p, std::uint32_t copy) {
@@ -67,9 +68,8 @@ std::optional<std::string> find_add_face_problem(const SolidMesh& mesh,
 
 }  // namespace
 
-std::vector<std::vector<std::uint32_t>> split_fans(const std::vector<std::vector<std::size_t>>& polygons,
-                                                   std::size_t points,
-                                                   std::pair<std::size_t, std::size_t>& bad_edge) {
+FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::size_t points,
+                    std::pair<std::size_t, std::size_t>& bad_edge) {
   Corners c;
   std::size_t corners = 0;
   for (const auto& poly : polygons) corners += poly.size();
@@ -92,18 +92,31 @@ std::vector<std::vector<std::uint32_t>> split_fans(const std::vector<std::vector
     const std::uint32_t across = corner_after.find(std::uint64_t(c.next[id]) * points + c.vertex[id]);
     if (across != FlatIndex<std::uint64_t>::kNone) c.parent[c.find(id)] = c.find(across);
   }
-  std::vector<std::uint32_t> copy_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0);
-  std::vector<std::vector<std::uint32_t>> copies(polygons.size());
-  std::size_t id = 0;
-  for (std::size_t p = 0; p < polygons.size(); ++p) {
-    copies[p].reserve(polygons[p].size());
-    for (std::size_t k = 0; k < polygons[p].size(); ++k, ++id) {
-      std::uint32_t& copy = copy_of_root[c.find(id)];
-      if (copy == UINT32_MAX) copy = copies_used[c.vertex[id]]++;
-      copies[p].push_back(copy);
+  // Each fan (a root) is one vertex: the next copy of its point.
+  std::vector<std::uint32_t> vertex_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0), copy_of_vertex;
+  FanSplit out;
+  out.copy.resize(c.vertex.size()), out.vertex.resize(c.vertex.size());
+  for (std::size_t id = 0; id < c.vertex.size(); ++id) {
+    std::uint32_t& vertex = vertex_of_root[c.find(id)];
+    if (vertex == UINT32_MAX) {
+      vertex = std::uint32_t(copy_of_vertex.size());
+      copy_of_vertex.push_back(copies_used[c.vertex[id]]++);
     }
+    out.copy[id] = copy_of_vertex[vertex];
+    out.vertex[id] = vertex;
   }
-  return copies;
+  return out;
+}
+
+void set_corners(SoupFace& face, std::span<const std::size_t> polygon, const std::vector<OpenMesh::Vec3d>& points,
+                 const FanSplit& fans, std::size_t first_corner) {
+  face.points.reserve(polygon.size());
+  for (const std::size_t i : polygon) face.points.push_back(points[i]);
+  const auto corners = std::ptrdiff_t(first_corner), end = corners + std::ptrdiff_t(polygon.size());
+  // Copy 0 everywhere (nearly every face) is said by no copies at all.
+  if (std::any_of(fans.copy.begin() + corners, fans.copy.begin() + end, [](std::uint32_t c) { return c != 0; }))
+    face.copies.assign(fans.copy.begin() + corners, fans.copy.begin() + end);
+  face.vertices.assign(fans.vertex.begin() + corners, fans.vertex.begin() + end);
 }
 
 OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points) {
@@ -137,15 +150,27 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
   const ObjectNamer name_face = [&](SolidMesh::FaceHandle fh) {
     return object_name(objects, mesh.property(props.object, fh));
   };
+  std::vector<std::uint32_t> vertex_of_number;  // the soup's vertex numbers (SoupFace::vertices) found so far
   for (const FaceSoup& soup : soups) {
     if (!share) vertices = FlatIndex<PointKey>(corners_of(soup) / 3 + 1);
+    vertex_of_number.clear();
     for (const SoupFace& f : soup) {
       face.clear();
       for (std::size_t k = 0; k < f.points.size(); ++k) {
+        std::uint32_t* known = nullptr;
+        if (!f.vertices.empty()) {
+          if (f.vertices[k] >= vertex_of_number.size()) vertex_of_number.resize(f.vertices[k] + 1, kNoVertex);
+          known = &vertex_of_number[f.vertices[k]];
+          if (*known != kNoVertex) {
+            face.push_back(SolidMesh::VertexHandle(int(*known)));
+            continue;
+          }
+        }
         const OpenMesh::Vec3d& p = f.points[k];
         const auto next = std::uint32_t(mesh.n_vertices());
         const auto [vertex, added] = vertices.try_emplace(key_of(p, f.copies.empty() ? 0 : f.copies[k]), next);
         if (added) mesh.add_vertex(p);
+        if (known) *known = vertex;
         face.push_back(SolidMesh::VertexHandle(int(vertex)));
       }
       std::optional<std::string> problem = find_add_face_problem(mesh, face, name_face);

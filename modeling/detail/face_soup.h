@@ -23,6 +23,10 @@ struct SoupFace {
   /// touches itself at a point, the faces around it form separate fans, and each fan gets
   /// its own copy of the vertex so that the mesh stays 2-manifold.
   std::vector<std::uint32_t> copies;
+  /// Optional: per point, its vertex's number within this face's soup (equal numbers are one
+  /// vertex; a point's copies have different ones). Assembly then looks each vertex up by its
+  /// coordinates once, not at every corner. Empty: looked up at every corner.
+  std::vector<std::uint32_t> vertices;
 };
 using FaceSoup = std::vector<SoupFace>;
 
@@ -49,15 +53,25 @@ using FaceSoup = std::vector<SoupFace>;
 ///         edges and the first such edge. O(n) in halfedges.
 void require_closed(const SolidMesh& mesh, const std::vector<std::string>& objects);
 
+/// The vertices of an indexed polygon soup's corners, per corner (polygons in order).
+struct FanSplit {
+  std::vector<std::uint32_t> copy;    ///< which copy of its point the corner uses
+  std::vector<std::uint32_t> vertex;  ///< its vertex: numbered in order of first corner
+};
+
 /// Splits the vertices of an indexed polygon soup into fans: corners around a vertex that
 /// are linked through shared edges use one copy of it, separate fans separate copies.
 /// @param[in] polygons  vertex indices, each polygon counter-clockwise from outside
 /// @param[out] bad_edge on failure, the two vertices of an edge used twice in one direction
 ///                      (shared by more than two faces, or by faces of clashing orientation)
-/// @return per polygon, per corner, the copy to use; empty on failure. O(corners) expected.
-[[nodiscard]] std::vector<std::vector<std::uint32_t>> split_fans(
-    const std::vector<std::vector<std::size_t>>& polygons, std::size_t points,
-    std::pair<std::size_t, std::size_t>& bad_edge);
+/// @return per corner its copy and vertex; empty on failure. O(corners) expected.
+[[nodiscard]] FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::size_t points,
+                                  std::pair<std::size_t, std::size_t>& bad_edge);
+
+/// Gives a face the corners of one polygon of an indexed soup: their points, copies and
+/// vertices (split_fans), its corners starting at `first_corner` there. O(corners).
+void set_corners(SoupFace& face, std::span<const std::size_t> polygon, const std::vector<OpenMesh::Vec3d>& points,
+                 const FanSplit& fans, std::size_t first_corner);
 
 /// @return the Newell normal of a polygon (length = twice its area). O(n).
 [[nodiscard]] OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points);

@@ -313,7 +313,7 @@ FaceSoup emit_faces(const Context& cx, const std::vector<GridFace>& faces) {
   FaceSoup soup;
   soup.reserve(faces.size());
   for (const GridFace& f : faces) {
-    SoupFace out{{}, f.kind, f.object, cx.frame.color, {}};
+    SoupFace out{{}, f.kind, f.object, cx.frame.color, {}, {}};
     const std::size_t n = f.corners.size();
     for (std::size_t k = 0; k < n; ++k) {
       const GridPoint a = f.corners[k], b = f.corners[(k + 1) % n];

@@ -74,7 +74,7 @@ FaceSoup build_floor(const Site& site) {
   for (std::int64_t j = 0; j < ny; ++j)
     for (std::int64_t i = 0; i < nx; ++i)
       soup.push_back({{corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1)},
-                      FaceKind::floor, -1, (i + j) % 2 == 0 ? site.floor_color : dark, {}});
+                      FaceKind::floor, -1, (i + j) % 2 == 0 ? site.floor_color : dark, {}, {}});
   return soup;
 }
 
@@ -87,9 +87,9 @@ std::vector<FaceSoup> build_fixtures(const Plan& plan, std::span<const WallFrame
       FaceSoup& soup = soups.emplace_back();
       if (o.type == OpeningType::window) {
         const double w = std::min(kPaneThickness, f.half) / 2.0;
-        add_box(frame_quad(f, h.u0, h.u1, -w, w), h.z0, h.z1, {{}, FaceKind::window, object, kWindowColor, {}}, soup);
+        add_box(frame_quad(f, h.u0, h.u1, -w, w), h.z0, h.z1, {{}, FaceKind::window, object, kWindowColor, {}, {}}, soup);
       } else {
-        add_box(door_quad(f, h, o), h.z0, h.z1, {{}, FaceKind::door, object, kDoorColor, {}}, soup);
+        add_box(door_quad(f, h, o), h.z0, h.z1, {{}, FaceKind::door, object, kDoorColor, {}, {}}, soup);
       }
     }
   return soups;

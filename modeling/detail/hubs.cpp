@@ -116,8 +116,8 @@ void attach_hub(const Hub& hub, std::vector<WallFrame>& frames) {
 FaceSoup build_hub(const Hub& hub, const std::vector<WallFrame>& frames) {
   const WallFrame& owner = frames[std::min_element(hub.arms.begin(), hub.arms.end())->first];
   const int object = static_cast<int>(owner.wall);
-  SoupFace top{{}, FaceKind::wall_top, object, owner.color, {}};
-  SoupFace bottom{{}, FaceKind::wall_bottom, object, owner.color, {}};
+  SoupFace top{{}, FaceKind::wall_top, object, owner.color, {}, {}};
+  SoupFace bottom{{}, FaceKind::wall_bottom, object, owner.color, {}, {}};
   for (const Point2& c : hub.corners) top.points.emplace_back(c.x, c.y, owner.top);
   for (auto c = hub.corners.rbegin(); c != hub.corners.rend(); ++c) bottom.points.emplace_back(c->x, c->y, owner.base);
   return {top, bottom};

@@ -61,7 +61,7 @@ TEST(Modeling, HairlineWedgeBetweenSquareEndsIsMitredShut) {
 }
 
 detail::SoupFace triangle(OpenMesh::Vec3d a, OpenMesh::Vec3d b, OpenMesh::Vec3d c, int object) {
-  return {{a, b, c}, FaceKind::wall_face, object, {}, {}};
+  return {{a, b, c}, FaceKind::wall_face, object, {}, {}, {}};
 }
 
 std::string assembly_error(const detail::FaceSoup& soup) {
@@ -82,13 +82,13 @@ TEST(Modeling, FaceOnAnEdgeThatHasOneNamesBothWalls) {
 
 TEST(Modeling, FaceRepeatingACornerIsAnError) {
   const OpenMesh::Vec3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  const detail::FaceSoup soup{{{a, b, a, c}, FaceKind::wall_end, 1, {}, {}}};
+  const detail::FaceSoup soup{{{a, b, a, c}, FaceKind::wall_end, 1, {}, {}, {}}};
   EXPECT_NE(assembly_error(soup).find("repeats a corner"), std::string::npos);
 }
 
 TEST(Modeling, FaceOfTwoCornersIsAnError) {
   const detail::FaceSoup soup{{{OpenMesh::Vec3d(0, 0, 0), OpenMesh::Vec3d(1, 0, 0)},
-                               FaceKind::wall_top, 0, {}, {}}};
+                               FaceKind::wall_top, 0, {}, {}, {}}};
   EXPECT_NE(assembly_error(soup).find("2 corners, fewer than 3"), std::string::npos);
 }
 

@@ -24,6 +24,7 @@ struct Context {
   int i, j;  // the two coordinate axes the plane is seen along (dominant_axis dropped)
   const std::vector<Contribution>& contributions;
   const std::vector<Cut>& cuts;
+  const std::vector<std::pair<std::size_t, std::size_t>>& cuts_by_owner;  // (owner, cut), sorted
   PointCache& points;  // every point of the plane, by index
 };
 
@@ -281,8 +282,11 @@ struct Presence {
 std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
   std::string cells;
   if (owner < 0) return cells;
-  for (const Cut& cut : cx.cuts)
-    if (long(cut.owner) == owner) cells.push_back(side_signs(cx, cut.line, p)[std::size_t(s)] > 0 ? '+' : '-');
+  const auto& by_owner = cx.cuts_by_owner;
+  const auto first =
+      std::lower_bound(by_owner.begin(), by_owner.end(), std::pair{std::size_t(owner), std::size_t{0}});
+  for (auto at = first; at != by_owner.end() && at->first == std::size_t(owner); ++at)
+    cells.push_back(side_signs(cx, cx.cuts[at->second].line, p)[std::size_t(s)] > 0 ? '+' : '-');
   return cells;
 }
 
@@ -508,16 +512,21 @@ std::vector<Box3> boxes_of(const std::vector<Contribution>& contributions) {
 // section every solid polygon (solid lies above and below there whatever they say), in a hole
 // section every polygon (holes take both sides away). Where a face lies inside a solid
 // section, only holes make it and own it. Walls drawn over one another give many: a lower
-// storey's wall top inside the section of a wall across it. O(n^2) box tests, plus the side
-// tests of containment where boxes meet; each polygon is tested against the kept sections.
+// storey's wall top inside the section of a wall across it. O(n s) box tests for s sections,
+// plus the side tests of containment where boxes meet; each polygon is tested against the
+// kept sections.
 std::vector<Contribution> without_covered(const PlaneSet& set, std::vector<Contribution> contributions) {
+  std::vector<std::size_t> sections;
+  for (std::size_t s = 0; s < contributions.size(); ++s)
+    if (contributions[s].above && contributions[s].below) sections.push_back(s);
+  if (sections.empty()) return contributions;
   const std::vector<Box3> boxes = boxes_of(contributions);
   std::vector<char> dropped(contributions.size(), 0);
   for (std::size_t p = 0; p < contributions.size(); ++p)
-    for (std::size_t s = 0; s < contributions.size(); ++s) {
+    for (const std::size_t s : sections) {
       const Contribution& section = contributions[s];
-      if (s == p || dropped[s] || !(section.above && section.below) || (section.solid && !contributions[p].solid) ||
-          !boxes_meet(boxes[p], boxes[s]) || !lies_in(set, contributions[p].polygon, section.polygon))
+      if (s == p || dropped[s] || (section.solid && !contributions[p].solid) || !boxes_meet(boxes[p], boxes[s]) ||
+          !lies_in(set, contributions[p].polygon, section.polygon))
         continue;
       dropped[p] = 1;
       break;
@@ -555,6 +564,7 @@ struct PlaneBoolean::State {
   int i, j;  // the view axes: dominant_axis dropped
   std::vector<Contribution> contributions;
   std::vector<Cut> cuts;
+  std::vector<std::pair<std::size_t, std::size_t>> cuts_by_owner;  // (owner, cut index), sorted
   PointCache points;
   std::vector<Edge> edges;
   std::vector<Bounds> polygon_bounds;  // per contribution
@@ -567,7 +577,7 @@ struct PlaneBoolean::State {
       : set(s), plane(p), i((dominant_axis(s, p.id) + 1) % 3), j((i + 1) % 3),
         contributions(without_covered(s, without_duplicates(std::move(c)))), points(s),
         polygon_bounds(bounds_of_polygons()), near(polygon_bounds) {}
-  [[nodiscard]] Context context() { return {set, plane, i, j, contributions, cuts, points}; }
+  [[nodiscard]] Context context() { return {set, plane, i, j, contributions, cuts, cuts_by_owner, points}; }
 
   [[nodiscard]] std::vector<Bounds> bounds_of_polygons() const {
     std::vector<Bounds> out;
@@ -617,7 +627,11 @@ void PlaneBoolean::add_cuts(std::span<const Cut> cuts) {
   const IntervalScope intervals;
   State& st = *state_;
   const std::size_t old_edges = st.edges.size();
-  for (const Cut& cut : cuts) st.cuts.push_back(cut);
+  for (const Cut& cut : cuts) {
+    st.cuts_by_owner.emplace_back(cut.owner, st.cuts.size());
+    st.cuts.push_back(cut);
+  }
+  std::sort(st.cuts_by_owner.begin(), st.cuts_by_owner.end());
   const Context cx = st.context();
   for (std::size_t k = st.cuts.size() - cuts.size(); k < st.cuts.size(); ++k)
     st.edges.push_back(make_cut_edge(cx, st.cuts[k], st.contributions.size() + k));

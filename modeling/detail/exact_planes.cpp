@@ -140,14 +140,26 @@ bool do_overlap(const Interval& a, const Interval& b) { return !(a.sup() < b.inf
 
 namespace {
 thread_local bool t_upward = false;  // an IntervalScope rounds upward on this thread
-}  // namespace
 
-UpwardRounding::UpwardRounding() : switched_(!t_upward) {
-  if (switched_) saved_ = CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD);
-}
-UpwardRounding::~UpwardRounding() {
-  if (switched_) CGAL::FPU_set_cw(saved_);
-}
+// Sets the FPU to round upward for the scope, as Interval needs, unless an IntervalScope of
+// this thread already did. Here, not in the header, so that the filters of the predicates
+// below (millions of calls a build) inline it.
+class UpwardRounding {
+ public:
+  UpwardRounding() : switched_(!t_upward) {
+    if (switched_) saved_ = CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD);
+  }
+  ~UpwardRounding() {
+    if (switched_) CGAL::FPU_set_cw(saved_);
+  }
+  UpwardRounding(const UpwardRounding&) = delete;
+  UpwardRounding& operator=(const UpwardRounding&) = delete;
+
+ private:
+  bool switched_;
+  CGAL::FPU_CW_t saved_{};
+};
+}  // namespace
 
 IntervalScope::IntervalScope() : outer_(!t_upward) {
   if (!outer_) return;

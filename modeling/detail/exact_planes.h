@@ -32,23 +32,9 @@
 
 namespace roomcad::detail {
 
-using Interval = CGAL::Interval_nt<false>;  ///< needs upward rounding (UpwardRounding)
+using Interval = CGAL::Interval_nt<false>;  ///< needs upward rounding (IntervalScope)
 using Exact = CGAL::Mpzf;
 using PlaneId = std::uint32_t;
-
-/// Sets the FPU to round upward for the scope, as Interval needs, unless an
-/// IntervalScope of this thread already did.
-class UpwardRounding {
- public:
-  UpwardRounding();
-  ~UpwardRounding();
-  UpwardRounding(const UpwardRounding&) = delete;
-  UpwardRounding& operator=(const UpwardRounding&) = delete;
-
- private:
-  bool switched_;
-  CGAL::FPU_CW_t saved_{};
-};
 
 /// Rounds upward for the whole scope on this thread, so that the predicates below need not
 /// switch the rounding mode each time (a measurable share of their cost in the inner loops).

@@ -121,13 +121,14 @@ void split_pair(const Context& cx, Edge& e, Edge& f) {
 
 // Sweeps the edges' bounds along the first view axis and splits every overlapping pair.
 void split_edges(const Context& cx, std::vector<Edge>& edges) {
-  std::vector<std::size_t> order(edges.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return edges[a].bounds[0] < edges[b].bounds[0] || (edges[a].bounds[0] == edges[b].bounds[0] && a < b);
+  // (low bound, edge), sorted by their values: not through the edges, which are far apart.
+  std::vector<std::pair<double, std::size_t>> order(edges.size());
+  for (std::size_t k = 0; k < edges.size(); ++k) order[k] = {edges[k].bounds[0], k};
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    return a.first < b.first || (a.first == b.first && a.second < b.second);  // NaN bounds as before
   });
   std::vector<std::size_t> active;
-  for (std::size_t idx : order) {
+  for (const auto& [low, idx] : order) {
     Edge& e = edges[idx];
     active.erase(std::remove_if(active.begin(), active.end(),
                                 [&](std::size_t a) { return edges[a].bounds[2] < e.bounds[0]; }),

@@ -40,9 +40,21 @@ std::size_t find_corner(const std::vector<OpenMesh::Vec3d>& poly, const OpenMesh
   return static_cast<std::size_t>(std::find(poly.begin(), poly.end(), p) - poly.begin());
 }
 
+// Whether two faces may be fused: of one kind, colour and plane, and both of the fast path
+// (faces of an indexed soup, from the general or the Nef path, carry their vertex numbers and
+// stay as they are).
 bool is_alike(const SoupFace& a, const SoupFace& b) {
   const OpenMesh::Vec3d na = polygon_normal(a.points).normalized(), nb = polygon_normal(b.points).normalized();
-  return a.kind == b.kind && a.color == b.color && a.copies.empty() && b.copies.empty() && (na | nb) > 1.0 - 1e-12;
+  return a.kind == b.kind && a.color == b.color && a.copies.empty() && b.copies.empty() && a.vertices.empty() &&
+         b.vertices.empty() && (na | nb) > 1.0 - 1e-12;
+}
+
+// Removes corner i of the face, with its copy and vertex number where it has them.
+void erase_corner(SoupFace& f, std::size_t i) {
+  const auto at = static_cast<std::ptrdiff_t>(i);
+  f.points.erase(f.points.begin() + at);
+  if (!f.copies.empty()) f.copies.erase(f.copies.begin() + at);
+  if (!f.vertices.empty()) f.vertices.erase(f.vertices.begin() + at);
 }
 
 // Joins polygons p and q across an edge at `at` that p runs one way and q the other.
@@ -146,7 +158,7 @@ std::optional<OpenMesh::Vec3d> move_ear(SoupFace& f, SoupFace& g, const OpenMesh
   } else {
     return std::nullopt;
   }
-  poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+  erase_corner(f, i);
   return gained;
 }
 
@@ -183,10 +195,7 @@ void drop_if_straight(std::span<FaceSoup> soups, const OpenMesh::Vec3d& p, const
   const std::vector<FaceRef>& around = at.at(p);
   for (const FaceRef r : around)
     if (!is_straight_through(face_of(soups, r).points, find_corner(face_of(soups, r).points, p))) return;
-  for (const FaceRef r : around) {
-    auto& pts = face_of(soups, r).points;
-    pts.erase(pts.begin() + static_cast<std::ptrdiff_t>(find_corner(pts, p)));
-  }
+  for (const FaceRef r : around) erase_corner(face_of(soups, r), find_corner(face_of(soups, r).points, p));
 }
 
 }  // namespace

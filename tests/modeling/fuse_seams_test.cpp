@@ -2,6 +2,7 @@
 // The fast path fuses faces across the seams where two collinear walls meet a stem at a hub.
 #include <gtest/gtest.h>
 
+#include "modeling/detail/fuse_seams.h"
 #include "testing/grid_plan.h"
 #include "model_support.h"
 
@@ -35,6 +36,24 @@ TEST(Modeling, SeamOfWallsOfTwoColoursKeepsItsVertex) {
   const Plan plan = collinear_tee({0xe0, 0x80, 0x20}, {0x80, 0x80, 0x80});
   test::expect_paths_agree(plan, 1, 0.2 * 2.5 * (8 + 2.9) - 0.2 * 1.5 * 1.0);
   EXPECT_TRUE(has_vertex_at(build_model(plan).walls, 4.0, -0.1));
+}
+
+// Faces of the general path (with vertex numbers) are never fused, and a seam point dropped
+// from them takes its vertex number along, so the numbers still match the corners.
+TEST(Modeling, SeamPointLeavesTheVertexNumbersOfGeneralFacesInStep) {
+  using V = OpenMesh::Vec3d;
+  detail::SoupFace below{{V(-1, -1, 0), V(1, -1, 0), V(1, 0, 0), V(0, 0, 0), V(-1, 0, 0)},
+                         FaceKind::wall_top, 0, {}, {}, {0, 1, 2, 3, 4}};
+  detail::SoupFace above{{V(-1, 0, 0), V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(-1, 1, 0)},
+                         FaceKind::wall_top, 0, {}, {}, {4, 3, 2, 5, 6}};
+  std::vector<detail::FaceSoup> soups{{below, above}};
+  const std::vector<V> seam{V(0, 0, 0)};
+  detail::fuse_seams(soups, seam);
+  ASSERT_EQ(soups[0].size(), 2u);  // not fused
+  EXPECT_EQ(soups[0][0].points, (std::vector<V>{V(-1, -1, 0), V(1, -1, 0), V(1, 0, 0), V(-1, 0, 0)}));
+  EXPECT_EQ(soups[0][0].vertices, (std::vector<std::uint32_t>{0, 1, 2, 4}));
+  EXPECT_EQ(soups[0][1].points, (std::vector<V>{V(-1, 0, 0), V(1, 0, 0), V(1, 1, 0), V(-1, 1, 0)}));
+  EXPECT_EQ(soups[0][1].vertices, (std::vector<std::uint32_t>{4, 2, 5, 6}));
 }
 
 // The target: no more triangles than CGAL's Nef polyhedra (7,292 for 10 x 10).

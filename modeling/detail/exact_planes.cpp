@@ -249,7 +249,8 @@ const Exact& coordinate(const XHom& h, std::size_t k) { return k == 0 ? h.x : k 
 }
 
 [[gnu::noinline]] int exact_compare(const XHom& hp, const XHom& hq, std::size_t k) {
-  return exact_sign(coordinate(hp, k) * hq.w - coordinate(hq, k) * hp.w) * exact_sign(hp.w) * exact_sign(hq.w);
+  return exact_sign(coordinate(hp, k) * hq.w - coordinate(hq, k) * hp.w) * exact_sign(hp.w) *
+         exact_sign(hq.w);
 }
 
 [[gnu::noinline]] int exact_compare(const XHom& h, double value, std::size_t k) {

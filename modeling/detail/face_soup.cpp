@@ -93,7 +93,8 @@ FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::
     if (across != FlatIndex<std::uint64_t>::kNone) c.parent[c.find(id)] = c.find(across);
   }
   // Each fan (a root) is one vertex: the next copy of its point.
-  std::vector<std::uint32_t> vertex_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0), copy_of_vertex;
+  std::vector<std::uint32_t> vertex_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0),
+      copy_of_vertex;
   FanSplit out;
   out.copy.resize(c.vertex.size()), out.vertex.resize(c.vertex.size());
   for (std::size_t id = 0; id < c.vertex.size(); ++id) {
@@ -108,13 +109,15 @@ FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::
   return out;
 }
 
-void set_corners(SoupFace& face, std::span<const std::size_t> polygon, const std::vector<OpenMesh::Vec3d>& points,
-                 const FanSplit& fans, std::size_t first_corner) {
+void set_corners(SoupFace& face, std::span<const std::size_t> polygon,
+                 const std::vector<OpenMesh::Vec3d>& points, const FanSplit& fans,
+                 std::size_t first_corner) {
   face.points.reserve(polygon.size());
   for (const std::size_t i : polygon) face.points.push_back(points[i]);
   const auto corners = std::ptrdiff_t(first_corner), end = corners + std::ptrdiff_t(polygon.size());
   // Copy 0 everywhere (nearly every face) is said by no copies at all.
-  if (std::any_of(fans.copy.begin() + corners, fans.copy.begin() + end, [](std::uint32_t c) { return c != 0; }))
+  if (std::any_of(fans.copy.begin() + corners, fans.copy.begin() + end,
+                  [](std::uint32_t c) { return c != 0; }))
     face.copies.assign(fans.copy.begin() + corners, fans.copy.begin() + end);
   face.vertices.assign(fans.vertex.begin() + corners, fans.vertex.begin() + end);
 }
@@ -150,7 +153,8 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
   const ObjectNamer name_face = [&](SolidMesh::FaceHandle fh) {
     return object_name(objects, mesh.property(props.object, fh));
   };
-  std::vector<std::uint32_t> vertex_of_number;  // the soup's vertex numbers (SoupFace::vertices) found so far
+  // The mesh vertex of each of the soup's vertex numbers (SoupFace::vertices) found so far.
+  std::vector<std::uint32_t> vertex_of_number;
   for (const FaceSoup& soup : soups) {
     if (!share) vertices = FlatIndex<PointKey>(corners_of(soup) / 3 + 1);
     vertex_of_number.clear();
@@ -159,7 +163,8 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
       for (std::size_t k = 0; k < f.points.size(); ++k) {
         std::uint32_t* known = nullptr;
         if (!f.vertices.empty()) {
-          if (f.vertices[k] >= vertex_of_number.size()) vertex_of_number.resize(f.vertices[k] + 1, kNoVertex);
+          if (f.vertices[k] >= vertex_of_number.size())
+            vertex_of_number.resize(f.vertices[k] + 1, kNoVertex);
           known = &vertex_of_number[f.vertices[k]];
           if (*known != kNoVertex) {
             face.push_back(SolidMesh::VertexHandle(int(*known)));

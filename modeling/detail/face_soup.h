@@ -65,13 +65,15 @@ struct FanSplit {
 /// @param[out] bad_edge on failure, the two vertices of an edge used twice in one direction
 ///                      (shared by more than two faces, or by faces of clashing orientation)
 /// @return per corner its copy and vertex; empty on failure. O(corners) expected.
-[[nodiscard]] FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::size_t points,
+[[nodiscard]] FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons,
+                                  std::size_t points,
                                   std::pair<std::size_t, std::size_t>& bad_edge);
 
 /// Gives a face the corners of one polygon of an indexed soup: their points, copies and
 /// vertices (split_fans), its corners starting at `first_corner` there. O(corners).
-void set_corners(SoupFace& face, std::span<const std::size_t> polygon, const std::vector<OpenMesh::Vec3d>& points,
-                 const FanSplit& fans, std::size_t first_corner);
+void set_corners(SoupFace& face, std::span<const std::size_t> polygon,
+                 const std::vector<OpenMesh::Vec3d>& points, const FanSplit& fans,
+                 std::size_t first_corner);
 
 /// @return the Newell normal of a polygon (length = twice its area). O(n).
 [[nodiscard]] OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points);

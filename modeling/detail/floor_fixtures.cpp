@@ -87,9 +87,11 @@ std::vector<FaceSoup> build_fixtures(const Plan& plan, std::span<const WallFrame
       FaceSoup& soup = soups.emplace_back();
       if (o.type == OpeningType::window) {
         const double w = std::min(kPaneThickness, f.half) / 2.0;
-        add_box(frame_quad(f, h.u0, h.u1, -w, w), h.z0, h.z1, {{}, FaceKind::window, object, kWindowColor, {}, {}}, soup);
+        add_box(frame_quad(f, h.u0, h.u1, -w, w), h.z0, h.z1,
+                {{}, FaceKind::window, object, kWindowColor, {}, {}}, soup);
       } else {
-        add_box(door_quad(f, h, o), h.z0, h.z1, {{}, FaceKind::door, object, kDoorColor, {}, {}}, soup);
+        add_box(door_quad(f, h, o), h.z0, h.z1,
+                {{}, FaceKind::door, object, kDoorColor, {}, {}}, soup);
       }
     }
   return soups;

@@ -45,8 +45,8 @@ std::size_t find_corner(const std::vector<OpenMesh::Vec3d>& poly, const OpenMesh
 // stay as they are).
 bool is_alike(const SoupFace& a, const SoupFace& b) {
   const OpenMesh::Vec3d na = polygon_normal(a.points).normalized(), nb = polygon_normal(b.points).normalized();
-  return a.kind == b.kind && a.color == b.color && a.copies.empty() && b.copies.empty() && a.vertices.empty() &&
-         b.vertices.empty() && (na | nb) > 1.0 - 1e-12;
+  return a.kind == b.kind && a.color == b.color && a.copies.empty() && b.copies.empty() &&
+         a.vertices.empty() && b.vertices.empty() && (na | nb) > 1.0 - 1e-12;
 }
 
 // Removes corner i of the face, with its copy and vertex number where it has them.
@@ -195,7 +195,8 @@ void drop_if_straight(std::span<FaceSoup> soups, const OpenMesh::Vec3d& p, const
   const std::vector<FaceRef>& around = at.at(p);
   for (const FaceRef r : around)
     if (!is_straight_through(face_of(soups, r).points, find_corner(face_of(soups, r).points, p))) return;
-  for (const FaceRef r : around) erase_corner(face_of(soups, r), find_corner(face_of(soups, r).points, p));
+  for (const FaceRef r : around)
+    erase_corner(face_of(soups, r), find_corner(face_of(soups, r).points, p));
 }
 
 }  // namespace

@@ -263,7 +263,8 @@ FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces,
                             Code::not_buildable);
   }
   std::vector<std::size_t> first_corner(r.polygons.size() + 1, 0);
-  for (std::size_t k = 0; k < r.polygons.size(); ++k) first_corner[k + 1] = first_corner[k] + r.polygons[k].size();
+  for (std::size_t k = 0; k < r.polygons.size(); ++k)
+    first_corner[k + 1] = first_corner[k] + r.polygons[k].size();
   // Each face in its own slot (in parallel: tens of thousands of faces in a tall home).
   FaceSoup out(r.polygons.size());
   tbb::parallel_for(std::size_t{0}, r.polygons.size(), [&](std::size_t k) {

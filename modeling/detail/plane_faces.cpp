@@ -124,8 +124,9 @@ void split_edges(const Context& cx, std::vector<Edge>& edges) {
   // (low bound, edge), sorted by their values: not through the edges, which are far apart.
   std::vector<std::pair<double, std::size_t>> order(edges.size());
   for (std::size_t k = 0; k < edges.size(); ++k) order[k] = {edges[k].bounds[0], k};
+  // The comparison the edges had: NaN bounds fall where they did.
   std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-    return a.first < b.first || (a.first == b.first && a.second < b.second);  // NaN bounds as before
+    return a.first < b.first || (a.first == b.first && a.second < b.second);
   });
   std::vector<std::size_t> active;
   for (const auto& [low, idx] : order) {
@@ -284,8 +285,8 @@ std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
   std::string cells;
   if (owner < 0) return cells;
   const auto& by_owner = cx.cuts_by_owner;
-  const auto first =
-      std::lower_bound(by_owner.begin(), by_owner.end(), std::pair{std::size_t(owner), std::size_t{0}});
+  const auto first = std::lower_bound(by_owner.begin(), by_owner.end(),
+                                      std::pair{std::size_t(owner), std::size_t{0}});
   for (auto at = first; at != by_owner.end() && at->first == std::size_t(owner); ++at)
     cells.push_back(side_signs(cx, cx.cuts[at->second].line, p)[std::size_t(s)] > 0 ? '+' : '-');
   return cells;
@@ -526,7 +527,8 @@ std::vector<Contribution> without_covered(const PlaneSet& set, std::vector<Contr
   for (std::size_t p = 0; p < contributions.size(); ++p)
     for (const std::size_t s : sections) {
       const Contribution& section = contributions[s];
-      if (s == p || dropped[s] || (section.solid && !contributions[p].solid) || !boxes_meet(boxes[p], boxes[s]) ||
+      if (s == p || dropped[s] || (section.solid && !contributions[p].solid) ||
+          !boxes_meet(boxes[p], boxes[s]) ||
           !lies_in(set, contributions[p].polygon, section.polygon))
         continue;
       dropped[p] = 1;
@@ -578,7 +580,9 @@ struct PlaneBoolean::State {
       : set(s), plane(p), i((dominant_axis(s, p.id) + 1) % 3), j((i + 1) % 3),
         contributions(without_covered(s, without_duplicates(std::move(c)))), points(s),
         polygon_bounds(bounds_of_polygons()), near(polygon_bounds) {}
-  [[nodiscard]] Context context() { return {set, plane, i, j, contributions, cuts, cuts_by_owner, points}; }
+  [[nodiscard]] Context context() {
+    return {set, plane, i, j, contributions, cuts, cuts_by_owner, points};
+  }
 
   [[nodiscard]] std::vector<Bounds> bounds_of_polygons() const {
     std::vector<Bounds> out;

@@ -50,7 +50,8 @@ TEST(Modeling, SeamPointLeavesTheVertexNumbersOfGeneralFacesInStep) {
   const std::vector<V> seam{V(0, 0, 0)};
   detail::fuse_seams(soups, seam);
   ASSERT_EQ(soups[0].size(), 2u);  // not fused
-  EXPECT_EQ(soups[0][0].points, (std::vector<V>{V(-1, -1, 0), V(1, -1, 0), V(1, 0, 0), V(-1, 0, 0)}));
+  EXPECT_EQ(soups[0][0].points,
+            (std::vector<V>{V(-1, -1, 0), V(1, -1, 0), V(1, 0, 0), V(-1, 0, 0)}));
   EXPECT_EQ(soups[0][0].vertices, (std::vector<std::uint32_t>{0, 1, 2, 4}));
   EXPECT_EQ(soups[0][1].points, (std::vector<V>{V(-1, 0, 0), V(1, 0, 0), V(1, 1, 0), V(-1, 1, 0)}));
   EXPECT_EQ(soups[0][1].vertices, (std::vector<std::uint32_t>{4, 2, 5, 6}));

@@ -87,8 +87,8 @@ TEST(Modeling, FaceRepeatingACornerIsAnError) {
 }
 
 TEST(Modeling, FaceOfTwoCornersIsAnError) {
-  const detail::FaceSoup soup{{{OpenMesh::Vec3d(0, 0, 0), OpenMesh::Vec3d(1, 0, 0)},
-                               FaceKind::wall_top, 0, {}, {}, {}}};
+  const detail::FaceSoup soup{
+      {{OpenMesh::Vec3d(0, 0, 0), OpenMesh::Vec3d(1, 0, 0)}, FaceKind::wall_top, 0, {}, {}, {}}};
   EXPECT_NE(assembly_error(soup).find("2 corners, fewer than 3"), std::string::npos);
 }
 

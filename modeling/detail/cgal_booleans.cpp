@@ -120,10 +120,9 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
         r.points[bad.second][0], r.points[bad.second][1], r.points[bad.second][2]), Code::not_buildable);
   FaceSoup soup;
   soup.reserve(r.polygons.size());
-  for (std::size_t k = 0, first_corner = 0; k < r.polygons.size();
-       first_corner += r.polygons[k++].size()) {
+  for (std::size_t k = 0; k < r.polygons.size(); ++k) {
     SoupFace f;
-    set_corners(f, r.polygons[k], r.points, fans, first_corner);
+    set_corners(f, r.polygons, k, r.points, fans);
     const FaceLabel label = classify_face(f.points, walls, first_opening_object);
     f.kind = label.kind;
     f.object = label.object;

@@ -71,8 +71,9 @@ std::optional<std::string> find_add_face_problem(const SolidMesh& mesh,
 FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::size_t points,
                     std::pair<std::size_t, std::size_t>& bad_edge) {
   Corners c;
-  std::size_t corners = 0;
-  for (const auto& poly : polygons) corners += poly.size();
+  std::vector<std::size_t> first_corner{0};
+  for (const auto& poly : polygons) first_corner.push_back(first_corner.back() + poly.size());
+  const std::size_t corners = first_corner.back();
   c.vertex.reserve(corners), c.next.reserve(corners), c.parent.reserve(corners);
   FlatIndex<std::uint64_t> corner_after(corners);  // edge a->b: the corner at b
   for (const auto& poly : polygons)
@@ -106,15 +107,16 @@ FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::
     out.copy[id] = copy_of_vertex[vertex];
     out.vertex[id] = vertex;
   }
+  out.first_corner = std::move(first_corner);
   return out;
 }
 
-void set_corners(SoupFace& face, std::span<const std::size_t> polygon,
-                 const std::vector<OpenMesh::Vec3d>& points, const FanSplit& fans,
-                 std::size_t first_corner) {
-  face.points.reserve(polygon.size());
-  for (const std::size_t i : polygon) face.points.push_back(points[i]);
-  const auto corners = std::ptrdiff_t(first_corner), end = corners + std::ptrdiff_t(polygon.size());
+void set_corners(SoupFace& face, const std::vector<std::vector<std::size_t>>& polygons,
+                 std::size_t k, const std::vector<OpenMesh::Vec3d>& points, const FanSplit& fans) {
+  face.points.reserve(polygons[k].size());
+  for (const std::size_t i : polygons[k]) face.points.push_back(points[i]);
+  const auto corners = std::ptrdiff_t(fans.first_corner[k]),
+             end = std::ptrdiff_t(fans.first_corner[k + 1]);
   // Copy 0 everywhere (nearly every face) is said by no copies at all.
   if (std::any_of(fans.copy.begin() + corners, fans.copy.begin() + end,
                   [](std::uint32_t c) { return c != 0; }))

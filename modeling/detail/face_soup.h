@@ -57,6 +57,7 @@ void require_closed(const SolidMesh& mesh, const std::vector<std::string>& objec
 struct FanSplit {
   std::vector<std::uint32_t> copy;    ///< which copy of its point the corner uses
   std::vector<std::uint32_t> vertex;  ///< its vertex: numbered in order of first corner
+  std::vector<std::size_t> first_corner;  ///< per polygon, where its corners start (and the end)
 };
 
 /// Splits the vertices of an indexed polygon soup into fans: corners around a vertex that
@@ -69,11 +70,10 @@ struct FanSplit {
                                   std::size_t points,
                                   std::pair<std::size_t, std::size_t>& bad_edge);
 
-/// Gives a face the corners of one polygon of an indexed soup: their points, copies and
-/// vertices (split_fans), its corners starting at `first_corner` there. O(corners).
-void set_corners(SoupFace& face, std::span<const std::size_t> polygon,
-                 const std::vector<OpenMesh::Vec3d>& points, const FanSplit& fans,
-                 std::size_t first_corner);
+/// Gives a face the corners of polygon k of an indexed soup: their points, copies and
+/// vertices (split_fans' `fans` of that soup). O(corners).
+void set_corners(SoupFace& face, const std::vector<std::vector<std::size_t>>& polygons,
+                 std::size_t k, const std::vector<OpenMesh::Vec3d>& points, const FanSplit& fans);
 
 /// @return the Newell normal of a polygon (length = twice its area). O(n).
 [[nodiscard]] OpenMesh::Vec3d polygon_normal(std::span<const OpenMesh::Vec3d> points);

@@ -262,16 +262,13 @@ FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces,
                                         owners, a[0], a[1], a[2], b[0], b[1], b[2]),
                             Code::not_buildable);
   }
-  std::vector<std::size_t> first_corner(r.polygons.size() + 1, 0);
-  for (std::size_t k = 0; k < r.polygons.size(); ++k)
-    first_corner[k + 1] = first_corner[k] + r.polygons[k].size();
   // Each face in its own slot (in parallel: tens of thousands of faces in a tall home).
   FaceSoup out(r.polygons.size());
   tbb::parallel_for(std::size_t{0}, r.polygons.size(), [&](std::size_t k) {
     const SolidFace& f = *faces[r.tags[k]];
     SoupFace& face = out[k];
     face = label_face(prims[f.owner], set, f.plane, labels);
-    set_corners(face, r.polygons[k], r.points, fans, first_corner[k]);
+    set_corners(face, r.polygons, k, r.points, fans);
   });
   return out;
 }

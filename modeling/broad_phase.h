@@ -20,6 +20,14 @@ struct Box2 {
   std::size_t index = 0;  ///< the caller's object index, reported in the pairs
 };
 
+/// A closed box in space, in metres: a box in plan and a height range (the extent of a wall or
+/// a slab). A wall meets those of the storeys above and below it in plan alone.
+struct SpaceBox {
+  Box2 plan;  ///< its index is the caller's object index
+  double min_z = 0.0;
+  double max_z = 0.0;
+};
+
 using IndexPairs = std::vector<std::pair<std::size_t, std::size_t>>;
 
 /// Finds every pair of boxes that meet (boundaries included: closed boxes).
@@ -33,8 +41,19 @@ using IndexPairs = std::vector<std::pair<std::size_t, std::size_t>>;
 [[nodiscard]] IndexPairs find_meeting_boxes(const std::vector<Box2>& left,
                                             const std::vector<Box2>& right);
 
+/// Finds every pair of boxes that meet in space (boundaries included), as the overloads for
+/// Box2 do in plan. O(n log^3 n + k).
+[[nodiscard]] IndexPairs find_meeting_boxes(const std::vector<SpaceBox>& boxes);
+[[nodiscard]] IndexPairs find_meeting_boxes(const std::vector<SpaceBox>& left,
+                                            const std::vector<SpaceBox>& right);
+
 /// @return the box of segment a-b grown by `margin` on every side (rounded outward, so
 ///         that every point within `margin` of the segment lies inside). Index 0.
 [[nodiscard]] Box2 grown_segment_box(double ax, double ay, double bx, double by, double margin);
+
+/// @return the plan box with the closed height range spanning z0 and z1 (either order),
+///         rounded outward by a step, so that it holds every height between them; the whole
+///         line where either is not finite.
+[[nodiscard]] SpaceBox space_box(const Box2& plan, double z0, double z1);
 
 }  // namespace roomcad

@@ -149,15 +149,17 @@ bool is_mitre_end(const Plan& plan, const std::vector<std::array<EndNeighbours, 
   return !overlap_collinearly(a.from, a.to, b.from, b.to) && is_within_reach(a, e, b, mine.matched_end);
 }
 
-std::vector<Box2> centre_line_boxes(const Plan& plan, double tol) {
-  std::vector<Box2> boxes;
+// Each wall's centre line grown by the tolerance, between its base and top: walls that do not
+// share_heights never meet, and a home's storeys stand on one another in plan.
+std::vector<SpaceBox> centre_line_boxes(const Plan& plan, double tol) {
+  std::vector<SpaceBox> boxes;
   boxes.reserve(plan.walls.size());
   for (std::size_t i = 0; i < plan.walls.size(); ++i) {
     const Wall& w = plan.walls[i];
     if (!is_usable(w)) continue;
     Box2 box = grown_segment_box(w.from.x, w.from.y, w.to.x, w.to.y, tol);
     box.index = i;
-    boxes.push_back(box);
+    boxes.push_back(space_box(box, w.base, w.base + w.height));
   }
   return boxes;
 }

@@ -96,9 +96,9 @@ void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const 
                            : explained.count({j.a, j.b}) > 0;
     if (!plain) general[j.a] = general[j.b] = 1;
   }
-  std::vector<Box2> boxes;
+  std::vector<SpaceBox> boxes;
   boxes.reserve(frames.size());
-  for (const WallFrame& f : frames) boxes.push_back(footprint_box(f));
+  for (const WallFrame& f : frames) boxes.push_back(space_box(footprint_box(f), f.base, f.top_max));
   for (const auto& [a, b] : find_meeting_boxes(boxes)) {
     if (joins.are_joined(a, b)) continue;
     if (frames[a].top_max < frames[b].base || frames[b].top_max < frames[a].base) continue;
@@ -131,10 +131,11 @@ std::vector<char> find_general_components(const std::vector<char>& general, Disj
 // meet its box, heights included (touching counts).
 void link_slabs(const std::vector<WallFrame>& frames, const std::vector<SlabFrame>& slabs, DisjointSets& sets) {
   const std::size_t n = frames.size();
-  std::vector<Box2> walls, boxes;
-  for (const WallFrame& f : frames) walls.push_back(footprint_box(f));
+  std::vector<SpaceBox> walls, boxes;
+  for (const WallFrame& f : frames) walls.push_back(space_box(footprint_box(f), f.base, f.top_max));
   for (std::size_t s = 0; s < slabs.size(); ++s)
-    boxes.push_back({slabs[s].min_x, slabs[s].min_y, slabs[s].max_x, slabs[s].max_y, s});
+    boxes.push_back(space_box({slabs[s].min_x, slabs[s].min_y, slabs[s].max_x, slabs[s].max_y, s},
+                              slabs[s].bottom, slabs[s].top));
   for (const auto& [w, s] : find_meeting_boxes(walls, boxes))
     if (!(frames[w].top_max < slabs[s].bottom || slabs[s].top < frames[w].base)) sets.unite(w, n + s);
   for (const auto& [a, b] : find_meeting_boxes(boxes))

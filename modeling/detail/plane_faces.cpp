@@ -4,10 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <string>
 #include <numeric>
 #include <span>
+#include <string>
 #include <tuple>
+#include <unordered_map>
 
 #include "modeling/detail/bounds_grid.h"
 #include "modeling/flat_index.h"
@@ -369,9 +370,7 @@ using GroupKey = std::tuple<int, long, std::string>;  // side, owner, cut cells
 class FaceGroups {
  public:
   void add(int side, long owner, const std::string& cells, const DirectedPiece& piece) {
-    const auto name =
-        std::size_t(std::find(cell_names_.begin(), cell_names_.end(), cells) - cell_names_.begin());
-    if (name == cell_names_.size()) cell_names_.push_back(cells);
+    const std::size_t name = cell_names_.try_emplace(cells, cell_names_.size()).first->second;
     const std::array<std::uint64_t, 2> key{(std::uint64_t(owner) << 1) | (side > 0 ? 1u : 0u), name};
     const auto [group, added] = index_.try_emplace(key, std::uint32_t(keys_.size()));
     if (added) {
@@ -391,7 +390,9 @@ class FaceGroups {
   [[nodiscard]] std::vector<DirectedPiece>& pieces(std::size_t group) { return pieces_[group]; }
 
  private:
-  std::vector<std::string> cell_names_;  // the distinct cut cells filed, in order of first use
+  // The distinct cut cells filed, numbered in order of first use: a plane cut a hundred times
+  // has about as many cells.
+  std::unordered_map<std::string, std::size_t> cell_names_;
   FlatIndex<std::array<std::uint64_t, 2>> index_;  // (owner and side, cells' name) -> group
   std::vector<GroupKey> keys_;
   std::vector<std::vector<DirectedPiece>> pieces_;

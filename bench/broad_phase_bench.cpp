@@ -49,7 +49,7 @@ void BM_WallPairs(benchmark::State& state, const std::string& name, bool in_spac
   std::vector<SpaceBox> space;
   for (const detail::WallFrame& f : frames) {
     plan.push_back(detail::footprint_box(f));
-    space.push_back(space_box(plan.back(), f.base, f.top_max));
+    space.push_back(detail::footprint_space_box(f));
   }
   std::size_t pairs = 0;
   for (auto _ : state) {

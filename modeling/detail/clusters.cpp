@@ -98,7 +98,7 @@ void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const 
   }
   std::vector<SpaceBox> boxes;
   boxes.reserve(frames.size());
-  for (const WallFrame& f : frames) boxes.push_back(space_box(footprint_box(f), f.base, f.top_max));
+  for (const WallFrame& f : frames) boxes.push_back(footprint_space_box(f));
   for (const auto& [a, b] : find_meeting_boxes(boxes)) {
     if (joins.are_joined(a, b)) continue;
     if (frames[a].top_max < frames[b].base || frames[b].top_max < frames[a].base) continue;
@@ -132,7 +132,7 @@ std::vector<char> find_general_components(const std::vector<char>& general, Disj
 void link_slabs(const std::vector<WallFrame>& frames, const std::vector<SlabFrame>& slabs, DisjointSets& sets) {
   const std::size_t n = frames.size();
   std::vector<SpaceBox> walls, boxes;
-  for (const WallFrame& f : frames) walls.push_back(space_box(footprint_box(f), f.base, f.top_max));
+  for (const WallFrame& f : frames) walls.push_back(footprint_space_box(f));
   for (std::size_t s = 0; s < slabs.size(); ++s)
     boxes.push_back(space_box({slabs[s].min_x, slabs[s].min_y, slabs[s].max_x, slabs[s].max_y, s},
                               slabs[s].bottom, slabs[s].top));

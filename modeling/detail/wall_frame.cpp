@@ -89,6 +89,10 @@ Box2 footprint_box(const WallFrame& f, double margin) {
   return b;
 }
 
+SpaceBox footprint_space_box(const WallFrame& f) {
+  return space_box(footprint_box(f), f.base, f.top_max);
+}
+
 namespace {
 
 Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {

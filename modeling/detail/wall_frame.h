@@ -60,6 +60,10 @@ struct WallFrame {
 /// @return the box of the wall's footprint grown by `margin` metres, tagged with its wall. O(1).
 [[nodiscard]] Box2 footprint_box(const WallFrame& f, double margin = 0.0);
 
+/// @return the box of the wall's footprint between its base and its highest top (space_box),
+///         tagged with its wall. O(1).
+[[nodiscard]] SpaceBox footprint_space_box(const WallFrame& f);
+
 /// @return whether the wall's top is sloped (a plane through its two top ends). O(1).
 [[nodiscard]] inline bool is_sloped(const WallFrame& f) { return f.heights[0] != f.heights[1]; }
 

@@ -8,7 +8,9 @@
 //   for the rest (what `roomcad build` does);
 // - `general`: the general path for every wall;
 // - `nef`: CGAL's Nef polyhedra for every wall (the reference);
-// - `before`: the fast path and Nef for the rest, the automatic build before the general path.
+// - `before`: the fast path and Nef for the rest, the automatic build before the general path;
+// - `boolean`: the automatic build with every plane of the general path through its 2D
+//   boolean, none on the grid of its lines (BuildOptions::grid_planes: before that grid).
 // 2 threads (`--threads N` to change), the solid of the walls and slabs (what `roomcad build
 // --parts walls,slabs` writes). Nef builds neither slabs nor sloped tops and shaped openings
 // (it refuses them by name): `nef` and `before` build the walls alone, and a home with a
@@ -19,7 +21,7 @@
 // Counters per run: walls, fast / general / nef walls (the share of each path), build_ms;
 // for `auto`, analytic_difference: |volume - analytic volume| / analytic volume of the solid as
 // written, and volume_difference: the same against Nef's volume for the walls alone (-1 where
-// Nef refused). --csv writes one row per home: walls, the shares, the four times and both
+// Nef refused). --csv writes one row per home: walls, the shares, the five times and both
 // differences.
 #include <algorithm>
 #include <cmath>
@@ -34,11 +36,10 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
-#include "io/plan_json.h"
-#include "modeling/build_model.h"
+#include "bench/bundled_homes.h"
 #include "core/error.h"
+#include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
-#include "testing/tower_plan.h"
 
 namespace roomcad::bench {
 namespace {
@@ -61,44 +62,38 @@ std::vector<Home>& homes() {
 }
 
 void load_homes(const Options& options) {
-  for (const auto& dir : options.dirs) {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(dir))
-      if (entry.path().extension() == ".json") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    for (const auto& file : files) {
-      Result<Plan> plan = read_plan_file(file);
-      if (!plan) {
-        std::fprintf(stderr, "homes_bench: %s: %s\n", file.c_str(), plan.message().c_str());
-        continue;
-      }
-      homes().push_back({file.stem().string(), std::move(plan).value(), 0.0});
-    }
-  }
-  homes().push_back({"tower", samples::make_tower_plan({}), 0.0});
+  for (NamedPlan& home : read_homes(options.dirs))
+    homes().push_back({std::move(home.name), std::move(home.plan), 0.0});
 }
 
-const char* path_name(BooleanPath path) {
-  switch (path) {
-    case BooleanPath::automatic: return "auto";
-    case BooleanPath::general: return "general";
-    case BooleanPath::nef: return "nef";
-    case BooleanPath::fast_then_nef: return "before";
-  }
-  return "?";
-}
+// A way to build: its name in the benchmarks' names and the CSV's columns, its path, and
+// whether the general path's planes of rectangles go on their grid.
+struct Variant {
+  const char* name;
+  BooleanPath path;
+  bool grid_planes = true;
+};
 
-BuildOptions options_for(BooleanPath path, int threads, bool slabs) {
+// Nef first: the other paths' volumes are compared with it.
+constexpr Variant kVariants[] = {{"nef", BooleanPath::nef},
+                                 {"before", BooleanPath::fast_then_nef},
+                                 {"general", BooleanPath::general},
+                                 {"boolean", BooleanPath::automatic, false},
+                                 {"auto", BooleanPath::automatic}};
+
+BuildOptions options_for(const Variant& variant, int threads, bool slabs) {
   BuildOptions options;
-  options.boolean = path;
+  options.boolean = variant.path;
   options.parts = {true, false, false, slabs};
   options.threads = threads;
+  options.grid_planes = variant.grid_planes;
   return options;
 }
 
-void run_home(benchmark::State& state, std::size_t index, BooleanPath path, int threads) {
+void run_home(benchmark::State& state, std::size_t index, const Variant& variant, int threads) {
   Home& home = homes()[index];
-  const BuildOptions options = options_for(path, threads, !uses_nef(path));
+  const BooleanPath path = variant.path;
+  const BuildOptions options = options_for(variant, threads, !uses_nef(path));
   Model model;
   BuildStats stats;
   double build_ms = 0.0;
@@ -114,12 +109,12 @@ void run_home(benchmark::State& state, std::size_t index, BooleanPath path, int 
   if (state.error_occurred()) return;
   const double volume = check_solid(model.walls).volume;
   if (path == BooleanPath::nef) home.nef_volume = volume;
-  if (path == BooleanPath::automatic) {
+  if (path == BooleanPath::automatic && variant.grid_planes) {
     const double analytic = analytic_wall_volume(home.plan);
     state.counters["analytic_difference"] = std::abs(volume - analytic) / analytic;
     state.counters["volume_difference"] = -1.0;  // Nef refused
     if (home.nef_volume > 0.0) {  // the walls alone, as Nef built them
-      const Model walls_alone = build_model(home.plan, options_for(path, threads, false));
+      const Model walls_alone = build_model(home.plan, options_for(variant, threads, false));
       state.counters["volume_difference"] =
           std::abs(check_solid(walls_alone.walls).volume - home.nef_volume) / home.nef_volume;
     }
@@ -145,7 +140,6 @@ Options parse_options(int& argc, char** argv) {
     else argv[kept++] = argv[i];
   }
   argc = kept;
-  if (o.dirs.empty()) o.dirs.push_back(std::filesystem::path(ROOMCAD_SOURCE_DIR) / "examples" / "sweethome3d");
   return o;
 }
 
@@ -158,18 +152,21 @@ class CsvReporter : public benchmark::ConsoleReporter {
   }
   [[nodiscard]] std::string csv() const {
     std::string out =
-        "home,walls,slabs,fast_pct,general_pct,nef_pct,auto_ms,general_ms,nef_ms,before_ms,analytic_difference,"
-        "volume_difference\n";
+        "home,walls,slabs,fast_pct,general_pct,nef_pct,auto_ms,boolean_ms,general_ms,nef_ms,before_"
+        "ms,"
+        "analytic_difference,volume_difference\n";
     for (const Home& h : homes()) {
       auto get = [&](const char* path, const char* counter) -> double {
         const auto it = rows_.find(fmt::format("{}/{}", path, h.name));
         return it == rows_.end() || !it->second.count(counter) ? NAN : double(it->second.at(counter));
       };
-      out += fmt::format("{},{},{},{:.1f},{:.1f},{:.1f},{:.2f},{:.2f},{:.1f},{:.1f},{:.2e},{:.2e}\n", h.name,
-                         h.plan.walls.size(), h.plan.slabs.size(), get("auto", "fast_pct"), get("auto", "general_pct"),
-                         get("auto", "nef_pct"), get("auto", "build_ms"), get("general", "build_ms"),
-                         get("nef", "build_ms"), get("before", "build_ms"), get("auto", "analytic_difference"),
-                         get("auto", "volume_difference"));
+      out += fmt::format(
+          "{},{},{},{:.1f},{:.1f},{:.1f},{:.2f},{:.2f},{:.2f},{:.1f},{:.1f},{:.2e},{:.2e}\n",
+          h.name, h.plan.walls.size(), h.plan.slabs.size(), get("auto", "fast_pct"),
+          get("auto", "general_pct"), get("auto", "nef_pct"), get("auto", "build_ms"),
+          get("boolean", "build_ms"), get("general", "build_ms"), get("nef", "build_ms"),
+          get("before", "build_ms"), get("auto", "analytic_difference"),
+          get("auto", "volume_difference"));
     }
     return out;
   }
@@ -188,14 +185,13 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   load_homes(options);
-  // Nef first: the other paths' volumes are compared with it.
-  for (const BooleanPath path :
-       {BooleanPath::nef, BooleanPath::fast_then_nef, BooleanPath::general, BooleanPath::automatic})
+  for (const Variant& variant : kVariants)
     for (std::size_t i = 0; i < homes().size(); ++i) {
-      auto* b = benchmark::RegisterBenchmark(fmt::format("{}/{}", path_name(path), homes()[i].name).c_str(),
-                                             run_home, i, path, options.threads);
+      auto* b =
+          benchmark::RegisterBenchmark(fmt::format("{}/{}", variant.name, homes()[i].name).c_str(),
+                                       run_home, i, variant, options.threads);
       b->Unit(benchmark::kMillisecond)->UseRealTime();
-      if (uses_nef(path)) b->Iterations(1);
+      if (uses_nef(variant.path)) b->Iterations(1);
     }
   CsvReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

@@ -84,7 +84,7 @@ section_validate() {
 
 section_homes() {
   # homes_bench: the bundled Sweet Home 3D homes and the generated tower on every path in one
-  # run (its --csv columns: walls, slabs, the share of walls per path, the four times, the
+  # run (its --csv columns: walls, slabs, the share of walls per path, the five times, the
   # volume difference against the analytic volume and, for the walls alone, against Nef).
   build/bench/homes_bench --csv "$out/homes.csv" >/dev/null 2>&1
 }
@@ -231,11 +231,12 @@ seconds=$((SECONDS - start))
   echo "\`--force\` builds them) and a generated 504-wall tower of six storeys on their floors"
   echo "(testing/tower_plan.h), the solid of walls and slabs at 2 threads (\`build/bench/homes_bench\`):"
   echo "the share of walls each path took in the automatic build (fast, general, Nef; an arc wall"
-  echo "counts as its chords), its time (\`auto_ms\`), every wall on the general path and on CGAL Nef,"
-  echo "\`before_ms\` the fast path with Nef for the rest (the automatic build before the general"
-  echo "path); Nef builds the walls alone and refuses sloped tops and shaped openings (nan). The"
-  echo "automatic solid's volume against the analytic one, and its walls' against Nef's (-1:"
-  echo "refused), relative."
+  echo "counts as its chords), its time (\`auto_ms\`), the same with every plane of the general path"
+  echo "through its 2D boolean (\`boolean_ms\`: none on the grid of its lines), every wall on the"
+  echo "general path and on CGAL Nef, \`before_ms\` the fast path with Nef for the rest (the automatic"
+  echo "build before the general path); Nef builds the walls alone and refuses sloped tops and shaped"
+  echo "openings (nan). The automatic solid's volume against the analytic one, and its walls' against"
+  echo "Nef's (-1: refused), relative."
   echo
   csv_to_markdown "$out/homes.csv"
   echo

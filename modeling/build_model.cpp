@@ -31,8 +31,9 @@ struct Frames {
   const std::vector<detail::SlabFrame>& slabs;
 };
 
-FaceSoup build_item(const Plan& plan, const Frames& frames, const detail::Work& work, const WorkItem& item,
-                    BooleanPath path) {
+FaceSoup build_item(const Plan& plan, const Frames& frames, const detail::Work& work,
+                    const WorkItem& item, const BuildOptions& options) {
+  const BooleanPath path = options.boolean;
   const int first_opening = detail::opening_object(plan, 0);
   if (item.kind == WorkItem::Kind::hub) return detail::build_hub(work.hubs[item.hub], work.fast_frames);
   if (item.kind == WorkItem::Kind::fast_wall) {
@@ -51,24 +52,25 @@ FaceSoup build_item(const Plan& plan, const Frames& frames, const detail::Work& 
                               Code::not_buildable);
     return detail::build_cluster_cgal(walls, first_opening);
   }
-  return detail::build_cluster_general(walls, slabs, first_opening, detail::slab_object(plan, 0));
+  return detail::build_cluster_general(walls, slabs, first_opening, detail::slab_object(plan, 0),
+                                       options.grid_planes);
 }
 
 // Builds every item in parallel; results land in item order, so the mesh does not depend on
 // the thread count.
 std::vector<FaceSoup> build_items(const Plan& plan, const Frames& frames, const detail::Work& work,
-                                  BooleanPath path) {
+                                  const BuildOptions& options) {
   std::vector<FaceSoup> soups(work.items.size());
   tbb::parallel_for(std::size_t{0}, work.items.size(), [&](std::size_t i) {
-    soups[i] = build_item(plan, frames, work, work.items[i], path);
+    soups[i] = build_item(plan, frames, work, work.items[i], options);
   });
   return soups;
 }
 
 // Builds the wall items, then fuses the fast path's faces across the seams of its hubs.
 std::vector<FaceSoup> build_walls(const Plan& plan, const Frames& frames, const detail::Work& work,
-                                  BooleanPath path) {
-  std::vector<FaceSoup> soups = build_items(plan, frames, work, path);
+                                  const BuildOptions& options) {
+  std::vector<FaceSoup> soups = build_items(plan, frames, work, options);
   std::vector<detail::Hub> hubs;
   for (const WorkItem& item : work.items)
     if (item.kind == WorkItem::Kind::hub) hubs.push_back(work.hubs[item.hub]);
@@ -121,7 +123,7 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
     detail::Work work = detail::plan_work(frames, joins, options.boolean, slabs);
     keep_parts(work, options.parts);
     count_paths(work.items, options.boolean, local);
-    walls = build_walls(plan, {frames, slabs}, work, options.boolean);
+    walls = build_walls(plan, {frames, slabs}, work, options);
     detail::label_input_objects(buildable, walls);
   }
   const FaceSoup floor = options.parts.floor ? detail::build_floor(plan.site) : FaceSoup{};

@@ -13,6 +13,7 @@
 #include "modeling/detail/classify_face.h"
 #include "modeling/detail/convex_pieces.h"
 #include "modeling/detail/face_stitching.h"
+#include "modeling/detail/grid_faces.h"
 #include "modeling/detail/plane_faces.h"
 
 namespace roomcad::detail {
@@ -119,16 +120,30 @@ std::optional<Contribution> section(const PlaneSet& set, const BoxPlanes& box, c
   return Contribution{std::move(poly), p, prim.kind == Primitive::Kind::solid, true, true};
 }
 
-// The plane's 2D boolean, none where the plane surely has no face.
-std::optional<PlaneBoolean> run_plane(const PlaneSet& set, const BoxPlanes& box,
-                                      const std::vector<Primitive>& prims, const PlaneWork& w) {
+// The plane's faces, where its boolean is kept only while they have holes to cut.
+void take_faces(PlaneWork& w) {
+  w.result = w.boolean->faces();
+  if (w.result.holes.empty()) w.boolean.reset();
+}
+
+// The plane's first pass: nothing where it surely has no face; its faces from its grid where
+// its polygons are rectangles along its axes, nearly all (grid_faces.h), and `grid` allows;
+// else from its 2D boolean.
+void first_pass(const PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
+                PlaneWork& w, bool grid) {
   const IntervalScope intervals;
   std::vector<Contribution> contributions;
   for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
   for (std::size_t p : w.crossing)
     if (auto c = section(set, box, prims[p], p, w.plane)) contributions.push_back(std::move(*c));
-  if (has_no_faces(set, contributions)) return std::nullopt;
-  return PlaneBoolean(set, {w.plane, 1}, std::move(contributions));
+  if (has_no_faces(set, contributions)) return;
+  if (grid)
+    if (auto faces = grid_faces(set, {w.plane, 1}, contributions)) {
+      w.result.faces = std::move(*faces);
+      return;
+    }
+  w.boolean.emplace(set, PlaneRef{w.plane, 1}, std::move(contributions));
+  take_faces(w);
 }
 
 // A segment of a line of the plane through the middle of a hole loop (along a view axis),
@@ -170,17 +185,9 @@ std::optional<Cut> cut_through(PlaneSet& set, const BoxPlanes& box, PlaneId plan
 // Builds every plane's faces; planes whose faces would have holes get cuts, and only the
 // pieces these meet are made again.
 void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
-                std::vector<PlaneWork>& works) {
-  // The plane's faces; its boolean is kept only while they have holes to cut.
-  const auto take_faces = [](PlaneWork& w) {
-    w.result = w.boolean->faces();
-    if (w.result.holes.empty()) w.boolean.reset();
-  };
-  tbb::parallel_for(std::size_t{0}, works.size(), [&](std::size_t k) {
-    PlaneWork& w = works[k];
-    w.boolean = run_plane(set, box, prims, w);
-    if (w.boolean) take_faces(w);
-  });
+                std::vector<PlaneWork>& works, bool grid) {
+  tbb::parallel_for(std::size_t{0}, works.size(),
+                    [&](std::size_t k) { first_pass(set, box, prims, works[k], grid); });
   std::vector<std::size_t> todo;
   for (std::size_t k = 0; k < works.size(); ++k)
     if (!works[k].result.holes.empty()) todo.push_back(k);
@@ -275,8 +282,9 @@ FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces,
 
 }  // namespace
 
-FaceSoup build_cluster_general(std::span<const WallFrame* const> walls, std::span<const SlabFrame* const> slabs,
-                               int first_opening_object, int first_slab_object) {
+FaceSoup build_cluster_general(std::span<const WallFrame* const> walls,
+                               std::span<const SlabFrame* const> slabs, int first_opening_object,
+                               int first_slab_object, bool grid_planes) {
   PlaneSet set;
   const BoxPlanes box = add_box_planes(set, largest_coordinate(walls, slabs));
   std::vector<Primitive> prims =
@@ -284,7 +292,7 @@ FaceSoup build_cluster_general(std::span<const WallFrame* const> walls, std::spa
   if (prims.empty()) return {};
   use_plane_groups(prims, set.find_equal_planes());
   std::vector<PlaneWork> works = plan_planes(set, prims);
-  run_planes(set, box, prims, works);
+  run_planes(set, box, prims, works, grid_planes);
   std::vector<const SolidFace*> faces;
   for (const PlaneWork& w : works)
     for (const SolidFace& f : w.result.faces) faces.push_back(&f);

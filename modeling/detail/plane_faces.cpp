@@ -262,24 +262,6 @@ std::array<int, 2> side_signs(const Context& cx, PlaneRef t, const Piece& p) {
   return aligned > 0 ? std::array<int, 2>{-1, 1} : std::array<int, 2>{1, -1};
 }
 
-// The owners of the faces on one side of a piece (-1 none): faces looking along (+) and
-// against (-) the plane's normal.
-struct Owners {
-  long up = -1, down = -1;
-};
-
-struct Presence {
-  bool solid_above = false, solid_below = false, hole_above = false, hole_below = false;
-  long solid_face_below = -1, solid_face_above = -1, hole_face_above = -1, hole_face_below = -1;
-  void add(const Contribution& c) {
-    auto lowest = [&](long& slot) { slot = slot < 0 ? long(c.primitive) : std::min(slot, long(c.primitive)); };
-    (c.solid ? solid_above : hole_above) |= c.above;
-    (c.solid ? solid_below : hole_below) |= c.below;
-    if (c.below && !c.above) lowest(c.solid ? solid_face_below : hole_face_below);
-    if (c.above && !c.below) lowest(c.solid ? solid_face_above : hole_face_above);
-  }
-};
-
 // On which side of each of the owner's cuts side s of the piece lies: a character per cut
 // (short: no allocation).
 std::string cells_of(const Context& cx, const Piece& p, long owner, int s) {
@@ -311,28 +293,22 @@ struct Inside {
   std::array<bool, 2> sides{};
 };
 
-std::array<Owners, 2> owners_of(const Context& cx, const std::vector<Inside>& inside) {
+std::array<FaceOwners, 2> owners_of(const Context& cx, const std::vector<Inside>& inside) {
   std::array<Presence, 2> at;
   for (const Inside& in : inside)
     for (std::size_t s = 0; s < 2; ++s)
       if (in.sides[s]) at[s].add(cx.contributions[in.polygon]);
-  std::array<Owners, 2> out;
-  for (std::size_t s = 0; s < 2; ++s) {
-    const Presence& a = at[s];
-    const bool below = a.solid_below && !a.hole_below, above = a.solid_above && !a.hole_above;
-    if (below && !above) out[s].up = a.solid_above ? a.hole_face_above : a.solid_face_below;
-    if (above && !below) out[s].down = a.solid_below ? a.hole_face_below : a.solid_face_above;
-  }
-  return out;
+  return {at[0].owners(), at[1].owners()};
 }
 
 // The owners on the two sides of each piece of one edge, walking along it: the first piece is
 // tested against every polygon near it, each next piece only against the polygons whose edges
 // split it off from the one before (append_pieces' sources), as no other polygon's boundary
 // passes between them. `inside` is scratch space.
-void classify_edge(const Context& cx, std::span<const Piece> pieces, const std::vector<std::size_t>& sources,
-                   const std::vector<std::size_t>& first_source, BoundsGrid& near, std::vector<Inside>& inside,
-                   std::span<std::array<Owners, 2>> out) {
+void classify_edge(const Context& cx, std::span<const Piece> pieces,
+                   const std::vector<std::size_t>& sources,
+                   const std::vector<std::size_t>& first_source, BoundsGrid& near,
+                   std::vector<Inside>& inside, std::span<std::array<FaceOwners, 2>> out) {
   const Piece& first = pieces.front();
   inside.clear();
   near.for_each_meeting(first.bounds, [&](std::size_t c) {
@@ -400,8 +376,8 @@ class FaceGroups {
 
 // Files the piece with the faces it bounds: where an owner, or its cut cell, differs between
 // its sides.
-void add_boundary(const Context& cx, FaceGroups& groups, const Piece& p, std::size_t a, std::size_t b,
-                  const std::array<Owners, 2>& o) {
+void add_boundary(const Context& cx, FaceGroups& groups, const Piece& p, std::size_t a,
+                  std::size_t b, const std::array<FaceOwners, 2>& o) {
   // Most pieces lie inside a face, one owner on both sides: without cuts, nothing to file.
   if (cx.cuts.empty() && o[0].up == o[1].up && o[0].down == o[1].down) return;
   // The negative side lies on the left of a -> b seen from the plane's positive side.
@@ -575,7 +551,7 @@ struct PlaneBoolean::State {
   BoundsGrid near;                     // of polygon_bounds
   // Every edge's pieces with the owners on their two sides.
   std::vector<Piece> pieces;
-  std::vector<std::array<Owners, 2>> owners;
+  std::vector<std::array<FaceOwners, 2>> owners;
 
   State(const PlaneSet& s, PlaneRef p, std::vector<Contribution> c)
       : set(s), plane(p), i((dominant_axis(s, p.id) + 1) % 3), j((i + 1) % 3),

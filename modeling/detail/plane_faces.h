@@ -16,6 +16,7 @@
 // `Cut`), so every face is one simple polygon.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -33,6 +34,43 @@ struct Contribution {
   bool solid = true;
   bool above = false;  ///< the primitive is just above the plane (its positive side) there
   bool below = false;
+};
+
+/// The owners of the faces at a place of the plane (-1: none): the primitive whose face looks
+/// along the plane's normal there (`up`), and the one whose face looks against it (`down`).
+struct FaceOwners {
+  long up = -1, down = -1;
+};
+
+/// What lies just above and just below one place of the plane (a side of a piece, a cell of a
+/// grid), gathered from the contributions covering it; decides the faces there.
+class Presence {
+ public:
+  /// Adds a contribution that covers the place.
+  void add(const Contribution& c) {
+    auto lowest = [&](long& slot) {
+      slot = slot < 0 ? long(c.primitive) : std::min(slot, long(c.primitive));
+    };
+    (c.solid ? solid_above_ : hole_above_) |= c.above;
+    (c.solid ? solid_below_ : hole_below_) |= c.below;
+    if (c.below && !c.above) lowest(c.solid ? solid_face_below_ : hole_face_below_);
+    if (c.above && !c.below) lowest(c.solid ? solid_face_above_ : hole_face_above_);
+  }
+  /// @return the faces there: the solid (solids minus holes) just below and not just above is
+  ///         a face looking up, owned by the lowest-numbered hole with a face there if a solid
+  ///         lies above too (the hole's mouth), else the lowest-numbered solid with a face
+  ///         there; the other way round for a face looking down. O(1).
+  [[nodiscard]] FaceOwners owners() const {
+    FaceOwners out;
+    const bool below = solid_below_ && !hole_below_, above = solid_above_ && !hole_above_;
+    if (below && !above) out.up = solid_above_ ? hole_face_above_ : solid_face_below_;
+    if (above && !below) out.down = solid_below_ ? hole_face_below_ : solid_face_above_;
+    return out;
+  }
+
+ private:
+  bool solid_above_ = false, solid_below_ = false, hole_above_ = false, hole_below_ = false;
+  long solid_face_below_ = -1, solid_face_above_ = -1, hole_face_above_ = -1, hole_face_below_ = -1;
 };
 
 /// A segment of a line of the plane that splits the faces of one owner: the part of `line`

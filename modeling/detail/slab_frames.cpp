@@ -2,6 +2,7 @@
 #include "modeling/detail/slab_frames.h"
 
 #include <algorithm>
+#include <array>
 #include <list>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -98,6 +99,86 @@ Polygon grow_piece(const CDT& cdt, const Face& start) {
   return out;
 }
 
+// Whether every edge of the slab's outline and holes runs along x or along y, exactly.
+bool is_rectilinear(const Slab& slab) {
+  const auto along_axes = [](const Polygon& ring) {
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const Point2& a = ring[k];
+      const Point2& b = ring[(k + 1) % ring.size()];
+      if (a.x != b.x && a.y != b.y) return false;
+    }
+    return true;
+  };
+  return along_axes(slab.outline) && std::all_of(slab.holes.begin(), slab.holes.end(), along_axes);
+}
+
+// A rectilinear slab's area cut into rectangles whose corners are its corners' own coordinates
+// (still exact in the plan's doubles, as the triangulation's pieces are): the cells between
+// consecutive xs and ys of its corners, inside where an odd number of its edges along y lies
+// to their left, joined into runs along x, and runs of equal extent in consecutive rows into
+// one rectangle. Fewer pieces than the triangulation's for most floors, and along the axes, as
+// the walls on them are: the general path's grid takes their planes (grid_faces.h).
+// O(r e) for r rows and e edges.
+std::vector<Polygon> rectangles(const Slab& slab) {
+  std::vector<double> xs, ys;
+  std::vector<std::array<double, 3>> edges_along_y;  // x, low y, high y
+  const auto add_ring = [&](const Polygon& ring) {
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const Point2& a = ring[k];
+      const Point2& b = ring[(k + 1) % ring.size()];
+      xs.push_back(a.x), ys.push_back(a.y);
+      if (a.x == b.x && a.y != b.y)
+        edges_along_y.push_back({a.x, std::min(a.y, b.y), std::max(a.y, b.y)});
+    }
+  };
+  add_ring(slab.outline);
+  for (const Polygon& h : slab.holes) add_ring(h);
+  for (std::vector<double>* v : {&xs, &ys}) {
+    std::sort(v->begin(), v->end());
+    v->erase(std::unique(v->begin(), v->end()), v->end());
+  }
+  struct Open {
+    std::size_t x0, x1;  // cells [x0, x1) of xs
+    double y0;
+  };
+  std::vector<Open> open, next;
+  std::vector<Polygon> out;
+  const auto close = [&](const Open& r, double y1) {
+    out.push_back({{xs[r.x0], r.y0}, {xs[r.x1], r.y0}, {xs[r.x1], y1}, {xs[r.x0], y1}});
+  };
+  std::vector<double> crossings;
+  for (std::size_t row = 0; row + 1 <= ys.size(); ++row) {
+    // The row's runs of cells inside (none above the last y: every open rectangle closes).
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    if (row + 1 < ys.size()) {
+      crossings.clear();
+      for (const auto& [x, low, high] : edges_along_y)
+        if (low <= ys[row] && high >= ys[row + 1]) crossings.push_back(x);
+      std::sort(crossings.begin(), crossings.end());
+      for (std::size_t c = 0; c + 1 < crossings.size(); c += 2) {
+        const auto x0 =
+            std::size_t(std::lower_bound(xs.begin(), xs.end(), crossings[c]) - xs.begin());
+        const auto x1 =
+            std::size_t(std::lower_bound(xs.begin(), xs.end(), crossings[c + 1]) - xs.begin());
+        if (x0 < x1) runs.emplace_back(x0, x1);
+      }
+    }
+    next.clear();
+    for (const Open& r : open) {
+      const auto same = std::find(runs.begin(), runs.end(), std::pair{r.x0, r.x1});
+      if (same == runs.end()) {
+        close(r, ys[row]);
+      } else {
+        next.push_back(r);
+        runs.erase(same);
+      }
+    }
+    for (const auto& [x0, x1] : runs) next.push_back({x0, x1, ys[row]});
+    open.swap(next);
+  }
+  return out;
+}
+
 std::vector<Polygon> convex_pieces(const Slab& slab) {
   CDT cdt;
   auto insert_ring = [&cdt](const Polygon& ring) {
@@ -113,6 +194,7 @@ std::vector<Polygon> convex_pieces(const Slab& slab) {
                                         "themselves or each other (they must be simple, the holes inside the "
                                         "outline and apart)", slab.id), Code::not_buildable);
   }
+  if (is_rectilinear(slab)) return rectangles(slab);  // the triangulation checked the rings
   mark_nesting(cdt);
   std::vector<Polygon> pieces;
   for (const Face f : cdt.finite_face_handles())

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A slab as the builders take it: its area (outline minus holes) cut into convex pieces whose
-// corners are the slab's own points (no new points, so every piece is exact in the plan's
-// doubles), between its bottom and its top (absolute: levels resolved).
+// corners are the slab's own points, or rectangles between its corners' coordinates where every
+// edge runs along x or y (no new numbers, so every piece is exact in the plan's doubles),
+// between its bottom and its top (absolute: levels resolved).
 #pragma once
 
 #include <cstddef>
@@ -29,7 +30,7 @@ struct SlabFrame {
 /// @throws PreconditionError (not_buildable) naming the slab whose outline or holes cross
 ///         themselves or each other (validation's invalid_value says the same). O(n log n)
 ///         for n corners (a constrained Delaunay triangulation, then triangles merged while
-///         the union stays convex).
+///         the union stays convex), or O(r n) for the rectangles of r rows.
 [[nodiscard]] std::vector<SlabFrame> make_slab_frames(const Plan& plan, const std::vector<WallFrame>& walls);
 
 }  // namespace roomcad::detail

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace roomcad::test {
 
@@ -103,9 +104,16 @@ void expect_paths_agree(const Plan& plan, long genus, double expected_volume) {
   const Model nef_model = build_model(plan, options_for(BooleanPath::nef));
   const SolidCheck nef = expect_valid_model(nef_model, plan, BooleanPath::nef, genus, expected_volume);
   const auto b = area_by_kind(nef_model.walls);
-  for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general}) {
-    SCOPED_TRACE(path == BooleanPath::general ? "general path" : "automatic path");
-    const Model model = build_model(plan, options_for(path));
+  // The general path also without its grid of planes of rectangles (every plane through the
+  // general 2D boolean).
+  for (const auto& [path, grid] :
+       {std::pair{BooleanPath::automatic, true}, std::pair{BooleanPath::general, true},
+        std::pair{BooleanPath::general, false}}) {
+    SCOPED_TRACE(path == BooleanPath::general ? grid ? "general path" : "general path, no grid"
+                                              : "automatic path");
+    BuildOptions options = options_for(path);
+    options.grid_planes = grid;
+    const Model model = build_model(plan, options);
     const SolidCheck c = expect_valid_model(model, plan, path, genus, expected_volume);
     EXPECT_NEAR(c.volume, nef.volume, 2 * volume_tolerance(nef_model.walls, nef.volume));
     const auto a = area_by_kind(model.walls);

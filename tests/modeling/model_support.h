@@ -41,8 +41,9 @@ BuildOptions options_for(BooleanPath path, int threads = 0);
 SolidCheck expect_valid_walls(const Plan& plan, BooleanPath path, long genus,
                               double expected_volume = 0.0);
 
-/// Builds on the automatic, general and Nef paths, checks each, and expects the same volume
-/// and area of each face kind as Nef's (within 1e-9 relative plus what vertex_rounding allows).
+/// Builds on the automatic, general (with and without BuildOptions::grid_planes) and Nef paths,
+/// checks each, and expects the same volume and area of each face kind as Nef's (within 1e-9
+/// relative plus what vertex_rounding allows).
 void expect_paths_agree(const Plan& plan, long genus, double expected_volume = 0.0);
 
 }  // namespace roomcad::test

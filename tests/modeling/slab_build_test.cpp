@@ -4,9 +4,12 @@
 // into them, the faces named after the slab.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
+#include <vector>
 
 #include "model_support.h"
+#include "modeling/detail/slab_frames.h"
 
 namespace roomcad {
 namespace {
@@ -113,6 +116,54 @@ TEST(SlabBuild, AnOutlineThatCrossesItselfIsRefusedNamingTheSlab) {
   Plan plan = covered_room();
   plan.slabs[0].outline = {{0.9, 0.9}, {6.1, 5.1}, {6.1, 0.9}, {0.9, 5.1}};  // a bow tie
   test::expect_build_refused(plan, {}, Code::not_buildable, "slab 'lid'");
+}
+
+// A slab whose every edge runs along x or y is cut into rectangles between its own
+// coordinates; any other into the triangulation's convex pieces of its own corners. Either way
+// the pieces cover its area once.
+TEST(SlabBuild, ARectilinearAreaIsCutIntoRectanglesOfItsOwnCoordinates) {
+  Plan plan = empty_plan();
+  Slab s;
+  s.id = "floor";
+  s.outline = {{0, 0}, {6, 0}, {6, 2}, {3, 2}, {3, 5}, {0, 5}};  // an L
+  s.holes = {{{1, 1}, {2, 1}, {2, 3}, {1, 3}}, {{4, 0.5}, {5, 0.5}, {5, 1.5}, {4, 1.5}}};
+  s.top = 0.2, s.thickness = 0.2;
+  plan.slabs.push_back(s);
+  const auto area = [](const Polygon& p) {
+    double a = 0.0;
+    for (std::size_t k = 0; k < p.size(); ++k)
+      a += p[k].x * p[(k + 1) % p.size()].y - p[(k + 1) % p.size()].x * p[k].y;
+    return a / 2.0;
+  };
+  const std::set<double> xs{0, 1, 2, 3, 4, 5, 6}, ys{0, 0.5, 1, 1.5, 2, 3, 5};
+  const std::vector<detail::SlabFrame> frames = detail::make_slab_frames(plan, {});
+  ASSERT_EQ(frames.size(), 1u);
+  double total = 0.0;
+  for (const Polygon& piece : frames[0].pieces) {
+    ASSERT_EQ(piece.size(), 4u);
+    EXPECT_GT(area(piece), 0.0) << "counter-clockwise";
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Point2 a = piece[k], b = piece[(k + 1) % 4];
+      EXPECT_TRUE(a.x == b.x || a.y == b.y);
+      EXPECT_TRUE(xs.count(a.x) && ys.count(a.y)) << a.x << ", " << a.y;
+    }
+    total += area(piece);
+  }
+  EXPECT_DOUBLE_EQ(total, 6 * 2 + 3 * 3 - 2 - 1);
+  // Its volume on the general path, whatever the pieces.
+  expect_valid_walls(plan, BooleanPath::automatic, 2, (6 * 2 + 3 * 3 - 2 - 1) * 0.2);
+  plan.slabs[0].outline[3].x = 3.5;  // the L's inner corner pulled askew: a slanted edge
+  const Slab& askew = plan.slabs[0];
+  const auto is_own_corner = [&](const Point2& p) {
+    const auto in = [&](const Polygon& ring) {
+      return std::find(ring.begin(), ring.end(), p) != ring.end();
+    };
+    return in(askew.outline) || std::any_of(askew.holes.begin(), askew.holes.end(), in);
+  };
+  const std::vector<detail::SlabFrame> triangulated = detail::make_slab_frames(plan, {});
+  ASSERT_EQ(triangulated.size(), 1u);
+  for (const Polygon& piece : triangulated[0].pieces)
+    for (const Point2& p : piece) EXPECT_TRUE(is_own_corner(p)) << p.x << ", " << p.y;
 }
 
 TEST(SlabBuild, TheNefPathRefusesSlabsByName) {

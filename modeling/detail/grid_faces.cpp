@@ -682,11 +682,13 @@ std::optional<std::vector<SolidFace>> grid_faces(const PlaneSet& set, PlaneRef p
   Layout layout;
   std::array<std::vector<PlaneId>, 2> lines =
       classify_lines(set, plane, i, j, contributions, layout);
+  // The cells are counted before the grid lays out its points: lines of one trace share a rank,
+  // so there are at most as many ranks as lines.
   if (2 * layout.slanted.size() > contributions.size() || lines[0].size() < 2 ||
-      lines[1].size() < 2)
+      lines[1].size() < 2 || (lines[0].size() - 1) * (lines[1].size() - 1) > kMaxGridCells)
     return std::nullopt;
   PlaneGrid pg(set, plane, k, std::move(lines));
-  if (pg.cells() > kMaxGridCells || !slanted_within(pg, contributions, layout)) return std::nullopt;
+  if (!slanted_within(pg, contributions, layout)) return std::nullopt;
   std::size_t work = 0;
   if (!find_blocks(pg, contributions, layout, work) || work > kMaxGridCells) return std::nullopt;
   find_windows(pg, contributions, layout);

@@ -188,6 +188,21 @@ TEST(GridFaces, APlaneOfMostlySlantedPolygonsIsLeftToTheGeneralBoolean) {
                    .has_value());
 }
 
+TEST(GridFaces, APlaneOfMoreCellsThanTheGridTakesIsLeftToTheGeneralBoolean) {
+  // A staircase of thin rectangles, each of its own lines: n lines a family, (n - 1)^2 cells.
+  const auto staircase = [](AxisPlane& p, int steps) {
+    std::vector<Contribution> out;
+    for (int m = 0; m < steps; ++m) out.push_back(p.face_below(m, m, m + 0.5, m + 0.5, 0));
+    return out;
+  };
+  AxisPlane small(2), large(2);
+  const int fits = 256, too_many = 300;  // 511^2 < kMaxGridCells < 599^2
+  ASSERT_LT(std::size_t(2 * fits - 1) * (2 * fits - 1), kMaxGridCells);
+  ASSERT_GT(std::size_t(2 * too_many - 1) * (2 * too_many - 1), kMaxGridCells);
+  EXPECT_TRUE(grid_faces(small.set, {small.plane, 1}, staircase(small, fits)).has_value());
+  EXPECT_FALSE(grid_faces(large.set, {large.plane, 1}, staircase(large, too_many)).has_value());
+}
+
 TEST(GridFaces, AWallTopMitredAtACornerGetsTheFacesOfTheGeneralBoolean) {
   // A wall's top whose end is mitred (a corner cut at 45 degrees), the top of a wall beside the
   // mitre, another's apart, and the section of a wall across them: the cells the mitre may

@@ -1,20 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "modeling/polygon_predicates.h"
 
-#include <iterator>
-
-#include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_with_holes_2.h>
+#include "modeling/detail/exact_polygon_set.h"
 
 namespace roomcad {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Kernel = CGAL::Epeck;
 using FT = Kernel::FT;
-using CgalPolygon = CGAL::Polygon_2<Kernel>;
-using WithHoles = CGAL::Polygon_with_holes_2<Kernel>;
+using CgalPolygon = detail::ExactPolygon;
+using WithHoles = detail::ExactPolygonWithHoles;
+using detail::ExactPolygonSet;
 
 CgalPolygon to_cgal(const Polygon& p) {
   CgalPolygon out;
@@ -78,15 +74,15 @@ bool are_disjoint(const Polygon& a, const Polygon& b) {
 bool areas_overlap(const Polygon& a, const std::vector<Polygon>& a_holes, const Polygon& b,
                    const std::vector<Polygon>& b_holes) {
   // CGAL's Boolean operations are regularised: what only touches is no part of the result.
-  std::vector<WithHoles> common;
-  CGAL::intersection(area_of(a, a_holes), area_of(b, b_holes), std::back_inserter(common));
-  return !common.empty();
+  ExactPolygonSet common(area_of(a, a_holes));
+  common.intersection(ExactPolygonSet(area_of(b, b_holes)));
+  return !common.is_empty();
 }
 
 bool outlines_overlap(const Opening& a, const Opening& b) {
-  std::vector<WithHoles> common;
-  CGAL::intersection(outline_in_wall(a), outline_in_wall(b), std::back_inserter(common));
-  return !common.empty();
+  ExactPolygonSet common(outline_in_wall(a));
+  common.intersection(ExactPolygonSet(outline_in_wall(b)));
+  return !common.is_empty();
 }
 
 }  // namespace roomcad

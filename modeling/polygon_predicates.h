@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Exact verdicts on polygons given by double coordinates (slab areas, opening outlines): CGAL's
-// exact rationals and Boolean set operations, in this one translation unit.
+// exact rationals, and its Boolean set operations through detail::ExactPolygonSet.
 #pragma once
 
 #include <vector>

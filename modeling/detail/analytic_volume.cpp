@@ -19,10 +19,8 @@
 #include <numeric>
 #include <vector>
 
-#include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Polygon_set_2.h>
-
 #include "modeling/detail/buildable_plan.h"
+#include "modeling/detail/exact_polygon_set.h"
 #include "modeling/detail/exact_wall.h"
 #include "modeling/detail/slab_frames.h"
 #include "modeling/mesh_check.h"
@@ -33,9 +31,9 @@ namespace {
 using detail::EK;
 using FT = EK::FT;
 using Point = EK::Point_2;
-using Polygon = CGAL::Polygon_2<EK>;
-using PolygonWithHoles = CGAL::Polygon_with_holes_2<EK>;
-using PolygonSet = CGAL::Polygon_set_2<EK>;
+using Polygon = detail::ExactPolygon;
+using PolygonWithHoles = detail::ExactPolygonWithHoles;
+using PolygonSet = detail::ExactPolygonSet;
 
 struct Box {
   std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
@@ -193,16 +191,13 @@ PolygonSet union_at(const std::vector<const Prim*>& prims, const FT& m, const FT
   std::vector<PolygonWithHoles> with_holes;
   for (const Prim* p : prims) add_section(*p, m, z, polys, with_holes);
   PolygonSet set;
-  if (!polys.empty() || !with_holes.empty())
-    set.join(polys.begin(), polys.end(), with_holes.begin(), with_holes.end());
+  set.join(polys, with_holes);
   return set;
 }
 
 FT area_of(const PolygonSet& set) {
-  std::vector<PolygonWithHoles> parts;
-  set.polygons_with_holes(std::back_inserter(parts));
   FT area = 0;
-  for (const auto& p : parts) {
+  for (const auto& p : set.polygons_with_holes()) {
     area += p.outer_boundary().area();
     for (auto h = p.holes_begin(); h != p.holes_end(); ++h) area += h->area();  // holes are clockwise
   }
@@ -440,9 +435,9 @@ Prim slab_prim(const detail::SlabFrame& slab) {
   PolygonSet set(outline);
   for (const roomcad::Polygon& hole : slab.holes) {
     const Polygon h = polygon(hole);
-    if (h.size() >= 3 && h.area() > 0) set.difference(h);
+    if (h.size() >= 3 && h.area() > 0) set.difference(PolygonSet(h));
   }
-  set.polygons_with_holes(std::back_inserter(p.parts));
+  p.parts = set.polygons_with_holes();
   const double zlo = slab.bottom, zhi = slab.top;
   auto add_faces = [&](const Polygon& poly) {
     for (auto e = poly.edges_begin(); e != poly.edges_end(); ++e)

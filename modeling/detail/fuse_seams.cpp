@@ -31,10 +31,6 @@ struct PointHash {
 };
 using FacesAt = std::unordered_map<OpenMesh::Vec3d, std::vector<FaceRef>, PointHash>;
 
-Point2 outward(const WallFrame& f, WallEnd end) {
-  return end == WallEnd::from ? f.dir : Point2{-f.dir.x, -f.dir.y};
-}
-
 // Index of `p` among the polygon's corners, or its size if absent.
 std::size_t find_corner(const std::vector<OpenMesh::Vec3d>& poly, const OpenMesh::Vec3d& p) {
   return static_cast<std::size_t>(std::find(poly.begin(), poly.end(), p) - poly.begin());

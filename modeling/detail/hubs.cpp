@@ -13,11 +13,6 @@ using Arm = std::pair<std::size_t, WallEnd>;
 
 const Point2& end_point(const WallFrame& f, WallEnd end) { return end == WallEnd::from ? f.from : f.to; }
 
-// The direction pointing away from the node along the arm.
-Point2 outward(const WallFrame& f, WallEnd end) {
-  return end == WallEnd::from ? f.dir : Point2{-f.dir.x, -f.dir.y};
-}
-
 double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
 double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
 

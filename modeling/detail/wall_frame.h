@@ -57,6 +57,12 @@ struct WallFrame {
   std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
 
+/// @return the unit direction along the wall away from its end `end` (its rounded dir, or
+///         the opposite). O(1).
+inline Point2 outward(const WallFrame& f, WallEnd end) {
+  return end == WallEnd::from ? f.dir : Point2{-f.dir.x, -f.dir.y};
+}
+
 /// @return the box of the wall's footprint grown by `margin` metres, tagged with its wall. O(1).
 [[nodiscard]] Box2 footprint_box(const WallFrame& f, double margin = 0.0);
 

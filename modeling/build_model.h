@@ -49,7 +49,8 @@ struct BuildOptions {
   int threads = 0;  ///< 0: all cores; output is identical at any thread count
   /// The general path's planes whose polygons are rectangles along their axes, nearly all
   /// (walls drawn along x and y), built on the grid of their lines (detail/grid_faces.h);
-  /// false: every plane through the general 2D boolean, the reference for tests and benchmarks.
+  /// false: every plane through the general 2D boolean (but for the faces no other polygon of
+  /// their plane meets: detail/lone_faces.h), the reference for tests and benchmarks.
   bool grid_planes = true;
 };
 

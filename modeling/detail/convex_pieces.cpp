@@ -398,9 +398,13 @@ bool clip_polygon(const PlaneSet& set, PlanePolygon& poly, PlaneRef h) {
   std::size_t b = a;
   while (s[(b + 1) % n] > 0) b = (b + 1) % n;
   const std::size_t before = (a + n - 1) % n, after = (b + 1) % n;
-  PlanePolygon out{poly.plane, {}, {}};
-  out.lines.reserve(n + 1);
-  out.vertices.reserve(n + 1);
+  // The clipped polygon is made in this thread's scratch polygon, which then takes the old one's
+  // storage: clipping a section by a primitive's faces, the hot loop, allocates nothing.
+  thread_local PlanePolygon scratch;
+  PlanePolygon& out = scratch;
+  out.plane = poly.plane;
+  out.lines.clear();
+  out.vertices.clear();
   // Walk from `after` round to `before`, keeping lines and vertices, then close over h.
   const bool drop_first = s[after] == 0, drop_last = s[before] == 0;
   std::size_t i = drop_first ? (after + 1) % n : after;  // the first line to keep
@@ -422,7 +426,7 @@ bool clip_polygon(const PlaneSet& set, PlanePolygon& poly, PlaneRef h) {
   out.lines.push_back(h);
   out.vertices.push_back(drop_first ? poly.vertices[after]
                                     : make_point(set, poly.plane.id, h.id, poly.lines[after].id));
-  poly = std::move(out);
+  std::swap(poly, out);
   return poly.lines.size() >= 3;
 }
 

@@ -9,6 +9,7 @@
 
 #include <gmpxx.h>
 #include <mpfr.h>
+#include <tbb/concurrent_unordered_map.h>
 
 #include "modeling/flat_index.h"
 
@@ -93,10 +94,16 @@ constexpr int kUnknown = 2;
 
 int exact_sign(const Exact& x) { return int(x.sign()); }
 
-std::array<Exact, 4> exact_of_point(const PlaneSet& set, const XPoint& p) {
+// The exact homogeneous coordinates of a point, from its planes in increasing order, so that
+// every point of one representation gets the same numbers (another order may flip all four
+// signs, which no predicate minds, but a table's value should not depend on who made it).
+XHom exact_of_point(const PlaneSet& set, const XPoint& p) {
   if (p.is_explicit())
     return {Exact(p.approx[0].inf()), Exact(p.approx[1].inf()), Exact(p.approx[2].inf()), Exact(1)};
-  return meet(set.exact(p.planes[0]), set.exact(p.planes[1]), set.exact(p.planes[2]));
+  auto ids = p.planes;
+  std::sort(ids.begin(), ids.end());
+  auto h = meet(set.exact(ids[0]), set.exact(ids[1]), set.exact(ids[2]));
+  return {std::move(h[0]), std::move(h[1]), std::move(h[2]), std::move(h[3])};
 }
 
 // The correctly rounded double of num / den (ties to even). @pre den != 0.
@@ -170,6 +177,36 @@ IntervalScope::~IntervalScope() {
   if (!outer_) return;
   t_upward = false;
   CGAL::FPU_set_cw(saved_);
+}
+
+// The exact values of points by representation: TBB's concurrent map, whose lookups take no
+// lock (threads look points up far more often than they add them); a value is made after the
+// lookup (OnceSlot), so no thread waits on another's exact arithmetic.
+class PlaneSet::PointTable {
+ public:
+  struct Entry {
+    OnceSlot<XHom> hom;
+    OnceSlot<std::array<double, 3>> rounded;
+  };
+  using Key = std::array<std::uint64_t, 3>;
+
+  /// @return the entry of that representation, made empty on the first call. Thread-safe.
+  Entry& entry(const Key& key) {
+    if (const auto known = entries_.find(key); known != entries_.end()) return *known->second;
+    return *entries_.emplace(key, std::make_unique<Entry>()).first->second;
+  }
+
+ private:
+  tbb::concurrent_unordered_map<Key, std::unique_ptr<Entry>, BitsHash> entries_;
+};
+
+PlaneSet::PlaneSet() : points_(std::make_unique<PointTable>()) {}
+PlaneSet::~PlaneSet() = default;
+PlaneSet::PlaneSet(PlaneSet&&) noexcept = default;
+PlaneSet& PlaneSet::operator=(PlaneSet&&) noexcept = default;
+
+const XHom& PlaneSet::exact_point(const XPoint& p) const {
+  return points_->entry(representation_key(p)).hom.get([&] { return exact_of_point(*this, p); });
 }
 
 PlaneId PlaneSet::add(const PlaneRecipe& recipe) {
@@ -352,8 +389,7 @@ std::optional<std::array<double, 3>> round_axis_point(const PlaneSet& set, const
   return out;
 }
 
-template <class HomOf>
-std::array<double, 3> round_of(const PlaneSet& set, const XPoint& p, HomOf&& hom_of) {
+std::array<double, 3> round_of(const PlaneSet& set, const XPoint& p) {
   std::array<double, 3> out{};
   bool all_points = true;
   for (std::size_t k = 0; k < 3; ++k) {
@@ -362,39 +398,40 @@ std::array<double, 3> round_of(const PlaneSet& set, const XPoint& p, HomOf&& hom
   }
   if (all_points) return out;
   if (const auto axis_point = round_axis_point(set, p)) return *axis_point;
-  const XHom& h = hom_of();
-  for (std::size_t k = 0; k < 3; ++k) out[k] = round_quotient(coordinate(h, k), h.w) + 0.0;
-  return out;
+  return set.exact_rounding(p);
 }
 
 }  // namespace
 
-XHom homogeneous(const PlaneSet& set, const XPoint& p) {
-  auto h = exact_of_point(set, p);
-  return {std::move(h[0]), std::move(h[1]), std::move(h[2]), std::move(h[3])};
+const std::array<double, 3>& PlaneSet::exact_rounding(const XPoint& p) const {
+  PointTable::Entry& e = points_->entry(representation_key(p));
+  return e.rounded.get([&] {
+    const XHom& h = e.hom.get([&] { return exact_of_point(*this, p); });
+    std::array<double, 3> out{};
+    for (std::size_t k = 0; k < 3; ++k) out[k] = round_quotient(coordinate(h, k), h.w) + 0.0;
+    return out;
+  });
 }
 
-// The free predicates make a point's exact coordinates, as temporaries, only where a filter
-// fails (an XHom is four Mpzf to construct and destroy).
+// The free predicates look a point's exact coordinates up in the set only where a filter fails.
 int side(const PlaneSet& set, PlaneRef plane, const XPoint& p) {
-  return side_of(set, plane, p, [&] { return homogeneous(set, p); });
+  return side_of(set, plane, p, [&]() -> const XHom& { return set.exact_point(p); });
 }
 
 bool is_same_point(const PlaneSet& set, const XPoint& p, const XPoint& q) {
-  return same_point(p, q, [&](int i) { return homogeneous(set, i == 0 ? p : q); });
+  return same_point(p, q, [&](int i) -> const XHom& { return set.exact_point(i == 0 ? p : q); });
 }
 
 int compare_coordinate(const PlaneSet& set, const XPoint& p, const XPoint& q, int axis) {
-  return compare_points(p, q, axis, [&](int i) { return homogeneous(set, i == 0 ? p : q); });
+  return compare_points(p, q, axis,
+                        [&](int i) -> const XHom& { return set.exact_point(i == 0 ? p : q); });
 }
 
 int compare_coordinate(const PlaneSet& set, const XPoint& p, double value, int axis) {
-  return compare_value(p, value, axis, [&] { return homogeneous(set, p); });
+  return compare_value(p, value, axis, [&]() -> const XHom& { return set.exact_point(p); });
 }
 
-std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p) {
-  return round_of(set, p, [&] { return homogeneous(set, p); });
-}
+std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p) { return round_of(set, p); }
 
 std::size_t PointCache::add(const XPoint& p) {
   points_.push_back(p);
@@ -403,7 +440,12 @@ std::size_t PointCache::add(const XPoint& p) {
 }
 
 const XHom& PointCache::exact(std::size_t i) {
-  return exact_[i].get([&] { return homogeneous(set_, points_[i]); });
+  const XHom* h = exact_[i].load(std::memory_order_acquire);
+  if (h == nullptr) {  // threads that race store the same pointer
+    h = &set_.exact_point(points_[i]);
+    exact_[i].store(h, std::memory_order_release);
+  }
+  return *h;
 }
 
 int PointCache::side(PlaneRef plane, std::size_t i) {
@@ -424,9 +466,7 @@ int PointCache::compare(std::size_t i, double value, int axis) {
   return compare_value(points_[i], value, axis, [&]() -> const XHom& { return exact(i); });
 }
 
-std::array<double, 3> PointCache::round(std::size_t i) {
-  return round_of(set_, points_[i], [&]() -> const XHom& { return exact(i); });
-}
+std::array<double, 3> PointCache::round(std::size_t i) { return round_of(set_, points_[i]); }
 
 int orient_normals(const PlaneSet& set, PlaneRef a, PlaneRef b, PlaneRef c) {
   int s = kUnknown;

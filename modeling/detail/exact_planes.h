@@ -20,6 +20,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -94,10 +95,18 @@ struct XHom {
   Exact x, y, z, w;
 };
 
-/// The planes of one build, with their interval and (lazily) exact coefficients.
+/// The planes of one build, with their interval and (lazily) exact coefficients, and the exact
+/// values of the points the predicates needed them for, each point's computed once: a vertex
+/// lies on three planes and is met in each of their 2D booleans, in the sections crossing
+/// them and in stitching, on any thread.
 /// Adding is single-threaded; reading (every predicate) may run on many threads.
 class PlaneSet {
  public:
+  PlaneSet();
+  ~PlaneSet();
+  PlaneSet(PlaneSet&&) noexcept;
+  PlaneSet& operator=(PlaneSet&&) noexcept;
+
   /// Adds a plane. @return its id. O(1).
   PlaneId add(const PlaneRecipe& recipe);
   /// @return an axis plane x[axis] = value (normal +e[axis]).
@@ -115,11 +124,20 @@ class PlaneSet {
   ///         O(n log n) plus exact tests between planes whose invariants overlap.
   [[nodiscard]] std::vector<PlaneRef> find_equal_planes() const;
 
+  /// @return the point's exact homogeneous coordinates, computed on the first call for its
+  ///         representation (representation_key) and kept: thread-safe. O(1) after the first.
+  [[nodiscard]] const XHom& exact_point(const XPoint& p) const;
+  /// @return the point's coordinates rounded to the nearest doubles, from exact_point, computed
+  ///         once per representation. (round_point decides most points without it.)
+  [[nodiscard]] const std::array<double, 3>& exact_rounding(const XPoint& p) const;
+
  private:
+  class PointTable;
   std::vector<PlaneRecipe> recipes_;
   std::vector<std::array<Interval, 4>> approx_;
   std::vector<std::pair<int, double>> axis_;
   std::deque<OnceSlot<std::array<Exact, 4>>> exact_;  // a deque: adding keeps the slots in place
+  std::unique_ptr<PointTable> points_;
 };
 
 /// @return a key equal for two points of the same representation: the same explicit doubles,
@@ -150,13 +168,12 @@ class PlaneSet {
 [[nodiscard]] int dot_normals(const PlaneSet& set, PlaneRef a, PlaneRef b);
 /// @return whether two planes are the same set of points (either orientation).
 [[nodiscard]] bool are_same_plane(const PlaneSet& set, PlaneId a, PlaneId b);
-/// @return the exact homogeneous coordinates of a point.
-[[nodiscard]] XHom homogeneous(const PlaneSet& set, const XPoint& p);
 /// @return the point's coordinates, each rounded to the nearest double (ties to even).
 [[nodiscard]] std::array<double, 3> round_point(const PlaneSet& set, const XPoint& p);
-/// Points of one computation with their exact homogeneous coordinates, computed once on
-/// first need and kept (the predicates of exact_planes.h, by point index). Adding is
-/// single-threaded; the predicates may run on many threads.
+/// Points of one computation, for the predicates of exact_planes.h by point index; each
+/// point keeps a pointer to its exact homogeneous coordinates (PlaneSet::exact_point) once it
+/// needed them, so that a point tested again skips the set's table. Adding is single-threaded;
+/// the predicates may run on many threads.
 class PointCache {
  public:
   explicit PointCache(const PlaneSet& set) : set_(set) {}
@@ -175,7 +192,7 @@ class PointCache {
   const XHom& exact(std::size_t i);
   const PlaneSet& set_;
   std::vector<XPoint> points_;
-  std::deque<OnceSlot<XHom>> exact_;  // a deque: adding keeps the slots in place
+  std::deque<std::atomic<const XHom*>> exact_;  // a deque: adding keeps the slots in place
 };
 
 /// @return {axis, offset} if the plane is x[axis] = offset with offset a double, else {-1, 0}.

@@ -14,6 +14,7 @@
 #include "modeling/detail/convex_pieces.h"
 #include "modeling/detail/face_stitching.h"
 #include "modeling/detail/grid_faces.h"
+#include "modeling/detail/lone_faces.h"
 #include "modeling/detail/plane_faces.h"
 
 namespace roomcad::detail {
@@ -26,7 +27,8 @@ struct PlaneWork {
   std::vector<std::size_t> crossing;                       // primitives crossing it at a face
   std::vector<Cut> cuts;
   std::optional<PlaneBoolean> boolean;  // kept while its faces have holes
-  PlaneFaces result;
+  std::vector<SolidFace> lone;          // faces no other polygon of the plane meets
+  PlaneFaces result;                    // the others'
 };
 
 double largest_coordinate(std::span<const WallFrame* const> walls, std::span<const SlabFrame* const> slabs) {
@@ -112,9 +114,11 @@ Contribution face_contribution(const Primitive& prim, std::size_t p, std::size_t
   return c;
 }
 
-std::optional<Contribution> section(const PlaneSet& set, const BoxPlanes& box, const Primitive& prim,
-                                    std::size_t p, PlaneId plane) {
-  PlanePolygon poly = box_polygon(set, box, {plane, 1});
+// The primitive's section: the plane's square of the box planes (`square`), clipped by each of
+// its faces.
+std::optional<Contribution> section(const PlaneSet& set, const PlanePolygon& square,
+                                    const Primitive& prim, std::size_t p) {
+  PlanePolygon poly = square;
   for (const PlanePolygon& f : prim.faces)
     if (!clip_polygon(set, poly, f.plane)) return std::nullopt;
   return Contribution{std::move(poly), p, prim.kind == Primitive::Kind::solid, true, true};
@@ -126,22 +130,34 @@ void take_faces(PlaneWork& w) {
   if (w.result.holes.empty()) w.boolean.reset();
 }
 
-// The plane's first pass: nothing where it surely has no face; its faces from its grid where
-// its polygons are rectangles along its axes, nearly all (grid_faces.h), and `grid` allows;
-// else from its 2D boolean.
+// The plane's first pass: where no two of its polygons overlap, each solid face as it is
+// (lone_faces.h); else nothing where it surely has no face; its faces from its grid where its
+// polygons are rectangles along its axes, nearly all (grid_faces.h), and `grid` allows; else
+// the faces no other polygon meets as they are, and the others' from their 2D boolean. (Lone
+// faces taken out of a grid's plane slowed the tower: a grid takes touching rectangles as
+// cheaply, and splits their edges where others touch, which stitching would do otherwise.)
 void first_pass(const PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive>& prims,
                 PlaneWork& w, bool grid) {
   const IntervalScope intervals;
   std::vector<Contribution> contributions;
   for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
-  for (std::size_t p : w.crossing)
-    if (auto c = section(set, box, prims[p], p, w.plane)) contributions.push_back(std::move(*c));
+  if (!w.crossing.empty()) {
+    const PlanePolygon square = box_polygon(set, box, {w.plane, 1});
+    for (std::size_t p : w.crossing)
+      if (auto c = section(set, square, prims[p], p)) contributions.push_back(std::move(*c));
+  }
+  if (auto apart = faces_if_apart(set, {w.plane, 1}, contributions)) {
+    w.lone = std::move(*apart);
+    return;
+  }
   if (has_no_faces(set, contributions)) return;
   if (grid)
     if (auto faces = grid_faces(set, {w.plane, 1}, contributions)) {
       w.result.faces = std::move(*faces);
       return;
     }
+  w.lone = take_lone_faces(set, {w.plane, 1}, contributions);
+  if (contributions.empty()) return;
   w.boolean.emplace(set, PlaneRef{w.plane, 1}, std::move(contributions));
   take_faces(w);
 }
@@ -295,8 +311,10 @@ FaceSoup build_cluster_general(std::span<const WallFrame* const> walls,
   run_planes(set, box, prims, works, grid_planes);
   std::vector<const SolidFace*> faces;
   for (const PlaneWork& w : works)
-    for (const SolidFace& f : w.result.faces) faces.push_back(&f);
-  return to_face_soup(stitch_faces(set, faces), faces, prims, set, {walls, slabs, first_opening_object, first_slab_object});
+    for (const auto* list : {&w.lone, &w.result.faces})
+      for (const SolidFace& f : *list) faces.push_back(&f);
+  return to_face_soup(stitch_faces(set, faces), faces, prims, set,
+                      {walls, slabs, first_opening_object, first_slab_object});
 }
 
 }  // namespace roomcad::detail

@@ -8,7 +8,8 @@
 // way round; both are exact 2D booleans of the primitives' sections and faces in that plane
 // (plane_faces.h). On a plane whose polygons are rectangles along its axes, but for a few with
 // slanted edges (walls drawn along x and y), the grid of their lines decides the same regions
-// (grid_faces.h). Every vertex is then where three planes meet (or input doubles), so faces of
+// (grid_faces.h); a face that no other polygon of its plane overlaps is a face as it is
+// (lone_faces.h). Every vertex is then where three planes meet (or input doubles), so faces of
 // different planes share their vertices exactly; a vertex inside another face's edge is
 // inserted there (face_stitching.h), and each vertex is rounded to doubles once.
 //

@@ -596,14 +596,20 @@ void mark_split_points(Grid& g, const Layout& layout) {
 std::vector<Region> find_regions(const Grid& g) {
   std::vector<Region> regions;
   FlatIndex<std::uint64_t> region_of;
+  // Neighbouring cells mostly have the same owners: the last lookup of each side is kept.
+  std::array<std::pair<long, std::uint32_t>, 2> last{{{-1, 0}, {-1, 0}}};
   for (std::uint32_t v = 0; v + 1 < g.nv; ++v)
     for (std::uint32_t u = 0; u + 1 < g.nu; ++u)
       for (const int side : {-1, 1}) {
         const long owner = g.owner(g.cell(u, v), side);
         if (owner < 0) continue;
-        const auto [r, added] = region_of.try_emplace(
-            (std::uint64_t(owner) << 1) | (side > 0 ? 1u : 0u), std::uint32_t(regions.size()));
-        if (added) regions.push_back({side, owner, u, u + 1, v, v + 1});
+        auto& [last_owner, r] = last[side > 0 ? 1 : 0];
+        if (owner != last_owner) {
+          const auto [at, added] = region_of.try_emplace(
+              (std::uint64_t(owner) << 1) | (side > 0 ? 1u : 0u), std::uint32_t(regions.size()));
+          if (added) regions.push_back({side, owner, u, u + 1, v, v + 1});
+          last_owner = owner, r = at;
+        }
         Region& region = regions[r];
         region.u0 = std::min(region.u0, u), region.u1 = std::max(region.u1, u + 1);
         region.v1 = v + 1;  // cells come in order of v
@@ -624,6 +630,9 @@ bool trace_faces(PlaneGrid& pg, PlaneRef plane, int view_side, std::vector<Solid
       std::vector<std::uint32_t> corners = face_corners(g, loop);
       if (view_side * r.side < 0) std::reverse(corners.begin(), corners.end());
       SolidFace face{{plane.id, r.side}, std::size_t(r.owner), {}, {}, {}};
+      face.vertices.reserve(corners.size());
+      face.lines.reserve(corners.size());
+      face.rounded.reserve(corners.size());
       for (std::size_t m = 0; m < corners.size(); ++m) {
         const std::uint32_t p = corners[m], q = corners[(m + 1) % corners.size()];
         const std::size_t at = pg.corner(g.u_of(p), g.v_of(p));

@@ -60,6 +60,14 @@ PreciseInterval& PreciseInterval::operator=(const PreciseInterval& other) {
   return *this;
 }
 
+PreciseInterval PreciseInterval::between_corners(Operation op, mpfr_srcptr low_x, mpfr_srcptr low_y,
+                                                 mpfr_srcptr high_x, mpfr_srcptr high_y) {
+  PreciseInterval r;
+  op(r.lo_, low_x, low_y, MPFR_RNDD);
+  op(r.hi_, high_x, high_y, MPFR_RNDU);
+  return r;
+}
+
 PreciseInterval operator+(const PreciseInterval& a, const PreciseInterval& b) {
   PreciseInterval r;
   mpfr_add(r.lo_, a.lo_, b.lo_, MPFR_RNDD);
@@ -82,12 +90,45 @@ PreciseInterval PreciseInterval::operator-() const {
 }
 
 PreciseInterval operator*(const PreciseInterval& a, const PreciseInterval& b) {
+  // The bounds' signs tell which corners bound the product: two products, not eight, unless
+  // both intervals hold 0 inside.
+  const int a_lo = mpfr_sgn(a.lo_), a_hi = mpfr_sgn(a.hi_), b_lo = mpfr_sgn(b.lo_),
+            b_hi = mpfr_sgn(b.hi_);
+  const auto corners = [](mpfr_srcptr low_x, mpfr_srcptr low_y, mpfr_srcptr high_x,
+                          mpfr_srcptr high_y) {
+    return PreciseInterval::between_corners(mpfr_mul, low_x, low_y, high_x, high_y);
+  };
+  if (a_lo >= 0) {
+    if (b_lo >= 0) return corners(a.lo_, b.lo_, a.hi_, b.hi_);
+    if (b_hi <= 0) return corners(a.hi_, b.lo_, a.lo_, b.hi_);
+    return corners(a.hi_, b.lo_, a.hi_, b.hi_);
+  }
+  if (a_hi <= 0) {
+    if (b_lo >= 0) return corners(a.lo_, b.hi_, a.hi_, b.lo_);
+    if (b_hi <= 0) return corners(a.hi_, b.hi_, a.lo_, b.lo_);
+    return corners(a.lo_, b.hi_, a.lo_, b.lo_);
+  }
+  if (b_lo >= 0) return corners(a.lo_, b.hi_, a.hi_, b.hi_);
+  if (b_hi <= 0) return corners(a.hi_, b.lo_, a.lo_, b.lo_);
   return PreciseInterval::corner_hull(a, b, mpfr_mul);
 }
 
 PreciseInterval operator/(const PreciseInterval& a, const PreciseInterval& b) {
   if (holds_zero(b.lo_, b.hi_)) throw UndecidedComparison();
-  return PreciseInterval::corner_hull(a, b, mpfr_div);
+  // b holds one sign: the bounds' signs tell which two quotients bound the result.
+  const auto quotients = [](mpfr_srcptr low_x, mpfr_srcptr low_y, mpfr_srcptr high_x,
+                            mpfr_srcptr high_y) {
+    return PreciseInterval::between_corners(mpfr_div, low_x, low_y, high_x, high_y);
+  };
+  const int a_lo = mpfr_sgn(a.lo_), a_hi = mpfr_sgn(a.hi_);
+  if (mpfr_sgn(b.lo_) > 0) {
+    if (a_lo >= 0) return quotients(a.lo_, b.hi_, a.hi_, b.lo_);
+    if (a_hi <= 0) return quotients(a.lo_, b.lo_, a.hi_, b.hi_);
+    return quotients(a.lo_, b.lo_, a.hi_, b.lo_);
+  }
+  if (a_lo >= 0) return quotients(a.hi_, b.hi_, a.lo_, b.lo_);
+  if (a_hi <= 0) return quotients(a.hi_, b.lo_, a.lo_, b.hi_);
+  return quotients(a.hi_, b.hi_, a.lo_, b.hi_);
 }
 
 PreciseInterval sqrt(const PreciseInterval& x) {

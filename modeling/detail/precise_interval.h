@@ -71,6 +71,10 @@ class PreciseInterval {
   void init();
   /// [min, max] of op over the corners of a x b, rounded outward (op: mpfr_mul or mpfr_div).
   static PreciseInterval corner_hull(const PreciseInterval& a, const PreciseInterval& b, Operation op);
+  /// [op(low_x, low_y) rounded down, op(high_x, high_y) rounded up]: the result when the
+  /// operands' signs tell which corners bound it.
+  static PreciseInterval between_corners(Operation op, mpfr_srcptr low_x, mpfr_srcptr low_y,
+                                         mpfr_srcptr high_x, mpfr_srcptr high_y);
   mp_limb_t lo_limbs_[kLimbs];
   mp_limb_t hi_limbs_[kLimbs];
   mpfr_t lo_, hi_;

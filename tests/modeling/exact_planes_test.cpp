@@ -10,6 +10,9 @@
 #include <bit>
 #include <cmath>
 #include <random>
+#include <vector>
+
+#include <tbb/parallel_for.h>
 
 namespace roomcad {
 namespace {
@@ -114,6 +117,30 @@ TEST(ExactPlanes, RoundingIsToTheNearestDouble) {
       EXPECT_LE(err, Q(abs(Q(x[k] - Q(std::nextafter(rounded[k], INFINITY)))))) << trial;
       EXPECT_LE(err, Q(abs(Q(x[k] - Q(std::nextafter(rounded[k], -INFINITY)))))) << trial;
     }
+  }
+}
+
+TEST(ExactPlanes, APointsExactValuesAreMadeOnceForItsThreePlanesInAnyOrderOnAnyThread) {
+  PlaneSet set;
+  const PlaneId a = add_through(set, 0.1, 0.2, 3.3, 1.7), b = add_through(set, -2.9, 0.4, 0.7, 5.1);
+  const PlaneId c = set.add_axis(2, 0.3);
+  const XPoint p = detail::make_point(set, a, b, c), q = detail::make_point(set, c, a, b);
+  const XPoint other = detail::make_point(set, b, c, set.add_axis(0, 1.0));
+  // One representation, one table entry; the rounding is round_point's (which reads it).
+  const detail::XHom* first = &set.exact_point(p);
+  EXPECT_EQ(&set.exact_point(q), first);
+  EXPECT_NE(&set.exact_point(other), first);
+  EXPECT_EQ(set.exact_rounding(q), detail::round_point(set, p));
+  // Threads asking for fresh points all at once get one entry each.
+  std::vector<XPoint> fresh;
+  for (int k = 0; k < 64; ++k)
+    fresh.push_back(detail::make_point(set, a, b, set.add_axis(2, 0.5 + k)));
+  std::vector<const detail::XHom*> seen(fresh.size() * 8);
+  tbb::parallel_for(std::size_t{0}, seen.size(),
+                    [&](std::size_t i) { seen[i] = &set.exact_point(fresh[i % fresh.size()]); });
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i], seen[i % fresh.size()]);
+    EXPECT_EQ(set.exact_rounding(fresh[i % fresh.size()])[2], 0.5 + double(i % fresh.size()));
   }
 }
 

@@ -68,5 +68,39 @@ TEST(PreciseInterval, SignsAndProductsKeepTheNumberInside) {
   EXPECT_EQ((a - b).nearest_double(), 1.0 / 21.0);
 }
 
+TEST(PreciseInterval, ProductsAndQuotientsHoldTheNumberWhateverTheSignsOfTheBounds) {
+  // Intervals about 2/3, about -2/3, and two holding 0 inside (a tiny and a wider one): each
+  // product and quotient takes its bounds from the corners its signs call for, and must still
+  // hold the exact result.
+  const PreciseInterval pos = PreciseInterval(2) / PreciseInterval(3), neg = -pos;
+  const PreciseInterval zero =
+      PreciseInterval(1) / PreciseInterval(3) * PreciseInterval(3) - PreciseInterval(1);
+  const PreciseInterval wide_zero = zero * PreciseInterval(1e30);
+  const auto holds_zero = [](const PreciseInterval& x) {
+    EXPECT_THROW((void)(x < PreciseInterval(0)), UndecidedComparison);
+    EXPECT_THROW((void)(x > PreciseInterval(0)), UndecidedComparison);
+    EXPECT_TRUE(x < PreciseInterval(1e-6) && x > PreciseInterval(-1e-6));
+  };
+  EXPECT_EQ((pos * pos).nearest_double(), 4.0 / 9.0);
+  EXPECT_EQ((pos * neg).nearest_double(), -4.0 / 9.0);
+  EXPECT_EQ((neg * pos).nearest_double(), -4.0 / 9.0);
+  EXPECT_EQ((neg * neg).nearest_double(), 4.0 / 9.0);
+  for (const PreciseInterval* z : {&zero, &wide_zero}) {
+    for (const PreciseInterval* x : {&pos, &neg, &zero, &wide_zero}) {
+      holds_zero(*z * *x);
+      holds_zero(*x * *z);
+    }
+    holds_zero(*z / pos);
+    holds_zero(*z / neg);
+    EXPECT_THROW((void)(pos / *z), UndecidedComparison);
+  }
+  EXPECT_EQ((pos / pos).nearest_double(), 1.0);
+  EXPECT_EQ((pos / neg).nearest_double(), -1.0);
+  EXPECT_EQ((neg / pos).nearest_double(), -1.0);
+  EXPECT_EQ((neg / neg).nearest_double(), 1.0);
+  EXPECT_EQ((PreciseInterval(1) / pos).nearest_double(), 1.5);
+  EXPECT_EQ((PreciseInterval(-1) / neg).nearest_double(), 1.5);
+}
+
 }  // namespace
 }  // namespace roomcad::exact

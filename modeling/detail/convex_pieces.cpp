@@ -142,25 +142,6 @@ Primitive make_prism(const PlaneSet& set, const PlanePolygon& base, PlaneRef c0,
   return p;
 }
 
-// The convex polyhedron on the negative side of every plane (outward), for shapes that are not
-// prisms: each plane's face is the box's square in it clipped by every other plane. O(m^2)
-// polygon clips for m planes.
-std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box, const std::vector<PlaneRef>& planes) {
-  Primitive p;
-  for (std::size_t i = 0; i < planes.size(); ++i) {
-    PlanePolygon face = box_polygon(set, box, planes[i]);
-    bool kept = true;
-    for (std::size_t j = 0; j < planes.size() && kept; ++j)
-      if (j != i) kept = clip_polygon(set, face, planes[j]);
-    if (!kept) continue;
-    p.vertices.insert(p.vertices.end(), face.vertices.begin(), face.vertices.end());
-    p.faces.push_back(std::move(face));
-  }
-  if (p.faces.size() < 4) return std::nullopt;  // no volume
-  p.box = box_of(p.vertices);
-  return p;
-}
-
 // The convex polygon in `plane` on the negative side of every line, clipped from the box.
 // @return nullopt when it has no area. @throws if it is unbounded (cannot happen for a wall).
 std::optional<PlanePolygon> intersect_half_planes(const PlaneSet& set, const BoxPlanes& box,
@@ -332,6 +313,23 @@ std::vector<Primitive> wall_primitives(const PlaneSet& set, const BoxPlanes& box
 }
 
 }  // namespace
+
+std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box, const std::vector<PlaneRef>& planes) {
+  Primitive p;
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    PlanePolygon face = box_polygon(set, box, planes[i]);
+    bool kept = true;
+    for (std::size_t j = 0; j < planes.size() && kept; ++j)
+      if (j != i) kept = clip_polygon(set, face, planes[j]);
+    if (!kept) continue;
+    p.vertices.insert(p.vertices.end(), face.vertices.begin(), face.vertices.end());
+    p.faces.push_back(std::move(face));
+  }
+  if (p.faces.size() < 4) return std::nullopt;  // no volume
+  p.box = box_of(p.vertices);
+  return p;
+}
+
 
 Box3 box_of(std::span<const XPoint> points) {
   Box3 b{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -88,6 +89,13 @@ struct Primitive {
 [[nodiscard]] std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
                                                      const std::vector<const WallFrame*>& walls,
                                                      const std::vector<const SlabFrame*>& slabs);
+
+/// The convex polyhedron on the negative side of every plane (outward), for shapes that are not
+/// prisms: each plane's face is the box's square in it clipped by every other plane.
+/// @return none if fewer than four faces have area (no volume). O(m^2) polygon clips for m
+///         planes.
+[[nodiscard]] std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box,
+                                                   const std::vector<PlaneRef>& planes);
 
 /// Replaces every plane id in the primitives by its group's (PlaneSet::find_equal_planes).
 void use_plane_groups(std::vector<Primitive>& primitives, const std::vector<PlaneRef>& groups);

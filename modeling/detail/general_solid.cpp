@@ -16,6 +16,7 @@
 #include "modeling/detail/grid_faces.h"
 #include "modeling/detail/lone_faces.h"
 #include "modeling/detail/plane_faces.h"
+#include "modeling/detail/primitive_section.h"
 
 namespace roomcad::detail {
 namespace {
@@ -114,16 +115,6 @@ Contribution face_contribution(const Primitive& prim, std::size_t p, std::size_t
   return c;
 }
 
-// The primitive's section: the plane's square of the box planes (`square`), clipped by each of
-// its faces.
-std::optional<Contribution> section(const PlaneSet& set, const PlanePolygon& square,
-                                    const Primitive& prim, std::size_t p) {
-  PlanePolygon poly = square;
-  for (const PlanePolygon& f : prim.faces)
-    if (!clip_polygon(set, poly, f.plane)) return std::nullopt;
-  return Contribution{std::move(poly), p, prim.kind == Primitive::Kind::solid, true, true};
-}
-
 // The plane's faces, where its boolean is kept only while they have holes to cut.
 void take_faces(PlaneWork& w) {
   w.result = w.boolean->faces();
@@ -141,11 +132,9 @@ void first_pass(const PlaneSet& set, const BoxPlanes& box, const std::vector<Pri
   const IntervalScope intervals;
   std::vector<Contribution> contributions;
   for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
-  if (!w.crossing.empty()) {
-    const PlanePolygon square = box_polygon(set, box, {w.plane, 1});
-    for (std::size_t p : w.crossing)
-      if (auto c = section(set, square, prims[p], p)) contributions.push_back(std::move(*c));
-  }
+  for (std::size_t p : w.crossing)
+    if (auto section = section_of(set, box, prims[p], {w.plane, 1}))
+      contributions.push_back({std::move(*section), p, prims[p].kind == Primitive::Kind::solid, true, true});
   if (auto apart = faces_if_apart(set, {w.plane, 1}, contributions)) {
     w.lone = std::move(*apart);
     return;

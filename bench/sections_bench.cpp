@@ -54,20 +54,11 @@ void make_sections(const Plan& input, Sections& s) {
   const Plan& plan = buildable.plan;
   const std::vector<WallFrame> frames = make_wall_frames(plan, find_joins(plan), buildable.through_mitre);
   const std::vector<SlabFrame> slabs = make_slab_frames(plan, frames);
-  double largest = 0.0;
   std::vector<const WallFrame*> walls;
-  for (const WallFrame& f : frames) {
-    walls.push_back(&f);
-    for (const Point2& p : f.footprint) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
-    largest = std::max({largest, std::abs(f.base), std::abs(f.top_max)});
-  }
+  for (const WallFrame& f : frames) walls.push_back(&f);
   std::vector<const SlabFrame*> slab_ptrs;
-  for (const SlabFrame& f : slabs) {
-    slab_ptrs.push_back(&f);
-    largest = std::max({largest, std::abs(f.min_x), std::abs(f.max_x), std::abs(f.min_y), std::abs(f.max_y),
-                        std::abs(f.bottom), std::abs(f.top)});
-  }
-  s.box = add_box_planes(s.set, largest);
+  for (const SlabFrame& f : slabs) slab_ptrs.push_back(&f);
+  s.box = add_box_planes(s.set, largest_coordinate(walls, slab_ptrs));
   s.prims = make_primitives(s.set, s.box, walls, slab_ptrs);
   std::map<PlaneId, std::pair<std::size_t, Box3>> planes;  // per plane: a primitive with a face on it
   for (std::size_t p = 0; p < s.prims.size(); ++p)
@@ -124,12 +115,7 @@ int main(int argc, char** argv) {
       const IntervalScope intervals;
       for (const auto& [p, plane] : s.pairs) from_crossings += section_from_crossings(s.set, s.prims[p], plane).has_value();
     }
-    const auto clipped = [&](const Primitive& prim, PlaneRef plane) -> std::optional<PlanePolygon> {
-      PlanePolygon section = box_polygon(s.set, s.box, plane);
-      for (const PlanePolygon& f : prim.faces)
-        if (!clip_polygon(s.set, section, f.plane)) return std::nullopt;
-      return section;
-    };
+    const auto clipped = [&](const Primitive& prim, PlaneRef plane) { return section_by_clipping(s.set, s.box, prim, plane); };
     const auto from_edges = [&](const Primitive& prim, PlaneRef plane) { return section_of(s.set, s.box, prim, plane); };
     std::vector<std::vector<PlaneId>> clip_lines(s.pairs.size()), edge_lines(s.pairs.size());
     std::vector<double> clip_ms, edge_ms, ratios;

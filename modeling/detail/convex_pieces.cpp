@@ -330,6 +330,17 @@ std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box, 
   return p;
 }
 
+double largest_coordinate(std::span<const WallFrame* const> walls, std::span<const SlabFrame* const> slabs) {
+  double m = 0.0;
+  for (const WallFrame* f : walls) {
+    for (const Point2& p : f->footprint) m = std::max({m, std::abs(p.x), std::abs(p.y)});
+    m = std::max({m, std::abs(f->base), std::abs(f->top_max)});
+  }
+  for (const SlabFrame* s : slabs)
+    m = std::max({m, std::abs(s->min_x), std::abs(s->max_x), std::abs(s->min_y), std::abs(s->max_y),
+                  std::abs(s->bottom), std::abs(s->top)});
+  return m;
+}
 
 Box3 box_of(std::span<const XPoint> points) {
   Box3 b{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};

@@ -38,6 +38,11 @@ struct BoxPlanes {
   std::array<PlaneId, 3> low{}, high{};
 };
 
+/// @return the largest magnitude of the walls' footprint coordinates, bases and tops and of the
+///         slabs' outline boxes, bottoms and tops (add_box_planes' argument). O(n).
+[[nodiscard]] double largest_coordinate(std::span<const WallFrame* const> walls,
+                                        std::span<const SlabFrame* const> slabs);
+
 /// @return box planes at +-M, M the smallest power of two >= 4 * (largest |coordinate| + 1).
 [[nodiscard]] BoxPlanes add_box_planes(PlaneSet& set, double largest_coordinate);
 

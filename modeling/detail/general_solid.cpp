@@ -32,18 +32,6 @@ struct PlaneWork {
   PlaneFaces result;                    // the others'
 };
 
-double largest_coordinate(std::span<const WallFrame* const> walls, std::span<const SlabFrame* const> slabs) {
-  double m = 0.0;
-  for (const WallFrame* f : walls) {
-    for (const Point2& p : f->footprint) m = std::max({m, std::abs(p.x), std::abs(p.y)});
-    m = std::max({m, std::abs(f->base), std::abs(f->top_max)});
-  }
-  for (const SlabFrame* s : slabs)
-    m = std::max({m, std::abs(s->min_x), std::abs(s->max_x), std::abs(s->min_y), std::abs(s->max_y),
-                  std::abs(s->bottom), std::abs(s->top)});
-  return m;
-}
-
 // Which objects a cluster's faces belong to.
 struct Labels {
   std::span<const WallFrame* const> walls;

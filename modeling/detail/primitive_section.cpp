@@ -57,13 +57,18 @@ std::optional<PlanePolygon> section_from_crossings(const PlaneSet& set, const Pr
   return section;
 }
 
-std::optional<PlanePolygon> section_of(const PlaneSet& set, const BoxPlanes& box, const Primitive& primitive,
-                                       PlaneRef plane) {
-  if (auto section = section_from_crossings(set, primitive, plane)) return section;
+std::optional<PlanePolygon> section_by_clipping(const PlaneSet& set, const BoxPlanes& box, const Primitive& primitive,
+                                                PlaneRef plane) {
   PlanePolygon clipped = box_polygon(set, box, plane);
   for (const PlanePolygon& f : primitive.faces)
     if (!clip_polygon(set, clipped, f.plane)) return std::nullopt;
   return clipped;
+}
+
+std::optional<PlanePolygon> section_of(const PlaneSet& set, const BoxPlanes& box, const Primitive& primitive,
+                                       PlaneRef plane) {
+  if (auto section = section_from_crossings(set, primitive, plane)) return section;
+  return section_by_clipping(set, box, primitive, plane);
 }
 
 }  // namespace roomcad::detail

@@ -23,6 +23,11 @@ namespace roomcad::detail {
 [[nodiscard]] std::optional<PlanePolygon> section_from_crossings(const PlaneSet& set, const Primitive& primitive,
                                                                  PlaneRef plane);
 
+/// The section as the box's square in the plane clipped by every face of the primitive.
+/// @return none if it has no area. O(f v) predicates for f faces of v corners.
+[[nodiscard]] std::optional<PlanePolygon> section_by_clipping(const PlaneSet& set, const BoxPlanes& box,
+                                                              const Primitive& primitive, PlaneRef plane);
+
 /// @param[in] plane  a plane with vertices of `primitive` strictly on both of its sides
 /// @return the section: lines on the primitive's faces (outward), counter-clockwise seen from
 ///         the plane's positive side; none if it has no area. O(v) predicates and O(c)

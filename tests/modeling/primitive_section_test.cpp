@@ -15,15 +15,6 @@
 namespace roomcad::detail {
 namespace {
 
-// The reference: the square clipped by every face.
-std::optional<PlanePolygon> clipped_section(const PlaneSet& set, const BoxPlanes& box, const Primitive& prim,
-                                            PlaneRef plane) {
-  PlanePolygon s = box_polygon(set, box, plane);
-  for (const PlanePolygon& f : prim.faces)
-    if (!clip_polygon(set, s, f.plane)) return std::nullopt;
-  return s;
-}
-
 // Whether a and b are one polygon: the same lines and corners, cyclically.
 bool same_polygon(const PlaneSet& set, const PlanePolygon& a, const PlanePolygon& b) {
   const std::size_t n = a.lines.size();
@@ -85,7 +76,7 @@ TEST(PrimitiveSection, MatchesTheClippedSquareOnAxisObliqueAndSlopedPlanes) {
   for (const PlaneRef& h : planes) {
     SCOPED_TRACE(h.id);
     const auto made = section_from_crossings(s.set, wall, h);
-    const auto reference = clipped_section(s.set, s.box, wall, h);
+    const auto reference = section_by_clipping(s.set, s.box, wall, h);
     ASSERT_TRUE(made && reference);
     EXPECT_TRUE(same_polygon(s.set, *section_of(s.set, s.box, wall, h), *made));
     EXPECT_GE(made->lines.size(), 3u);
@@ -107,7 +98,7 @@ TEST(PrimitiveSection, APlaneThroughAVertexOrAnEdgeTakesTheClippingPath) {
     SCOPED_TRACE(h.id);
     EXPECT_FALSE(section_from_crossings(s.set, wall, h));
     const auto made = section_of(s.set, s.box, wall, h);
-    const auto reference = clipped_section(s.set, s.box, wall, h);
+    const auto reference = section_by_clipping(s.set, s.box, wall, h);
     ASSERT_EQ(made.has_value(), reference.has_value());
     if (made) {
       EXPECT_TRUE(same_polygon(s.set, *made, *reference));
@@ -132,7 +123,7 @@ TEST(PrimitiveSection, RandomBoxesCutByRandomPlanesMatchTheClippedSquare) {
                        : trial % 3 == 1 ? PlaneRef{add_through(s.set, at(rng), at(rng), at(rng), at(rng)), 1}
                                         : PlaneRef{add_sloped(s.set, x, y, at(rng), at(rng), z + dz / 2, at(rng)), -1};
     const auto made = section_of(s.set, s.box, box, h);
-    const auto reference = clipped_section(s.set, s.box, box, h);
+    const auto reference = section_by_clipping(s.set, s.box, box, h);
     ASSERT_EQ(made.has_value(), reference.has_value()) << trial;
     if (!made) continue;
     EXPECT_TRUE(same_polygon(s.set, *made, *reference)) << trial;

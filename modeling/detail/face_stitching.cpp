@@ -93,9 +93,10 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
   return t;
 }
 
-// A uniform grid of the points, for finding those near an edge: up to 32 cells along each axis
-// (fewer for few points, about two per cube root of their number), the points sorted by cell,
-// each cell's range in one dense array (no hashing per cell visited: a long edge visits dozens).
+// A uniform grid of the points, for finding those near an edge along no axis: up to 32 cells
+// along each axis (fewer for few points, about two per cube root of their number), the points
+// sorted by cell, each cell's range in one dense array (no hashing per cell visited: a long
+// edge visits dozens).
 class PointGrid {
  public:
   explicit PointGrid(const std::vector<OpenMesh::Vec3d>& points) {
@@ -155,6 +156,67 @@ class PointGrid {
   std::vector<std::uint32_t> filed_;  // point indices, cell by cell
 };
 
+// The points on each line along an axis, by the two coordinates they share, in order along
+// it: the only points that may lie inside an edge along that axis (its ends differing in that
+// coordinate only: most edges of a home) are those of its line between its ends, found by a
+// lookup and a binary search where the grid's walk visits every point of the cells along it.
+class AxisLines {
+ public:
+  explicit AxisLines(const std::vector<OpenMesh::Vec3d>& points) {
+    std::vector<std::uint32_t> line_of(points.size());
+    for (int a = 0; a < 3; ++a) {
+      Family& f = families_[std::size_t(a)];
+      f.lines = FlatIndex<LineKey>(points.size());
+      f.start.assign(1, 0);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto [line, added] =
+            f.lines.try_emplace(key(points[i], a), std::uint32_t(f.start.size() - 1));
+        if (added) f.start.push_back(0);
+        line_of[i] = line;
+        ++f.start[line + 1];
+      }
+      for (std::size_t l = 1; l < f.start.size(); ++l) f.start[l] += f.start[l - 1];
+      f.order.resize(points.size());
+      std::vector<std::uint32_t> next(f.start.begin(), f.start.end() - 1);
+      for (std::size_t i = 0; i < points.size(); ++i)
+        f.order[next[line_of[i]]++] = std::uint32_t(i);
+      for (std::size_t l = 0; l + 1 < f.start.size(); ++l)
+        std::sort(f.order.begin() + f.start[l], f.order.begin() + f.start[l + 1],
+                  [&](std::uint32_t x, std::uint32_t y) { return points[x][a] < points[y][a]; });
+      f.along.resize(points.size());
+      for (std::size_t m = 0; m < points.size(); ++m) f.along[m] = points[f.order[m]][a];
+    }
+  }
+  /// Calls f(i) for every point i of the line along `axis` through u and v strictly between
+  /// them, in order along it. @pre u and v differ in coordinate `axis` only.
+  template <class F>
+  void for_each_between(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, int axis, F&& f) const {
+    const Family& family = families_[std::size_t(axis)];
+    const std::uint32_t line = family.lines.find(key(u, axis));
+    if (line == FlatIndex<LineKey>::kNone) return;
+    const double low = std::min(u[axis], v[axis]), high = std::max(u[axis], v[axis]);
+    const auto begin = family.along.begin() + family.start[line],
+               end = family.along.begin() + family.start[line + 1];
+    for (auto at = std::upper_bound(begin, end, low); at != end && *at < high; ++at)
+      f(std::size_t(family.order[std::size_t(at - family.along.begin())]));
+  }
+
+ private:
+  using LineKey = std::array<std::uint64_t, 2>;
+  struct Family {
+    FlatIndex<LineKey> lines;          // the two other coordinates -> the line's number
+    std::vector<std::uint32_t> start;  // per line, where its points start in order (and the end)
+    std::vector<std::uint32_t> order;  // point indices, line by line, each line's along the axis
+    std::vector<double> along;         // their coordinates along the axis
+  };
+  // The coordinates other than `axis` (+ 0.0: -0.0 and 0.0 are one coordinate).
+  static LineKey key(const OpenMesh::Vec3d& p, int axis) {
+    return {std::bit_cast<std::uint64_t>(p[(axis + 1) % 3] + 0.0),
+            std::bit_cast<std::uint64_t>(p[(axis + 2) % 3] + 0.0)};
+  }
+  std::array<Family, 3> families_;
+};
+
 // Whether rounded point w lies within a few ulps of the segment u-v, strictly between them.
 bool is_near_segment(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, const OpenMesh::Vec3d& w) {
   const OpenMesh::Vec3d d = v - u, r = w - u;
@@ -176,19 +238,6 @@ int only_differing_axis(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v) {
       axis = a;
     }
   return axis;
-}
-
-// Whether rounded point w may be the rounding of an exact point strictly inside the exact edge
-// whose ends round to u and v. Along an axis (u and v differing in coordinate `along` only:
-// most edges of a home), w equals them in the other two coordinates and lies strictly between
-// them: each coordinate of such a point lies between the exact ends', and rounding is
-// monotone (between u and v inclusive, and at u or v it is that end's own point). Otherwise
-// (along < 0), w lies within a few ulps of the segment.
-bool may_lie_on_edge(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, int along, const OpenMesh::Vec3d& w) {
-  if (along < 0) return is_near_segment(u, v, w);
-  const int b = (along + 1) % 3, c = (along + 2) % 3;
-  return w[b] == u[b] && w[c] == u[c] && std::min(u[along], v[along]) < w[along] &&
-         w[along] < std::max(u[along], v[along]);
 }
 
 // The axis along which u -> v changes most, and the sign of that change (exact).
@@ -215,6 +264,7 @@ IndexedSoup stitch_faces(const PlaneSet& set, std::span<const SolidFace* const> 
   // Shared with the soup's is_exact, which snapping may ask after this returns.
   const auto t = std::make_shared<PointTable>(number_faces(set, faces));
   const PointGrid grid(t->points);
+  const AxisLines lines(t->points);
   IndexedSoup out;
   out.polygons.resize(faces.size());
   // Faces are independent (the exact points' cache is safe to share): in parallel, each
@@ -233,18 +283,30 @@ IndexedSoup stitch_faces(const PlaneSet& set, std::span<const SolidFace* const> 
       // plane and the edge's line, strictly between the face's own exact ends.
       std::vector<std::pair<std::size_t, std::size_t>> on_edge;  // (point, its exact point)
       int axis = -1, dir = 0;
-      const int along = only_differing_axis(u, v);
-      grid.for_each_near(u, v, 1e-9 * (1.0 + u.norm()), [&](std::size_t wi) {
-        if (wi == ui || wi == vi || !may_lie_on_edge(u, v, along, t->points[wi])) return;
+      const auto decide = [&](std::size_t wi) {
         if (std::find(poly.begin(), poly.end(), wi) != poly.end()) return;
         for (std::size_t w = t->first_exact[wi]; w != PointTable::kNone; w = t->next_exact[w]) {
           if (t->exact.side(f.plane, w) != 0 || t->exact.side(f.lines[k], w) != 0) continue;
           if (axis < 0) std::tie(axis, dir) = edge_axis(t->exact, eu, ev, v - u);
-          if (t->exact.compare(w, eu, axis) != dir || t->exact.compare(ev, w, axis) != dir) continue;
+          if (t->exact.compare(w, eu, axis) != dir || t->exact.compare(ev, w, axis) != dir)
+            continue;
           on_edge.emplace_back(wi, w);
           break;
         }
-      });
+      };
+      // Along an axis (u and v differing in that coordinate only: most edges of a home), a
+      // point strictly inside the exact edge rounds to the other two coordinates of u and v
+      // and strictly between them along it: each of its coordinates lies between the exact
+      // ends', rounding is monotone, and rounding to u's or v's coordinate along the axis
+      // would make it u's or v's own point. Otherwise, it rounds within a few ulps of the
+      // segment.
+      if (const int along = only_differing_axis(u, v); along >= 0) {
+        lines.for_each_between(u, v, along, decide);
+      } else {
+        grid.for_each_near(u, v, 1e-9 * (1.0 + u.norm()), [&](std::size_t wi) {
+          if (wi != ui && wi != vi && is_near_segment(u, v, t->points[wi])) decide(wi);
+        });
+      }
       std::sort(on_edge.begin(), on_edge.end(), [&](const auto& a, const auto& b) {
         return t->exact.compare(a.second, b.second, axis) * dir < 0;
       });

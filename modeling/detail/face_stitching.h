@@ -19,8 +19,10 @@ namespace roomcad::detail {
 /// @return the faces as rounded polygons with every vertex lying on an edge inserted into it;
 ///         tags[k] is the index of the face polygon k came from; is_exact tells, when asked,
 ///         whether a rounded point is its exact point (an exact test: snap_soup asks it only of
-///         points that snap). O(e c) for e edges and c vertices near each (a uniform grid),
-///         exact tests only for vertices within a few ulps of an edge; faces in parallel.
+///         points that snap). O(e log c) for e edges along the axes and c points on their
+///         lines (each line's points in order), O(e c) for the other edges and c points in the
+///         cells of a uniform grid they cross; exact tests only for points within a few ulps
+///         of an edge; faces in parallel.
 [[nodiscard]] IndexedSoup stitch_faces(const PlaneSet& set, std::span<const SolidFace* const> faces);
 
 }  // namespace roomcad::detail

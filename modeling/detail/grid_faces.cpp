@@ -99,7 +99,8 @@ struct Step {
 struct Region {
   int side;  // +1: faces looking along the plane's normal, -1: against it
   long owner;
-  std::uint32_t u0, u1, v0, v1;  // cells [u0, u1) x [v0, v1)
+  std::uint32_t u0, u1, v0, v1;      // cells [u0, u1) x [v0, v1)
+  std::vector<std::uint32_t> cells;  // in order of v, then u
 };
 
 // Cells and points of the grid of the plane's view axes u (i) and v (j).
@@ -132,37 +133,56 @@ struct Grid {
   }
 };
 
-// The region's boundary: unit steps with its cells on their left. A cut (per line of
-// constant v) parts the cells on its two sides as if one of them were not the region's.
+// The region's boundary: unit steps with its cells on their left, each cell's sides that no
+// cell of the region shares (its cells only: a region's box may span most of the grid). A cut
+// (per line of constant v) parts the cells on its two sides as if one of them were not the
+// region's.
 std::vector<Step> boundary(const Grid& g, const Region& r, const std::vector<char>& cut) {
   const auto in = [&](std::uint32_t u, std::uint32_t v) {
     return u >= r.u0 && u < r.u1 && v >= r.v0 && v < r.v1 &&
            g.owner(g.cell(u, v), r.side) == r.owner;
   };
+  const auto parted = [&](std::uint32_t v) { return !cut.empty() && cut[v]; };
   std::vector<Step> steps;
-  for (std::uint32_t v = r.v0; v <= r.v1; ++v)
-    for (std::uint32_t u = r.u0; u < r.u1; ++u) {
-      const bool below = v > 0 && in(u, v - 1), above = in(u, v), parted = !cut.empty() && cut[v];
-      if (above && (!below || parted)) steps.push_back({g.point(u, v), east});
-      if (below && (!above || parted)) steps.push_back({g.point(u + 1, v), west});
-    }
-  for (std::uint32_t v = r.v0; v < r.v1; ++v)
-    for (std::uint32_t u = r.u0; u <= r.u1; ++u) {
-      const bool left = u > 0 && in(u - 1, v), right = in(u, v);
-      if (right && !left) steps.push_back({g.point(u, v + 1), south});
-      if (left && !right) steps.push_back({g.point(u, v), north});
-    }
+  for (const std::uint32_t cell : r.cells) {
+    const auto u = std::uint32_t(cell % (g.nu - 1)), v = std::uint32_t(cell / (g.nu - 1));
+    if (v == 0 || !in(u, v - 1) || parted(v)) steps.push_back({g.point(u, v), east});
+    if (!in(u, v + 1) || parted(v + 1)) steps.push_back({g.point(u + 1, v + 1), west});
+    if (u == 0 || !in(u - 1, v)) steps.push_back({g.point(u, v + 1), south});
+    if (!in(u + 1, v)) steps.push_back({g.point(u + 1, v), north});
+  }
   return steps;
 }
 
 // Links the steps into closed loops: at a point where two of them start (the region's cells
 // touch there at a corner only, or a cut parts them), the left turn first, then straight on,
-// so each loop keeps to cells joined by edges. None if a loop does not close (never expected:
-// the region's boundary has as many steps into a point as out of it).
-std::optional<std::vector<std::vector<Step>>> link(const Grid& g, std::vector<Step> steps) {
-  std::sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) {
+// so each loop keeps to cells joined by edges. Each loop starts at its least step (by point,
+// then direction), and the loops come in the order of those, whatever the steps' order. None
+// if a loop does not close (never expected: the region's boundary has as many steps into a
+// point as out of it). O(s) for s steps, and the loops' sort.
+// @param[in,out] starts  per grid point, kNone (scratch, left so)
+std::optional<std::vector<std::vector<Step>>> link(const Grid& g, const std::vector<Step>& steps,
+                                                   std::vector<std::uint32_t>& starts) {
+  constexpr std::uint32_t kNone = UINT32_MAX;
+  std::vector<std::uint32_t> also(steps.size());  // per step, the next step from its point
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    also[i] = starts[steps[i].from];
+    starts[steps[i].from] = std::uint32_t(i);
+  }
+  // 0: a left turn, 1: straight on, 2: a right turn, 3: back.
+  const auto preference = [](const Step& in, const Step& out) {
+    return (in.dir - out.dir + 5) % 4;
+  };
+  std::vector<std::uint32_t> successor(steps.size(), kNone);
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    for (std::uint32_t c = starts[g.end(steps[i])]; c != kNone; c = also[c])
+      if (successor[i] == kNone ||
+          preference(steps[i], steps[c]) < preference(steps[i], steps[successor[i]]))
+        successor[i] = c;
+  for (const Step& s : steps) starts[s.from] = kNone;
+  const auto less = [](const Step& a, const Step& b) {
     return a.from < b.from || (a.from == b.from && a.dir < b.dir);
-  });
+  };
   std::vector<char> used(steps.size(), 0);
   std::vector<std::vector<Step>> loops;
   for (std::size_t start = 0; start < steps.size(); ++start) {
@@ -170,22 +190,16 @@ std::optional<std::vector<std::vector<Step>>> link(const Grid& g, std::vector<St
     std::vector<Step>& loop = loops.emplace_back();
     std::size_t at = start;
     do {
+      if (successor[at] == kNone) return std::nullopt;
       used[at] = 1;
       loop.push_back(steps[at]);
-      const std::uint32_t next = g.end(steps[at]);
-      auto it = std::lower_bound(steps.begin(), steps.end(), next,
-                                 [](const Step& s, std::uint32_t p) { return s.from < p; });
-      // 0: a left turn, 1: straight on, 2: a right turn, 3: back.
-      const auto preference = [&](const Step& s) { return (steps[at].dir - s.dir + 5) % 4; };
-      std::size_t best = steps.size();
-      for (; it != steps.end() && it->from == next; ++it)
-        if (best == steps.size() || preference(*it) < preference(steps[best]))
-          best = std::size_t(it - steps.begin());
-      if (best == steps.size()) return std::nullopt;
-      at = best;
+      at = successor[at];
     } while (!used[at]);
     if (at != start) return std::nullopt;
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), less), loop.end());
   }
+  std::sort(loops.begin(), loops.end(),
+            [&](const auto& a, const auto& b) { return less(a.front(), b.front()); });
   return loops;
 }
 
@@ -235,10 +249,12 @@ std::int64_t twice_area(const Grid& g, const std::vector<Step>& loop) {
 
 // The region's loops, each passing a point once; where some are holes, the region is cut along
 // the line of constant v through each hole's top and traced again. None if holes remain.
-std::optional<std::vector<std::vector<Step>>> region_loops(const Grid& g, const Region& r) {
+// @param[in,out] starts  link's scratch
+std::optional<std::vector<std::vector<Step>>> region_loops(const Grid& g, const Region& r,
+                                                           std::vector<std::uint32_t>& starts) {
   std::vector<char> cut;
   for (int round = 0; round < 2; ++round) {
-    auto linked = link(g, boundary(g, r, cut));
+    auto linked = link(g, boundary(g, r, cut), starts);
     if (!linked) return std::nullopt;
     std::vector<std::vector<Step>> loops;
     for (std::vector<Step>& loop : *linked) split_at_repeats(std::move(loop), loops);
@@ -607,12 +623,13 @@ std::vector<Region> find_regions(const Grid& g) {
         if (owner != last_owner) {
           const auto [at, added] = region_of.try_emplace(
               (std::uint64_t(owner) << 1) | (side > 0 ? 1u : 0u), std::uint32_t(regions.size()));
-          if (added) regions.push_back({side, owner, u, u + 1, v, v + 1});
+          if (added) regions.push_back({side, owner, u, u + 1, v, v + 1, {}});
           last_owner = owner, r = at;
         }
         Region& region = regions[r];
         region.u0 = std::min(region.u0, u), region.u1 = std::max(region.u1, u + 1);
         region.v1 = v + 1;  // cells come in order of v
+        region.cells.push_back(std::uint32_t(g.cell(u, v)));
       }
   std::sort(regions.begin(), regions.end(), [](const Region& a, const Region& b) {
     return std::tie(a.side, a.owner) < std::tie(b.side, b.owner);
@@ -623,8 +640,9 @@ std::vector<Region> find_regions(const Grid& g) {
 // The faces of the regions' loops, into `faces`. @return false if a region cannot be traced.
 bool trace_faces(PlaneGrid& pg, PlaneRef plane, int view_side, std::vector<SolidFace>& faces) {
   const Grid& g = pg.grid();
+  std::vector<std::uint32_t> starts(g.nu * g.nv, UINT32_MAX);
   for (const Region& r : find_regions(g)) {
-    const auto loops = region_loops(g, r);
+    const auto loops = region_loops(g, r, starts);
     if (!loops) return false;
     for (const std::vector<Step>& loop : *loops) {
       std::vector<std::uint32_t> corners = face_corners(g, loop);

@@ -514,12 +514,29 @@ std::vector<Contribution> without_covered(const PlaneSet& set, std::vector<Contr
   return without_dropped(std::move(contributions), dropped);
 }
 
+// A point near the middle of convex polygon `polygon`: the mean of its corners' interval
+// midpoints, as explicit doubles (so up to a rounding off the polygon's plane); none where
+// those are not finite. A guess, for ordering and a shortcut whose false is allowed to be
+// wrong, never for a verdict.
+std::optional<XPoint> middle_of(const PlanePolygon& polygon) {
+  std::array<double, 3> sum{0.0, 0.0, 0.0};
+  for (const XPoint& v : polygon.vertices)
+    for (std::size_t k = 0; k < 3; ++k) sum[k] += v.approx[k].inf() / 2.0 + v.approx[k].sup() / 2.0;
+  const auto n = double(polygon.vertices.size());
+  for (double& x : sum) {
+    x /= n;
+    if (!std::isfinite(x)) return std::nullopt;
+  }
+  return make_point(sum[0], sum[1], sum[2]);
+}
+
 }  // namespace
 
 bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contributions) {
   const IntervalScope intervals;
   const std::vector<Box3> boxes = boxes_of(contributions);
   std::vector<const PlanePolygon*> covers;
+  const PlanePolygon* last = nullptr;  // the cover that held the last face: often the next too
   for (std::size_t f = 0; f < contributions.size(); ++f) {
     const Contribution& face = contributions[f];
     if (face.above == face.below) continue;  // a section
@@ -531,9 +548,25 @@ bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contribu
       if (other.solid && (face.below ? other.above : other.below) && boxes_meet(boxes[f], boxes[g]))
         covers.push_back(&other.polygon);
     }
-    if (std::none_of(covers.begin(), covers.end(), [&](const PlanePolygon* c) { return lies_in(set, face.polygon, *c); }) &&
-        !lies_in_union(set, face.polygon, covers))
-      return false;
+    if (last && std::find(covers.begin(), covers.end(), last) != covers.end() &&
+        lies_in(set, face.polygon, *last))
+      continue;
+    // A face whose middle no cover holds is (nearly surely) not covered: false at once, before
+    // the exact tests of containment. Otherwise the covers holding the middle go first.
+    if (const auto middle = middle_of(face.polygon)) {
+      const auto holders = std::stable_partition(
+          covers.begin(), covers.end(),
+          [&](const PlanePolygon* c) { return holds_point(set, *c, *middle); });
+      if (holders == covers.begin()) return false;
+    }
+    const auto holder = std::find_if(covers.begin(), covers.end(), [&](const PlanePolygon* c) {
+      return lies_in(set, face.polygon, *c);
+    });
+    if (holder != covers.end()) {
+      last = *holder;
+      continue;
+    }
+    if (!lies_in_union(set, face.polygon, covers)) return false;
   }
   return true;
 }

@@ -104,7 +104,9 @@ struct PlaneFaces {
 /// beyond), and no hole has a face there. Then solid lies on both sides of every point that
 /// has solid on either (holes' sections take both sides away alike): a storey's wall tops under
 /// the next storey's walls, faces inside walls drawn over one another. A shortcut: false does
-/// not mean faces. O(n^2) box tests, and the predicates of containment tests where boxes meet.
+/// not mean faces (a face whose middle, rounded to doubles, lies in no polygon beyond it gives
+/// false before any containment test: most planes with faces). O(n^2) box tests, and the
+/// predicates of containment tests where boxes meet, the polygons holding the middle first.
 [[nodiscard]] bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contributions);
 
 /// The faces of the solid on one plane. Built once; where faces have holes, cuts are added

@@ -63,6 +63,27 @@ TEST(HasNoFaces, AFaceCoveredByTheUnionOfSeveral) {
   EXPECT_FALSE(has_no_faces(p.set, beyond));
 }
 
+TEST(HasNoFaces, FacesHeldByDifferentCovers) {
+  Plane p;
+  // One cover holds the first two faces (the second is asked of it first), another the third.
+  const std::vector<Contribution> held{p.face_below(0, 0, 1, 1), p.face_below(1, 0, 2, 1),
+                                       p.face_below(5, 0, 6, 1), p.solid_above(5, 0, 6, 1, 1),
+                                       p.solid_above(0, 0, 2, 1, 2)};
+  EXPECT_TRUE(has_no_faces(p.set, held));
+  // The third face reaches beyond its cover (x up to 6.5): a face there.
+  std::vector<Contribution> beyond = held;
+  beyond[2] = p.face_below(5, 0, 6.5, 1);
+  EXPECT_FALSE(has_no_faces(p.set, beyond));
+}
+
+TEST(HasNoFaces, AFaceWhoseCornersAreCoveredButNotItsMiddle) {
+  Plane p;
+  // Two upper walls over the two ends of a lower wall's top: every corner of the top is held,
+  // its middle (1, 0.5) is not.
+  EXPECT_FALSE(has_no_faces(p.set, {p.face_below(0, 0, 2, 1), p.solid_above(0, 0, 0.9, 1, 1),
+                                    p.solid_above(1.1, 0, 2, 1, 2)}));
+}
+
 TEST(HasNoFaces, AHoleWithAFaceOnThePlaneKeepsIt) {
   Plane p;
   Contribution hole = p.solid_above(0.5, 0.5, 1, 1, 3);

@@ -93,6 +93,23 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
   return t;
 }
 
+// Items filed by group, a counting sort: first[g] is where group g's items start in `filed`
+// (first[groups] its end), each group's in the items' order. O(items + groups).
+struct Filed {
+  std::vector<std::uint32_t> first, filed;
+};
+Filed file_by_group(const std::vector<std::uint32_t>& group_of, std::size_t groups) {
+  Filed out;
+  out.first.assign(groups + 1, 0);
+  for (const std::uint32_t g : group_of) ++out.first[g + 1];
+  for (std::size_t g = 1; g < out.first.size(); ++g) out.first[g] += out.first[g - 1];
+  out.filed.resize(group_of.size());
+  std::vector<std::uint32_t> next(out.first.begin(), out.first.end() - 1);
+  for (std::size_t i = 0; i < group_of.size(); ++i)
+    out.filed[next[group_of[i]]++] = std::uint32_t(i);
+  return out;
+}
+
 // A uniform grid of the points, for finding those near an edge along no axis: up to 32 cells
 // along each axis (fewer for few points, about two per cube root of their number), the points
 // sorted by cell, each cell's range in one dense array (no hashing per cell visited: a long
@@ -109,17 +126,12 @@ class PointGrid {
     for (int k = 0; k < 3; ++k) extent = std::max(extent, high_[k] - low_[k]);
     side_ = std::clamp(int(2.0 * std::cbrt(double(points.size()))), 1, 32);
     cell_ = std::max(extent / side_, std::numeric_limits<double>::min());
-    // Count the points of each cell, then file them.
     std::vector<std::uint32_t> cell_of_point(points.size());
-    first_.assign(std::size_t(side_) * std::size_t(side_) * std::size_t(side_) + 1, 0);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      cell_of_point[i] = cell_of(points[i]);
-      ++first_[cell_of_point[i] + 1];
-    }
-    for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
-    filed_.resize(points.size());
-    std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
-    for (std::size_t i = 0; i < points.size(); ++i) filed_[next[cell_of_point[i]]++] = std::uint32_t(i);
+    for (std::size_t i = 0; i < points.size(); ++i) cell_of_point[i] = cell_of(points[i]);
+    Filed by_cell =
+        file_by_group(cell_of_point, std::size_t(side_) * std::size_t(side_) * std::size_t(side_));
+    first_ = std::move(by_cell.first);
+    filed_ = std::move(by_cell.filed);
   }
   /// Calls f(i) for every point in the cells the box [a, b] (grown by `margin`) touches.
   template <class F>
@@ -167,19 +179,15 @@ class AxisLines {
     for (int a = 0; a < 3; ++a) {
       Family& f = families_[std::size_t(a)];
       f.lines = FlatIndex<LineKey>(points.size());
-      f.start.assign(1, 0);
+      std::uint32_t lines = 0;
       for (std::size_t i = 0; i < points.size(); ++i) {
-        const auto [line, added] =
-            f.lines.try_emplace(key(points[i], a), std::uint32_t(f.start.size() - 1));
-        if (added) f.start.push_back(0);
+        const auto [line, added] = f.lines.try_emplace(key(points[i], a), lines);
+        lines += added;
         line_of[i] = line;
-        ++f.start[line + 1];
       }
-      for (std::size_t l = 1; l < f.start.size(); ++l) f.start[l] += f.start[l - 1];
-      f.order.resize(points.size());
-      std::vector<std::uint32_t> next(f.start.begin(), f.start.end() - 1);
-      for (std::size_t i = 0; i < points.size(); ++i)
-        f.order[next[line_of[i]]++] = std::uint32_t(i);
+      Filed by_line = file_by_group(line_of, lines);
+      f.start = std::move(by_line.first);
+      f.order = std::move(by_line.filed);
       for (std::size_t l = 0; l + 1 < f.start.size(); ++l)
         std::sort(f.order.begin() + f.start[l], f.order.begin() + f.start[l + 1],
                   [&](std::uint32_t x, std::uint32_t y) { return points[x][a] < points[y][a]; });

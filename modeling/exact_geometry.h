@@ -6,7 +6,9 @@
 // touch) is it evaluated again in 128-bit intervals (precise_interval.h), in which sums and
 // products of doubles are exact, and only when those cannot either (a square root of an exact
 // zero) in Radical (radical.h), which is exact for + - * / and the square roots of rationals
-// and decides signs in a bounded number of rational operations.
+// and decides signs in a bounded number of rational operations. That last stage is lazy
+// (lazy_radical.h): only the comparisons its double intervals cannot decide (the ties)
+// evaluate their two sides in Radical.
 // So wall corners, which involve the square root of a wall's squared length, are compared
 // exactly for the coordinates as read at the cost of double arithmetic in all but touching
 // cases, and never for long (CORE::Expr, used before, took minutes near degenerate shapes).
@@ -20,6 +22,7 @@
 
 #include <CGAL/Interval_nt.h>
 
+#include "modeling/detail/lazy_radical.h"
 #include "modeling/detail/precise_interval.h"
 #include "modeling/detail/radical.h"
 #include "modeling/joins.h"
@@ -30,6 +33,7 @@ namespace roomcad::exact {
 using Approx = CGAL::Interval_nt<false>;  ///< needs upward rounding: see decide()
 using Precise = PreciseInterval;          ///< 128-bit intervals (MPFR), any rounding mode
 using Exact = Radical;
+using LazyExact = LazyRadical;  ///< decide()'s last stage: Exact where intervals cannot tell
 
 template <class NT>
 struct Pt {
@@ -70,7 +74,7 @@ NT root(const NT& x) {
 }
 
 /// Evaluates `predicate(NT{})` exactly: in double intervals first, then in 128-bit ones, in
-/// Radical if neither can decide.
+/// Radical (lazily: LazyExact) if neither can decide.
 /// @param predicate  generic callable taking a number-type tag and returning a truth value
 ///                   (bool, or CGAL::Uncertain<bool> for intervals).
 /// @return the exact verdict. Cost: a few double operations unless the case is degenerate;
@@ -90,8 +94,8 @@ bool decide(Predicate&& predicate) {
   } catch (const UndecidedComparison&) {
     // Still straddled (a root of an exact zero, or a tie): fall through to exact arithmetic.
   }
-  const Exact::Scope scope;
-  return static_cast<bool>(predicate(Exact{}));
+  const LazyExact::Scope scope;
+  return static_cast<bool>(predicate(LazyExact{}));
 }
 
 /// The left normal of segment a->b scaled to length `half`: perp(b - a) * half / |b - a|.

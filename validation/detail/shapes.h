@@ -67,19 +67,6 @@ auto spans_overlap(const NT& lo1, const NT& hi1, const NT& lo2, const NT& hi2) {
   return lo1 < hi2 && lo2 < hi1;
 }
 
-/// Extremes without a decision: intervals take the hull-wise min/max (equal values are
-/// common here and must not force the exact path); exact numbers compare.
-template <class NT>
-NT lesser(const NT& a, const NT& b) {
-  if constexpr (std::is_same_v<NT, exact::Approx>) return CGAL::min(a, b);
-  else return a < b ? a : b;
-}
-template <class NT>
-NT greater(const NT& a, const NT& b) {
-  if constexpr (std::is_same_v<NT, exact::Approx>) return CGAL::max(a, b);
-  else return a < b ? b : a;
-}
-
 /// @return a fixed point near p: p itself, or for intervals the point of its lower bounds
 /// (exact), so that differences from it carry no extra width.
 template <class NT>
@@ -88,23 +75,40 @@ exact::Pt<NT> anchor_at(const exact::Pt<NT>& p) {
   else return p;
 }
 
+/// @return whether every one of `low` is at most every one of `high`.
+template <class NT>
+bool all_at_or_below(const std::array<NT, 4>& low, const std::array<NT, 4>& high) {
+  for (const NT& a : low)
+    for (const NT& b : high)
+      if (!(a <= b)) return false;
+  return true;
+}
+
 /// @return true if `axis` separates p and q (their projections meet at most at a point).
 /// Projections are taken from an anchor on p: the axis is uncertain in intervals, and
 /// multiplying it by coordinates a million metres from the origin would magnify that.
+/// Intervals compare the hulls of the projections. The finer types compare each corner of p
+/// with each corner of q: along the normal of one of its own edges two corners of a quad
+/// project to the same value, and taking the extremes would compare those two, a tie that
+/// only Radical decides; a corner of p ties with one of q only where the quads touch.
 template <class NT>
 bool separates(const exact::Pt<NT>& axis, const Quad<NT>& p, const Quad<NT>& q) {
   const exact::Pt<NT> o = anchor_at(p[0]);
-  const auto project = [&](const exact::Pt<NT>& c) { return exact::dot(axis, c - o); };
-  NT p_lo = project(p[0]), p_hi = p_lo, q_lo = project(q[0]), q_hi = q_lo;
-  for (std::size_t i = 1; i < 4; ++i) {
-    const NT a = project(p[i]);
-    const NT b = project(q[i]);
-    p_lo = lesser(p_lo, a);
-    p_hi = greater(p_hi, a);
-    q_lo = lesser(q_lo, b);
-    q_hi = greater(q_hi, b);
+  const auto along = [&](const Quad<NT>& s) {
+    const auto at = [&](std::size_t i) { return exact::dot(axis, s[i] - o); };
+    return std::array<NT, 4>{at(0), at(1), at(2), at(3)};
+  };
+  const std::array<NT, 4> along_p = along(p), along_q = along(q);
+  if constexpr (std::is_same_v<NT, exact::Approx>) {
+    NT p_lo = along_p[0], p_hi = p_lo, q_lo = along_q[0], q_hi = q_lo;
+    for (std::size_t i = 1; i < 4; ++i) {
+      p_lo = CGAL::min(p_lo, along_p[i]), p_hi = CGAL::max(p_hi, along_p[i]);
+      q_lo = CGAL::min(q_lo, along_q[i]), q_hi = CGAL::max(q_hi, along_q[i]);
+    }
+    return p_hi <= q_lo || q_hi <= p_lo;
+  } else {
+    return all_at_or_below(along_p, along_q) || all_at_or_below(along_q, along_p);
   }
-  return p_hi <= q_lo || q_hi <= p_lo;
 }
 
 /// @return true if convex quads p and q share interior area (touching is not sharing).

@@ -114,8 +114,5 @@ int compare(const LazyRadical& a, const LazyRadical& b) {
 
 const Radical& LazyRadical::exact() const { return node_->evaluate(); }
 bool LazyRadical::is_evaluated() const { return node_->exact.has_value(); }
-std::pair<double, double> LazyRadical::interval() const {
-  return {node_->approx.inf(), node_->approx.sup()};
-}
 
 }  // namespace roomcad::exact

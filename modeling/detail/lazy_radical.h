@@ -20,7 +20,6 @@
 
 #include <compare>
 #include <cstddef>
-#include <utility>
 
 #include "modeling/detail/radical.h"
 
@@ -62,8 +61,6 @@ class LazyRadical {
   [[nodiscard]] const Radical& exact() const;
   /// @return whether exact() has been evaluated (for tests of the laziness).
   [[nodiscard]] bool is_evaluated() const;
-  /// @return an interval [lo, hi] of doubles that holds the value.
-  [[nodiscard]] std::pair<double, double> interval() const;
 
   struct Node;         ///< an expression node (lazy_radical.cpp)
   struct FromNode {};  ///< a tag, so that NT(0) does not read as a null node

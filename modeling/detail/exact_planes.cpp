@@ -389,15 +389,41 @@ std::optional<std::array<double, 3>> round_axis_point(const PlaneSet& set, const
   return out;
 }
 
+// The point's coordinate k, rounded, where its other two are the doubles `known` (their
+// intervals are points): from one of its planes with a non-zero coefficient a_k, x_k =
+// -(d + sum of a_i x_i, i != k) / a_k, five exact operations on the plane's coefficients
+// instead of the point's four exact 3 x 3 determinants (a slanted wall's side meeting a
+// storey's height and a wall across it, the usual corner of a grid there). Nothing where no
+// plane's interval tells a_k from 0.
+std::optional<double> round_last_coordinate(const PlaneSet& set, const XPoint& p, std::size_t k,
+                                            const std::array<double, 3>& known) {
+  for (const PlaneId id : p.planes) {
+    const Interval& a_k = set.approx(id)[k];
+    if (a_k.inf() <= 0.0 && a_k.sup() >= 0.0) continue;
+    const std::array<Exact, 4>& c = set.exact(id);
+    Exact sum = c[3];
+    for (std::size_t i = 0; i < 3; ++i)
+      if (i != k) sum += c[i] * Exact(known[i]);
+    return round_quotient(-sum, c[k]);
+  }
+  return std::nullopt;
+}
+
 std::array<double, 3> round_of(const PlaneSet& set, const XPoint& p) {
   std::array<double, 3> out{};
-  bool all_points = true;
+  int inexact = 0;
+  std::size_t last = 0;
   for (std::size_t k = 0; k < 3; ++k) {
     out[k] = p.approx[k].inf();
-    all_points = all_points && p.approx[k].inf() == p.approx[k].sup();
+    if (p.approx[k].inf() != p.approx[k].sup()) ++inexact, last = k;
   }
-  if (all_points) return out;
+  if (inexact == 0) return out;
   if (const auto axis_point = round_axis_point(set, p)) return *axis_point;
+  if (inexact == 1 && !p.is_explicit())
+    if (const auto x = round_last_coordinate(set, p, last, out)) {
+      out[last] = *x + 0.0;
+      return out;
+    }
   return set.exact_rounding(p);
 }
 

@@ -205,11 +205,16 @@ std::optional<std::vector<std::vector<Step>>> link(const Grid& g, const std::vec
 
 // Splits a loop that passes a point twice (the region touches itself at a corner there) into
 // loops that pass each point once.
-void split_at_repeats(std::vector<Step> loop, std::vector<std::vector<Step>>& out) {
-  std::vector<std::uint32_t> points;
-  for (const Step& s : loop) points.push_back(s.from);
-  std::sort(points.begin(), points.end());
-  if (std::adjacent_find(points.begin(), points.end()) == points.end()) {
+// @param[in,out] marked  per grid point, 0 (scratch, left so)
+void split_at_repeats(std::vector<Step> loop, std::vector<char>& marked,
+                      std::vector<std::vector<Step>>& out) {
+  bool repeats = false;
+  for (const Step& s : loop) {
+    repeats = repeats || marked[s.from];
+    marked[s.from] = 1;
+  }
+  for (const Step& s : loop) marked[s.from] = 0;
+  if (!repeats) {
     out.push_back(std::move(loop));
     return;
   }
@@ -247,17 +252,23 @@ std::int64_t twice_area(const Grid& g, const std::vector<Step>& loop) {
   return sum;
 }
 
+// Scratch space per grid point for tracing regions, each entry left as found.
+struct TraceScratch {
+  std::vector<std::uint32_t> starts;  // link's
+  std::vector<char> marked;           // split_at_repeats'
+};
+
 // The region's loops, each passing a point once; where some are holes, the region is cut along
 // the line of constant v through each hole's top and traced again. None if holes remain.
-// @param[in,out] starts  link's scratch
 std::optional<std::vector<std::vector<Step>>> region_loops(const Grid& g, const Region& r,
-                                                           std::vector<std::uint32_t>& starts) {
+                                                           TraceScratch& scratch) {
   std::vector<char> cut;
   for (int round = 0; round < 2; ++round) {
-    auto linked = link(g, boundary(g, r, cut), starts);
+    auto linked = link(g, boundary(g, r, cut), scratch.starts);
     if (!linked) return std::nullopt;
     std::vector<std::vector<Step>> loops;
-    for (std::vector<Step>& loop : *linked) split_at_repeats(std::move(loop), loops);
+    for (std::vector<Step>& loop : *linked)
+      split_at_repeats(std::move(loop), scratch.marked, loops);
     std::vector<std::uint32_t> tops;
     for (const std::vector<Step>& loop : loops) {
       if (twice_area(g, loop) > 0) continue;
@@ -640,9 +651,10 @@ std::vector<Region> find_regions(const Grid& g) {
 // The faces of the regions' loops, into `faces`. @return false if a region cannot be traced.
 bool trace_faces(PlaneGrid& pg, PlaneRef plane, int view_side, std::vector<SolidFace>& faces) {
   const Grid& g = pg.grid();
-  std::vector<std::uint32_t> starts(g.nu * g.nv, UINT32_MAX);
+  TraceScratch scratch{std::vector<std::uint32_t>(g.nu * g.nv, UINT32_MAX),
+                       std::vector<char>(g.nu * g.nv, 0)};
   for (const Region& r : find_regions(g)) {
-    const auto loops = region_loops(g, r, starts);
+    const auto loops = region_loops(g, r, scratch);
     if (!loops) return false;
     for (const std::vector<Step>& loop : *loops) {
       std::vector<std::uint32_t> corners = face_corners(g, loop);

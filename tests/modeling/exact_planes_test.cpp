@@ -3,6 +3,7 @@
 // rational arithmetic (GMP) written out independently here.
 #include "modeling/detail/exact_planes.h"
 
+#include <fmt/format.h>
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -152,6 +154,18 @@ PlaneId add_axis_sum(PlaneSet& set, int axis, double hi, double lo) {
   return set.add(r);
 }
 
+// No double lies closer to x than r, and of two as close r is the even one.
+void expect_nearest_ties_to_even(const Q& x, double r, const std::string& what) {
+  const Q err = abs(Q(x - Q(r)));
+  const Q up = abs(Q(x - Q(std::nextafter(r, INFINITY)))),
+          down = abs(Q(x - Q(std::nextafter(r, -INFINITY))));
+  EXPECT_LE(err, up) << what;
+  EXPECT_LE(err, down) << what;
+  if (err == up || err == down) {  // a tie
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(r) & 1u, 0u) << what;
+  }
+}
+
 TEST(ExactPlanes, CornersOfAxisPlanesAtSumsRoundToTheNearestDoubleTiesToEven) {
   // Each coordinate is hi + lo with |lo| at most half an ulp of hi, ties included: below a
   // power of two the ulp is half as large. Checked against the exact sum's nearest double,
@@ -171,17 +185,40 @@ TEST(ExactPlanes, CornersOfAxisPlanesAtSumsRoundToTheNearestDoubleTiesToEven) {
                                             add_axis_sum(set, 2, hi, 0.0));
     const auto rounded = detail::round_point(set, point);
     const std::array<Q, 3> exact{Q(Q(hi) + Q(lo)), Q(-(Q(hi) + Q(lo))), Q(hi)};
-    for (std::size_t k = 0; k < 3; ++k) {
-      const Q& x = exact[k];
-      const double r = rounded[k];
-      const Q err = abs(Q(x - Q(r)));
-      const Q up = abs(Q(x - Q(std::nextafter(r, INFINITY)))), down = abs(Q(x - Q(std::nextafter(r, -INFINITY))));
-      EXPECT_LE(err, up) << hi << " + " << lo << " axis " << k;
-      EXPECT_LE(err, down) << hi << " + " << lo << " axis " << k;
-      if (err == up || err == down) {  // a tie: the even one
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(r) & 1u, 0u) << hi << " + " << lo << " axis " << k;
-      }
-    }
+    for (std::size_t k = 0; k < 3; ++k)
+      expect_nearest_ties_to_even(exact[k], rounded[k], fmt::format("{} + {} axis {}", hi, lo, k));
+  }
+}
+
+// A slanted wall's side meeting two axis planes: two coordinates are the axis planes' doubles,
+// the third is rounded from the slanted plane alone (round_last_coordinate), and must be what
+// the point's full exact coordinates give, ties included.
+TEST(ExactPlanes, CornersWithOneInexactCoordinateRoundLikeTheirExactCoordinates) {
+  const double u = 0x1p-52;
+  PlaneSet set;
+  // y = 3 x at x = 1 + u: y = 3 + 3u, halfway between 3 + 2u and 3 + 4u (the even one).
+  const PlaneId steep = add_through(set, 0.0, 0.0, 1.0, 3.0);
+  const XPoint tie =
+      detail::make_point(set, steep, set.add_axis(0, 1.0 + u), set.add_axis(2, 0.25));
+  EXPECT_EQ(detail::round_point(set, tie)[1], 3.0 + 4 * u);
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> coord(-1e3, 1e3);
+  for (int trial = 0; trial < 300; ++trial) {
+    double c[6];
+    for (double& v : c) v = coord(rng);
+    const QPlane slanted = through(c[0], c[1], c[2], c[3]);
+    // Across x (trials even) or y (odd): the point's other plan coordinate is the inexact one.
+    const int across = trial % 2;
+    const PlaneId t = add_through(set, c[0], c[1], c[2], c[3]);
+    const XPoint point =
+        detail::make_point(set, t, set.add_axis(across, c[4]), set.add_axis(2, c[5]));
+    QPlane axis{0, 0, 0, -Q(c[4])};
+    axis[std::size_t(across)] = 1;
+    const QPoint x = meet(slanted, axis, {0, 0, 1, -Q(c[5])});
+    const auto rounded = detail::round_point(set, point);
+    EXPECT_EQ(rounded, set.exact_rounding(point)) << trial;
+    for (std::size_t k = 0; k < 3; ++k)
+      expect_nearest_ties_to_even(x[k], rounded[k], fmt::format("trial {} axis {}", trial, k));
   }
 }
 

@@ -11,6 +11,7 @@
 #include <mpfr.h>
 #include <tbb/concurrent_unordered_map.h>
 
+#include "modeling/detail/interval_sign.h"
 #include "modeling/flat_index.h"
 
 namespace roomcad::detail {
@@ -81,16 +82,6 @@ std::array<T, 4> meet(const std::array<T, 4>& p0, const std::array<T, 4>& p1, co
   return {-det3(p0, p1, p2, 1, 2, 3), det3(p0, p1, p2, 0, 2, 3), -det3(p0, p1, p2, 0, 1, 3),
           det3(p0, p1, p2, 0, 1, 2)};
 }
-
-// -1, 0, +1 when the interval decides; 2 when it holds 0 but is not 0.
-int interval_sign(const Interval& x) {
-  if (x.inf() > 0.0) return 1;
-  if (x.sup() < 0.0) return -1;
-  if (x.inf() == 0.0 && x.sup() == 0.0) return 0;
-  return 2;
-}
-
-constexpr int kUnknown = 2;
 
 int exact_sign(const Exact& x) { return int(x.sign()); }
 
@@ -313,7 +304,7 @@ int side_of(const PlaneSet& set, PlaneRef plane, const XPoint& p, HomOf&& hom_of
     // q . (X, Y, Z, W) is the plane's value at the point times W.
     const int sq = interval_sign(q[0] * h[0] + q[1] * h[1] + q[2] * h[2] + q[3] * h[3]);
     const int sw = interval_sign(h[3]);
-    if (sq != kUnknown && sw != kUnknown) return sq * sw * plane.sign;
+    if (sq != kUnknownSign && sw != kUnknownSign) return sq * sw * plane.sign;
   }
   return exact_side(set.exact(plane.id), hom_of()) * plane.sign;
 }
@@ -495,24 +486,25 @@ int PointCache::compare(std::size_t i, double value, int axis) {
 std::array<double, 3> PointCache::round(std::size_t i) { return round_of(set_, points_[i]); }
 
 int orient_normals(const PlaneSet& set, PlaneRef a, PlaneRef b, PlaneRef c) {
-  int s = kUnknown;
+  int s = kUnknownSign;
   {
     const UpwardRounding upward;
     s = interval_sign(det3(set.approx(a.id), set.approx(b.id), set.approx(c.id), 0, 1, 2));
   }
-  if (s == kUnknown) s = exact_sign(det3(set.exact(a.id), set.exact(b.id), set.exact(c.id), 0, 1, 2));
+  if (s == kUnknownSign)
+    s = exact_sign(det3(set.exact(a.id), set.exact(b.id), set.exact(c.id), 0, 1, 2));
   return s * a.sign * b.sign * c.sign;
 }
 
 int dot_normals(const PlaneSet& set, PlaneRef a, PlaneRef b) {
-  int s = kUnknown;
+  int s = kUnknownSign;
   {
     const UpwardRounding upward;
     const auto& p = set.approx(a.id);
     const auto& q = set.approx(b.id);
     s = interval_sign(p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
   }
-  if (s == kUnknown) {
+  if (s == kUnknownSign) {
     const auto& p = set.exact(a.id);
     const auto& q = set.exact(b.id);
     s = exact_sign(p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
@@ -526,12 +518,13 @@ int dot_in_plane(const PlaneSet& set, PlaneRef plane, PlaneRef a, PlaneRef b) {
     auto dot = [](const auto& x, const auto& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
     return dot(p, q) * dot(n, n) - dot(p, n) * dot(q, n);
   };
-  int s = kUnknown;
+  int s = kUnknownSign;
   {
     const UpwardRounding upward;
     s = interval_sign(value(set.approx(plane.id), set.approx(a.id), set.approx(b.id)));
   }
-  if (s == kUnknown) s = exact_sign(value(set.exact(plane.id), set.exact(a.id), set.exact(b.id)));
+  if (s == kUnknownSign)
+    s = exact_sign(value(set.exact(plane.id), set.exact(a.id), set.exact(b.id)));
   return s * a.sign * b.sign;
 }
 

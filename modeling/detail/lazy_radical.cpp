@@ -9,20 +9,13 @@
 #include <optional>
 #include <utility>
 
+#include "modeling/detail/interval_sign.h"
+
 namespace roomcad::exact {
 namespace {
 
 /// Self-protecting intervals: each operation rounds outward whatever the caller's rounding.
 using Interval = CGAL::Interval_nt<true>;
-
-/// @return the sign the interval proves, or 2 if it holds numbers of both signs. A point
-/// interval at zero proves zero: the interval always holds the value.
-int sign_of(const Interval& x) {
-  if (x.inf() > 0) return 1;
-  if (x.sup() < 0) return -1;
-  if (x.inf() == 0 && x.sup() == 0) return 0;
-  return 2;
-}
 
 }  // namespace
 
@@ -102,14 +95,14 @@ LazyRadical sqrt(const LazyRadical& x) {
 }
 
 int sign(const LazyRadical& x) {
-  const int s = sign_of(x.node_->approx);
-  return s != 2 ? s : sign(x.exact());
+  const int s = detail::interval_sign(x.node_->approx);
+  return s != detail::kUnknownSign ? s : sign(x.exact());
 }
 
 int compare(const LazyRadical& a, const LazyRadical& b) {
   if (a.node_ == b.node_) return 0;
-  const int s = sign_of(a.node_->approx - b.node_->approx);
-  return s != 2 ? s : sign(a.exact() - b.exact());
+  const int s = detail::interval_sign(a.node_->approx - b.node_->approx);
+  return s != detail::kUnknownSign ? s : sign(a.exact() - b.exact());
 }
 
 const Radical& LazyRadical::exact() const { return node_->evaluate(); }

@@ -30,13 +30,30 @@ std::vector<SpaceBox> random_boxes(std::mt19937& random, std::size_t n) {
   return boxes;
 }
 
+// The pairs of boxes that meet, by testing every pair: (lower index, higher), sorted (the
+// indices grow with the position).
+IndexPairs all_meeting(const std::vector<SpaceBox>& boxes) {
+  IndexPairs pairs;
+  for (std::size_t a = 0; a < boxes.size(); ++a)
+    for (std::size_t b = a + 1; b < boxes.size(); ++b)
+      if (meet(boxes[a], boxes[b])) pairs.emplace_back(boxes[a].plan.index, boxes[b].plan.index);
+  return pairs;
+}
+
+// The pairs (left, right) of boxes that meet, by testing every pair, sorted.
+IndexPairs all_meeting(const std::vector<SpaceBox>& left, const std::vector<SpaceBox>& right) {
+  IndexPairs pairs;
+  for (const SpaceBox& a : left)
+    for (const SpaceBox& b : right)
+      if (meet(a, b)) pairs.emplace_back(a.plan.index, b.plan.index);
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
 TEST(BroadPhase, SpaceBoxesMeetWhereTheirPlansAndHeightsBothMeetAsABruteForceSaysSorted) {
   std::mt19937 random(7);
   const std::vector<SpaceBox> boxes = random_boxes(random, 300);
-  IndexPairs expected;
-  for (std::size_t a = 0; a < boxes.size(); ++a)
-    for (std::size_t b = a + 1; b < boxes.size(); ++b)
-      if (meet(boxes[a], boxes[b])) expected.emplace_back(boxes[a].plan.index, boxes[b].plan.index);
+  const IndexPairs expected = all_meeting(boxes);
   ASSERT_GT(expected.size(), 100u);
   EXPECT_EQ(find_meeting_boxes(boxes), expected);
   // In plan alone, storeys stand on one another: more pairs.
@@ -48,13 +65,25 @@ TEST(BroadPhase, SpaceBoxesMeetWhereTheirPlansAndHeightsBothMeetAsABruteForceSay
 TEST(BroadPhase, PairsOfTwoSequencesOfSpaceBoxesComeInLeftRightOrder) {
   std::mt19937 random(11);
   const std::vector<SpaceBox> left = random_boxes(random, 120), right = random_boxes(random, 80);
-  IndexPairs expected;
-  for (const SpaceBox& a : left)
-    for (const SpaceBox& b : right)
-      if (meet(a, b)) expected.emplace_back(a.plan.index, b.plan.index);
-  std::sort(expected.begin(), expected.end());
+  const IndexPairs expected = all_meeting(left, right);
   ASSERT_FALSE(expected.empty());
   EXPECT_EQ(find_meeting_boxes(left, right), expected);
+}
+
+TEST(BroadPhase, ManyBoxesGoToTheSegmentTreeAndMeetAsABruteForceSays) {
+  // 3000 boxes: past the 2048 below which a sweep finds the pairs (the tests above), CGAL's
+  // segment tree does, alone and against a second sequence.
+  std::mt19937 random(13);
+  std::vector<SpaceBox> boxes = random_boxes(random, 3000);
+  for (SpaceBox& b : boxes) b.plan.min_x *= 8.0, b.plan.max_x *= 8.0;  // fewer pairs, still many
+  const IndexPairs expected = all_meeting(boxes);
+  ASSERT_GT(expected.size(), 3000u);
+  EXPECT_EQ(find_meeting_boxes(boxes), expected);
+  const std::vector<SpaceBox> left(boxes.begin(), boxes.begin() + 2000),
+      right(boxes.begin() + 2000, boxes.end());
+  const IndexPairs across = all_meeting(left, right);
+  ASSERT_FALSE(across.empty());
+  EXPECT_EQ(find_meeting_boxes(left, right), across);
 }
 
 TEST(BroadPhase, AStoreyMeetsTheOneItStandsOnAtItsFloorAndNotTheOneAboveThat) {

@@ -173,6 +173,10 @@ std::optional<ScreenTriangle> set_up_triangle(const std::array<ClipVertex, 3>& v
     const float inv_w = 1.f / p.w;
     const double sx = (static_cast<double>(p.x) * inv_w + 1.0) * 0.5 * width;
     const double sy = (1.0 - static_cast<double>(p.y) * inv_w) * 0.5 * height;
+    // Not a number, or past the fixed point's range (a light's view of a scene whose bounds
+    // overflow: found by fuzz_render): nothing to draw.
+    constexpr double kLimit = 0x1p30 / kSubpixelScale;  // round_to_fixed's
+    if (!(std::abs(sx) < kLimit && std::abs(sy) < kLimit)) return std::nullopt;
     t.x[i] = round_to_fixed(sx * kSubpixelScale);
     t.y[i] = round_to_fixed(sy * kSubpixelScale);
     t.depth[i] = std::clamp(p.z * inv_w, 0.f, 1.f);

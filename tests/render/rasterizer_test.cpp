@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -129,6 +130,16 @@ TEST(Render, SteppedSpansOfHugeTrianglesMatchTheEdgeFunctions) {
       }
     }
   }
+}
+
+TEST(Render, ATriangleWithACornerThatIsNotANumberIsNotSetUp) {
+  const ClipVertex a = ndc(-0.5f, -0.5f), b = ndc(0.5f, -0.5f), c = ndc(0.f, 0.5f);
+  ClipVertex bad = c;
+  bad.position.x = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE(set_up_triangle({a, b, c}, 32, 32, 0, Culling::none).has_value());
+  EXPECT_FALSE(set_up_triangle({a, b, bad}, 32, 32, 0, Culling::none).has_value());
+  bad.position = {1e30f, 0.f, 0.5f, 1.f};  // past the fixed point's range
+  EXPECT_FALSE(set_up_triangle({a, b, bad}, 32, 32, 0, Culling::none).has_value());
 }
 
 TEST(Render, BackFacesAreCulledAndFrontFacesKept) {

@@ -19,7 +19,12 @@ std::string format_wall_check_text(const WallCheck& v) {
   out += fmt::format("  closed              {} ({} border edges)\n", yes_no(c.is_closed()), c.border_edges);
   out += fmt::format("  2-manifold          {} ({} non-manifold vertices, {} rejected triangles)\n",
                      yes_no(c.is_manifold()), c.non_manifold_vertices, c.rejected_triangles);
-  out += fmt::format("  self-intersections  {}\n", c.self_intersections);
+  out +=
+      fmt::format("  self-intersections  {}{}\n", c.self_intersections,
+                  c.touching_pairs == 0
+                      ? ""
+                      : fmt::format(" ({} pairs of triangles touch at a shared point or edge only)",
+                                    c.touching_pairs));
   out += fmt::format("  degenerate faces    {}\n", c.degenerate_triangles);
   out += fmt::format("  outward oriented    {} ({} inward components{})\n", yes_no(c.inward_components == 0),
                      c.inward_components, c.cavities == 0 ? "" : fmt::format(", {} cavities", c.cavities));
@@ -36,12 +41,14 @@ std::string format_wall_check_json(const WallCheck& v) {
   return fmt::format(
       "{{\"ok\": {}, \"vertices\": {}, \"faces\": {}, \"triangles\": {}, \"components\": {}, "
       "\"closed\": {}, \"border_edges\": {}, \"manifold\": {}, \"non_manifold_vertices\": {}, "
-      "\"rejected_triangles\": {}, \"self_intersections\": {}, \"degenerate_faces\": {}, "
+      "\"rejected_triangles\": {}, \"self_intersections\": {}, \"touching_pairs\": {}, "
+      "\"degenerate_faces\": {}, "
       "\"outward\": {}, \"cavities\": {}, \"genus\": {}, \"volume\": {}, \"analytic_volume\": {}, "
       "\"relative_difference\": {}}}\n",
       v.ok, c.vertices, c.faces, c.triangles, c.components, c.is_closed(), c.border_edges,
       c.is_manifold(), c.non_manifold_vertices, c.rejected_triangles, c.self_intersections,
-      c.degenerate_triangles, c.inward_components == 0, c.cavities, c.genus, c.volume, v.analytic, v.relative);
+      c.touching_pairs, c.degenerate_triangles, c.inward_components == 0, c.cavities, c.genus,
+      c.volume, v.analytic, v.relative);
 }
 
 }  // namespace roomcad

@@ -20,6 +20,11 @@ struct SolidCheck {
   std::size_t rejected_triangles = 0;    ///< triangles that would make an edge non-manifold
   std::size_t degenerate_triangles = 0;  ///< collinear corners (exact predicate)
   std::size_t self_intersections = 0;    ///< pairs of intersecting triangles (exact predicates)
+  /// Pairs of triangles that meet only at points both hold, each written as its own vertex:
+  /// where the solid touches itself at a point or along an edge (walls meeting at a corner
+  /// only, a slab's corner on a wall's edge), a copy of the vertex per side keeps the mesh
+  /// 2-manifold. Not an intersection: the faces do not cross.
+  std::size_t touching_pairs = 0;
   std::size_t inward_components = 0;     ///< components facing the wrong way (inside out)
   std::size_t cavities = 0;              ///< components bounding a void inside the solid (facing in, rightly)
   std::size_t components = 0;

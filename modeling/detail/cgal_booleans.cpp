@@ -111,13 +111,17 @@ FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int 
   sort_soup(exact, polygons);
   const IndexedSoup r = round_soup(exact, std::move(polygons));
   std::pair<std::size_t, std::size_t> bad;
-  const FanSplit fans = split_fans(r.polygons, r.points.size(), bad);
+  const FanSplit fans = split_fans(r.polygons, r.points, bad);
   if (fans.vertex.empty() && !r.polygons.empty())
-    throw PreconditionError(fmt::format(
-        "build_model: the solid of walls {} is not 2-manifold: more than two of its faces meet at "
-        "the edge from ({}, {}, {}) to ({}, {}, {}) (walls touching along an edge)", wall_list(walls),
-        r.points[bad.first][0], r.points[bad.first][1], r.points[bad.first][2],
-        r.points[bad.second][0], r.points[bad.second][1], r.points[bad.second][2]), Code::not_buildable);
+    throw PreconditionError(
+        fmt::format("build_model: the solid of walls {} is not 2-manifold: more than two of its "
+                    "faces meet at "
+                    "the edge from ({}, {}, {}) to ({}, {}, {}), and they cannot be paired across "
+                    "their material",
+                    wall_list(walls), r.points[bad.first][0], r.points[bad.first][1],
+                    r.points[bad.first][2], r.points[bad.second][0], r.points[bad.second][1],
+                    r.points[bad.second][2]),
+        Code::not_buildable);
   FaceSoup soup;
   soup.reserve(r.polygons.size());
   for (std::size_t k = 0; k < r.polygons.size(); ++k) {

@@ -4,10 +4,14 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
+#include <tuple>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -66,16 +70,116 @@ std::optional<std::string> find_add_face_problem(const SolidMesh& mesh,
   return std::nullopt;
 }
 
+// A polygon soup's corners as split_fans numbers them (polygons in order).
+struct SoupCorners {
+  const std::vector<std::vector<std::size_t>>& polygons;
+  const std::vector<OpenMesh::Vec3d>& points;
+  const std::vector<std::size_t>& first_corner;  // per polygon, and the end
+  const FlatIndex<std::uint64_t>& corner_after;  // edge a->b (key a * points + b): a corner at b
+};
+
+// One face's use of an edge that more than two faces share.
+struct EdgeSide {
+  std::uint32_t start = 0, end = 0;  // its corners at the edge's ends, in the face's order
+  double angle = 0.0;                // of the face about the edge
+  bool forward = false;              // runs from the edge's lower point index to the higher
+};
+
+// Where more than two faces meet at an edge (solids touching along it: walls meeting at a
+// corner only, a slab's corner on a wall's edge), pairs each face with the one across the
+// solid's material from it. Sorted by angle about b - a (right-handed), the faces alternate in
+// direction, and a face running a -> b bounds the wedge of material between it and the face
+// before it: turning from such a face towards larger angles turns towards its normal, out of
+// the material. The angles are of the rounded faces, in floating point: only which neighbour,
+// never a coordinate, comes of them.
+// @param[out] across  per corner at an end of a paired face, the corner it joins in its pair
+// @param[out] sides   every face's (start, end) corners at the shared edges
+// @return false (bad_edge set) where the faces do not alternate. O(k log k) per edge of k faces.
+bool pair_faces_at_shared_edges(const SoupCorners& soup, const std::vector<std::uint32_t>& repeats,
+                                std::unordered_map<std::size_t, std::size_t>& across,
+                                std::vector<std::pair<std::uint32_t, std::uint32_t>>& sides,
+                                std::pair<std::size_t, std::size_t>& bad_edge) {
+  const std::size_t n_points = soup.points.size();
+  const auto polygon_of = [&](std::size_t corner) {
+    return std::size_t(
+        std::upper_bound(soup.first_corner.begin(), soup.first_corner.end(), corner) -
+        soup.first_corner.begin() - 1);
+  };
+  const auto point_at = [&](std::size_t corner) {
+    const std::size_t p = polygon_of(corner);
+    return soup.polygons[p][corner - soup.first_corner[p]];
+  };
+  const auto previous = [&](std::size_t corner) {
+    const std::size_t p = polygon_of(corner);
+    return corner == soup.first_corner[p] ? soup.first_corner[p + 1] - 1 : corner - 1;
+  };
+  // Each shared edge once (lower point first), with the corners after it each way.
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::uint32_t>> ends;
+  for (const std::uint32_t r : repeats) {
+    const std::size_t a = point_at(previous(r)), b = point_at(r);
+    std::vector<std::uint32_t>& list = ends[{std::min(a, b), std::max(a, b)}];
+    if (list.empty())
+      for (const std::uint64_t key :
+           {std::uint64_t(a) * n_points + b, std::uint64_t(b) * n_points + a})
+        if (const std::uint32_t first = soup.corner_after.find(key);
+            first != FlatIndex<std::uint64_t>::kNone)
+          list.push_back(first);
+    list.push_back(r);
+  }
+  std::vector<OpenMesh::Vec3d> face;
+  for (const auto& [edge, after] : ends) {
+    const auto [a, b] = edge;
+    const OpenMesh::Vec3d d = soup.points[b] - soup.points[a];
+    // Two directions across the edge: from d and the axis it is least along.
+    int axis = 0;
+    for (int k = 1; k < 3; ++k) axis = std::abs(d[k]) < std::abs(d[axis]) ? k : axis;
+    OpenMesh::Vec3d along_axis(0.0, 0.0, 0.0);
+    along_axis[axis] = 1.0;
+    const OpenMesh::Vec3d e1 = OpenMesh::cross(d, along_axis), e2 = OpenMesh::cross(d, e1);
+    std::vector<EdgeSide> around;
+    for (const std::uint32_t end : after) {
+      const std::size_t p = polygon_of(end);
+      face.clear();
+      for (const std::size_t i : soup.polygons[p]) face.push_back(soup.points[i]);
+      const bool forward = point_at(end) == b;
+      const OpenMesh::Vec3d into = OpenMesh::cross(polygon_normal(face), forward ? d : -d);
+      around.push_back({std::uint32_t(previous(end)), end,
+                        std::atan2(OpenMesh::dot(into, e2), OpenMesh::dot(into, e1)), forward});
+    }
+    std::sort(around.begin(), around.end(), [](const EdgeSide& x, const EdgeSide& y) {
+      return std::tie(x.angle, x.start) < std::tie(y.angle, y.start);
+    });
+    const std::size_t k = around.size();
+    for (std::size_t i = 0; i < k; ++i)
+      if (around[i].forward == around[(i + 1) % k].forward) {
+        bad_edge = {a, b};
+        return false;
+      }
+    for (std::size_t i = 0; i < k; ++i) {
+      sides.emplace_back(around[i].start, around[i].end);
+      if (!around[i].forward) continue;
+      const EdgeSide& f = around[i];
+      const EdgeSide& g = around[(i + k - 1) % k];
+      across[f.start] = g.end;  // at a
+      across[g.start] = f.end;  // at b
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
-FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::size_t points,
+FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons,
+                    const std::vector<OpenMesh::Vec3d>& points,
                     std::pair<std::size_t, std::size_t>& bad_edge) {
+  const std::size_t n_points = points.size();
   Corners c;
   std::vector<std::size_t> first_corner{0};
   for (const auto& poly : polygons) first_corner.push_back(first_corner.back() + poly.size());
   const std::size_t corners = first_corner.back();
   c.vertex.reserve(corners), c.next.reserve(corners), c.parent.reserve(corners);
   FlatIndex<std::uint64_t> corner_after(corners);  // edge a->b: the corner at b
+  std::vector<std::uint32_t> repeats;              // corners after an edge already taken
   for (const auto& poly : polygons)
     for (std::size_t k = 0; k < poly.size(); ++k) {
       const std::size_t prev = poly[(k + poly.size() - 1) % poly.size()];
@@ -83,18 +187,26 @@ FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::
       c.vertex.push_back(poly[k]);
       c.next.push_back(poly[(k + 1) % poly.size()]);
       c.parent.push_back(id);
-      if (!corner_after.try_emplace(std::uint64_t(prev) * points + poly[k], std::uint32_t(id)).second) {
-        bad_edge = {prev, poly[k]};
-        return {};
-      }
+      if (!corner_after.try_emplace(std::uint64_t(prev) * n_points + poly[k], std::uint32_t(id))
+               .second)
+        repeats.push_back(std::uint32_t(id));
     }
+  std::unordered_map<std::size_t, std::size_t> across_shared;  // on an edge of more than two faces
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> shared_sides;
+  if (!repeats.empty() &&
+      !pair_faces_at_shared_edges({polygons, points, first_corner, corner_after}, repeats,
+                                  across_shared, shared_sides, bad_edge))
+    return {};
   // A corner joins the corner of the neighbouring face across its outgoing edge.
   for (std::size_t id = 0; id < c.vertex.size(); ++id) {
-    const std::uint32_t across = corner_after.find(std::uint64_t(c.next[id]) * points + c.vertex[id]);
+    std::uint32_t across = corner_after.find(std::uint64_t(c.next[id]) * n_points + c.vertex[id]);
+    if (!across_shared.empty())
+      if (const auto it = across_shared.find(id); it != across_shared.end())
+        across = std::uint32_t(it->second);
     if (across != FlatIndex<std::uint64_t>::kNone) c.parent[c.find(id)] = c.find(across);
   }
   // Each fan (a root) is one vertex: the next copy of its point.
-  std::vector<std::uint32_t> vertex_of_root(c.vertex.size(), UINT32_MAX), copies_used(points, 0),
+  std::vector<std::uint32_t> vertex_of_root(c.vertex.size(), UINT32_MAX), copies_used(n_points, 0),
       copy_of_vertex;
   FanSplit out;
   out.copy.resize(c.vertex.size()), out.vertex.resize(c.vertex.size());
@@ -107,6 +219,14 @@ FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons, std::
     out.copy[id] = copy_of_vertex[vertex];
     out.vertex[id] = vertex;
   }
+  // Faces paired at a shared edge must end on separate copies of it, or the mesh could not
+  // hold them (their fans join elsewhere: the surface is no manifold there).
+  std::set<std::pair<std::uint32_t, std::uint32_t>> shared_edges;
+  for (const auto& [start, end] : shared_sides)
+    if (!shared_edges.emplace(out.vertex[start], out.vertex[end]).second) {
+      bad_edge = {c.vertex[start], c.vertex[end]};
+      return {};
+    }
   out.first_corner = std::move(first_corner);
   return out;
 }

@@ -61,13 +61,17 @@ struct FanSplit {
 };
 
 /// Splits the vertices of an indexed polygon soup into fans: corners around a vertex that
-/// are linked through shared edges use one copy of it, separate fans separate copies.
+/// are linked through shared edges use one copy of it, separate fans separate copies. Where
+/// more than two faces share an edge (solids touching along it), each face is linked with the
+/// one across the material from it, so each pair takes its own copies of the edge's ends.
 /// @param[in] polygons  vertex indices, each polygon counter-clockwise from outside
-/// @param[out] bad_edge on failure, the two vertices of an edge used twice in one direction
-///                      (shared by more than two faces, or by faces of clashing orientation)
-/// @return per corner its copy and vertex; empty on failure. O(corners) expected.
+/// @param[in] points    their positions (the faces' angles about a shared edge)
+/// @param[out] bad_edge on failure, the two vertices of an edge whose faces cannot be paired
+///                      (clashing orientations, or pairs whose fans join elsewhere)
+/// @return per corner its copy and vertex; empty on failure. O(corners) expected, and
+///         O(k log k) more per edge of k > 2 faces.
 [[nodiscard]] FanSplit split_fans(const std::vector<std::vector<std::size_t>>& polygons,
-                                  std::size_t points,
+                                  const std::vector<OpenMesh::Vec3d>& points,
                                   std::pair<std::size_t, std::size_t>& bad_edge);
 
 /// Gives a face the corners of polygon k of an indexed soup: their points, copies and

@@ -244,7 +244,7 @@ FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces,
   const double tolerance = snap_tolerance(soup.points);
   const IndexedSoup r = snap_soup(std::move(soup), tolerance);
   std::pair<std::size_t, std::size_t> bad;
-  const FanSplit fans = split_fans(r.polygons, r.points.size(), bad);
+  const FanSplit fans = split_fans(r.polygons, r.points, bad);
   if (fans.vertex.empty() && !r.polygons.empty()) {
     std::string owners;
     for (std::size_t k = 0; k < r.polygons.size(); ++k) {
@@ -256,11 +256,12 @@ FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces,
     }
     const auto& a = r.points[bad.first];
     const auto& b = r.points[bad.second];
-    throw PreconditionError(fmt::format("build_model: the solid of walls {} is not 2-manifold: more than "
-                                        "two of its faces meet at the edge from ({}, {}, {}) to ({}, {}, {}) "
-                                        "(walls touching along an edge)",
-                                        owners, a[0], a[1], a[2], b[0], b[1], b[2]),
-                            Code::not_buildable);
+    throw PreconditionError(
+        fmt::format("build_model: the solid of walls {} is not 2-manifold: more than "
+                    "two of its faces meet at the edge from ({}, {}, {}) to ({}, {}, {}), and "
+                    "they cannot be paired across their material",
+                    owners, a[0], a[1], a[2], b[0], b[1], b[2]),
+        Code::not_buildable);
   }
   // Each face in its own slot (in parallel: tens of thousands of faces in a tall home).
   FaceSoup out(r.polygons.size());

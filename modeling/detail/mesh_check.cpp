@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <array>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -108,6 +109,37 @@ void count_cavities(TriMesh& tri, SolidCheck& check) {
   }
 }
 
+// Whether two triangles that CGAL found intersecting only touch where they hold the same
+// points: a solid touching itself at a point or along an edge is written with a copy of each
+// vertex there per side (face_soup.h), so its faces share positions, not vertices, and CGAL's
+// rules for a shared vertex or edge (the faces meet beyond it, or overlap in one plane) are
+// asked again of the positions. O(1), exact predicates.
+bool touches_only_at_shared_points(const TriMesh& tri, TriMesh::Face_index f,
+                                   TriMesh::Face_index g) {
+  std::array<K::Point_3, 3> a, b;
+  int k = 0;
+  for (const auto v : tri.vertices_around_face(tri.halfedge(f))) a[k++] = tri.point(v);
+  k = 0;
+  for (const auto v : tri.vertices_around_face(tri.halfedge(g))) b[k++] = tri.point(v);
+  // Each triangle's shared points first: a = (shared..., others), b likewise, in a's order.
+  int shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = shared; j < 3; ++j)
+      if (a[i] == b[j]) {
+        std::swap(a[i], a[shared]);
+        std::swap(b[j], b[shared]);
+        ++shared;
+        break;
+      }
+  if (shared == 1)
+    return !CGAL::do_intersect(K::Triangle_3(a[0], a[1], a[2]), K::Segment_3(b[1], b[2])) &&
+           !CGAL::do_intersect(K::Triangle_3(b[0], b[1], b[2]), K::Segment_3(a[1], a[2]));
+  if (shared == 2)
+    return !CGAL::coplanar(a[0], a[1], a[2], b[2]) ||
+           CGAL::coplanar_orientation(a[0], a[1], a[2], b[2]) != CGAL::POSITIVE;
+  return false;  // none shared (they cross), or all three (the same triangle twice)
+}
+
 }  // namespace
 
 SolidCheck check_solid(const SolidMesh& mesh) {
@@ -123,7 +155,9 @@ SolidCheck check_solid(const SolidMesh& mesh) {
   if (PMP::does_self_intersect(tri)) {
     std::vector<std::pair<TriMesh::Face_index, TriMesh::Face_index>> pairs;
     PMP::self_intersections(tri, std::back_inserter(pairs));
-    check.self_intersections = std::max<std::size_t>(pairs.size(), 1);
+    for (const auto& [f, g] : pairs)
+      ++(touches_only_at_shared_points(tri, f, g) ? check.touching_pairs
+                                                  : check.self_intersections);
   }
   auto comp = tri.add_property_map<TriMesh::Face_index, std::size_t>("f:component", 0).first;
   check.components = PMP::connected_components(tri, comp);

@@ -132,11 +132,20 @@ TEST(GeneralPath, EveryWallOfAPlanWithErrorsBuildsWithoutNef) {
   EXPECT_EQ(stats_of(plan, BooleanPath::nef).nef_path_walls, plan.walls.size());
 }
 
-TEST(GeneralPath, WallsTouchingAlongAnEdgeAreRefusedNamingThem) {
+// A slab whose corner lies on a wall's top edge touches the wall at that point only (a valid
+// plan): the solid as written has a copy of the point for each, and checks valid.
+TEST(GeneralPath, SlabCornerOnAWallsTopEdgeTouchesItAtAPoint) {
   Plan plan = empty_plan();
-  add_wall(plan, "a", {0, 0.125}, {2, 0.125}).thickness = 0.25;
-  add_wall(plan, "b", {2, 0.375}, {4, 0.375}).thickness = 0.25;
-  test::expect_build_refused(plan, test::options_for(BooleanPath::general), Code::not_buildable, "#0, #1");
+  add_wall(plan, "a", {1, 1}, {5, 1}).thickness = 0.25;
+  Slab& lid = plan.slabs.emplace_back();
+  lid.id = "lid", lid.outline = {{1.75, 1.125}, {2, 2}, {1.5, 2}}, lid.top = 2.75,
+  lid.thickness = 0.25;
+  const Model model = build_model(plan, test::options_for(BooleanPath::general));
+  const SolidCheck c = check_solid(model.walls);
+  EXPECT_TRUE(c.is_valid());
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_GT(c.touching_pairs, 0u);
+  EXPECT_NEAR(c.volume, analytic_wall_volume(plan), 1e-12);
 }
 
 }  // namespace

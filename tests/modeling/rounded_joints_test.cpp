@@ -2,7 +2,8 @@
 // Joints where two nearly collinear walls end side by side and a third wall meets them: the
 // exact union has slivers narrower than a double's step, which rounding must not turn into a
 // crash or a broken mesh. Reduced from the Sweet Home 3D homes 4-BedroomHouse and
-// 3-BedroomHouseWithMezzanine.
+// 3-BedroomHouseWithMezzanine; and ceilings whose corners lie within an ulp of a wall, which
+// rounding makes touch it (3-BedroomApartment and 4-BedroomHouse imported with --ceilings).
 #include <string>
 
 #include <gtest/gtest.h>
@@ -90,6 +91,61 @@ TEST(Modeling, FaceOfTwoCornersIsAnError) {
   const detail::FaceSoup soup{
       {{OpenMesh::Vec3d(0, 0, 0), OpenMesh::Vec3d(1, 0, 0)}, FaceKind::wall_top, 0, {}, {}, {}}};
   EXPECT_NE(assembly_error(soup).find("2 corners, fewer than 3"), std::string::npos);
+}
+
+Slab& add_ceiling(Plan& plan, Polygon outline) {
+  Slab& s = plan.slabs.emplace_back();
+  s.id = "ceiling", s.outline = std::move(outline);
+  s.top = 2.619999885559082, s.thickness = 0.11999988555908203;  // from 2.5 up, as imported
+  return s;
+}
+
+// 3-BedroomApartment imported with --ceilings: a ceiling's corner (7.5855690000000005,
+// -3.6870822) lies 9e-17 m off wall19's top edge, which rounds onto it. The solid as written
+// touches itself there, at a point (a copy of it per side), and does not cross itself.
+TEST(Modeling, CeilingCornerThatRoundsOntoAWallsEdgeTouchesIt) {
+  Plan plan = empty_plan();
+  add_thick_wall(plan, "wall19", {7.5696497, -3.7245822}, {8.769, -3.7245822}, 0.075);
+  add_ceiling(plan, {{5.506124, -0.27787487},
+                     {5.506124, -3.1054820000000003},
+                     {5.506124, -3.682957},
+                     {7.510569, -3.6870822},
+                     {7.510569, -3.109607},
+                     {7.5855690000000005, -3.109607},
+                     {7.5855690000000005, -3.6870822},
+                     {7.741136, -3.682957},
+                     {7.741136, -3.7207068},
+                     {8.6683356, -3.7207068},
+                     {8.6683356, -3.682957},
+                     {8.733068, -3.682957},
+                     {8.733068, -2.5204575},
+                     {8.733068, -0.27787487}});
+  const SolidCheck c = expect_valid_walls(plan, BooleanPath::automatic, 0);
+  EXPECT_GT(c.touching_pairs, 0u);
+}
+
+// 4-BedroomHouse imported with --ceilings: the ceiling's corner, laid a quarter of wall20's
+// thickness into it, pokes 2e-16 m into wall43 along 1.5e-12 m. Rounded, the sliver between
+// them collapses to an edge that four faces share (wall43's top and side, the ceiling's
+// underside and edge): each pair across its own material takes a copy of the edge.
+TEST(Modeling, CeilingCornerInAWallByLessThanAnUlpBuildsAClosedSolid) {
+  Plan plan = empty_plan();
+  add_thick_wall(plan, "wall20", {9.3261584, -1.9480670000000002}, {9.3261584, -1.7265110000000001},
+                 0.075);
+  add_thick_wall(plan, "wall43", {9.648019000000001, -1.9480670000000002},
+                 {9.3261584, -1.9480670000000002}, 0.075);
+  add_ceiling(plan, {{8.108, -1.7640110000000002},
+                     {8.108, -3.0930927},
+                     {8.164956, -3.0930927},
+                     {8.164956, -3.1308426},
+                     {9.092156000000001, -3.1308426},
+                     {9.092156000000001, -3.0930927},
+                     {9.6109705, -3.0930927},
+                     {9.6109705, -1.9856142},
+                     {9.288658400000001, -1.985567},
+                     {9.288658400000001, -1.7640110000000002}});
+  const SolidCheck c = expect_valid_walls(plan, BooleanPath::automatic, 0);
+  EXPECT_GT(c.touching_pairs, 0u);
 }
 
 // A closed fan of four triangles round v, then one more face at v: OpenMesh has no gap there.

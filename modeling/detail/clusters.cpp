@@ -183,7 +183,9 @@ Work plan_work(const std::vector<WallFrame>& frames, const Joins& joins, Boolean
   link_walls(work.fast_frames, joins, explained_pairs(work.hubs, work.tees), general, sets);
   link_slabs(frames, slabs, sets);
   for (std::size_t i = 0; i < n; ++i)
-    if (!has_holes_clear_of_joins(work.fast_frames[i]) || needs_general_path(frames[i])) general[i] = 1;
+    if (!has_holes_clear_of_joins(work.fast_frames[i]) ||
+        has_crossed_footprint(work.fast_frames[i]) || needs_general_path(frames[i]))
+      general[i] = 1;
   const std::vector<char> root_general = find_general_components(general, sets);
   work.items = group_walls(n, root_general, sets);
   // A hub among fast walls adds its top and bottom; a cluster builds its own hubs.

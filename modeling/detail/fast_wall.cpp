@@ -333,10 +333,6 @@ FaceSoup emit_faces(const Context& cx, const std::vector<GridFace>& faces) {
   return soup;
 }
 
-double u_of(const WallFrame& f, const Point2& p) {
-  return (p.x - f.from.x) * f.dir.x + (p.y - f.from.y) * f.dir.y;
-}
-
 }  // namespace
 
 bool has_holes_clear_of_joins(const WallFrame& f) {

@@ -33,8 +33,15 @@ Point2 corner(const WallFrame& a, WallEnd ea, const WallFrame& b, WallEnd eb) {
   return {pa.x + da.x * t, pa.y + da.y * t};
 }
 
-bool is_valid_hub(const std::vector<WallFrame>& frames, const std::vector<Arm>& arms) {
+// Arms 90 to 180 degrees apart tile the union only where each corner lies on both arms' side
+// lines ahead of the node: arms nearly collinear of unequal thickness cross their side lines
+// behind it (the thinner arm's side reaches the thicker's end face, not its side), which would
+// put hub corners outside the union (170 degrees, 0.2 m on to 0.1 m: 0.28 m behind the node).
+// The corners are doubles, so "ahead" allows rounding: -1e-12 of the thicknesses.
+bool is_valid_hub(const std::vector<WallFrame>& frames, const Hub& hub) {
+  const std::vector<Arm>& arms = hub.arms;
   const WallFrame& first = frames[arms.front().first];
+  const Point2 node = end_point(first, arms.front().second);
   for (std::size_t k = 0; k < arms.size(); ++k) {
     const WallFrame& a = frames[arms[k].first];
     const WallFrame& b = frames[arms[(k + 1) % arms.size()].first];
@@ -43,6 +50,9 @@ bool is_valid_hub(const std::vector<WallFrame>& frames, const std::vector<Arm>& 
     const double c = cross(da, db), d = dot(da, db);
     if (d > 0.0 || c < 0.0) return false;          // closer than 90 or beyond 180 degrees
     if (c == 0.0 && a.half != b.half) return false;  // collinear arms of unequal thickness
+    const Point2 to_corner{hub.corners[k].x - node.x, hub.corners[k].y - node.y};
+    const double behind = -1e-12 * (a.half + b.half);
+    if (dot(to_corner, da) < behind || dot(to_corner, db) < behind) return false;
   }
   return true;
 }
@@ -85,7 +95,7 @@ std::vector<Hub> find_hubs(const std::vector<WallFrame>& frames, const Joins& jo
     // Arms a denormal off collinear put a corner at infinity: such a node is the general path's.
     const bool finite = std::all_of(hub.corners.begin(), hub.corners.end(),
                                     [](Point2 c) { return std::isfinite(c.x) && std::isfinite(c.y); });
-    if (finite && is_valid_hub(frames, hub.arms)) hubs.push_back(std::move(hub));
+    if (finite && is_valid_hub(frames, hub)) hubs.push_back(std::move(hub));
   }
   auto first_wall = [](const Hub& h) {
     return std::min_element(h.arms.begin(), h.arms.end())->first;

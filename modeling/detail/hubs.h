@@ -4,8 +4,10 @@
 // walls' facing side lines (for two collinear walls, their shared side line at the node).
 // Each wall (arm) ends without a cap on the hub's corners, like a mitre, and the hub adds
 // only its top and bottom faces. Valid when all walls at the node end there (identical end
-// points), have equal base and height, and adjacent walls are 90 to 180 degrees apart
-// (collinear ones of equal thickness): then arms and hub tile the union exactly.
+// points), have equal base and height, adjacent walls are 90 to 180 degrees apart (collinear
+// ones of equal thickness), and each corner lies on both its arms' side lines ahead of the
+// node: then arms and hub tile the union exactly. (An arm shorter than the corner reaches is
+// a bow-tie, which sends the arm's walls to the general path: has_crossed_footprint.)
 #pragma once
 
 #include <cstddef>

@@ -63,6 +63,20 @@ inline Point2 outward(const WallFrame& f, WallEnd end) {
   return end == WallEnd::from ? f.dir : Point2{-f.dir.x, -f.dir.y};
 }
 
+/// @return the distance of p along the wall from its `from` end point (its rounded dir). O(1).
+[[nodiscard]] inline double u_of(const WallFrame& f, const Point2& p) {
+  return (p.x - f.from.x) * f.dir.x + (p.y - f.from.y) * f.dir.y;
+}
+
+/// @return whether a side of the footprint runs backwards: its corner at the from end lies
+///         past its corner at the to end (a mitre or hub corner beyond the wall's other end,
+///         on a wall shorter than its neighbour is thick). Such a footprint is a bow-tie,
+///         which only the general path builds. O(1).
+[[nodiscard]] inline bool has_crossed_footprint(const WallFrame& f) {
+  return u_of(f, f.footprint[0]) > u_of(f, f.footprint[1]) ||
+         u_of(f, f.footprint[3]) > u_of(f, f.footprint[2]);
+}
+
 /// @return the box of the wall's footprint grown by `margin` metres, tagged with its wall. O(1).
 [[nodiscard]] Box2 footprint_box(const WallFrame& f, double margin = 0.0);
 

@@ -45,6 +45,12 @@ std::optional<Tee> make_tee(const std::vector<WallFrame>& frames, std::size_t st
   tee.attachment = ul < ur ? Attachment{ul, ur, side, left, right, s.top} : Attachment{ur, ul, side, right, left, s.top};
   const auto [lo, hi] = clear_range(t);
   if (!(tee.attachment.u0 > lo && tee.attachment.u1 < hi) || !(u > 0.0 && u < t.length)) return std::nullopt;
+  // What the clip takes off the stem must lie inside the through-wall: its square end's
+  // corners too (a stem thicker than the wall, or meeting it askew, reaches past its far face).
+  for (const Point2 corner : {Point2{e.x + n.x, e.y + n.y}, Point2{e.x - n.x, e.y - n.y}}) {
+    const double cu = u_on(t, corner);
+    if (std::abs(w_on(t, corner)) > t.half || !(cu > lo && cu < hi)) return std::nullopt;
+  }
   for (const Hole& h : t.holes)
     if (!(h.u1 < tee.attachment.u0 || h.u0 > tee.attachment.u1)) return std::nullopt;
   return tee;

@@ -3,8 +3,9 @@
 // the same base, as high as it or lower, is clipped at the through-wall's face (its end
 // corners are the crossings of its side lines with that face, and it gets no cap), and the
 // through-wall's face gets the attachment gap, up to the stem's top, with those very corners.
-// Valid when the stem meets the through-wall at 30 degrees or more, only that wall joins the
-// stem at that end, and the gap stays clear of the through-wall's ends, holes and other stems.
+// Valid when the stem meets the through-wall at 30 degrees or more, its square end lies inside
+// the through-wall (what the clip takes off is inside it), only that wall joins the stem at
+// that end, and the gap stays clear of the through-wall's ends, holes and other stems.
 #pragma once
 
 #include <cstddef>

@@ -2,9 +2,12 @@
 #include "modeling/detail/convex_pieces.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <iterator>
+#include <tuple>
 
 #include <boost/container/small_vector.hpp>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -14,6 +17,7 @@
 #include <tbb/parallel_for.h>
 
 #include "modeling/build_model.h"
+#include "modeling/segment_predicates.h"
 
 namespace roomcad::detail {
 namespace {
@@ -39,6 +43,20 @@ PlaneRef plane_through(PlaneSet& set, Point2 p, Point2 q) {
   r.kind = PlaneRecipe::Kind::through2;
   r.v[0] = p.x, r.v[1] = p.y, r.v[2] = q.x, r.v[3] = q.y;
   return {set.add(r), 1};
+}
+
+// The plane of a slanted wall's square end: through its end point, square to its centre line
+// exactly (not through its two rounded corners), so that walls drawn along one line, end to
+// end or over one another, have one plane there whatever their thickness: through their own
+// rounded corners, two such caps cross at a hair's angle, and the slivers between them round
+// into faces that cross (stress finding S6). Outside beyond the end.
+PlaneRef square_end_plane(PlaneSet& set, const WallFrame& f, WallEnd end) {
+  PlaneRecipe r;
+  r.kind = PlaneRecipe::Kind::square_end;
+  const Point2 e = end == WallEnd::from ? f.from : f.to;
+  r.v[0] = f.from.x, r.v[1] = f.from.y, r.v[2] = f.to.x, r.v[3] = f.to.y, r.v[4] = e.x,
+  r.v[5] = e.y;
+  return {set.add(r), end == WallEnd::from ? -1 : 1};
 }
 
 // The plane (p - from) . dir = u of a wall's frame; outside where u is larger (outward +1) or
@@ -234,12 +252,16 @@ HolePlanes shaped_hole_planes(PlaneSet& set, const WallFrame& f, const Hole& h,
   return p;
 }
 
-WallPlanes wall_planes(PlaneSet& set, const WallFrame& f) {
+// @param shared_line  per WallEnd: the end's square end lies on another wall's, on one line
+WallPlanes wall_planes(PlaneSet& set, const WallFrame& f, std::array<bool, 2> shared_line) {
   WallPlanes p;
   for (std::size_t i = 0; i < 4; ++i) {
     const Point2 a = f.footprint[i], b = f.footprint[(i + 1) % 4];
     if (a == b) continue;
-    p.sides[i] = plane_through(set, a, b);
+    // Sides 1 and 3 are the to and from ends.
+    const WallEnd end = i == 1 ? WallEnd::to : WallEnd::from;
+    const bool square_end = (i == 1 || i == 3) && shared_line[std::size_t(end)];
+    p.sides[i] = square_end ? square_end_plane(set, f, end) : plane_through(set, a, b);
     p.lines.push_back(p.sides[i]);
   }
   if (is_sloped(f)) {
@@ -268,7 +290,14 @@ std::optional<Primitive> make_wall_piece(const PlaneSet& set, const BoxPlanes& b
     base.lines.assign(planes.sides.begin(), planes.sides.end());
     for (std::size_t i = 0; i < 4; ++i) {
       const Point2 q = f.footprint[(i + 1) % 4];
-      base.vertices.push_back(make_point(q.x, q.y, f.base));
+      // A square end's plane misses the rounded corners: the corners there are where it meets
+      // the sides.
+      const bool on_square_end =
+          set.recipe(base.lines[i].id).kind == PlaneRecipe::Kind::square_end ||
+          set.recipe(base.lines[(i + 1) % 4].id).kind == PlaneRecipe::Kind::square_end;
+      base.vertices.push_back(on_square_end ? make_point(set, base.plane.id, base.lines[i].id,
+                                                         base.lines[(i + 1) % 4].id)
+                                            : make_point(q.x, q.y, f.base));
     }
   } else if (auto poly = intersect_half_planes(set, box, base.plane, planes.lines, name)) {
     base = std::move(*poly);
@@ -453,12 +482,52 @@ Primitive make_slab_piece(PlaneSet& set, const SlabFrame& s, const Polygon& piec
   return make_prism(set, base, c0, c1);
 }
 
+// Per wall end: whether it is a slanted wall's square end at the end point of another wall
+// along the same line, also squarely ended there (walls drawn over one another, or running on
+// from each other at another thickness). Those ends take square_end_plane, one plane for all.
+// O(n log n) for n walls.
+std::vector<std::array<bool, 2>> square_ends_on_shared_lines(
+    const std::vector<const WallFrame*>& walls) {
+  std::vector<std::array<bool, 2>> shared(walls.size(), {false, false});
+  // Square ends of slanted walls, by their point's bits.
+  std::vector<std::tuple<std::uint64_t, std::uint64_t, std::size_t, int>> ends;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const WallFrame& f = *walls[w];
+    if (f.dir.x == 0.0 || f.dir.y == 0.0) continue;  // along an axis: its rounded corners are exact
+    for (const int end : {0, 1}) {
+      if (f.capless[std::size_t(end)]) continue;
+      const Point2 p = end == 0 ? f.from : f.to;
+      ends.emplace_back(std::bit_cast<std::uint64_t>(p.x + 0.0),
+                        std::bit_cast<std::uint64_t>(p.y + 0.0), w, end);
+    }
+  }
+  std::sort(ends.begin(), ends.end());
+  for (std::size_t i = 0; i < ends.size();) {
+    std::size_t j = i;
+    while (j < ends.size() && std::get<0>(ends[j]) == std::get<0>(ends[i]) &&
+           std::get<1>(ends[j]) == std::get<1>(ends[i]))
+      ++j;
+    for (std::size_t a = i; a < j; ++a)
+      for (std::size_t b = a + 1; b < j; ++b) {
+        const WallFrame& fa = *walls[std::get<2>(ends[a])];
+        const WallFrame& fb = *walls[std::get<2>(ends[b])];
+        if (!are_parallel(fa.from, fa.to, fb.from, fb.to)) continue;
+        shared[std::get<2>(ends[a])][std::size_t(std::get<3>(ends[a]))] = true;
+        shared[std::get<2>(ends[b])][std::size_t(std::get<3>(ends[b]))] = true;
+      }
+    i = j;
+  }
+  return shared;
+}
+
 std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
                                        const std::vector<const WallFrame*>& walls,
                                        const std::vector<const SlabFrame*>& slabs) {
+  const std::vector<std::array<bool, 2>> shared = square_ends_on_shared_lines(walls);
   std::vector<WallPlanes> planes;
   planes.reserve(walls.size());
-  for (const WallFrame* f : walls) planes.push_back(wall_planes(set, *f));
+  for (std::size_t w = 0; w < walls.size(); ++w)
+    planes.push_back(wall_planes(set, *walls[w], shared[w]));
   // Each wall's primitives in its own slot, and the first failure in wall order rethrown, so
   // neither depends on the threads.
   std::vector<std::vector<Primitive>> of_wall(walls.size());

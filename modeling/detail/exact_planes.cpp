@@ -39,6 +39,10 @@ std::array<T, 4> coefficients(const PlaneRecipe& r) {
       const T k = T(v[5]) - T(v[6]), l2 = ex * ex + ey * ey;
       return {-(k * ex), -(k * ey), l2, k * (ex * T(v[0]) + ey * T(v[1])) - l2 * T(v[4])};
     }
+    case PlaneRecipe::Kind::square_end: {
+      const T a = T(v[2]) - T(v[0]), b = T(v[3]) - T(v[1]);
+      return {a, b, T(0), -(a * T(v[4]) + b * T(v[5]))};
+    }
     case PlaneRecipe::Kind::frame_edge: {
       const T u1 = T(v[4]) + T(v[6]) * T(v[5]), u2 = T(v[4]) + T(v[8]) * T(v[5]);
       const T z1 = T(v[10]) + T(v[7]) * T(v[11]), z2 = T(v[10]) + T(v[9]) * T(v[11]);

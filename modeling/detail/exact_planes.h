@@ -65,6 +65,8 @@ struct PlaneRecipe {
     frame_edge,  ///< in a wall's frame (from (v0, v1), dir (v2, v3)), the line through
                  ///< (U(v6), Z(v7)) and (U(v8), Z(v9)), U(s) = v4 + s * v5, Z(t) = v10 + t * v11;
                  ///< its right (seen from +normal, walking the edge) is outside
+    square_end,  ///< vertical, through the plan point (v4, v5) square to the line from (v0, v1)
+                 ///< to (v2, v3): normal (v2 - v0, v3 - v1), exactly, whose side is outside
   };
   Kind kind = Kind::axis;
   std::array<double, 12> v{};

@@ -327,6 +327,32 @@ TEST(Modeling, JoinsTheFastPathCannotTileGoToTheGeneralPath) {
   }
 }
 
+// Walls along one slanted line (of irrational length) at other thicknesses: drawn over one
+// another with other heights, the other way round, or running on from each other. Each
+// square end was the plane through its own rounded corners, so two of them crossed at a
+// hair's angle, and the slivers between rounded into faces that cross (stress finding S6:
+// 24 self-intersections for the first; the second open, 8). They share one exact plane now.
+// (The third checked valid before too.)
+TEST(Modeling, WallsAlongOneSlantedLineShareTheirSquareEnds) {
+  struct Case {
+    const char* what;
+    Point2 b_from, b_to;
+    double a_base;
+  };
+  for (const Case& c : {Case{"over one another", {0, 0}, {2, 5}, 1.0},
+                        Case{"over one another, the other way round", {2, 5}, {0, 0}, 2.5},
+                        Case{"running on", {2, 5}, {4, 10}, 1.0}}) {
+    SCOPED_TRACE(c.what);
+    Plan plan = empty_plan();
+    Wall& a = add_wall(plan, "a", {0, 0}, {2, 5});
+    a.thickness = 0.5, a.height = 0.5, a.base = c.a_base;
+    Wall& b = add_wall(plan, "b", c.b_from, c.b_to);
+    b.thickness = 0.2, b.height = 2.5, b.base = 1.0;
+    for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general})
+      expect_valid_walls(plan, path, 0);
+  }
+}
+
 // Where solids touch along an edge, four faces meet there: each wall's two are paired across
 // its own material, so each wall takes its own copy of the edge (split_fans). (The Nef
 // reference path still refuses it, with an error naming a wall.)

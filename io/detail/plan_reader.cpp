@@ -233,8 +233,11 @@ class PlanReader {
     if (find(root, "version", v) && v.type().value() == JsonType::number && v.get_double().value() == 2.0)
       version_ = 2;
     if (find(root, "units", v) && v.type().value() == JsonType::string) {
-      const std::string_view units = v.get_string().value();
-      scale_ = units == "cm" ? 100.0 : units == "mm" ? 1000.0 : 1.0;
+      // Kept for read_units: simdjson unescapes a string into a buffer sized for each string
+      // once, and a second unescape of the same one can run past it (fuzz_plan_json: a long
+      // "units" string corrupted the heap).
+      units_ = std::string(v.get_string().value());
+      scale_ = *units_ == "cm" ? 100.0 : *units_ == "mm" ? 1000.0 : 1.0;
     }
     root.reset().value();
   }
@@ -293,7 +296,9 @@ class PlanReader {
   void read_units(od::value& v) {
     if (v.type().value() != JsonType::string) return wrong_type(v, "\"m\", \"cm\" or \"mm\"");
     const std::size_t at = offset_of(v);
-    const std::string_view s = v.get_string().value();
+    // The first "units" was unescaped by read_preamble; a repeated key is read here, once.
+    const std::string s =
+        units_ ? *std::exchange(units_, std::nullopt) : std::string(v.get_string().value());
     if (s != "m" && s != "cm" && s != "mm")
       invalid(at, "unsupported units " + quote_for_message(s) + "; expected \"m\", \"cm\" or \"mm\"");
   }
@@ -545,6 +550,7 @@ class PlanReader {
   SeenKeys top_keys_;
   int version_ = 1;
   double scale_ = 1.0;  ///< divisor from the file's units to metres
+  std::optional<std::string> units_;  ///< the first "units" string, until read_units takes it
   std::vector<std::size_t> walls_without_height_;
   std::size_t wall_count_ = 0;
 };

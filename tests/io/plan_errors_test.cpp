@@ -265,6 +265,16 @@ TEST(PlanErrors, ByteOrderMarkIsSkipped) {
   expect_one_error("\xEF\xBB\xBF[]", {Code::parse_error, "", 1, 2, "expected an object"});
 }
 
+// A document that is nearly all one "units" string: simdjson's string buffer holds each string
+// once (5/3 of the document), and the reader once unescaped "units" twice (for the scale
+// first, then to check it), running 100,000 bytes past it. Found by fuzz_plan_json under
+// ASan as a corrupted heap block.
+TEST(PlanErrors, AUnitsStringAsLongAsTheDocumentIsReadOnce) {
+  expect_one_error("{\"units\": \"" + std::string(100000, 'y') + "\"}",
+                   {Code::invalid_value, "/units", 1, 11,
+                    "unsupported units \"" + std::string(39, 'y') + "...\""});
+}
+
 TEST(PlanErrors, LongStringsAreShortenedInMessages) {
   const std::string id(100, 'x');
   expect_one_error("{\"units\": \"" + std::string(60, 'y') + "\"}",

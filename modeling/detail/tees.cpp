@@ -9,7 +9,6 @@ namespace roomcad::detail {
 namespace {
 
 double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
-double u_on(const WallFrame& f, Point2 p) { return (p.x - f.from.x) * f.dir.x + (p.y - f.from.y) * f.dir.y; }
 double w_on(const WallFrame& f, Point2 p) { return (p.x - f.from.x) * f.normal.x + (p.y - f.from.y) * f.normal.y; }
 
 // Where the line p + t d crosses the through-wall's side line on `side`.
@@ -21,8 +20,8 @@ Point2 cross_side(const WallFrame& t, int side, Point2 p, Point2 d) {
 
 // The u range where the through-wall's side faces exist on both sides (clear of its ends).
 std::pair<double, double> clear_range(const WallFrame& t) {
-  const double lo = std::max(u_on(t, t.footprint[0]), u_on(t, t.footprint[3]));
-  const double hi = std::min(u_on(t, t.footprint[1]), u_on(t, t.footprint[2]));
+  const double lo = std::max(u_of(t, t.footprint[0]), u_of(t, t.footprint[3]));
+  const double hi = std::min(u_of(t, t.footprint[1]), u_of(t, t.footprint[2]));
   return {std::max(lo, 0.0), std::min(hi, t.length)};
 }
 
@@ -34,21 +33,21 @@ std::optional<Tee> make_tee(const std::vector<WallFrame>& frames, std::size_t st
   if (s.base != t.base || s.top > t.top || s.capless[std::size_t(end)]) return std::nullopt;
   const Point2 e = end == WallEnd::from ? s.from : s.to;
   const Point2 out = end == WallEnd::from ? s.dir : Point2{-s.dir.x, -s.dir.y};
-  const double u = u_on(t, e), w = w_on(t, e), along = out.x * t.normal.x + out.y * t.normal.y;
+  const double u = u_of(t, e), w = w_on(t, e), along = out.x * t.normal.x + out.y * t.normal.y;
   if (std::abs(w) > t.half / 2 || std::abs(cross(out, t.dir)) < 0.5) return std::nullopt;
   const int side = along > 0 ? 1 : -1;
   const Point2 n{-out.y * s.half, out.x * s.half};  // left of the outward direction
   const Point2 left = cross_side(t, side, {e.x + n.x, e.y + n.y}, out);
   const Point2 right = cross_side(t, side, {e.x - n.x, e.y - n.y}, out);
   Tee tee{stem, end, through, {}, {right, left}};
-  const double ul = u_on(t, left), ur = u_on(t, right);
+  const double ul = u_of(t, left), ur = u_of(t, right);
   tee.attachment = ul < ur ? Attachment{ul, ur, side, left, right, s.top} : Attachment{ur, ul, side, right, left, s.top};
   const auto [lo, hi] = clear_range(t);
   if (!(tee.attachment.u0 > lo && tee.attachment.u1 < hi) || !(u > 0.0 && u < t.length)) return std::nullopt;
   // What the clip takes off the stem must lie inside the through-wall: its square end's
   // corners too (a stem thicker than the wall, or meeting it askew, reaches past its far face).
   for (const Point2 corner : {Point2{e.x + n.x, e.y + n.y}, Point2{e.x - n.x, e.y - n.y}}) {
-    const double cu = u_on(t, corner);
+    const double cu = u_of(t, corner);
     if (std::abs(w_on(t, corner)) > t.half || !(cu > lo && cu < hi)) return std::nullopt;
   }
   for (const Hole& h : t.holes)

@@ -148,11 +148,14 @@ void add_build_command(CLI::App& root, Commands& commands) {
                   "same, its old name)")
       ->check(CLI::IsMember({"auto", "general", "nef", "cgal"}))
       ->capture_default_str();
-  app->add_flag("--check", options->check,
-                "check the wall solid as written (closed, 2-manifold, no self-intersection or\n"
-                "degenerate face, outward, genus) and its volume against the plan's analytic volume\n"
-                "(relative difference at most 1e-9); exit 1 if any check fails. It checks the\n"
-                "doubles that .obj, .off and .ply store exactly (.stl rounds them to float32)");
+  app->add_flag(
+      "--check", options->check,
+      "check the wall solid as written (closed, 2-manifold, no self-intersection or\n"
+      "degenerate face, outward, genus) and its volume against the plan's analytic volume\n"
+      "(relative difference at most 1e-9, plus the surface area times an ulp of the largest\n"
+      "coordinate, which rounding the vertices to doubles allows); exit 1 if any check fails. It "
+      "checks the\n"
+      "doubles that .obj, .off and .ply store exactly (.stl rounds them to float32)");
   add_format_option(*app, options->format, "format of the --check report");
   app->add_flag("--force", options->force, "build even if the plan has validation errors");
   app->add_option("--level", options->level,

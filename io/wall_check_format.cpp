@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/wall_check_format.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace roomcad {
@@ -30,8 +32,10 @@ std::string format_wall_check_text(const WallCheck& v) {
                      c.inward_components, c.cavities == 0 ? "" : fmt::format(", {} cavities", c.cavities));
   out += fmt::format("  genus               {}\n", c.genus);
   out += fmt::format("  volume              {} m^3\n", c.volume);
-  out += fmt::format("  analytic volume     {} m^3 (relative difference {:.3g}, limit 1e-09)\n",
-                     v.analytic, v.relative);
+  out += fmt::format(
+      "  analytic volume     {} m^3 (relative difference {:.3g}, limit 1e-09 plus {:.2g} m^3 "
+      "of rounding)\n",
+      v.analytic, v.relative, v.limit - kWallVolumeTolerance * std::abs(v.analytic));
   out += fmt::format("check: {}\n", v.ok ? "ok" : "FAILED");
   return out;
 }
@@ -44,11 +48,11 @@ std::string format_wall_check_json(const WallCheck& v) {
       "\"rejected_triangles\": {}, \"self_intersections\": {}, \"touching_pairs\": {}, "
       "\"degenerate_faces\": {}, "
       "\"outward\": {}, \"cavities\": {}, \"genus\": {}, \"volume\": {}, \"analytic_volume\": {}, "
-      "\"relative_difference\": {}}}\n",
+      "\"relative_difference\": {}, \"volume_limit\": {}}}\n",
       v.ok, c.vertices, c.faces, c.triangles, c.components, c.is_closed(), c.border_edges,
       c.is_manifold(), c.non_manifold_vertices, c.rejected_triangles, c.self_intersections,
       c.touching_pairs, c.degenerate_triangles, c.inward_components == 0, c.cavities, c.genus,
-      c.volume, v.analytic, v.relative);
+      c.volume, v.analytic, v.relative, v.limit);
 }
 
 }  // namespace roomcad

@@ -42,4 +42,16 @@ FacePropertyHandles face_property_handles(const SolidMesh& mesh) {
   return h;
 }
 
+double face_area(const SolidMesh& mesh, SolidMesh::FaceHandle face) {
+  OpenMesh::Vec3d n(0, 0, 0), first(0, 0, 0), last(0, 0, 0);
+  bool started = false;
+  for (const auto v : mesh.fv_range(face)) {
+    const OpenMesh::Vec3d& p = mesh.point(v);
+    if (started) n += OpenMesh::cross(last - first, p - first);
+    else first = p, started = true;
+    last = p;
+  }
+  return n.norm() / 2.0;
+}
+
 }  // namespace roomcad

@@ -62,6 +62,10 @@ struct FacePropertyHandles {
 /// @throws std::logic_error if add_face_properties(mesh) was never called.
 [[nodiscard]] FacePropertyHandles face_property_handles(const SolidMesh& mesh);
 
+/// @return the area of a planar face in square metres (half its fan's cross product). O(its
+/// corners).
+[[nodiscard]] double face_area(const SolidMesh& mesh, SolidMesh::FaceHandle face);
+
 /// The result of building a plan: one mesh per part, sharing one object table.
 struct Model {
   SolidMesh walls;     ///< the wall solid: closed, 2-manifold, outward oriented

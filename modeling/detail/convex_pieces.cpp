@@ -17,7 +17,6 @@
 #include <tbb/parallel_for.h>
 
 #include "modeling/build_model.h"
-#include "modeling/segment_predicates.h"
 
 namespace roomcad::detail {
 namespace {
@@ -46,10 +45,12 @@ PlaneRef plane_through(PlaneSet& set, Point2 p, Point2 q) {
 }
 
 // The plane of a slanted wall's square end: through its end point, square to its centre line
-// exactly (not through its two rounded corners), so that walls drawn along one line, end to
-// end or over one another, have one plane there whatever their thickness: through their own
-// rounded corners, two such caps cross at a hair's angle, and the slivers between them round
-// into faces that cross (stress finding S6). Outside beyond the end.
+// exactly (not through its two rounded corners), so that the square ends of walls ending at one
+// point all pass through it: walls drawn along one line, end to end or over one another, have
+// one plane there whatever their thickness, and walls at other angles meet on the vertical
+// line through the point. Through their own rounded corners, two such caps cross at a hair's
+// angle or a hair off the point, and the slivers between them round into faces that cross
+// (stress finding S6). Outside beyond the end.
 PlaneRef square_end_plane(PlaneSet& set, const WallFrame& f, WallEnd end) {
   PlaneRecipe r;
   r.kind = PlaneRecipe::Kind::square_end;
@@ -252,15 +253,15 @@ HolePlanes shaped_hole_planes(PlaneSet& set, const WallFrame& f, const Hole& h,
   return p;
 }
 
-// @param shared_line  per WallEnd: the end's square end lies on another wall's, on one line
-WallPlanes wall_planes(PlaneSet& set, const WallFrame& f, std::array<bool, 2> shared_line) {
+// @param shared_point  per WallEnd: the end is square, at the end point of another square end
+WallPlanes wall_planes(PlaneSet& set, const WallFrame& f, std::array<bool, 2> shared_point) {
   WallPlanes p;
   for (std::size_t i = 0; i < 4; ++i) {
     const Point2 a = f.footprint[i], b = f.footprint[(i + 1) % 4];
     if (a == b) continue;
     // Sides 1 and 3 are the to and from ends.
     const WallEnd end = i == 1 ? WallEnd::to : WallEnd::from;
-    const bool square_end = (i == 1 || i == 3) && shared_line[std::size_t(end)];
+    const bool square_end = (i == 1 || i == 3) && shared_point[std::size_t(end)];
     p.sides[i] = square_end ? square_end_plane(set, f, end) : plane_through(set, a, b);
     p.lines.push_back(p.sides[i]);
   }
@@ -482,39 +483,34 @@ Primitive make_slab_piece(PlaneSet& set, const SlabFrame& s, const Polygon& piec
   return make_prism(set, base, c0, c1);
 }
 
-// Per wall end: whether it is a slanted wall's square end at the end point of another wall
-// along the same line, also squarely ended there (walls drawn over one another, or running on
-// from each other at another thickness). Those ends take square_end_plane, one plane for all.
-// O(n log n) for n walls.
-std::vector<std::array<bool, 2>> square_ends_on_shared_lines(
+// Per wall end: whether it is a slanted wall's square end at a point where another square end
+// is too (walls drawn over one another, running on from each other at another thickness, or
+// ending at one point at other angles without a join). Those ends take square_end_plane, so
+// that all of them pass through the point. An end along an axis needs none: its rounded
+// corners are exact. O(n log n) for n walls.
+std::vector<std::array<bool, 2>> square_ends_at_shared_points(
     const std::vector<const WallFrame*>& walls) {
   std::vector<std::array<bool, 2>> shared(walls.size(), {false, false});
-  // Square ends of slanted walls, by their point's bits.
+  // Square ends, by their point's bits.
   std::vector<std::tuple<std::uint64_t, std::uint64_t, std::size_t, int>> ends;
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    const WallFrame& f = *walls[w];
-    if (f.dir.x == 0.0 || f.dir.y == 0.0) continue;  // along an axis: its rounded corners are exact
+  for (std::size_t w = 0; w < walls.size(); ++w)
     for (const int end : {0, 1}) {
-      if (f.capless[std::size_t(end)]) continue;
-      const Point2 p = end == 0 ? f.from : f.to;
+      if (walls[w]->capless[std::size_t(end)]) continue;
+      const Point2 p = end == 0 ? walls[w]->from : walls[w]->to;
       ends.emplace_back(std::bit_cast<std::uint64_t>(p.x + 0.0),
                         std::bit_cast<std::uint64_t>(p.y + 0.0), w, end);
     }
-  }
   std::sort(ends.begin(), ends.end());
   for (std::size_t i = 0; i < ends.size();) {
     std::size_t j = i;
     while (j < ends.size() && std::get<0>(ends[j]) == std::get<0>(ends[i]) &&
            std::get<1>(ends[j]) == std::get<1>(ends[i]))
       ++j;
-    for (std::size_t a = i; a < j; ++a)
-      for (std::size_t b = a + 1; b < j; ++b) {
-        const WallFrame& fa = *walls[std::get<2>(ends[a])];
-        const WallFrame& fb = *walls[std::get<2>(ends[b])];
-        if (!are_parallel(fa.from, fa.to, fb.from, fb.to)) continue;
-        shared[std::get<2>(ends[a])][std::size_t(std::get<3>(ends[a]))] = true;
-        shared[std::get<2>(ends[b])][std::size_t(std::get<3>(ends[b]))] = true;
-      }
+    for (std::size_t k = i; j - i > 1 && k < j; ++k) {
+      const WallFrame& f = *walls[std::get<2>(ends[k])];
+      if (f.dir.x != 0.0 && f.dir.y != 0.0)
+        shared[std::get<2>(ends[k])][std::size_t(std::get<3>(ends[k]))] = true;
+    }
     i = j;
   }
   return shared;
@@ -523,7 +519,7 @@ std::vector<std::array<bool, 2>> square_ends_on_shared_lines(
 std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
                                        const std::vector<const WallFrame*>& walls,
                                        const std::vector<const SlabFrame*>& slabs) {
-  const std::vector<std::array<bool, 2>> shared = square_ends_on_shared_lines(walls);
+  const std::vector<std::array<bool, 2>> shared = square_ends_at_shared_points(walls);
   std::vector<WallPlanes> planes;
   planes.reserve(walls.size());
   for (std::size_t w = 0; w < walls.size(); ++w)

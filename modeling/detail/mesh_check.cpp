@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <array>
 #include <functional>
-#include <optional>
 #include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -49,22 +49,26 @@ TriMesh triangulate_copy(const SolidMesh& mesh, SolidCheck& check) {
   return tri;
 }
 
-// Signed volume of each component, summed relative to one of its points (differences of
-// nearby doubles are exact, so precision does not depend on the distance from the origin).
+// Signed volume of each component: the sum of a . (b x d) / 6 over its triangles, exact in
+// Mpzf (CGAL's dyadic multi-precision numbers, which hold every double and their sums and
+// products) and rounded once. In doubles, even relative to a point of the component, the
+// differences of coordinates far apart round: a solid of 5.7e-15 m^3 spanning 46 m, 10 m
+// high, read as 110 times its volume (stress finding S6).
 std::vector<double> component_volumes(const TriMesh& tri, const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,
                                       std::size_t count) {
-  std::vector<double> volume(count, 0.0);
-  std::vector<std::optional<K::Point_3>> origin(count);
+  std::vector<CGAL::Mpzf> volume(count, CGAL::Mpzf(0.0));
   for (const auto f : tri.faces()) {
-    const std::size_t c = comp[f];
-    auto h = tri.halfedge(f);
-    const K::Point_3 a = tri.point(tri.source(h)), b = tri.point(tri.target(h)),
-                     d = tri.point(tri.target(tri.next(h)));
-    if (!origin[c]) origin[c] = a;
-    const K::Vector_3 ra = a - *origin[c], rb = b - *origin[c], rd = d - *origin[c];
-    volume[c] += CGAL::scalar_product(ra, CGAL::cross_product(rb, rd)) / 6.0;
+    const auto h = tri.halfedge(f);
+    const K::Point_3 &a = tri.point(tri.source(h)), &b = tri.point(tri.target(h)),
+                     &d = tri.point(tri.target(tri.next(h)));
+    const CGAL::Mpzf bx(b.x()), by(b.y()), bz(b.z()), dx(d.x()), dy(d.y()), dz(d.z());
+    volume[comp[f]] += CGAL::Mpzf(a.x()) * (by * dz - bz * dy) +
+                       CGAL::Mpzf(a.y()) * (bz * dx - bx * dz) +
+                       CGAL::Mpzf(a.z()) * (bx * dy - by * dx);
   }
-  return volume;
+  std::vector<double> rounded(count);
+  for (std::size_t c = 0; c < count; ++c) rounded[c] = CGAL::to_double(volume[c]) / 6.0;
+  return rounded;
 }
 
 long component_genus(const TriMesh& tri, const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,

@@ -22,9 +22,10 @@ namespace {
 bool is_positive(double x) { return std::isfinite(x) && x > 0.0; }
 
 /// The smallest size the build resolves among numbers of magnitude up to m: 64 units in the
-/// last place. The exact solid's corners are written as doubles; a wall thinner or lower than
-/// this folds its faces onto each other when they are rounded. (A wall shorter than this is
-/// built: its ends' faces meet, as a hairline wall's do.)
+/// last place. The exact solid's corners are written as doubles; a wall shorter, thinner or
+/// lower than this folds its faces onto each other when they are rounded (stress finding S6:
+/// walls an ulp long built solids that cross themselves). A hole narrower than this is cut:
+/// it rounds away or to a slit whose faces meet, as its volume is below the rounding's.
 double resolvable_size(double m) { return 64.0 * (std::nextafter(m, INFINITY) - m); }
 
 WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
@@ -55,12 +56,15 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   const double top = std::abs(w.base) + highest_height(w);
   const double smallest = std::max(resolvable_size(reach), resolvable_size(top));
   const double lowest = std::min(f.heights[0], f.heights[1]);
-  if (w.thickness < smallest || lowest < smallest)
-    throw PreconditionError(fmt::format(
-        "build_model: wall '{}' cannot be built: its thickness {} and height {} must each be at least "
-        "{}, 64 units in the last place of its coordinates ({} m from the origin) and of its top ({} m)",
-        w.id, w.thickness, lowest, smallest, reach, top),
-        Code::not_buildable);
+  if (length < smallest || w.thickness < smallest || lowest < smallest)
+    throw PreconditionError(fmt::format("build_model: wall '{}' cannot be built: its length {}, "
+                                        "thickness {} and height {} must each be "
+                                        "at least {}, 64 units in the last place of its "
+                                        "coordinates ({} m from the origin) and of its "
+                                        "top ({} m); make it larger or delete it",
+                                        w.id, length, w.thickness, lowest, smallest, reach, top),
+                            Code::not_buildable);
+  f.resolution = smallest;
   f.top = w.base + w.height;
   f.top_end = w.base + f.heights[1];
   f.capless = {joins.mitre[index][0].has_value(), joins.mitre[index][1].has_value()};
@@ -98,12 +102,16 @@ namespace {
 Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
   const Opening& o = plan.openings[index];
   const Wall& w = plan.walls[f.wall];
+  // An edge within the wall's resolution of its end, base or flat top is flush with it: the
+  // sliver of wall left between them could not be written apart from the hole (stress
+  // finding S6: an opening 1e-16 m short of a short wall's end built a solid that was open).
+  const double r = f.resolution;
   // Under a sloped top the general path cuts whatever the hole meets (validation judged the
   // outline exactly); a flat wall's fast path needs the rectangle inside.
   const bool inside = is_positive(o.width) && is_positive(o.height) && std::isfinite(o.offset) &&
-                      std::isfinite(o.sill) && o.offset >= 0.0 &&
-                      o.offset + o.width <= f.length && o.sill >= 0.0 &&
-                      (is_sloped(f) || o.sill + o.height <= w.height);
+                      std::isfinite(o.sill) && o.offset >= -r &&
+                      o.offset + o.width <= f.length + r && o.sill >= -r &&
+                      (is_sloped(f) || o.sill + o.height <= w.height + r);
   if (!inside)
     throw PreconditionError(fmt::format(
         "build_model: opening '{}' cannot be cut: u [{}, {}] x v [{}, {}] is not a non-empty "
@@ -115,9 +123,16 @@ Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
       throw PreconditionError(fmt::format(
           "build_model: opening '{}' cannot be cut: wall '{}' is shorter than its mitres (a side "
           "of its footprint has no length)", o.id, w.id), Code::not_buildable);
+  const double u1 = o.offset + o.width, v1 = o.sill + o.height;
   // base + (sill + height) equals the wall's top exactly when the opening reaches it.
-  return {.opening = index, .u0 = o.offset, .u1 = o.offset + o.width, .z0 = w.base + o.sill,
-          .z1 = w.base + (o.sill + o.height), .width = o.width, .height = o.height, .shape = o.shape};
+  return {.opening = index,
+          .u0 = o.offset < r ? 0.0 : o.offset,
+          .u1 = f.length - u1 < r ? f.length : u1,
+          .z0 = o.sill < r ? w.base : w.base + o.sill,
+          .z1 = !is_sloped(f) && w.height - v1 < r ? f.top : w.base + v1,
+          .width = o.width,
+          .height = o.height,
+          .shape = o.shape};
 }
 
 // Ends meeting at one point, keyed by its bits (as find_hubs does).

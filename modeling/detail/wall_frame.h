@@ -49,6 +49,10 @@ struct WallFrame {
   double top = 0.0;       ///< base + height: the top at `from` (of the whole wall, if flat)
   double top_end = 0.0;   ///< base + height_at_end: the top at `to`
   double top_max = 0.0;   ///< at least the highest top over the footprint (sloped: its corners)
+  /// The smallest size the build resolves in this wall, metres: 64 units in the last place of
+  /// its coordinates and of its top. A wall shorter, thinner or lower is refused; a hole
+  /// edge nearer than this to the wall's end, base or flat top is flush with it.
+  double resolution = 0.0;
   std::array<double, 2> heights{};  ///< height, height_at_end as written: the slope's exact rise
   std::array<Point2, 4> footprint;  ///< wall_footprint: from-right, to-right, to-left, from-left
   std::array<bool, 2> capless{false, false};  ///< per WallEnd: no end cap (mitred, or on a hub)
@@ -104,8 +108,9 @@ inline Point2 outward(const WallFrame& f, WallEnd end) {
 /// @pre validate(plan).ok() for the checks below (validation/validate.h).
 /// @return one frame per wall, in plan order. O(n log n).
 /// @throws PreconditionError naming the wall or opening if a wall is degenerate (length,
-///         thickness or height not positive and finite) or an opening cannot be cut (unknown
-///         wall, empty, or not inside [0, length] x [0, height] of its wall).
+///         thickness or height not positive and finite, or below its resolution) or an
+///         opening cannot be cut (unknown wall, empty, or not inside [0, length] x [0, height]
+///         of its wall to within its resolution).
 /// @param through_mitre  per opening (or empty: none), whether its hole runs on through a
 ///                       mitre at its wall's from and to ends (Hole::through_mitre).
 [[nodiscard]] std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& joins,

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -285,6 +286,46 @@ TEST(Modeling, OpeningOutsideItsWallIsAnErrorNamingIt) {
   expect_build_error(plan, "too-wide");
 }
 
+// A wall shorter than 64 units in the last place of its coordinates cannot be written apart
+// from its own ends: walls an ulp long built solids that cross themselves (stress finding S6:
+// 127 fuzzed plans; one was this lone wall from -5e-324 to 0). It is refused by name, as a
+// wall of length 0 is; a nanometre is long enough at 4 m from the origin.
+TEST(Modeling, AWallShorterThanItsCoordinatesResolveIsRefusedByName) {
+  for (const auto& [from, to] :
+       {std::pair{Point2{-5e-324, 0.0}, Point2{0.0, 0.0}},
+        std::pair{Point2{4.0, -4.0}, Point2{std::nextafter(4.0, 5.0), -4.0}}}) {
+    Plan plan = empty_plan();
+    add_wall(plan, "w0", {-4.0, -4.0}, from);
+    add_wall(plan, "speck", from, to);
+    test::expect_build_refused(plan, {}, Code::not_buildable,
+                               "wall 'speck' cannot be built: its length");
+  }
+  Plan plan = empty_plan();
+  add_wall(plan, "w0", {-4.0, -4.0}, {4.0, -4.0});
+  add_wall(plan, "short", {4.0, -4.0}, {std::nextafter(4.0, 5.0), -4.0 + 1e-9});
+  expect_valid_walls(plan, BooleanPath::automatic, 0);
+}
+
+// An opening's edge within 64 units in the last place of its wall's end is flush with it. A
+// fuzzed plan (stress finding S6, reduced): a window 1e-7 m wide across a mitred wall whose
+// length, rounded, is 1.17e-15 m longer left a sliver of wall an ulp thick, and the solid was
+// open (1.3% over the analytic volume). An edge an ulp past the end was refused as outside.
+TEST(Modeling, AnOpeningWithinAnUlpOfItsWallsEndIsFlushWithIt) {
+  Plan plan = empty_plan();
+  add_wall(plan, "w1", {-2.4, 4.6}, {0.3, 3.6}).height = 3.0;
+  Wall& w3 = add_wall(plan, "w3", {-2.4, 4.6}, {-2.4, 4.6 + 1e-7});
+  w3.thickness = 0.25, w3.height = 0.5;
+  add_opening(plan, "across", kWindow, "w3", 0.0, 1e-7, 0.0, 0.5);
+  ASSERT_GT(std::hypot(w3.to.x - w3.from.x, w3.to.y - w3.from.y), 1e-7);
+  expect_valid_walls(plan, BooleanPath::automatic, 0);
+
+  Plan past = single_wall();
+  add_opening(past, "past", kDoor, "w", 2.0, std::nextafter(std::nextafter(2.0, 3.0), 3.0), 0.0,
+              2.0);
+  ASSERT_GT(past.openings[0].offset + past.openings[0].width, 4.0);
+  expect_valid_walls(past, BooleanPath::automatic, 0);
+}
+
 // Joins the fast path would build wrong, each a plan without errors: the walls go to the
 // general path, which builds the spec's solid (its volume the analytic one). Before, the fast
 // path's volume was off by 0.6-2.5% (a fuzzed plan of the first kind put a hub corner
@@ -351,6 +392,22 @@ TEST(Modeling, WallsAlongOneSlantedLineShareTheirSquareEnds) {
     for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general})
       expect_valid_walls(plan, path, 0);
   }
+}
+
+// Three walls ending at one point without a join, at other angles, thicknesses and heights:
+// two thin ones 3.3 degrees apart and a 2 m thick one above them (a fuzzed plan, stress
+// finding S6). Each square end through its own rounded corners missed the point by a hair, the
+// three caps met in a triangle smaller than an ulp, and its faces rounded into 9 that cross,
+// on the Nef path too. Each cap now passes through the point exactly.
+TEST(Modeling, SquareEndsAtOnePointPassThroughIt) {
+  Plan plan = empty_plan();
+  add_wall(plan, "thin", {-0.6, 4.699999999999999}, {-1.3, -2.3}).thickness = 0.1;
+  Wall& thinner = add_wall(plan, "thinner", {-0.6000000000000002, 2.1}, {-1.3, -2.3});
+  thinner.thickness = 0.075, thinner.height = 3.0;
+  Wall& thick = add_wall(plan, "thick", {3.7, 4.999999999999999}, {-1.3, -2.3});
+  thick.thickness = 2.0, thick.height = 1.0, thick.base = 1.0;
+  for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general})
+    expect_valid_walls(plan, path, 0);
 }
 
 // Where solids touch along an edge, four faces meet there: each wall's two are paired across

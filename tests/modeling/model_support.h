@@ -8,6 +8,7 @@
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
 #include "modeling/plan.h"
+#include "modeling/wall_check.h"
 #include "support/solid_tolerance.h"
 
 namespace roomcad::test {

@@ -8,7 +8,7 @@
 // Every plan here validates without errors. Flush with a mitred corner and touching side by
 // side are exact only where the numbers are: dyadic sizes, axis-aligned, moved by whole metres;
 // turned, they would overlap or gap by an ulp, which validation reports.
-// Volumes are compared within volume_tolerance (support/solid_tolerance.h): 1e-9 relative,
+// Volumes are compared within volume_tolerance (modeling/wall_check.h): 1e-9 relative,
 // plus what rounding the output vertices to doubles allows (an ulp of 1e7 m is 1.9e-9 m).
 #include <fmt/format.h>
 #include <gtest/gtest.h>

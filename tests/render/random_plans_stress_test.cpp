@@ -18,11 +18,11 @@
 
 #include "modeling/build_model.h"
 #include "modeling/mesh_check.h"
+#include "modeling/wall_check.h"
 #include "render/renderer.h"
 #include "scene_support.h"
-#include "testing/random_plan.h"
-#include "support/solid_tolerance.h"
 #include "support/stress_plans.h"
+#include "testing/random_plan.h"
 #include "validation/validate.h"
 
 namespace roomcad {
@@ -129,7 +129,7 @@ double expect_valid_build(const Plan& plan, BooleanPath path, BuildStats& total)
                             << " non-manifold vertices, " << c.self_intersections
                             << " self-intersections, " << c.degenerate_triangles << " degenerate";
   const double analytic = analytic_wall_volume(plan);
-  EXPECT_NEAR(c.volume, analytic, test::volume_tolerance(model.walls, analytic)) << name;
+  EXPECT_NEAR(c.volume, analytic, volume_tolerance(model.walls, analytic)) << name;
   if (path == BooleanPath::automatic) {
     FrameBuffers frame;
     render_model(model, RenderOptions{.width = 64, .height = 48, .shadow_resolution = 256,

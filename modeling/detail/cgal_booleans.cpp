@@ -80,9 +80,12 @@ IndexedSoup round_soup(const std::vector<EK::Point_3>& exact, std::vector<std::v
   return snap_soup(std::move(out), tolerance);
 }
 
-// Puts the soup in an order of its own: points sorted by their exact coordinates, each polygon
-// starting at its lowest point, polygons sorted. CGAL gives them in the order of its records,
-// which follows memory addresses: without this the same plan built twice gave different files.
+// Puts the soup in an order of its own: points sorted by their exact coordinates, equal ones
+// merged, each polygon starting at its lowest point, polygons sorted. CGAL gives them in the
+// order of its records, which follows memory addresses: without this the same plan built
+// twice gave different files. It can also give one point twice (walls touching along an edge:
+// the edge's ends, once for each wall), and snap_soup keeps equal exact points apart: split_fans
+// then numbered both copies alike, and the mesh could not hold them.
 void sort_soup(std::vector<EK::Point_3>& points, std::vector<std::vector<std::size_t>>& polygons) {
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -92,9 +95,9 @@ void sort_soup(std::vector<EK::Point_3>& points, std::vector<std::vector<std::si
   std::vector<std::size_t> rank(points.size());
   std::vector<EK::Point_3> sorted;
   sorted.reserve(points.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    rank[order[k]] = k;
-    sorted.push_back(points[order[k]]);
+  for (const std::size_t i : order) {
+    if (sorted.empty() || sorted.back() != points[i]) sorted.push_back(points[i]);
+    rank[i] = sorted.size() - 1;
   }
   points = std::move(sorted);
   for (std::vector<std::size_t>& polygon : polygons) {

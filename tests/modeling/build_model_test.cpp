@@ -411,14 +411,14 @@ TEST(Modeling, SquareEndsAtOnePointPassThroughIt) {
 }
 
 // Where solids touch along an edge, four faces meet there: each wall's two are paired across
-// its own material, so each wall takes its own copy of the edge (split_fans). (The Nef
-// reference path still refuses it, with an error naming a wall.)
+// its own material, so each wall takes its own copy of the edge (split_fans). On every path:
+// the Nef path refused it until its soup merged the points CGAL gives twice there.
 TEST(Modeling, WallsTouchingAlongAnEdgeTakeACopyOfItEach) {
   Plan plan = empty_plan();
   // Thickness 0.25 keeps the side faces exact: a touches b only along the edge x=2, y=0.25.
   add_wall(plan, "a", {0, 0.125}, {2, 0.125}).thickness = 0.25;
   add_wall(plan, "b", {2, 0.375}, {4, 0.375}).thickness = 0.25;
-  test::expect_valid_walls(plan, BooleanPath::general, 0, 2 * 2 * 0.25 * 2.5);
+  test::expect_paths_agree(plan, 0, 2 * 2 * 0.25 * 2.5);
   const Model model = build_model(plan);
   EXPECT_EQ(model.walls.n_vertices(), 16u);  // two boxes' corners, none shared
   const SolidCheck c = check_solid(model.walls);
@@ -432,6 +432,7 @@ TEST(Modeling, WallsTouchingAtAPointGetSeparateVertices) {
   Wall& high = add_wall(plan, "high", {2, 0.375}, {4, 0.375});
   high.thickness = 0.25;
   high.base = 2.5;  // touches "low" only at the point (2, 0.25, 2.5)
+  test::expect_paths_agree(plan, 0, 2 * 2 * 0.25 * 2.5);
   const Model model = build_model(plan);
   const SolidCheck c = check_solid(model.walls);
   EXPECT_TRUE(c.is_valid());  // touching at a point is not crossing

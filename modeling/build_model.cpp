@@ -135,7 +135,8 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
   Model model{.walls = detail::assemble_mesh(walls, objects),
               .floor = detail::assemble_mesh({&floor, 1}, objects),
               .fixtures = detail::assemble_mesh(fixtures, objects, false),
-              .objects = std::move(objects)};
+              .objects = std::move(objects),
+              .slabs_built = options.parts.slabs};
   detail::require_closed(model.walls, model.objects);
   local.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats != nullptr) *stats = local;

@@ -72,6 +72,7 @@ struct Model {
   SolidMesh floor;     ///< the tiled floor
   SolidMesh fixtures;  ///< door leaves and window panes
   std::vector<std::string> objects;  ///< object ids; rc:object indexes this
+  bool slabs_built = true;           ///< `walls` holds the plan's slabs (false: built without them)
 };
 
 }  // namespace roomcad

@@ -22,7 +22,13 @@ double volume_tolerance(const SolidMesh& mesh, double volume) {
 WallCheck check_walls(const Model& model, const Plan& plan) {
   WallCheck v;
   v.solid = check_solid(model.walls);
-  v.analytic = analytic_wall_volume(plan);
+  if (model.slabs_built || plan.slabs.empty()) {
+    v.analytic = analytic_wall_volume(plan);
+  } else {  // the solid is the walls' alone
+    Plan walls_only = plan;
+    walls_only.slabs.clear();
+    v.analytic = analytic_wall_volume(walls_only);
+  }
   const double diff = std::abs(v.solid.volume - v.analytic);
   v.relative = v.analytic != 0.0 ? diff / std::abs(v.analytic) : diff;
   v.limit = volume_tolerance(model.walls, v.analytic);

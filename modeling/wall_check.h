@@ -34,7 +34,8 @@ struct WallCheck {
   bool ok = false;        ///< a valid solid, |volume - analytic| within limit
 };
 
-/// Checks `model.walls`, built from `plan`. Cost: check_solid plus analytic_wall_volume.
+/// Checks `model.walls`, built from `plan` (without its slabs where the model was built
+/// without them, Model::slabs_built). Cost: check_solid plus analytic_wall_volume.
 /// @throws PreconditionError as analytic_wall_volume for a plan that cannot be built.
 [[nodiscard]] WallCheck check_walls(const Model& model, const Plan& plan);
 

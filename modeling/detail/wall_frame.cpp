@@ -123,13 +123,15 @@ Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
       throw PreconditionError(fmt::format(
           "build_model: opening '{}' cannot be cut: wall '{}' is shorter than its mitres (a side "
           "of its footprint has no length)", o.id, w.id), Code::not_buildable);
-  const double u1 = o.offset + o.width, v1 = o.sill + o.height;
-  // base + (sill + height) equals the wall's top exactly when the opening reaches it.
+  // Both edges snap alike (0 first), so u0 <= u1 and z0 <= z1 stay so. base + (sill + height)
+  // equals the wall's top (f.top) exactly when the opening reaches it.
+  const auto snap = [r](double x, double end) { return x < r ? 0.0 : end - x < r ? end : x; };
+  const double top = is_sloped(f) ? INFINITY : w.height;
   return {.opening = index,
-          .u0 = o.offset < r ? 0.0 : o.offset,
-          .u1 = f.length - u1 < r ? f.length : u1,
-          .z0 = o.sill < r ? w.base : w.base + o.sill,
-          .z1 = !is_sloped(f) && w.height - v1 < r ? f.top : w.base + v1,
+          .u0 = snap(o.offset, f.length),
+          .u1 = snap(o.offset + o.width, f.length),
+          .z0 = w.base + snap(o.sill, top),
+          .z1 = w.base + snap(o.sill + o.height, top),
           .width = o.width,
           .height = o.height,
           .shape = o.shape};

@@ -324,6 +324,12 @@ TEST(Modeling, AnOpeningWithinAnUlpOfItsWallsEndIsFlushWithIt) {
               2.0);
   ASSERT_GT(past.openings[0].offset + past.openings[0].width, 4.0);
   expect_valid_walls(past, BooleanPath::automatic, 0);
+
+  // Both edges a hair past the end: both snap to it (the hole is empty), never the far edge
+  // alone, which left the near one beyond it and the wall's side face repeating a corner.
+  Plan beyond = single_wall();
+  add_opening(beyond, "beyond", kWindow, "w", 4.0 + 1e-14, 1e-15, 0.5, 1.0);
+  expect_valid_walls(beyond, BooleanPath::automatic, 0, 4 * 0.2 * 2.5);
 }
 
 // Joins the fast path would build wrong, each a plan without errors: the walls go to the

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 
 #include "modeling/build_model.h"
@@ -246,14 +247,18 @@ FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces,
   std::pair<std::size_t, std::size_t> bad;
   const FanSplit fans = split_fans(r.polygons, r.points, bad);
   if (fans.vertex.empty() && !r.polygons.empty()) {
-    std::string owners;
+    std::vector<std::string> names;  // each object once (a wall's two faces there are common)
     for (std::size_t k = 0; k < r.polygons.size(); ++k) {
       const auto& poly = r.polygons[k];
       for (std::size_t m = 0; m < poly.size(); ++m)
         if ((poly[m] == bad.first && poly[(m + 1) % poly.size()] == bad.second) ||
-            (poly[m] == bad.second && poly[(m + 1) % poly.size()] == bad.first))
-          owners += fmt::format("{}{}", owners.empty() ? "" : ", ", owner_name(prims[faces[r.tags[k]]->owner], labels));
+            (poly[m] == bad.second && poly[(m + 1) % poly.size()] == bad.first)) {
+          std::string name = owner_name(prims[faces[r.tags[k]]->owner], labels);
+          if (std::find(names.begin(), names.end(), name) == names.end())
+            names.push_back(std::move(name));
+        }
     }
+    const std::string owners = fmt::format("{}", fmt::join(names, ", "));
     const auto& a = r.points[bad.first];
     const auto& b = r.points[bad.second];
     throw PreconditionError(

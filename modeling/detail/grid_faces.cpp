@@ -522,6 +522,62 @@ bool find_blocks(PlaneGrid& pg, const std::vector<Contribution>& contributions, 
   return true;
 }
 
+// Whether two solid rectangles on one side of the plane abut along a grid line where they may
+// touch only along it (wedges_apart): then the face across the line must end there, which the
+// grid's cells cannot tell, so the plane is left to the general boolean (which decides it
+// with every polygon there). Rectangles abutting on one plane (walls meeting square, mitred,
+// stacked) share it and leave no gap. The bundled homes have up to 8 planes each that go to
+// the general boolean so; on none of them is the solid pinched (other polygons fill the gap).
+// O(n log n) for n rectangles, plus a test per pair meeting on one line.
+bool may_be_pinched(PlaneGrid& pg, const PlaneSet& set, PlaneRef plane,
+                    const std::vector<Contribution>& contributions, const Layout& layout) {
+  struct Side {
+    int family;
+    std::uint32_t rank, from, to;  // the line, and the block's ranks along it
+    bool starts;                   // the block lies beyond the line (else before it)
+    std::size_t polygon;
+    PlaneRef line, across;
+  };
+  std::vector<Side> sides;
+  for (std::size_t c = 0; c < contributions.size(); ++c) {
+    const std::optional<Block>& b = layout.block_of[c];
+    if (!b || !contributions[c].solid) continue;
+    const std::vector<PlaneRef>& lines = contributions[c].polygon.lines;
+    const std::vector<int>& kinds = layout.kinds[c];
+    for (std::size_t m = 0; m < lines.size(); ++m) {
+      const int family = kinds[m];
+      // A line of the other family crosses this one.
+      const auto other = std::find(kinds.begin(), kinds.end(), 1 - family);
+      const PlaneRef across = lines[std::size_t(other - kinds.begin())];
+      const std::uint32_t rank =
+          family == 0 ? pg.us().rank(lines[m].id) : pg.vs().rank(lines[m].id);
+      const std::uint32_t from = family == 0 ? b->v0 : b->u0, to = family == 0 ? b->v1 : b->u1;
+      sides.push_back(
+          {family, rank, from, to, rank == (family == 0 ? b->u0 : b->v0), c, lines[m], across});
+    }
+  }
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+    return std::tie(a.family, a.rank, a.starts, a.polygon) <
+           std::tie(b.family, b.rank, b.starts, b.polygon);
+  });
+  for (std::size_t first = 0, last = 0; first < sides.size(); first = last) {
+    for (last = first; last < sides.size() && sides[last].family == sides[first].family &&
+                       sides[last].rank == sides[first].rank;)
+      ++last;
+    for (std::size_t e = first; e < last && !sides[e].starts; ++e)
+      for (std::size_t s = e + 1; s < last; ++s) {
+        const Side &ends = sides[e], &starts = sides[s];
+        if (!starts.starts || starts.to <= ends.from || ends.to <= starts.from) continue;
+        const Contribution &a = contributions[ends.polygon], &b = contributions[starts.polygon];
+        for (const bool below : {true, false})
+          if ((below ? a.below && b.below : a.above && b.above) &&
+              wedges_apart(set, plane, ends.line, starts.line, ends.across, below))
+            return true;
+      }
+  }
+  return false;
+}
+
 // The windows: around each slanted edge the cells its ends may reach, and windows that share a
 // cell merged into their box until none do. Outside them a slanted polygon holds a cell whole
 // or not at all (its other edges run along grid lines from grid point to grid point).
@@ -729,7 +785,9 @@ std::optional<std::vector<SolidFace>> grid_faces(const PlaneSet& set, PlaneRef p
   PlaneGrid pg(set, plane, k, std::move(lines));
   if (!slanted_within(pg, contributions, layout)) return std::nullopt;
   std::size_t work = 0;
-  if (!find_blocks(pg, contributions, layout, work) || work > kMaxGridCells) return std::nullopt;
+  if (!find_blocks(pg, contributions, layout, work) || work > kMaxGridCells ||
+      may_be_pinched(pg, set, plane, contributions, layout))
+    return std::nullopt;
   find_windows(pg, contributions, layout);
   // The windows' polygons go through the general boolean: worth it while they are fewer than
   // the plane's.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <string>
 #include <tuple>
@@ -293,22 +294,68 @@ struct Inside {
   std::array<bool, 2> sides{};
 };
 
-std::array<FaceOwners, 2> owners_of(const Context& cx, const std::vector<Inside>& inside) {
+// The faces on the two sides of a piece: their owners, and whether the solid's material on
+// the side away from each face is pinched along the piece (see `pinched`).
+struct PieceFaces {
+  std::array<FaceOwners, 2> owners;
+  bool up_pinched = false, down_pinched = false;
+};
+
+// The line of convex polygon c that runs along piece p (c covers one side of p only, so its
+// boundary does), or nothing. O(lines) predicates.
+std::optional<PlaneRef> line_along(const Context& cx, std::size_t c, const Piece& p) {
+  if (c == p.source) return p.line;
+  for (const PlaneRef& t : cx.contributions[c].polygon.lines)
+    if (cx.points.side(t, p.a) == 0 && cx.points.side(t, p.b) == 0) return t;
+  return std::nullopt;
+}
+
+// Whether the solid just below the plane (`below`; else just above) near piece p is two parts
+// that touch only along it, where the face of the plane runs on across the piece (the same
+// owner both sides): then the face must end there (wedges_apart). No polygon may cover both
+// sides; each side's are wedges along the piece, and every pair across it must leave a gap
+// (then so do the widest two). Exact; O(k^2) for k polygons along the piece, usually none.
+bool pinched(const Context& cx, const Piece& p, PlaneRef across, const std::vector<Inside>& inside,
+             bool below) {
+  std::vector<PlaneRef> side0, side1;
+  for (const Inside& in : inside) {
+    const Contribution& c = cx.contributions[in.polygon];
+    if (!c.solid || !(below ? c.below : c.above)) continue;
+    if (in.sides[0] && in.sides[1]) return false;
+    const auto t = line_along(cx, in.polygon, p);
+    if (!t) return false;
+    (in.sides[0] ? side0 : side1).push_back(*t);
+  }
+  if (side0.empty() || side1.empty()) return false;
+  for (const PlaneRef& m0 : side0)
+    for (const PlaneRef& m1 : side1)
+      if (!wedges_apart(cx.set, cx.plane, m0, m1, across, below)) return false;
+  return true;
+}
+
+PieceFaces faces_of(const Context& cx, const Piece& p, PlaneRef across,
+                    const std::vector<Inside>& inside) {
   std::array<Presence, 2> at;
   for (const Inside& in : inside)
     for (std::size_t s = 0; s < 2; ++s)
       if (in.sides[s]) at[s].add(cx.contributions[in.polygon]);
-  return {at[0].owners(), at[1].owners()};
+  PieceFaces out{{at[0].owners(), at[1].owners()}};
+  if (p.source >= cx.contributions.size()) return out;  // a cut's piece
+  const auto& o = out.owners;
+  out.up_pinched = o[0].up >= 0 && o[0].up == o[1].up && pinched(cx, p, across, inside, true);
+  out.down_pinched =
+      o[0].down >= 0 && o[0].down == o[1].down && pinched(cx, p, across, inside, false);
+  return out;
 }
 
-// The owners on the two sides of each piece of one edge, walking along it: the first piece is
+// The faces on the two sides of each piece of one edge, walking along it: the first piece is
 // tested against every polygon near it, each next piece only against the polygons whose edges
 // split it off from the one before (append_pieces' sources), as no other polygon's boundary
-// passes between them. `inside` is scratch space.
-void classify_edge(const Context& cx, std::span<const Piece> pieces,
+// passes between them. `across` is a plane crossing the edge; `inside` is scratch space.
+void classify_edge(const Context& cx, std::span<const Piece> pieces, PlaneRef across,
                    const std::vector<std::size_t>& sources,
                    const std::vector<std::size_t>& first_source, BoundsGrid& near,
-                   std::vector<Inside>& inside, std::span<std::array<FaceOwners, 2>> out) {
+                   std::vector<Inside>& inside, std::span<PieceFaces> out) {
   const Piece& first = pieces.front();
   inside.clear();
   near.for_each_meeting(first.bounds, [&](std::size_t c) {
@@ -316,7 +363,7 @@ void classify_edge(const Context& cx, std::span<const Piece> pieces,
     const std::array<bool, 2> sides = c == first.source ? std::array<bool, 2>{true, false} : inside_sides(cx, c, first);
     if (sides[0] || sides[1]) inside.push_back({c, sides});
   });
-  out[0] = owners_of(cx, inside);
+  out[0] = faces_of(cx, first, across, inside);
   for (std::size_t k = 1; k < pieces.size(); ++k) {
     for (std::size_t at = first_source[k]; at < first_source[k + 1]; ++at) {
       const std::size_t c = sources[at];
@@ -334,7 +381,7 @@ void classify_edge(const Context& cx, std::span<const Piece> pieces,
         inside.push_back({c, sides});
       }
     }
-    out[k] = owners_of(cx, inside);
+    out[k] = faces_of(cx, pieces[k], across, inside);
   }
 }
 
@@ -377,17 +424,20 @@ class FaceGroups {
 // Files the piece with the faces it bounds: where an owner, or its cut cell, differs between
 // its sides.
 void add_boundary(const Context& cx, FaceGroups& groups, const Piece& p, std::size_t a,
-                  std::size_t b, const std::array<FaceOwners, 2>& o) {
+                  std::size_t b, const PieceFaces& faces) {
+  const auto& o = faces.owners;
   // Most pieces lie inside a face, one owner on both sides: without cuts, nothing to file.
-  if (cx.cuts.empty() && o[0].up == o[1].up && o[0].down == o[1].down) return;
+  if (cx.cuts.empty() && o[0].up == o[1].up && o[0].down == o[1].down && !faces.up_pinched &&
+      !faces.down_pinched)
+    return;
   // The negative side lies on the left of a -> b seen from the plane's positive side.
   const std::array<std::string, 2> up{cells_of(cx, p, o[0].up, 0), cells_of(cx, p, o[1].up, 1)};
-  if (o[0].up != o[1].up || up[0] != up[1]) {
+  if (o[0].up != o[1].up || up[0] != up[1] || faces.up_pinched) {
     if (o[0].up >= 0) groups.add(1, o[0].up, up[0], {a, b, p.line, 1});
     if (o[1].up >= 0) groups.add(1, o[1].up, up[1], {b, a, p.line, -1});
   }
   const std::array<std::string, 2> down{cells_of(cx, p, o[0].down, 0), cells_of(cx, p, o[1].down, 1)};
-  if (o[0].down != o[1].down || down[0] != down[1]) {
+  if (o[0].down != o[1].down || down[0] != down[1] || faces.down_pinched) {
     if (o[0].down >= 0) groups.add(-1, o[0].down, down[0], {b, a, p.line, -1});
     if (o[1].down >= 0) groups.add(-1, o[1].down, down[1], {a, b, p.line, 1});
   }
@@ -532,6 +582,13 @@ std::optional<XPoint> middle_of(const PlanePolygon& polygon) {
 
 }  // namespace
 
+bool wedges_apart(const PlaneSet& set, PlaneRef plane, PlaneRef m0, PlaneRef m1, PlaneRef across,
+                  bool below) {
+  if (m0.id == m1.id) return false;
+  const int frame = orient_normals(set, m0, plane, across) * (below ? 1 : -1);
+  return frame * orient_normals(set, m0, m1, across) < 0;
+}
+
 bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contributions) {
   const IntervalScope intervals;
   const std::vector<Box3> boxes = boxes_of(contributions);
@@ -582,9 +639,9 @@ struct PlaneBoolean::State {
   std::vector<Edge> edges;
   std::vector<Bounds> polygon_bounds;  // per contribution
   BoundsGrid near;                     // of polygon_bounds
-  // Every edge's pieces with the owners on their two sides.
+  // Every edge's pieces with the faces on their two sides.
   std::vector<Piece> pieces;
-  std::vector<std::array<FaceOwners, 2>> owners;
+  std::vector<PieceFaces> owners;
 
   State(const PlaneSet& s, PlaneRef p, std::vector<Contribution> c)
       : set(s), plane(p), i((dominant_axis(s, p.id) + 1) % 3), j((i + 1) % 3),
@@ -616,8 +673,8 @@ struct PlaneBoolean::State {
       const std::size_t first = pieces.size();
       append_pieces(cx, e, edges[e], pieces, sources, first_source);
       owners.resize(pieces.size());
-      classify_edge(cx, std::span(pieces).subspan(first), sources, first_source, near, inside,
-                    std::span(owners).subspan(first));
+      classify_edge(cx, std::span(pieces).subspan(first), edges[e].from_end, sources, first_source,
+                    near, inside, std::span(owners).subspan(first));
     }
   }
 };

@@ -416,6 +416,37 @@ TEST(Modeling, SquareEndsAtOnePointPassThroughIt) {
     expect_valid_walls(plan, path, 0);
 }
 
+// Walls leaving one point 1.7 and 3.4 degrees apart, square ended there, with a window at the
+// end of two of them (a fuzzed plan, stress finding S6). Between the window's jamb and the
+// walls' ends the solid is two thin wedges that touch only along the jamb's vertical line
+// through the point; the jamb ran on across that line as one face, and once its corners were
+// rounded, the wedges' ends crossed it by an ulp (6 self-intersections). The jamb now ends
+// there on both sides (wedges_apart), on the grid of the jamb's plane too.
+TEST(Modeling, WedgesTouchingAlongAJambsLineEndItsFaceThere) {
+  Plan plan = empty_plan();
+  Wall& wide = add_wall(plan, "wide", {-3.7, 3.6}, {-1.1, 1.0000000000000002});
+  wide.thickness = 0.5, wide.height = 3.0;
+  Wall& thin = add_wall(plan, "thin", {-2.0000000000000004, 2.0}, {-3.7, 3.6});
+  thin.thickness = 0.1, thin.base = -0.5;
+  Wall& long_wall = add_wall(plan, "long", {-3.7, 3.6}, {1.9, -2.6999999999999997});
+  long_wall.thickness = 0.5, long_wall.height = 3.0, long_wall.base = -0.5;
+  Wall& low = add_wall(plan, "low", {-3.7, 3.6}, {1.9, -2.6999999999999997});
+  low.height = 1.0, low.base = -0.5;
+  add_opening(plan, "a", kWindow, "thin", 0.0, 0.9, 0.0, 1.8);
+  add_opening(plan, "b", kWindow, "wide", 0.0, 0.9, 0.0, 1.8);
+  // One component of genus 1: the wedges join again below (the low wall), and each keeps its
+  // own copy of the line where they touch, which leaves a ring round it. (Nef refuses it.)
+  for (const BooleanPath path : {BooleanPath::automatic, BooleanPath::general})
+    expect_valid_walls(plan, path, 1);
+
+  // Without the low wall the wedges join again beyond both ends of the line, so the solid
+  // would need that edge twice between the same two corners: no mesh holds that, and the
+  // build says so, naming the walls (before: it built, its faces crossing by an ulp).
+  plan.walls.pop_back();
+  test::expect_build_refused(plan, {}, Code::not_buildable,
+                             "the solid of walls #0, #1, #2 is not 2-manifold");
+}
+
 // Where solids touch along an edge, four faces meet there: each wall's two are paired across
 // its own material, so each wall takes its own copy of the edge (split_fans). On every path:
 // the Nef path refused it until its soup merged the points CGAL gives twice there.

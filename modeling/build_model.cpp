@@ -7,16 +7,18 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include "modeling/detail/cgal_booleans.h"
 #include "modeling/detail/buildable_plan.h"
+#include "modeling/detail/cgal_booleans.h"
 #include "modeling/detail/clusters.h"
 #include "modeling/detail/face_soup.h"
 #include "modeling/detail/fast_wall.h"
+#include "modeling/detail/fine_features.h"
 #include "modeling/detail/floor_fixtures.h"
 #include "modeling/detail/fuse_seams.h"
 #include "modeling/detail/general_solid.h"
 #include "modeling/detail/wall_frame.h"
 #include "modeling/joins.h"
+#include "modeling/wall_check.h"
 
 namespace roomcad {
 namespace {
@@ -89,6 +91,20 @@ void keep_parts(detail::Work& work, const Parts& parts) {
   });
 }
 
+// A plan with a feature finer than its doubles resolve (fine_features.h) builds only if its
+// solid as written passes the check of `build --check`; else it is refused, naming the feature.
+void require_written_solid(const Model& model, const Plan& plan, const std::string& feature) {
+  const WallCheck check = check_walls(model, plan);
+  if (check.ok) return;
+  throw PreconditionError(
+      fmt::format("build_model: the solid fails once its corners are rounded to doubles ({}), as "
+                  "it can where features are under {} m or coordinates past {} m: {}; make every "
+                  "feature at least {} m and keep the plan within {} m of the origin",
+                  describe_failures(check), detail::kFinestFeature, detail::kFarthestCoordinate,
+                  feature, detail::kFinestFeature, detail::kFarthestCoordinate),
+      Code::not_buildable);
+}
+
 void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStats& stats) {
   std::size_t& cluster_walls = uses_nef(path) ? stats.nef_path_walls : stats.general_path_walls;
   for (const WorkItem& item : items)
@@ -138,6 +154,8 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
               .objects = std::move(objects),
               .slabs_built = options.parts.slabs};
   detail::require_closed(model.walls, model.objects);
+  if (options.parts.walls)
+    if (const auto fine = detail::fine_feature(input)) require_written_solid(model, input, *fine);
   local.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats != nullptr) *stats = local;
   return model;

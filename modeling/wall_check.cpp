@@ -3,6 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace roomcad {
 
@@ -34,6 +39,22 @@ WallCheck check_walls(const Model& model, const Plan& plan) {
   v.limit = volume_tolerance(model.walls, v.analytic);
   v.ok = v.solid.is_valid() && diff <= v.limit;
   return v;
+}
+
+std::string describe_failures(const WallCheck& check) {
+  const SolidCheck& s = check.solid;
+  std::vector<std::string> found;
+  const auto count = [&](std::size_t n, const char* what) {
+    if (n > 0) found.push_back(fmt::format("{}: {}", what, n));
+  };
+  count(s.border_edges, "open edges");
+  count(s.non_manifold_vertices + s.rejected_triangles, "non-manifold places");
+  count(s.self_intersections, "self-intersections");
+  count(s.degenerate_triangles, "degenerate faces");
+  count(s.inward_components, "inside-out parts");
+  if (std::abs(s.volume - check.analytic) > check.limit)
+    found.push_back(fmt::format("volume: {} m^3, {} m^3 from the plan", s.volume, check.analytic));
+  return fmt::format("{}", fmt::join(found, ", "));
 }
 
 }  // namespace roomcad

@@ -4,6 +4,8 @@
 // computed from the plan alone.
 #pragma once
 
+#include <string>
+
 #include "modeling/mesh_check.h"
 #include "modeling/plan.h"
 #include "modeling/solid_mesh.h"
@@ -38,5 +40,9 @@ struct WallCheck {
 /// without them, Model::slabs_built). Cost: check_solid plus analytic_wall_volume.
 /// @throws PreconditionError as analytic_wall_volume for a plan that cannot be built.
 [[nodiscard]] WallCheck check_walls(const Model& model, const Plan& plan);
+
+/// @return what failed, in words ("open edges: 2, self-intersections: 3"); empty if nothing
+///         did. O(1).
+[[nodiscard]] std::string describe_failures(const WallCheck& check);
 
 }  // namespace roomcad

@@ -59,10 +59,15 @@ class LineOrder {
       if (m == 0 || points.compare(at[order[m - 1]], at[order[m]], axis) != 0) {
         line_of_rank_.push_back(ids_[order[m]]);
         point_of_rank_.push_back(at[order[m]]);
+        shared_.push_back(0);
+      } else {
+        shared_.back() = 1;
       }
       rank_of_[order[m]] = std::uint32_t(line_of_rank_.size() - 1);
     }
   }
+  /// @return whether two or more lines (planes) have the trace of that rank.
+  [[nodiscard]] bool is_shared(std::size_t rank) const { return shared_[rank] != 0; }
   /// @pre `line` is one of the lines.
   [[nodiscard]] std::uint32_t rank(PlaneId line) const {
     return rank_of_[std::size_t(std::lower_bound(ids_.begin(), ids_.end(), line) - ids_.begin())];
@@ -78,6 +83,7 @@ class LineOrder {
   std::vector<std::uint32_t> rank_of_;  // per ids_[k]
   std::vector<PlaneId> line_of_rank_;
   std::vector<std::size_t> point_of_rank_;
+  std::vector<char> shared_;  // per rank
 };
 
 // A polygon's block of cells: between the lines u0 < u1 of constant u and v0 < v1 of
@@ -528,7 +534,8 @@ bool find_blocks(PlaneGrid& pg, const std::vector<Contribution>& contributions, 
 // with every polygon there). Rectangles abutting on one plane (walls meeting square, mitred,
 // stacked) share it and leave no gap. The bundled homes have up to 8 planes each that go to
 // the general boolean so; on none of them is the solid pinched (other polygons fill the gap).
-// O(n log n) for n rectangles, plus a test per pair meeting on one line.
+// Only grid lines that two or more planes share are looked at. O(n log n) for the n sides of
+// rectangles on them, plus a test per pair meeting on one line.
 bool may_be_pinched(PlaneGrid& pg, const PlaneSet& set, PlaneRef plane,
                     const std::vector<Contribution>& contributions, const Layout& layout) {
   struct Side {
@@ -546,11 +553,12 @@ bool may_be_pinched(PlaneGrid& pg, const PlaneSet& set, PlaneRef plane,
     const std::vector<int>& kinds = layout.kinds[c];
     for (std::size_t m = 0; m < lines.size(); ++m) {
       const int family = kinds[m];
+      const LineOrder& order = family == 0 ? pg.us() : pg.vs();
+      const std::uint32_t rank = order.rank(lines[m].id);
+      if (!order.is_shared(rank)) continue;  // one plane there: rectangles abut on it
       // A line of the other family crosses this one.
       const auto other = std::find(kinds.begin(), kinds.end(), 1 - family);
       const PlaneRef across = lines[std::size_t(other - kinds.begin())];
-      const std::uint32_t rank =
-          family == 0 ? pg.us().rank(lines[m].id) : pg.vs().rank(lines[m].id);
       const std::uint32_t from = family == 0 ? b->v0 : b->u0, to = family == 0 ? b->v1 : b->u1;
       sides.push_back(
           {family, rank, from, to, rank == (family == 0 ? b->u0 : b->v0), c, lines[m], across});

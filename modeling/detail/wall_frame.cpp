@@ -21,12 +21,11 @@ namespace {
 
 bool is_positive(double x) { return std::isfinite(x) && x > 0.0; }
 
-/// The smallest size the build resolves among numbers of magnitude up to m: 64 units in the
-/// last place. The exact solid's corners are written as doubles; a wall shorter, thinner or
-/// lower than this folds its faces onto each other when they are rounded (stress finding S6:
-/// walls an ulp long built solids that cross themselves). A hole narrower than this is cut:
-/// it rounds away or to a slit whose faces meet, as its volume is below the rounding's.
+}  // namespace
+
 double resolvable_size(double m) { return 64.0 * (std::nextafter(m, INFINITY) - m); }
+
+namespace {
 
 WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   const Wall& w = plan.walls[index];

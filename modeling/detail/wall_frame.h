@@ -61,6 +61,14 @@ struct WallFrame {
   std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
 
+/// @return the smallest size the build resolves among numbers of magnitude up to m: 64 units
+///         in the last place. The exact solid's corners are written as doubles; a wall
+///         shorter, thinner or lower than this folds its faces onto each other when they are
+///         rounded (stress finding S6: walls an ulp long built solids that cross themselves).
+///         A hole narrower than this is cut: it rounds away or to a slit whose faces meet, as
+///         its volume is below the rounding's. O(1).
+[[nodiscard]] double resolvable_size(double m);
+
 /// @return the unit direction along the wall away from its end `end` (its rounded dir, or
 ///         the opposite). O(1).
 inline Point2 outward(const WallFrame& f, WallEnd end) {

@@ -447,6 +447,31 @@ TEST(Modeling, WedgesTouchingAlongAJambsLineEndItsFaceThere) {
                              "the solid of walls #0, #1, #2 is not 2-manifold");
 }
 
+// Plans finer than their doubles (fine_features.h) whose solid fails once rounded (fuzzed plans,
+// stress finding S6): two walls a nanometre or two long stacked end to end, whose rounded
+// faces cross 12 times; three walls of ordinary sizes 750 km out, meeting an ulp off their
+// common line, 16 times. Both built before; both are refused now, naming why.
+TEST(Modeling, APlanFinerThanItsDoublesIsRefusedWhenItsSolidFailsAsWritten) {
+  Plan tiny = empty_plan();
+  Wall& a = add_wall(tiny, "a", {-1.1102230246251565e-16, -1.5999999999999999},
+                     {-1.1102230246251564e-16, -1.599999998});
+  a.base = 1.0;
+  Wall& b = add_wall(tiny, "b", {-1.1102230246251564e-16, -1.599999998},
+                     {-1.1102230246251563e-16, -1.5999999969999998});
+  b.thickness = 0.5, b.height = 1.0;
+  test::expect_build_refused(tiny, {}, Code::not_buildable, "wall 'a' is 2e-09 m long");
+
+  Plan far = empty_plan();
+  Wall& c =
+      add_wall(far, "c", {-749984, -749973.9999999999}, {-749983.9999999999, -750000.0000000001});
+  c.thickness = 0.75, c.height = 25.0, c.base = 1e-8;
+  Wall& d = add_wall(far, "d", {-749984, -749987}, {-749970.9999999999, -750034});
+  d.thickness = 2.0, d.height = 5.0, d.base = 25.0;
+  Wall& e = add_wall(far, "e", {-749984, -749987}, {-749983.9999999999, -750000.0000000001});
+  e.thickness = 5.0, e.height = 10.0, e.base = -5.0;
+  test::expect_build_refused(far, {}, Code::not_buildable, "wall 'c' reaches (-749984, -749974)");
+}
+
 // Where solids touch along an edge, four faces meet there: each wall's two are paired across
 // its own material, so each wall takes its own copy of the edge (split_fans). On every path:
 // the Nef path refused it until its soup merged the points CGAL gives twice there.

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: building small plans of every kind of degenerate geometry (plan_bytes.h)
 // as `--force` builds them, on the automatic path (fast and general paths). The build must
-// give a closed 2-manifold wall solid or refuse with a PreconditionError naming why; any
-// crash, sanitizer report, hang, other exception or open solid is a bug.
+// give a wall solid that passes `roomcad build --check` (closed, 2-manifold, no faces that
+// cross or fold, outward, the analytic volume within what rounding allows: check_walls) or
+// refuse with a PreconditionError naming why; any crash, sanitizer report, hang, other
+// exception or solid that fails the check is a bug.
 #include <cstddef>
 #include <cstdint>
 
 #include "fuzz/plan_bytes.h"
 #include "modeling/build_model.h"
+#include "modeling/wall_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const roomcad::Plan plan = roomcad::fuzz::decode_plan(data, size);
@@ -18,7 +21,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (e.code() == roomcad::Code::internal) __builtin_trap();  // an invariant of the build broke
     return 0;
   }
-  for (const auto h : model.walls.halfedges())
-    if (model.walls.is_boundary(h)) __builtin_trap();  // not closed
+  if (!roomcad::check_walls(model, plan).ok) __builtin_trap();  // not the spec's solid as written
   return 0;
 }

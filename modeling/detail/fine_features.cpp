@@ -6,7 +6,6 @@
 #include <numbers>
 #include <string_view>
 #include <unordered_map>
-#include <utility>
 #include <vector>
 
 #include <fmt/format.h>

@@ -17,12 +17,12 @@
 #include <tbb/global_control.h>
 
 #include "io/plan_json.h"
-#include "modeling/broad_phase.h"
-#include "modeling/detail/buildable_plan.h"
-#include "modeling/detail/clusters.h"
-#include "modeling/detail/slab_frames.h"
-#include "modeling/detail/wall_frame.h"
-#include "modeling/joins.h"
+#include "geometry/broad_phase.h"
+#include "solid/detail/frames/buildable_plan.h"
+#include "solid/detail/frames/clusters.h"
+#include "solid/detail/frames/slab_frames.h"
+#include "solid/detail/frames/wall_frame.h"
+#include "geometry/joins.h"
 #include "testing/tower_plan.h"
 
 namespace roomcad {

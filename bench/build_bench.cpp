@@ -26,8 +26,9 @@
 #include "bench/nef_reference.h"
 #include "bench/openscad_reference.h"
 #include "io/mesh_export.h"
-#include "modeling/build_model.h"
-#include "modeling/mesh_check.h"
+#include "solid/build_model.h"
+#include "mesh/mesh_check.h"
+#include "solid/analytic_volume.h"
 
 namespace roomcad::bench {
 namespace {

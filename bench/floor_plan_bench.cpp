@@ -23,7 +23,7 @@ void BM_FloorPlanHouse(benchmark::State& state) {
 }
 BENCHMARK(BM_FloorPlanHouse)->Unit(benchmark::kMillisecond);
 
-/// n x n rooms (bench/grid_plan.h): 2 n (n + 1) walls, with doors and windows; rooms included.
+/// n x n rooms (testing/grid_plan.h): 2 n (n + 1) walls, with doors and windows; rooms included.
 void BM_FloorPlanGrid(benchmark::State& state) {
   const Plan plan = samples::make_grid_plan({.n = static_cast<int>(state.range(0))});
   for (auto _ : state) benchmark::DoNotOptimize(draw_floor_plan(plan, {}).cut_walls.size());

@@ -24,9 +24,9 @@
 
 #include "fuzz/plan_bytes.h"
 #include "io/plan_json.h"
-#include "modeling/build_model.h"
-#include "modeling/detail/fine_features.h"
-#include "modeling/wall_check.h"
+#include "solid/build_model.h"
+#include "solid/detail/frames/fine_features.h"
+#include "solid/wall_check.h"
 
 namespace {
 

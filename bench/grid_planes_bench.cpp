@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The grid of a plane of rectangles (modeling/detail/grid_faces.h) against the general 2D
+// The grid of a plane of rectangles (solid/detail/general_path/grid_faces.h) against the general 2D
 // boolean for every plane, on real homes: each home is built with the grid and without it in
 // turns, in one process (a build of each, then again), so that the machine's drift from one
 // minute to the next falls on both alike. Prints per home the fastest and the median build of
@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "bench/bundled_homes.h"
-#include "modeling/build_model.h"
-#include "modeling/mesh_check.h"
+#include "solid/build_model.h"
+#include "mesh/mesh_check.h"
 
 namespace {
 

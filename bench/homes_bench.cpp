@@ -38,8 +38,9 @@
 
 #include "bench/bundled_homes.h"
 #include "core/error.h"
-#include "modeling/build_model.h"
-#include "modeling/mesh_check.h"
+#include "solid/build_model.h"
+#include "mesh/mesh_check.h"
+#include "solid/analytic_volume.h"
 
 namespace roomcad::bench {
 namespace {

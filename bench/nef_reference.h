@@ -16,7 +16,7 @@
 #include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
 
 #include "bench/polygon_measure.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::bench {
 

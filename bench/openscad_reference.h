@@ -15,7 +15,7 @@
 #include <fmt/format.h>
 
 #include "bench/polygon_measure.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::bench {
 

@@ -16,7 +16,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "render/renderer.h"
-#include "testing/room_grid.h"
+#include "bench/room_grid.h"
 
 namespace roomcad {
 namespace {

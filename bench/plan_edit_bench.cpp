@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Cost of the decimal-exact plan transforms (modeling/transform2d.h, modeling/plan_edit.h)
+// Cost of the decimal-exact plan transforms (plan/transform2d.h, plan/plan_edit.h)
 // against plain double arithmetic, as the number of walls grows.
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
 #include <array>
 
-#include "modeling/plan_edit.h"
-#include "modeling/transform2d.h"
+#include "plan/plan_edit.h"
+#include "plan/transform2d.h"
 
 namespace roomcad {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "io/plan_check.h"
 #include "io/plan_json.h"
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "testing/grid_plan.h"
 
 namespace {

@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "render/renderer.h"
-#include "testing/room_grid.h"
+#include "bench/room_grid.h"
 
 namespace roomcad {
 namespace {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The sections of the general path's primitives by the planes that cross them
-// (modeling/detail/primitive_section.h) on real homes: made from the primitive's crossing
+// (solid/detail/general_path/primitive_section.h) on real homes: made from the primitive's crossing
 // edges (section_of) against clipped from the box's square by every face (how each section was
 // made before, and section_of's way where a vertex lies on the plane). The pairs are every
 // primitive of the home with every plane of a face of another whose box it meets and that has
@@ -27,9 +27,9 @@
 #include <vector>
 
 #include "bench/bundled_homes.h"
-#include "modeling/detail/buildable_plan.h"
-#include "modeling/detail/primitive_section.h"
-#include "modeling/joins.h"
+#include "solid/detail/frames/buildable_plan.h"
+#include "solid/detail/general_path/primitive_section.h"
+#include "geometry/joins.h"
 
 namespace {
 

@@ -14,7 +14,7 @@
 
 #include "testing/grid_plan.h"
 #include "io/plan_json.h"
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "render/renderer.h"
 
 namespace roomcad {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The seed-004 visibility pre-pass and hidden-line drawings: faces skipped and time saved on
-// the bundled examples and on generated grids of rooms (bench/grid_plan.h).
+// Makarov & Safin's visibility pre-pass and hidden-line drawings: faces skipped and time saved on
+// the bundled examples and on generated grids of rooms (testing/grid_plan.h).
 //
 // BM_Render/<scene>/<cull>: one 1280 x 720 frame (phong, pcf shadows), cull = back (0) or
 // visibility (1); counters: triangles, culled (skipped by the pre-pass), cull_ms (the pre-pass
@@ -17,7 +17,7 @@
 
 #include "testing/grid_plan.h"
 #include "io/plan_json.h"
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "render/line_drawing.h"
 #include "render/renderer.h"
 #include "render/visibility.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad add PLAN KIND [--id ID] [--<field> VALUE ...]: adds a level, wall, door, window, slab,
 // light or camera. Its options are the fields of the plan format, from the field tables
-// (modeling/plan_fields.h): --from, --thickness, --fov-deg, ...; each type-checked by
+// (plan/plan_fields.h): --from, --thickness, --fov-deg, ...; each type-checked by
 // modeling's set_field; ids are generated when --id is not given.
 #include <fmt/format.h>
 
@@ -13,8 +13,8 @@
 
 #include "cli/command.h"
 #include "cli/edit_session.h"
-#include "modeling/plan_add.h"
-#include "modeling/plan_fields.h"
+#include "plan/plan_add.h"
+#include "plan/plan_fields.h"
 
 namespace roomcad::cli {
 namespace {

@@ -17,9 +17,9 @@
 #include "io/ifc_export.h"
 #include "io/mesh_export.h"
 #include "io/wall_check_format.h"
-#include "modeling/build_model.h"
-#include "modeling/plan_levels.h"
-#include "modeling/wall_check.h"
+#include "solid/build_model.h"
+#include "plan/plan_levels.h"
+#include "solid/wall_check.h"
 
 namespace roomcad::cli {
 namespace {

@@ -21,8 +21,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "modeling/plan.h"
-#include "modeling/plan_edit.h"
+#include "plan/plan.h"
+#include "plan/plan_edit.h"
 
 namespace roomcad::cli {
 

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "io/plan_lock.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 
 namespace roomcad::cli {

@@ -13,8 +13,8 @@
 #include "cli/plan_loading.h"
 #include "io/id_image.h"
 #include "io/image_io.h"
-#include "modeling/build_model.h"
-#include "modeling/plan_levels.h"
+#include "solid/build_model.h"
+#include "plan/plan_levels.h"
 #include "render/render_request.h"
 #include "render/renderer.h"
 
@@ -45,7 +45,9 @@ int run_render(const RenderArgs& a) {
   const Result<Plan> level = select_level(*loaded.plan, a.level);
   if (!level) return report_failure("render", level.error());
   const Plan& plan = level.value();
-  RenderOptions options = make_render_options(a.request, plan);  // PreconditionError: main reports it
+  Result<RenderOptions> asked = make_render_options(a.request, plan);
+  if (!asked) return report_failure("render", asked.error());
+  RenderOptions options = std::move(asked).value();
   options.outputs = FrameOutputs{.depth = !a.depth.empty(), .object_ids = !a.ids.empty()};
   if (plan.lights.size() > static_cast<std::size_t>(kMaxLights)) {
     std::fprintf(stderr, "roomcad render: warning: %s has %zu lights; the first %d are drawn\n",
@@ -103,7 +105,7 @@ void add_render_command(CLI::App& root, Commands& commands) {
   app->add_option("--parts", args->request.parts, "Parts to draw: walls,floor,fixtures")->capture_default_str();
   app->add_option("--cull", args->request.cull,
                   "none: draw every face; back: skip faces turned away; visibility: also faces "
-                  "the seed-004 pre-pass finds hidden (same picture)")
+                  "Makarov & Safin's visible-surface pre-pass finds hidden (same picture)")
       ->check(CLI::IsMember({"none", "back", "visibility"}))
       ->capture_default_str();
   app->add_option("--frustum-cull", args->request.frustum_cull,

@@ -9,7 +9,7 @@
 
 #include "cli/command.h"
 #include "cli/edit_session.h"
-#include "modeling/plan_edit.h"
+#include "plan/plan_edit.h"
 
 namespace roomcad::cli {
 namespace {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// roomcad move | rotate | scale PLAN (ID | --all) ...: the plan transforms of modeling/plan_edit.h,
-// through homogeneous matrices (modeling/transform2d.h): quarter turns exact, moves and scales
+// roomcad move | rotate | scale PLAN (ID | --all) ...: the plan transforms of plan/plan_edit.h,
+// through homogeneous matrices (plan/transform2d.h): quarter turns exact, moves and scales
 // undone bit for bit for decimal coordinates of up to 15 significant digits. A move or quarter
 // turn that its opposite would not undo exactly (longer numbers) says so on stderr.
 #include <fmt/format.h>
@@ -11,9 +11,9 @@
 
 #include "cli/command.h"
 #include "cli/edit_session.h"
-#include "modeling/plan_edit.h"
-#include "modeling/transform2d.h"
-#include "modeling/value_text.h"
+#include "plan/plan_edit.h"
+#include "plan/transform2d.h"
+#include "plan/value_text.h"
 
 namespace roomcad::cli {
 namespace {
@@ -45,7 +45,7 @@ CLI::App* add_transform(CLI::App& root, const std::string& name, const std::stri
 }
 
 /// Warns when the opposite edit would not give `before` back bit for bit: the promise of
-/// modeling/transform2d.h holds for numbers of up to 15 significant digits, and a plan may hold
+/// plan/transform2d.h holds for numbers of up to 15 significant digits, and a plan may hold
 /// longer ones (computed corners), which the result cannot keep exactly.
 void warn_unless_undoable(const std::string& name, const Plan& before, const Plan& after,
                           const SignedEdit& edit) {

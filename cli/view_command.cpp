@@ -8,7 +8,7 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
-#include "modeling/plan_levels.h"
+#include "plan/plan_levels.h"
 #include "view/key_bindings.h"
 #include "view/sdl_window.h"
 #include "view/viewer.h"

@@ -1,13 +1,13 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # `cmake --install build --prefix P`: the `roomcad` command in P/bin, the public headers in
-# P/include/roomcad/<module>/ (the include lines of the tree, e.g. "modeling/plan.h", work
+# P/include/roomcad/<module>/ (the include lines of the tree, e.g. "plan/plan.h", work
 # against -I P/include/roomcad), the static module libraries in P/lib/roomcad (their names,
 # libcore.a, libio.a, ..., are the project's own, not for the shared lib folder), a CMake package
 # (P/lib/cmake/roomcad) exporting roomcad::<module> per module and roomcad::roomcad for all.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(roomcad_modules core modeling validation render io import view)
+set(roomcad_modules core exact plan geometry mesh solid validation render io import view)
 
 # Everything at once: `target_link_libraries(app PRIVATE roomcad::roomcad)`. The executable
 # owns the name `roomcad` in this build, hence another target name exported as `roomcad`.
@@ -21,16 +21,17 @@ install(TARGETS ${roomcad_modules} roomcad_all EXPORT roomcadTargets
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/roomcad)
 
 # Public headers only: never detail/, nor validation/rules/ (each rule's implementation, as
-# private as detail/). modeling/exact_geometry.h is left out too: it is the
-# in-tree header the judging modules share (it includes CGAL and modeling/detail/radical.h),
-# not an interface for programs outside.
+# private as detail/). exact/exact_predicates.h and geometry/exact_wall_lines.h are left out
+# too: they are the in-tree templates the judging modules share (over CGAL's intervals and
+# exact/radical.h), not an interface for programs outside.
 foreach(module IN LISTS roomcad_modules)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${module}/
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/roomcad/${module} COMPONENT development
           FILES_MATCHING PATTERN "*.h"
           PATTERN "detail" EXCLUDE
           PATTERN "rules" EXCLUDE
-          PATTERN "exact_geometry.h" EXCLUDE)
+          PATTERN "exact_wall_lines.h" EXCLUDE
+          PATTERN "exact_predicates.h" EXCLUDE)
 endforeach()
 
 set(roomcad_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/roomcad)

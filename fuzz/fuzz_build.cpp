@@ -9,8 +9,8 @@
 #include <cstdint>
 
 #include "fuzz/plan_bytes.h"
-#include "modeling/build_model.h"
-#include "modeling/wall_check.h"
+#include "solid/build_model.h"
+#include "solid/wall_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const roomcad::Plan plan = roomcad::fuzz::decode_plan(data, size);

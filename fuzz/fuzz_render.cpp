@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "fuzz/plan_bytes.h"
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "render/renderer.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

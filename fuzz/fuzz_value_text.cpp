@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the strict value parsers of the command line and set_field
-// (modeling/value_text.h) and colours (modeling/plan.h) on arbitrary text. Any crash, sanitizer
+// (plan/value_text.h) and colours (plan/plan.h) on arbitrary text. Any crash, sanitizer
 // report or hang is a bug, and so is a number parsed as not finite.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
-#include "modeling/plan.h"
-#include "modeling/value_text.h"
+#include "plan/plan.h"
+#include "plan/value_text.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::fuzz {
 

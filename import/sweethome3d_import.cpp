@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 
 #include "io/plan_json.h"
-#include "modeling/plan_levels.h"
+#include "plan/plan_levels.h"
 #include "import/detail/sh3d_archive.h"
 #include "import/detail/sh3d_home.h"
 #include "import/detail/sh3d_levels.h"

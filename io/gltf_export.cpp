@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_write.h"
-#include "modeling/float_triangulation.h"
-#include "modeling/plan_objects.h"
+#include "mesh/float_triangulation.h"
+#include "plan/plan_objects.h"
 
 namespace roomcad {
 namespace {

@@ -20,8 +20,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "modeling/plan.h"
-#include "modeling/solid_mesh.h"
+#include "plan/plan.h"
+#include "mesh/solid_mesh.h"
 
 namespace roomcad {
 

@@ -11,10 +11,10 @@
 #include "io/atomic_write.h"
 #include "io/detail/ifc_shapes.h"
 #include "io/step_file.h"
-#include "modeling/plan_chords.h"
-#include "modeling/plan_levels.h"
-#include "modeling/plan_objects.h"
-#include "modeling/rooms.h"
+#include "plan/plan_chords.h"
+#include "plan/plan_levels.h"
+#include "plan/plan_objects.h"
+#include "geometry/rooms.h"
 
 namespace roomcad {
 namespace {

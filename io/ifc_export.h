@@ -30,7 +30,7 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 

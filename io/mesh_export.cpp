@@ -10,7 +10,7 @@
 #include <map>
 
 #include "io/atomic_write.h"
-#include "modeling/float_triangulation.h"
+#include "mesh/float_triangulation.h"
 
 namespace roomcad {
 namespace {

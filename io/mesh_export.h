@@ -3,7 +3,7 @@
 //
 // Coordinates are written as the shortest decimal that reads back to the same double
 // (std::to_chars), except in STL, whose format stores float32 (each coordinate rounded to the
-// nearest float, modeling/float_triangulation.h). Output bytes depend only on the meshes: the
+// nearest float, mesh/float_triangulation.h). Output bytes depend only on the meshes: the
 // same model gives the same file.
 // Every file goes through write_file_atomically: a failed export leaves no partial file.
 #pragma once
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "modeling/solid_mesh.h"
+#include "mesh/solid_mesh.h"
 
 namespace roomcad {
 

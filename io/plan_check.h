@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 #include "validation/rule_set.h"
 

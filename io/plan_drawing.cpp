@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 
 #include "io/floor_plan_svg.h"
-#include "modeling/build_model.h"
-#include "modeling/plan_chords.h"
-#include "modeling/plan_levels.h"
+#include "solid/build_model.h"
+#include "plan/plan_chords.h"
+#include "plan/plan_levels.h"
 #include "render/floor_plan.h"
 #include "render/line_drawing.h"
 

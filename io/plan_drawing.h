@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "io/svg_writer.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "render/floor_plan.h"
 
 namespace roomcad {

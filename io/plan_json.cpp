@@ -13,8 +13,8 @@
 #include "io/detail/plan_reader.h"
 #include "io/text_file.h"
 #include "io/utf8_text.h"
-#include "modeling/plan_fields.h"
-#include "modeling/plan_objects.h"
+#include "plan/plan_fields.h"
+#include "plan/plan_objects.h"
 
 namespace roomcad {
 namespace {

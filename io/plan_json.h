@@ -15,7 +15,7 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 
 namespace roomcad {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Printing a WallCheck (modeling/wall_check.h): what `roomcad build --check` prints, as text for
+// Printing a WallCheck (solid/wall_check.h): what `roomcad build --check` prints, as text for
 // people or one JSON object for tools (the Python module's Model.check() reads the JSON).
 #pragma once
 
 #include <string>
 
-#include "modeling/wall_check.h"
+#include "solid/wall_check.h"
 
 namespace roomcad {
 

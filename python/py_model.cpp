@@ -9,8 +9,8 @@
 
 #include "io/mesh_export.h"
 #include "io/wall_check_format.h"
-#include "modeling/triangulate_face.h"
-#include "modeling/wall_check.h"
+#include "mesh/triangulate_face.h"
+#include "solid/wall_check.h"
 #include "python/py_error.h"
 #include "python/py_types.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad.Plan: reading and saving, validation, edits, building, rendering and drawing, each
 // through the library function the command line calls (io/plan_json.h, io/plan_check.h,
-// modeling/plan_edit.h, modeling/build_model.h, render/render_request.h, io/plan_drawing.h).
+// plan/plan_edit.h, solid/build_model.h, render/render_request.h, io/plan_drawing.h).
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -18,9 +18,9 @@
 #include "io/plan_json.h"
 #include "io/rule_set_file.h"
 #include "io/text_file.h"
-#include "modeling/build_model.h"
-#include "modeling/plan_add.h"
-#include "modeling/plan_objects.h"
+#include "solid/build_model.h"
+#include "plan/plan_add.h"
+#include "plan/plan_objects.h"
 #include "python/py_error.h"
 #include "python/py_plan_values.h"
 #include "python/py_types.h"
@@ -144,7 +144,9 @@ std::vector<std::string> ids(const PyPlan& self, const std::optional<std::string
 
 py::array_t<std::uint8_t> render(const PyPlan& self, const RenderRequest& request, bool force) {
   require_valid(self, force, "render");
-  const RenderOptions options = make_render_options(request, self.plan);
+  Result<RenderOptions> asked = make_render_options(request, self.plan);
+  if (!asked) raise(asked.error());
+  const RenderOptions options = std::move(asked).value();
   FrameBuffers out;
   {
     py::gil_scoped_release free;

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/field_text.h"
+#include "plan/field_text.h"
 #include "python/py_error.h"
 
 namespace py = pybind11;

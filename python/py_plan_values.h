@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Python values of plan fields as the text set_field reads (modeling/field_text.h): numbers,
+// Python values of plan fields as the text set_field reads (plan/field_text.h): numbers,
 // (x, y) points, (x, y, z) vectors, lists of points (polygons) and of polygons, strings as they
 // are, None to clear an optional field.
 #pragma once

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 

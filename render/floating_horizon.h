@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The floating-horizon drawing of a surface y = f(x, z) (seed 002, lab 4, variant 3): the
+// The floating-horizon drawing of a surface y = f(x, z) (lab 4, variant 3 of the Tomsk manual "Laboratory works in computer
+// graphics"): the
 // surface is cut by the planes z = const, taken from the front (z_min) to the back; each
 // section is drawn where it lies above the upper or below the lower horizon of the sections
 // before it, with its crossings of the horizons found by linear intersection.

@@ -10,7 +10,7 @@
 
 #include "render/detail/plan_paper.h"
 #include "render/detail/scale_bar.h"
-#include "modeling/rooms.h"
+#include "geometry/rooms.h"
 
 namespace roomcad {
 namespace {

@@ -18,8 +18,9 @@
 
 #include <glm/glm.hpp>
 
-#include "modeling/build_model.h"
-#include "modeling/plan.h"
+#include "mesh/parts.h"
+#include "mesh/solid_mesh.h"
+#include "plan/plan.h"
 #include "render/floor_plan.h"
 
 namespace roomcad {

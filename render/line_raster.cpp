@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A DDA line drawer (seed 002, lab 4, variant 4's raster step) and surface rasterisation.
+// A DDA line drawer (lab 4, variant 4 of the Tomsk manual "Laboratory works in computer
+// graphics": its raster step) and surface rasterisation.
 #include "render/line_raster.h"
 
 #include <algorithm>

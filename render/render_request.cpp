@@ -6,106 +6,127 @@
 
 #include <fmt/format.h>
 
-#include "modeling/build_model.h"
-#include "modeling/value_text.h"
+#include "mesh/parts.h"
+#include "mesh/solid_mesh.h"
+#include "plan/value_text.h"
 
 namespace roomcad {
 namespace {
 
-[[noreturn]] void throw_usage(std::string message) {
-  throw PreconditionError(std::move(message), Code::usage_error);
-}
+/// The first bad flag found, as the usage_error the request fails with.
+class FirstProblem {
+ public:
+  /// Keeps `message` unless a problem was found already.
+  void add(std::string message) {
+    if (!message_) message_ = std::move(message);
+  }
+  [[nodiscard]] bool found() const { return message_.has_value(); }
+  [[nodiscard]] Error error() const { return Error{Code::usage_error, *message_}; }
 
-/// @return the flag's value as x,y,z. @throws PreconditionError (usage_error) naming it.
-Vec3 require_vec3(const std::string& flag, const std::string& text) {
+ private:
+  std::optional<std::string> message_;
+};
+
+/// @return the flag's value as x,y,z, or a zero vector after noting the problem.
+Vec3 require_vec3(const std::string& flag, const std::string& text, FirstProblem& problem) {
   if (const std::optional<Vec3> v = parse_vec3(text)) return *v;
-  throw_usage(fmt::format("{} '{}': expected three finite numbers x,y,z (metres)", flag, text));
+  problem.add(fmt::format("{} '{}': expected three finite numbers x,y,z (metres)", flag, text));
+  return {};
 }
 
 /// The camera the flags ask for, or nullopt to frame the model from a preset.
-std::optional<Camera> chosen_camera(const RenderRequest& a, const Plan& plan, Projection projection) {
+std::optional<Camera> chosen_camera(const RenderRequest& a, const Plan& plan, Projection projection,
+                                    FirstProblem& problem) {
   if (!a.camera.empty()) {
     for (const Camera& c : plan.cameras)
       if (c.id == a.camera) return c;
     std::string known;
     for (const Camera& c : plan.cameras) known += (known.empty() ? "" : ", ") + c.id;
-    throw_usage(fmt::format("--camera '{}': the plan has no such camera (it has: {})", a.camera,
-                              known.empty() ? "none" : known));
+    problem.add(fmt::format("--camera '{}': the plan has no such camera (it has: {})", a.camera,
+                            known.empty() ? "none" : known));
+    return std::nullopt;
   }
   if (a.eye.empty() != a.target.empty()) {
-    throw_usage("--eye and --target go together: give both or neither");
+    problem.add("--eye and --target go together: give both or neither");
+    return std::nullopt;
   }
   if (a.eye.empty()) return std::nullopt;
   Camera c;
   c.id = "flags";
   c.projection = projection;
-  c.eye = require_vec3("--eye", a.eye);
-  c.target = require_vec3("--target", a.target);
-  c.up = require_vec3("--up", a.up);
+  c.eye = require_vec3("--eye", a.eye, problem);
+  c.target = require_vec3("--target", a.target, problem);
+  c.up = require_vec3("--up", a.up, problem);
   c.fov_deg = a.fov;
   c.view_height = a.view_height;
-  if (c.eye == c.target) throw_usage(fmt::format("--eye and --target are both '{}'", a.eye));
+  if (!problem.found() && c.eye == c.target)
+    problem.add(fmt::format("--eye and --target are both '{}'", a.eye));
   return c;
 }
 
+/// @return the parsed choice, or `T{}` after noting the flag, its text and the choices.
 template <class T>
 T parse_choice(const std::string& flag, const std::string& text, std::optional<T> parsed,
-               const char* choices) {
-  if (!parsed) throw_usage(fmt::format("{} '{}': expected one of {}", flag, text, choices));
-  return *parsed;
+               const char* choices, FirstProblem& problem) {
+  if (!parsed) problem.add(fmt::format("{} '{}': expected one of {}", flag, text, choices));
+  return parsed.value_or(T{});
 }
 
-/// The frame limits of render/renderer.h that no single flag's range can hold (each flag's own
-/// range is checked as it is parsed), worded with the flags that set them.
-/// @throws PreconditionError (usage_error) naming the flags, their values and the limit.
-void check_frame_size(const RenderRequest& a) {
+/// Notes the frame limits of render/renderer.h that no single flag's range can hold (each
+/// flag's own range is checked as it is parsed), worded with the flags that set them.
+void check_frame_size(const RenderRequest& a, FirstProblem& problem) {
   const long long pixels = static_cast<long long>(a.width) * a.height;
   if (pixels > kMaxImagePixels) {
-    throw_usage(fmt::format("--width {} x --height {} is {} pixels; at most {} are rendered",
-                              a.width, a.height, pixels, kMaxImagePixels));
+    problem.add(fmt::format("--width {} x --height {} is {} pixels; at most {} are rendered",
+                            a.width, a.height, pixels, kMaxImagePixels));
+    return;
   }
   const long long samples = pixels * a.ssaa * a.ssaa;
   if (samples > kMaxImageSamples) {
-    throw_usage(fmt::format("--width {} x --height {} at --ssaa {} is {} samples; at most {} are "
-                              "rendered (lower --ssaa or the size)",
-                              a.width, a.height, a.ssaa, samples, kMaxImageSamples));
+    problem.add(fmt::format("--width {} x --height {} at --ssaa {} is {} samples; at most {} are "
+                            "rendered (lower --ssaa or the size)",
+                            a.width, a.height, a.ssaa, samples, kMaxImageSamples));
   }
 }
 
 }  // namespace
 
-RenderOptions make_render_options(const RenderRequest& a, const Plan& plan) {
-  check_frame_size(a);
+Result<RenderOptions> make_render_options(const RenderRequest& a, const Plan& plan) {
+  FirstProblem problem;
+  check_frame_size(a, problem);
   const Projection projection = parse_choice<Projection>(
       "--projection", a.projection,
       a.projection == "perspective"    ? std::optional(Projection::perspective)
       : a.projection == "orthographic" ? std::optional(Projection::orthographic)
                                        : std::nullopt,
-      "perspective, orthographic");
+      "perspective, orthographic", problem);
   RenderOptions o{.width = a.width, .height = a.height};
-  o.camera = chosen_camera(a, plan, projection);
+  o.camera = chosen_camera(a, plan, projection, problem);
   if (!a.view.empty()) {
-    o.view = parse_choice("--view", a.view, parse_view_preset(a.view), "front, back, left, right, top, iso");
+    o.view = parse_choice("--view", a.view, parse_view_preset(a.view),
+                          "front, back, left, right, top, iso", problem);
   }
   o.view_projection = projection;
   o.view_fov_deg = a.fov;
-  o.shading = parse_choice("--shading", a.shading, parse_shading_mode(a.shading), "unlit, flat, gouraud, phong");
+  o.shading = parse_choice("--shading", a.shading, parse_shading_mode(a.shading), "unlit, flat, gouraud, phong", problem);
   o.shadows = parse_choice<ShadowFilter>(
       "--shadows", a.shadows,
       a.shadows == "off" ? std::optional(ShadowFilter::off)
       : a.shadows == "hard" ? std::optional(ShadowFilter::hard)
       : a.shadows == "pcf" ? std::optional(ShadowFilter::pcf) : std::nullopt,
-      "off, hard, pcf");
+      "off, hard, pcf", problem);
   o.shadow_resolution = a.shadow_res;
   o.ssaa = a.ssaa;
-  o.background = parse_choice("--background", a.background, parse_color(a.background), "#rrggbb");
-  if (a.grid != "on" && a.grid != "off") throw_usage(fmt::format("--grid '{}': expected on or off", a.grid));
+  o.background = parse_choice("--background", a.background, parse_color(a.background), "#rrggbb",
+                              problem);
+  if (a.grid != "on" && a.grid != "off")
+    problem.add(fmt::format("--grid '{}': expected on or off", a.grid));
   o.grid = GridLines{.enabled = a.grid == "on", .origin = {plan.site.origin.x, plan.site.origin.y},
                      .cell_size = plan.site.cell_size, .cells = plan.site.cells};
   o.lights = plan.lights;
   const Result<Parts> parts = parse_parts(a.parts);
-  if (!parts) throw PreconditionError(parts.error());
-  o.parts = parts.value();
+  if (parts) o.parts = parts.value();
+  else problem.add(parts.message());
   o.threads = a.threads;
   o.outputs = FrameOutputs{.depth = false, .object_ids = false};
   o.cull = parse_choice<FaceCull>("--cull", a.cull,
@@ -113,11 +134,16 @@ RenderOptions make_render_options(const RenderRequest& a, const Plan& plan) {
                                   : a.cull == "none"     ? std::optional(FaceCull::none)
                                   : a.cull == "back"     ? std::optional(FaceCull::back_faces)
                                                          : std::nullopt,
-                                  "none, back, visibility");
+                                  "none, back, visibility", problem);
   if (a.frustum_cull != "on" && a.frustum_cull != "off")
-    throw_usage(fmt::format("--frustum-cull '{}': expected on or off", a.frustum_cull));
+    problem.add(fmt::format("--frustum-cull '{}': expected on or off", a.frustum_cull));
   o.cull_frustum = a.frustum_cull == "on";
-  throw_if_failed(check_render_options(o), "render");
+  if (problem.found()) return problem.error();
+  if (const Status checked = check_render_options(o); !checked) {
+    Error error = checked.error();
+    error.message = "render: " + error.message;
+    return error;
+  }
   return o;
 }
 

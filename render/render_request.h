@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "render/renderer.h"
 
 namespace roomcad {
@@ -25,9 +25,10 @@ struct RenderRequest {
 };
 
 /// @return the options that render `plan` as `request` asks (no depth or id image: set
-///         `outputs` for those), checked by check_render_options.
-/// @throws PreconditionError (usage_error) naming the flag and its value: an unknown camera,
-///         a malformed point or colour, an unknown choice, a frame too large.
-[[nodiscard]] RenderOptions make_render_options(const RenderRequest& request, const Plan& plan);
+///         `outputs` for those), checked by check_render_options; or a usage_error naming the
+///         first flag that is wrong and its value: an unknown camera, a malformed point or
+///         colour, an unknown choice, a frame too large.
+[[nodiscard]] Result<RenderOptions> make_render_options(const RenderRequest& request,
+                                                        const Plan& plan);
 
 }  // namespace roomcad

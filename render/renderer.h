@@ -17,8 +17,9 @@
 #include <vector>
 
 #include "core/error.h"
-#include "modeling/build_model.h"
-#include "modeling/plan.h"
+#include "mesh/parts.h"
+#include "mesh/solid_mesh.h"
+#include "plan/plan.h"
 #include "render/camera.h"
 #include "render/image.h"
 #include "render/scene.h"
@@ -67,7 +68,7 @@ inline constexpr int kMaxThreads = 256;
 enum class FaceCull {
   none,        ///< nothing: every face is rasterised (to measure what culling saves)
   back_faces,  ///< one-sided faces turned away from the camera
-  visibility,  ///< also every face the seed-004 pre-pass (render/visibility.h) finds unseen
+  visibility,  ///< also every face Makarov & Safin's visible-surface pre-pass (render/visibility.h) finds unseen
 };
 
 /// Everything a frame depends on besides the model. Designated initialisers welcome.

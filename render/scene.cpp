@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "modeling/triangulate_face.h"
+#include "mesh/triangulate_face.h"
 
 namespace roomcad {
 namespace {

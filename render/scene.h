@@ -13,8 +13,9 @@
 
 #include <glm/glm.hpp>
 
-#include "modeling/build_model.h"
-#include "modeling/solid_mesh.h"
+#include "mesh/parts.h"
+#include "mesh/solid_mesh.h"
+#include "mesh/solid_mesh.h"
 #include "render/camera.h"
 
 namespace roomcad {

@@ -14,7 +14,7 @@
 
 #include <glm/glm.hpp>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 

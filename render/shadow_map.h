@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "render/image.h"
 #include "render/scene.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Seed 004's pre-pass: the rasteriser's own set-up (clip, fixed point, back faces), then the
+// Makarov & Safin's pre-pass: the rasteriser's own set-up (clip, fixed point, back faces), then the
 // split.
 #include "render/visibility.h"
 

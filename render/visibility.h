@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The visible-surface pre-pass of seed 004 (Makarov & Safin, 2007): which scene triangles a
+// The visible-surface pre-pass of Makarov & Safin, "Finding the visible parts of opaque
+// surfaces of spatial objects" (2007): which scene triangles a
 // view can show, found by recursively splitting the picture and carrying the depth order along
 // each splitting line, so the renderer can skip the rest (`roomcad render --cull visibility`).
 //

@@ -26,6 +26,8 @@ packages=(
   # bench/report.sh's plots; admesh: an independent STL reader for the export tests; strace:
   # the durable-save tests watch the flushes and renames and inject their failures)
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth gnuplot-nox admesh strace
+  # the `format` test checks the tree against .clang-format with Debian 12's clang-format
+  clang-format-14
   "$@"
 )
 if $tests; then

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::samples {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::samples {
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::samples {
 

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "testing/grid_plan.h"
 
 namespace roomcad::samples {

@@ -20,7 +20,7 @@ endfunction()
 
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 
-foreach(file bin/roomcad include/roomcad/modeling/plan.h include/roomcad/core/error.h
+foreach(file bin/roomcad include/roomcad/plan/plan.h include/roomcad/core/error.h
              include/roomcad/io/plan_json.h include/roomcad/validation/validate.h
              lib/cmake/roomcad/roomcadConfig.cmake lib/cmake/roomcad/roomcadConfigVersion.cmake
              lib/cmake/roomcad/roomcadTargets.cmake)
@@ -28,7 +28,7 @@ foreach(file bin/roomcad include/roomcad/modeling/plan.h include/roomcad/core/er
     message(FATAL_ERROR "not installed: ${file}")
   endif()
 endforeach()
-foreach(module core modeling validation render io import view)
+foreach(module core exact plan geometry mesh solid validation render io import view)
   file(GLOB library ${prefix}/lib*/roomcad/lib${module}.a)
   if(NOT library)
     message(FATAL_ERROR "library ${module} not installed in ${prefix}/lib/roomcad")

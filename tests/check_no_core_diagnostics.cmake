@@ -11,7 +11,7 @@ foreach(file IN LISTS FILES)
   if(hits)
     message(FATAL_ERROR "${file} links CGAL's CORE diagnostics (core_error): it would write "
                         "Core_Diagnostics into the current directory on a CORE warning. Use "
-                        "modeling/detail/radical.h for exact square roots instead of CORE::Expr.")
+                        "exact/radical.h for exact square roots instead of CORE::Expr.")
   endif()
 endforeach()
 list(LENGTH FILES count)

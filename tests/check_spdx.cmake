@@ -4,7 +4,7 @@
 # headers": the first line, or the second after a script's `#!` line).
 # Usage: cmake -D SOURCE_DIR=<repository> -P <this file>
 cmake_minimum_required(VERSION 3.20)
-set(folders bench cli core examples fuzz import io modeling python render scripts testing tests
+set(folders bench cli core examples exact fuzz geometry import io mesh plan python render scripts testing tests
             validation view)
 set(patterns *.h *.cpp *.sh *.py *.cmake CMakeLists.txt)
 set(sources "${SOURCE_DIR}/CMakeLists.txt" "${SOURCE_DIR}/.ci/run" "${SOURCE_DIR}/.clang-format"

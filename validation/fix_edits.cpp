@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "modeling/plan_edit.h"
-#include "modeling/value_text.h"
+#include "plan/plan_edit.h"
+#include "plan/value_text.h"
 
 namespace roomcad {
 namespace {

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 
 namespace roomcad {
@@ -15,7 +15,7 @@ namespace roomcad {
 /// Applies the edits in order with modeling's edit functions (set_field, add_opening,
 /// remove_object). Applying a rule finding's edits removes that finding (each rule's tests
 /// check it).
-/// @throws PreconditionError (from modeling/plan_edit.h) if an edit does not apply, e.g. to a
+/// @throws PreconditionError (from plan/plan_edit.h) if an edit does not apply, e.g. to a
 ///         plan that changed since the finding; the plan may then hold the earlier edits.
 void apply_fix_edits(Plan& plan, const std::vector<FixEdit>& edits);
 

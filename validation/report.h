@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 
@@ -24,7 +24,7 @@ struct Where {
   friend bool operator==(const Where&, const Where&) = default;
 };
 
-/// One edit of a fix, as the edit commands make it (modeling/plan_edit.h): set fields of an
+/// One edit of a fix, as the edit commands make it (plan/plan_edit.h): set fields of an
 /// object (`roomcad set PLAN ID key=value...`), add an opening (`roomcad add PLAN door|window
 /// --wall W ...`), or remove an object (`roomcad rm PLAN ID [--cascade]`).
 struct FixEdit {

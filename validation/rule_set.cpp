@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "modeling/nearest_name.h"
+#include "plan/nearest_name.h"
 
 namespace roomcad {
 namespace {

@@ -13,8 +13,8 @@
 #include <unordered_set>
 #include <vector>
 
-#include "modeling/joins.h"
-#include "modeling/rooms.h"
+#include "geometry/joins.h"
+#include "geometry/rooms.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/resolved_plan.h"
 

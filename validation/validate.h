@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "modeling/plan.h"
-#include "modeling/rooms.h"  // find_rooms, once here
+#include "plan/plan.h"
+#include "geometry/rooms.h"  // find_rooms, once here
 #include "validation/report.h"
 #include "validation/rule_set.h"
 

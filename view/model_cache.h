@@ -21,9 +21,9 @@
 #include <string>
 #include <unordered_map>
 
-#include "modeling/build_model.h"
-#include "modeling/plan.h"
-#include "modeling/solid_mesh.h"
+#include "solid/build_model.h"
+#include "plan/plan.h"
+#include "mesh/solid_mesh.h"
 
 namespace roomcad {
 

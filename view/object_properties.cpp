@@ -3,8 +3,8 @@
 
 #include <fmt/format.h>
 
-#include "modeling/plan_objects.h"
-#include "modeling/field_text.h"
+#include "plan/plan_objects.h"
+#include "plan/field_text.h"
 
 namespace roomcad {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
 #include "validation/validate.h"

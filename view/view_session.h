@@ -3,7 +3,7 @@
 // when the file changes on disk. Free of SDL and of rendering, so every behaviour is tested
 // without a window.
 //
-// Every edit goes through modeling/plan_edit.h on a copy of the plan; the plan is then
+// Every edit goes through plan/plan_edit.h on a copy of the plan; the plan is then
 // validated, and the errors the edit introduces (validation/report_diff.h, as the edit
 // commands judge them) are named in the message. Unlike the edit commands the window keeps
 // such an edit, so that it can be seen (its objects drawn red) and undone or repaired; saving
@@ -29,8 +29,8 @@
 
 #include "core/error.h"
 #include "io/plan_lock.h"
-#include "modeling/plan.h"
-#include "modeling/plan_edit.h"
+#include "plan/plan.h"
+#include "plan/plan_edit.h"
 #include "validation/report.h"
 
 namespace roomcad {

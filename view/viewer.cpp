@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/plan_levels.h"
+#include "plan/plan_levels.h"
 #include "view/frame_overlay.h"
 #include "view/orbit_camera.h"
 #include "view/wireframe.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "render/renderer.h"
 #include "render/scene.h"
 #include "view/frame_overlay.h"

@@ -7,8 +7,8 @@
 #include <string_view>
 #include <unordered_set>
 
-#include "modeling/broad_phase.h"
-#include "modeling/joins.h"
+#include "geometry/broad_phase.h"
+#include "geometry/joins.h"
 
 namespace roomcad {
 namespace {

@@ -2,11 +2,11 @@
 // Groups of walls that the build makes apart: the window rebuilds only the groups an edit
 // touched (view/model_cache.h).
 //
-// Two walls are in one group when they are joined (modeling/joins.h) or their footprints come
+// Two walls are in one group when they are joined (geometry/joins.h) or their footprints come
 // within kGroupMargin of each other, and groups are closed under that (connected components).
 // Walls of different groups are then neither joined nor touching, so the wall solid of the plan
 // is the disjoint union of the groups' solids, each built from its walls and their openings
-// alone, as build_model builds any walls that meet nothing else (modeling/build_model.h).
+// alone, as build_model builds any walls that meet nothing else (solid/build_model.h).
 // Where that cannot be told from the plan (slabs, arc walls, a wall without positive finite
 // length and thickness, repeated wall ids, an opening in no wall), every wall is one group.
 #pragma once
@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 

@@ -7,7 +7,7 @@
 
 #include "io/mesh_export.h"
 #include "io/plan_json.h"
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "validation/report_format.h"
 #include "validation/validate.h"
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Draws the 15 test surfaces of the Tomsk lab manual (seed 002, lab 4) with `roomcad surface`.
+# Draws the 15 test surfaces of lab 4 of the Tomsk manual "Laboratory works in computer
+# graphics" with `roomcad surface`.
 # Usage: draw_all.sh OUT_DIR [svg|png] [extra roomcad surface options...]
 # The roomcad binary is $ROOMCAD, else build/roomcad of this checkout.
 set -euo pipefail

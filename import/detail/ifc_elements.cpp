@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/detail/ifc_elements.h"
-#include "modeling/signed_area.h"
+#include "plan/signed_area.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 
 #include "import/detail/ifc_geometry.h"
 #include "io/step_file.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 
 namespace roomcad::ifc {

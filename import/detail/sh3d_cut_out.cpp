@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "modeling/signed_area.h"
+#include "plan/signed_area.h"
 
 namespace roomcad::sh3d {
 namespace {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::sh3d {
 

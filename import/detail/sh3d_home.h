@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::sh3d {
 

@@ -10,8 +10,8 @@
 #include <fmt/ranges.h>
 
 #include "import/detail/sh3d_cut_out.h"
-#include "modeling/plan_chords.h"
-#include "modeling/signed_area.h"
+#include "plan/plan_chords.h"
+#include "plan/signed_area.h"
 
 namespace roomcad::sh3d {
 namespace {

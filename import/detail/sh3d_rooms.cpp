@@ -9,8 +9,8 @@
 
 #include "import/detail/sh3d_cut_out.h"
 #include "import/detail/sh3d_walls.h"
-#include "modeling/polygon_predicates.h"
-#include "modeling/signed_area.h"
+#include "geometry/polygon_predicates.h"
+#include "plan/signed_area.h"
 
 namespace roomcad::sh3d {
 namespace {

@@ -11,8 +11,8 @@
 
 #include <fmt/format.h>
 
-#include "modeling/arc_chords.h"
-#include "modeling/plan_chords.h"
+#include "plan/arc_chords.h"
+#include "plan/plan_chords.h"
 
 namespace roomcad::sh3d {
 namespace {

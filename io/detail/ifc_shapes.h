@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "io/step_file.h"
-#include "modeling/joins.h"
-#include "modeling/plan.h"
+#include "geometry/joins.h"
+#include "plan/plan.h"
 
 namespace roomcad::io_detail {
 

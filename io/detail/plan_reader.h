@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// From the text of a plan file to a Plan, through the field tables (modeling/plan_fields.h):
+// From the text of a plan file to a Plan, through the field tables (plan/plan_fields.h):
 // types, enums, defaults, units, versions and unknown fields.
 //
 // Why two JSON parsers: simdjson's On-Demand API reads a plan at several hundred MB/s (a
@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <string_view>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 
 namespace roomcad::io_detail {

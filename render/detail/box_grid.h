@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 
 namespace roomcad::detail {
 

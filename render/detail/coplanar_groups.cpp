@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Triangles of one plane joined by shared edges: what seed 004 calls one face (the scene holds
+// Triangles of one plane joined by shared edges: what Makarov & Safin call one face (the scene holds
 // the model's polygons as triangles), so a region seeing only that plane can stop early.
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "modeling/triangulate_face.h"
+#include "mesh/triangulate_face.h"
 
 namespace roomcad::detail {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "modeling/solid_mesh.h"
+#include "mesh/solid_mesh.h"
 #include "render/detail/exact_3d.h"
 
 namespace roomcad::detail {

@@ -2,6 +2,8 @@
 // Vertex stage, culling, clipping and binning, in parallel over fixed chunks of the scene.
 #include "render/detail/geometry_pass.h"
 
+#include "core/assert.h"
+
 #include <algorithm>
 
 #include <tbb/parallel_for.h>
@@ -156,6 +158,7 @@ void run_geometry_pass(const Scene& scene, const GeometryPass& pass, BinnedTrian
 }
 
 RasterTarget tile_rectangle(const BinnedTriangles& bins, int tile) {
+  RC_ASSERT(tile >= 0 && tile < bins.tile_count(), "a tile of the frame");
   RasterTarget r;
   r.x0 = (tile % bins.tiles_x) * bins.tile_size;
   r.y0 = (tile / bins.tiles_x) * bins.tile_size;
@@ -165,6 +168,7 @@ RasterTarget tile_rectangle(const BinnedTriangles& bins, int tile) {
 }
 
 void rasterize_tile(const BinnedTriangles& bins, int tile, RasterTarget target) {
+  RC_ASSERT(tile >= 0 && tile < bins.tile_count(), "a tile of the frame");
   for (std::uint32_t k = bins.tile_offsets[tile]; k < bins.tile_offsets[tile + 1]; ++k) {
     target.id_value = bins.ids[k];
     rasterize_triangle(bins.at(bins.ids[k]), target);

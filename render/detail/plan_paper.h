@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "modeling/joins.h"
+#include "geometry/joins.h"
 #include "render/floor_plan.h"
 
 namespace roomcad::detail {

@@ -3,7 +3,7 @@
 // window symbols, door leaves and swings, and walls wholly below or above the cut.
 #include <algorithm>
 
-#include "modeling/plan_objects.h"
+#include "plan/plan_objects.h"
 #include "render/detail/plan_paper.h"
 
 namespace roomcad::detail {

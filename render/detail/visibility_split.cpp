@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Seed 004's recursive split: contours as runs of the face seen, the depth order carried along
+// Makarov & Safin's recursive split: contours as runs of the face seen, the depth order carried along
 // each splitting line from crossing to crossing.
 #include "render/detail/visibility_split.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The recursive split of seed 004's pre-pass over triangles already projected to the sample
+// The recursive split of Makarov & Safin's pre-pass over triangles already projected to the sample
 // grid (render/visibility.h says what it finds).
 #pragma once
 

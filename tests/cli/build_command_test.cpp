@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "io/plan_json.h"
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "support/run_command.h"
 
 namespace roomcad {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Culling only skips work: `roomcad render` draws the same picture with every --cull mode
-// (none, back, visibility) and --frustum-cull on or off, on every bundled example; the seed-004
-// pre-pass never drops a face the picture shows. Bad values exit 2.
+// (none, back, visibility) and --frustum-cull on or off, on every bundled example; Makarov &
+// Safin's pre-pass never drops a face the picture shows. Bad values exit 2.
 #include <filesystem>
 #include <string>
 #include <utility>

@@ -9,12 +9,13 @@
 
 #include "io/floor_plan_dxf.h"
 #include "io/plan_json.h"
-#include "modeling/arc_chords.h"
-#include "modeling/mesh_check.h"
+#include "plan/arc_chords.h"
+#include "mesh/mesh_check.h"
 #include "readers_support.h"
 #include "render/floor_plan.h"
 #include "support/run_command.h"
 #include "validation/validate.h"
+#include "solid/analytic_volume.h"
 
 namespace roomcad {
 namespace {

@@ -7,7 +7,7 @@
 #include "import/ifc_import.h"
 #include "io/ifc_export.h"
 #include "io/plan_json.h"
-#include "modeling/plan_levels.h"
+#include "plan/plan_levels.h"
 #include "support/run_command.h"
 #include "validation/validate.h"
 

@@ -9,9 +9,10 @@
 #include <gtest/gtest.h>
 
 #include "import/sh3d_test_data.h"
-#include "modeling/build_model.h"
-#include "modeling/mesh_check.h"
+#include "solid/build_model.h"
+#include "mesh/mesh_check.h"
 #include "support/solid_tolerance.h"
+#include "solid/analytic_volume.h"
 
 namespace roomcad {
 namespace {

@@ -16,9 +16,9 @@
 
 #include <gtest/gtest.h>
 
-#include "modeling/arc_chords.h"
-#include "modeling/plan_chords.h"
-#include "modeling/plan_levels.h"
+#include "plan/arc_chords.h"
+#include "plan/plan_chords.h"
+#include "plan/plan_levels.h"
 #include "import/sweethome3d_import.h"
 #include "import/sh3d_test_data.h"
 

@@ -8,10 +8,11 @@
 #include "io/detail/ifc_shapes.h"
 #include "io/ifc_export.h"
 #include "io/step_file.h"
-#include "modeling/arc_chords.h"
-#include "modeling/mesh_check.h"
-#include "modeling/plan_levels.h"
-#include "modeling/rooms.h"
+#include "plan/arc_chords.h"
+#include "mesh/mesh_check.h"
+#include "plan/plan_levels.h"
+#include "geometry/rooms.h"
+#include "solid/analytic_volume.h"
 
 namespace roomcad {
 namespace {

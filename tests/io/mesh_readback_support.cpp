@@ -6,9 +6,10 @@
 #include <stdexcept>
 
 #include "io/plan_json.h"
-#include "modeling/build_model.h"
-#include "modeling/mesh_check.h"
+#include "solid/build_model.h"
+#include "mesh/mesh_check.h"
 #include "support/run_command.h"
+#include "solid/analytic_volume.h"
 
 namespace roomcad::test {
 namespace {

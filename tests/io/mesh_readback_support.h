@@ -12,7 +12,7 @@
 
 #include "io/mesh_export.h"
 #include "io/mesh_read_support.h"
-#include "modeling/solid_mesh.h"
+#include "mesh/solid_mesh.h"
 
 namespace roomcad::test {
 

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "fuzz/plan_bytes.h"
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "render/renderer.h"
 
 namespace roomcad {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "render/detail/feature_edges.h"
 #include "render/line_drawing.h"
 #include "scene_support.h"

@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "render/renderer.h"
 #include "scene_support.h"
 #include "testing/plan_builders.h"

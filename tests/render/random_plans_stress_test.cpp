@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A thousand plans (or ROOMCAD_STRESS_PLANS: support/stress_plans.h) from the seeded
-// generator (tests/support/random_plan.h), through validation, both build paths and the renderer:
+// generator (testing/random_plan.h), through validation, both build paths and the renderer:
 // - verdicts exact: a plan swapped in x and y, or scaled by 1024, gets the same codes on the
 //   same objects (both motions are exact on doubles, and verdicts are exact for the numbers
 //   as written);
@@ -16,14 +16,15 @@
 
 #include <gtest/gtest.h>
 
-#include "modeling/build_model.h"
-#include "modeling/mesh_check.h"
-#include "modeling/wall_check.h"
+#include "solid/build_model.h"
+#include "mesh/mesh_check.h"
+#include "solid/wall_check.h"
 #include "render/renderer.h"
 #include "scene_support.h"
 #include "support/stress_plans.h"
 #include "testing/random_plan.h"
 #include "validation/validate.h"
+#include "solid/analytic_volume.h"
 
 namespace roomcad {
 namespace {

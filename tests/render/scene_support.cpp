@@ -9,7 +9,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include "modeling/triangulate_face.h"
+#include "mesh/triangulate_face.h"
 
 namespace roomcad::test {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "modeling/solid_mesh.h"
+#include "mesh/solid_mesh.h"
 #include "render/camera.h"
 #include "render/image.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The seed-004 pre-pass: finds exactly the triangles the z-buffer shows (none dropped, none
+// Makarov & Safin's visible-surface pre-pass: finds exactly the triangles the z-buffer shows (none dropped, none
 // extra), and culling with it leaves the picture unchanged.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include "testing/grid_plan.h"
-#include "modeling/build_model.h"
+#include "solid/build_model.h"
 #include "render/detail/geometry_pass.h"
 #include "render/renderer.h"
 #include "render/visibility.h"

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Areas of a solid's faces by kind, for tests that compare the solids of two paths face kind
-// by face kind (the volume error rounding allows is modeling/wall_check.h's volume_tolerance).
+// by face kind (the volume error rounding allows is solid/wall_check.h's volume_tolerance).
 #pragma once
 
 #include <map>
 
-#include "modeling/solid_mesh.h"
+#include "mesh/solid_mesh.h"
 
 namespace roomcad::test {
 

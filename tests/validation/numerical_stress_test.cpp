@@ -52,7 +52,7 @@ TEST(NumericalStress, TouchingIsExactUpToSeventeenThousandKilometres) {
       }
 }
 
-/// The room of tests/modeling/numerical_stress_test.cpp's flush_openings_plan, walls 0.2 m
+/// The room of tests/solid/numerical_stress_test.cpp's flush_openings_plan, walls 0.2 m
 /// thick: a 5 x 4 m mitred ring whose window "corner" ends `e` metres past the inner face of
 /// the mitred corner at (0, 4) (e = 0: flush), and a free wall with openings at its ends.
 Plan flush_corner_plan(double e) {

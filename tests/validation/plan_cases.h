@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "testing/plan_builders.h"
 #include "validation/report.h"
 #include "validation/validate.h"

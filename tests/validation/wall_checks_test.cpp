@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "modeling/joins.h"
+#include "geometry/joins.h"
 #include "plan_cases.h"
 
 namespace roomcad {

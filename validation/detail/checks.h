@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include "modeling/joins.h"
-#include "modeling/plan.h"
+#include "geometry/joins.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 #include "validation/validate.h"
 

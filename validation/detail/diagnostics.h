@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 
 namespace roomcad::detail {

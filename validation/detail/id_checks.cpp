@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "modeling/flat_index.h"
-#include "modeling/plan_objects.h"
+#include "core/flat_index.h"
+#include "plan/plan_objects.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 

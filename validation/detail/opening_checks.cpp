@@ -13,9 +13,9 @@
 
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
-#include "modeling/arc_chords.h"
-#include "modeling/plan_chords.h"
-#include "modeling/polygon_predicates.h"
+#include "plan/arc_chords.h"
+#include "plan/plan_chords.h"
+#include "geometry/polygon_predicates.h"
 #include "validation/detail/resolved_plan.h"
 #include "validation/detail/shapes.h"
 

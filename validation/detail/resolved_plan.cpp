@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "modeling/plan_chords.h"
-#include "modeling/plan_levels.h"
+#include "plan/plan_chords.h"
+#include "plan/plan_levels.h"
 
 namespace roomcad::detail {
 

@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/detail/checks.h"
 
 namespace roomcad::detail {

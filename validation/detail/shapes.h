@@ -9,8 +9,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "modeling/broad_phase.h"
-#include "modeling/exact_geometry.h"
+#include "geometry/broad_phase.h"
+#include "geometry/exact_wall_lines.h"
 #include "validation/report.h"
 
 namespace roomcad::detail {

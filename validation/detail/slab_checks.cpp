@@ -14,10 +14,10 @@
 
 #include <fmt/format.h>
 
-#include "modeling/plan_levels.h"
+#include "plan/plan_levels.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
-#include "modeling/polygon_predicates.h"
+#include "geometry/polygon_predicates.h"
 #include "validation/detail/resolved_plan.h"
 #include "validation/detail/shapes.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // invalid_value: numbers that are not finite, sizes that are not positive, degenerate
-// directions, each field judged by its check in the field tables (modeling/plan_fields.h); then
+// directions, each field judged by its check in the field tables (plan/plan_fields.h); then
 // the few rules that tie two fields together. A Plan built in code can hold anything, so
 // nothing here is assumed.
 #include <algorithm>
@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 
-#include "modeling/plan_fields.h"
+#include "plan/plan_fields.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
-#include "modeling/polygon_predicates.h"
+#include "geometry/polygon_predicates.h"
 
 namespace roomcad::detail {
 namespace {

@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/segment_predicates.h"
+#include "geometry/segment_predicates.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 #include "validation/detail/resolved_plan.h"

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/flat_index.h"
+#include "core/flat_index.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 

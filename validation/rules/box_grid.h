@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A uniform grid of boxes for one-at-a-time queries ("which walls are near this door?") while
-// searching for fixes; batches of queries use find_meeting_boxes (modeling/broad_phase.h).
+// searching for fixes; batches of queries use find_meeting_boxes (geometry/broad_phase.h).
 #pragma once
 
 #include <cstddef>
 #include <unordered_map>
 #include <vector>
 
-#include "modeling/broad_phase.h"
+#include "geometry/broad_phase.h"
 
 namespace roomcad::rules {
 

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/plan_edit.h"
+#include "plan/plan_edit.h"
 #include "validation/rules/scene.h"
 #include "validation/rules/written_number.h"
 

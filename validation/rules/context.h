@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "modeling/joins.h"
-#include "modeling/plan.h"
+#include "geometry/joins.h"
+#include "plan/plan.h"
 #include "validation/detail/checks.h"
 #include "validation/rule_set.h"
 #include "validation/rules/box_grid.h"

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "modeling/joins.h"
+#include "geometry/joins.h"
 #include "validation/rules/convex.h"
 
 namespace roomcad::rules {

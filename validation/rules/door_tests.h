@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "modeling/broad_phase.h"
-#include "modeling/plan.h"
+#include "geometry/broad_phase.h"
+#include "plan/plan.h"
 #include "validation/rule_set.h"
 #include "validation/rules/scene.h"
 #include "validation/rules/written_number.h"

@@ -17,7 +17,7 @@
 #include <optional>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/rules/context.h"
 #include "validation/rules/scene.h"
 

@@ -7,7 +7,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "modeling/segment_predicates.h"
+#include "geometry/segment_predicates.h"
 #include "validation/fix_edits.h"
 #include "validation/report_diff.h"
 #include "validation/validate.h"

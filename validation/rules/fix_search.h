@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 #include "validation/rules/scene.h"
 

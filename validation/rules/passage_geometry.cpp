@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "modeling/broad_phase.h"
+#include "geometry/broad_phase.h"
 #include "validation/detail/diagnostics.h"
 #include "validation/rules/door_geometry.h"
 #include "validation/rules/fix_search.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "modeling/plan.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 #include "validation/rules/context.h"
 #include "validation/rules/scene.h"

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "modeling/plan_objects.h"
+#include "plan/plan_objects.h"
 #include "validation/detail/shapes.h"
 #include "validation/rules/door_geometry.h"
 

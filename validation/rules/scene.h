@@ -10,10 +10,10 @@
 #include <string_view>
 #include <vector>
 
-#include "modeling/broad_phase.h"
-#include "modeling/flat_index.h"
-#include "modeling/joins.h"
-#include "modeling/plan.h"
+#include "geometry/broad_phase.h"
+#include "core/flat_index.h"
+#include "geometry/joins.h"
+#include "plan/plan.h"
 #include "validation/rules/box_grid.h"
 
 namespace roomcad::rules {

@@ -21,7 +21,7 @@
 
 #include <CGAL/Interval_nt.h>
 
-#include "modeling/exact_geometry.h"
+#include "geometry/exact_wall_lines.h"
 
 namespace roomcad::rules {
 

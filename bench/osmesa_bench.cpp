@@ -73,7 +73,7 @@ void load_camera(const Scene& scene) {
   const Camera cam = default_camera(scene.bounds, aspect);
   const glm::dvec3 eye(cam.eye.x, cam.eye.y, cam.eye.z), target(cam.target.x, cam.target.y,
                                                                  cam.target.z);
-  const double far = glm::length(eye - target) + glm::length(scene.bounds.max - scene.bounds.min);
+  const double far = glm::length(eye - target) + glm::length(high_corner(scene.bounds) - low_corner(scene.bounds));
   const glm::mat4 projection = glm::perspective(glm::radians(cam.fov_deg), aspect, 0.05, far);
   // The scene's corners are relative to its origin (scene.h).
   const glm::mat4 view =

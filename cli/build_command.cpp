@@ -87,9 +87,9 @@ int run_build(const BuildCommandOptions& options) {
   const Result<OutputKind> kind = output_kind(options.out);
   if (!kind) return report_failure("build", kind.error());
   // The validation gate: errors stop the build unless --force.
-  const LoadedPlan loaded = load_valid_plan("build", options.plan, options.force);
-  if (!loaded.plan) return loaded.exit_status;
-  const Result<Plan> level = select_level(*loaded.plan, options.level);
+  const Result<LoadedPlan> loaded = load_valid_plan("build", options.plan, options.force);
+  if (!loaded) return exit_status_of(loaded.code());
+  const Result<Plan> level = select_level(loaded->plan, options.level);
   if (!level) return report_failure("build", level.error());
   const Plan& plan = level.value();
   if (kind.value() == OutputKind::ifc) {

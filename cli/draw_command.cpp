@@ -60,15 +60,15 @@ int run_draw(const DrawOptions& o) {
     return report_failure("draw", {Code::usage_error, fmt::format("--findings: only the plan view "
                                                                   "marks findings, not --view {}",
                                                                   request.view)});
-  const LoadedPlan loaded = load_valid_plan("draw", o.plan_file, o.force);
-  if (!loaded.plan) return loaded.exit_status;
+  const Result<LoadedPlan> loaded = load_valid_plan("draw", o.plan_file, o.force);
+  if (!loaded) return exit_status_of(loaded.code());
   if (o.findings) {
-    Result<std::vector<PlanMark>> marks = find_marks(*loaded.plan, o.rules);
+    Result<std::vector<PlanMark>> marks = find_marks(loaded->plan, o.rules);
     if (!marks) return report_failure("draw", marks.error());
     request.marks = std::move(marks).value();
   }
   if (dxf) {
-    const Result<FloorPlanDrawing> drawing = draw_requested_floor_plan(*loaded.plan, request);
+    const Result<FloorPlanDrawing> drawing = draw_requested_floor_plan(loaded->plan, request);
     if (!drawing) return report_failure("draw", drawing.error());
     if (const Status written = write_floor_plan_dxf(drawing.value(), o.output); !written)
       return report_failure("draw", written.error());
@@ -76,7 +76,7 @@ int run_draw(const DrawOptions& o) {
     return kExitOk;
   }
   // A model that cannot be built throws PreconditionError (not_buildable): main reports it.
-  const Result<SvgDocument> document = draw_plan_svg(*loaded.plan, request);
+  const Result<SvgDocument> document = draw_plan_svg(loaded->plan, request);
   if (!document) return report_failure("draw", document.error());
   if (const Status written = write_svg(document.value(), o.output); !written)
     return report_failure("draw", written.error());

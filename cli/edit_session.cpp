@@ -49,6 +49,20 @@ bool accept_new_errors(std::string_view command, const std::string& path, const 
   return flags.force;
 }
 
+/// Prints why an edit was not made. @return its exit status: 1 refused, 2 cannot be made.
+int report_not_made(std::string_view command, std::string_view path, const Error& error) {
+  if (error.code == Code::edit_refused) {
+    fmt::print(stderr, "roomcad {}: refused: {}; '{}' is left as it was\n", command,
+               error.message, path);
+    return kExitPlanErrors;
+  }
+  std::string_view message = error.message;  // "<command>: ...", as the edits name their verb
+  if (message.starts_with(command) && message.substr(command.size()).starts_with(": "))
+    message.remove_prefix(command.size() + 2);
+  fmt::print(stderr, "roomcad {}: error: {}\n", command, message);
+  return kExitCannotRun;
+}
+
 }  // namespace
 
 void add_edit_flags(CLI::App& command, EditFlags& flags) {
@@ -62,34 +76,26 @@ void add_edit_flags(CLI::App& command, EditFlags& flags) {
 int run_edit(std::string_view command, const std::string& path, const EditFlags& flags,
              const Edit& edit) {
   std::optional<PlanLock> lock;  // held until the new file is in place
-  if (!flags.dry_run && !(lock = lock_plan(command, path, flags.wait_seconds)))
-    return kExitCannotRun;
-  const LoadedPlan read = load_plan(command, path);  // prints what reading found
-  if (!read.plan) return read.exit_status;
-  Plan edited = *read.plan;
-  EditSummary summary;
-  try {
-    summary = edit(edited);
-  } catch (const PreconditionError& e) {
-    if (e.code() == Code::edit_refused) {
-      fmt::print(stderr, "roomcad {}: refused: {}; '{}' is left as it was\n", command, e.what(), path);
-      return kExitPlanErrors;
-    }
-    std::string_view message = e.what();  // "<command>: ...", as modeling names its function
-    if (message.starts_with(command) && message.substr(command.size()).starts_with(": "))
-      message.remove_prefix(command.size() + 2);
-    fmt::print(stderr, "roomcad {}: error: {}\n", command, message);
-    return kExitCannotRun;
+  if (!flags.dry_run) {
+    Result<PlanLock> taken = lock_plan(command, path, flags.wait_seconds);
+    if (!taken) return exit_status_of(taken.code());
+    lock.emplace(std::move(taken).value());
   }
-  if (edited == *read.plan) {
+  const Result<LoadedPlan> read = load_plan(command, path);  // prints what reading found
+  if (!read) return exit_status_of(read.code());
+  Plan edited = read->plan;
+  const Result<EditSummary> made = make_edit(edit, edited);
+  if (!made) return report_not_made(command, path, made.error());
+  const EditSummary& summary = made.value();
+  if (edited == read->plan) {
     fmt::print("nothing to change: '{}' is left as it was\n", path);
     return kExitOk;
   }
-  if (!accept_new_errors(command, path, flags, introduced_errors(validate(*read.plan), validate(edited))))
+  if (!accept_new_errors(command, path, flags, introduced_errors(validate(read->plan), validate(edited))))
     return kExitPlanErrors;
   print_summary(summary);
   if (flags.dry_run) {
-    std::fputs(diff_lines(read.text, write_plan_text(edited)).c_str(), stdout);  // the file as it is
+    std::fputs(diff_lines(read->text, write_plan_text(edited)).c_str(), stdout);  // the file as it is
     fmt::print("dry run: '{}' not written\n", path);
     return kExitOk;
   }

@@ -36,11 +36,12 @@ struct EditFlags {
 /// Registers --force, --dry-run and --wait on an edit subcommand.
 void add_edit_flags(CLI::App& command, EditFlags& flags);
 
-/// An edit of an in-memory plan: returns what it changed, or throws PreconditionError: with
-/// Code::edit_refused to refuse it on the plan's grounds (a wall that still holds openings:
-/// run_edit prints "roomcad <command>: refused: <what>" and returns 1, the file untouched), with
-/// any other code when it cannot be made (a bad argument: exit 2).
-using Edit = std::function<EditSummary(Plan&)>;
+/// An edit of an in-memory plan: returns what it changed, or the Error why not (set_field and
+/// add_object return it; the typed edits of plan/plan_edit.h throw it as PreconditionError
+/// for their preconditions). Code::edit_refused refuses it on the plan's grounds (a wall that
+/// still holds openings: run_edit prints "roomcad <command>: refused: <what>" and returns 1,
+/// the file untouched); any other code means it cannot be made (a bad argument: exit 2).
+using Edit = std::function<Result<EditSummary>(Plan&)>;
 
 /// Runs one edit on the plan file `path` and reports on stdout/stderr.
 /// @param[in] command  the subcommand's name, for messages ("move")

@@ -24,13 +24,17 @@ struct FmtOptions {
 int format_one(const FmtOptions& options, const std::string& plan) {
   std::optional<PlanLock> lock;  // rewriting in place: held from reading to the rename
   const bool in_place = !options.check && options.out.empty();
-  if (in_place && !(lock = lock_plan("fmt", plan, options.wait_seconds))) return kExitCannotRun;
-  LoadedPlan loaded = load_plan("fmt", plan);
-  if (!loaded.plan) return loaded.exit_status;
-  const std::string canonical = write_plan_text(*loaded.plan);
+  if (in_place) {
+    Result<PlanLock> taken = lock_plan("fmt", plan, options.wait_seconds);
+    if (!taken) return exit_status_of(taken.code());
+    lock.emplace(std::move(taken).value());
+  }
+  Result<LoadedPlan> loaded = load_plan("fmt", plan);
+  if (!loaded) return exit_status_of(loaded.code());
+  const std::string canonical = write_plan_text(loaded->plan);
 
   if (options.check) {
-    if (canonical == loaded.text) return kExitOk;
+    if (canonical == loaded->text) return kExitOk;
     std::fprintf(stderr, "%s: not in canonical form; run `roomcad fmt %s` to rewrite it\n",
                  plan.c_str(), plan.c_str());
     return kExitPlanErrors;
@@ -40,8 +44,8 @@ int format_one(const FmtOptions& options, const std::string& plan) {
     return std::fflush(stdout) == 0 ? kExitOk : kExitCannotRun;
   }
   const std::string& target = options.out.empty() ? plan : options.out;
-  if (options.out.empty() && canonical == loaded.text) return kExitOk;  // already canonical
-  if (const Status written = write_plan_file(*loaded.plan, target); !written)
+  if (options.out.empty() && canonical == loaded->text) return kExitOk;  // already canonical
+  if (const Status written = write_plan_file(loaded->plan, target); !written)
     return report_failure("fmt", written.error());
   return kExitOk;
 }

@@ -82,8 +82,8 @@ int run_import(const ImportArgs& args) {
   const Plan& plan = imported.value().plan;
   // Replaced under the plan's lock (io/plan_lock.h): an edit of the old plan under way would
   // otherwise rename its result over the imported plan just written, and the import be lost.
-  const std::optional<PlanLock> lock = lock_plan("import", args.output, args.wait_seconds);
-  if (!lock) return kExitCannotRun;
+  const Result<PlanLock> lock = lock_plan("import", args.output, args.wait_seconds);
+  if (!lock) return exit_status_of(lock.code());
   if (const Status written = write_plan_file(plan, args.output); !written)
     return report_failure("import", written.error());
   fmt::print(stderr,

@@ -241,13 +241,13 @@ void print_text(const std::string& file, const Plan& plan, const PlanInfo& info)
 }
 
 int run_info(const InfoOptions& options) {
-  const LoadedPlan loaded = load_plan("info", options.plan);
-  if (!loaded.plan) return loaded.exit_status;
-  const PlanInfo info = measure(*loaded.plan);
+  const Result<LoadedPlan> loaded = load_plan("info", options.plan);
+  if (!loaded) return exit_status_of(loaded.code());
+  const PlanInfo info = measure(loaded->plan);
   if (options.format == "json") {
-    print_json(options.plan, *loaded.plan, info);
+    print_json(options.plan, loaded->plan, info);
   } else {
-    print_text(options.plan, *loaded.plan, info);
+    print_text(options.plan, loaded->plan, info);
   }
   return std::fflush(stdout) == 0 ? kExitOk : kExitCannotRun;
 }

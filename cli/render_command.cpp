@@ -40,9 +40,9 @@ Status write_outputs(const RenderArgs& a, const FrameBuffers& out, const Model& 
 
 int run_render(const RenderArgs& a) {
   // The validation gate: errors stop the render unless --force.
-  const LoadedPlan loaded = load_valid_plan("render", a.plan, a.force);
-  if (!loaded.plan) return loaded.exit_status;
-  const Result<Plan> level = select_level(*loaded.plan, a.level);
+  const Result<LoadedPlan> loaded = load_valid_plan("render", a.plan, a.force);
+  if (!loaded) return exit_status_of(loaded.code());
+  const Result<Plan> level = select_level(loaded->plan, a.level);
   if (!level) return report_failure("render", level.error());
   const Plan& plan = level.value();
   Result<RenderOptions> asked = make_render_options(a.request, plan);

@@ -52,10 +52,10 @@ void print_message(const std::string& message) {
 }
 
 int run_view(const ViewArgs& a) {
-  const LoadedPlan loaded = load_plan("view", a.plan);  // prints what reading found
-  if (!loaded.plan) return loaded.exit_status;
+  const Result<LoadedPlan> loaded = load_plan("view", a.plan);  // prints what reading found
+  if (!loaded) return exit_status_of(loaded.code());
   const Result<std::vector<InputEvent>> script = parse_key_script(a.keys);
-  const Result<ViewerOptions> options = make_options(a, *loaded.plan);
+  const Result<ViewerOptions> options = make_options(a, loaded->plan);
   Result<ViewSession> session = ViewSession::open(a.plan, wait_duration(a.wait_seconds));
   for (const Status& step : {script.status(), options.status(), session.status()})
     if (!step) return report_failure("view", step.error());

@@ -9,16 +9,9 @@
 #include <utility>
 #include <vector>
 
-namespace roomcad {
+#include "core/box.h"
 
-/// A closed axis-aligned box in the plane, in metres, tagged with the caller's index.
-struct Box2 {
-  double min_x = 0.0;
-  double min_y = 0.0;
-  double max_x = 0.0;
-  double max_y = 0.0;
-  std::size_t index = 0;  ///< the caller's object index, reported in the pairs
-};
+namespace roomcad {
 
 /// A closed box in space, in metres: a box in plan and a height range (the extent of a wall or
 /// a slab). A wall meets those of the storeys above and below it in plan alone.

@@ -17,6 +17,7 @@
 #include "import/detail/sh3d_home.h"
 #include "import/detail/sh3d_levels.h"
 #include "import/detail/sh3d_openings.h"
+#include "core/box.h"
 #include "import/detail/sh3d_rooms.h"
 #include "import/detail/sh3d_walls.h"
 #include "io/text_file.h"
@@ -24,19 +25,19 @@
 namespace roomcad {
 namespace {
 
-struct Box {
-  Point2 min{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
-  Point2 max{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+/// What a home covers: its box in plan and its highest top.
+struct HomeExtent {
+  Box2 plan = empty_box2();
   double top = 0.0;
 };
 
 /// Box around the walls' centre lines (an arc's chords) grown by half their thickness (the
 /// margin covers mitres) and the slabs, up to the highest wall top, slab top or level top.
-Box bounds_of(const Plan& plan, const std::vector<sh3d::PlacedWall>& walls) {
-  Box box;
+HomeExtent bounds_of(const Plan& plan, const std::vector<sh3d::PlacedWall>& walls) {
+  HomeExtent box;
   const auto add = [&box](Point2 p, double r) {
-    box.min = {std::min(box.min.x, p.x - r), std::min(box.min.y, p.y - r)};
-    box.max = {std::max(box.max.x, p.x + r), std::max(box.max.y, p.y + r)};
+    add_point(box.plan, p.x - r, p.y - r);
+    add_point(box.plan, p.x + r, p.y + r);
   };
   for (const sh3d::PlacedWall& w : walls) {
     for (const Point2 p : w.polyline) add(p, w.wall.thickness / 2);
@@ -51,16 +52,16 @@ Box bounds_of(const Plan& plan, const std::vector<sh3d::PlacedWall>& walls) {
   return box;
 }
 
-Site make_site(const Box& box, const Sh3dImportOptions& options) {
+Site make_site(const HomeExtent& box, const Sh3dImportOptions& options) {
   const double cell = options.cell_size;
-  const Point2 origin{std::floor((box.min.x - options.site_margin) / cell) * cell,
-                      std::floor((box.min.y - options.site_margin) / cell) * cell};
+  const Point2 origin{std::floor((box.plan.min_x - options.site_margin) / cell) * cell,
+                      std::floor((box.plan.min_y - options.site_margin) / cell) * cell};
   auto cells = [&](double from, double to) {
     return static_cast<std::int64_t>(std::ceil((to + options.site_margin - from) / cell));
   };
   Site site;
   site.origin = origin;
-  site.cells = {cells(origin.x, box.max.x), cells(origin.y, box.max.y)};
+  site.cells = {cells(origin.x, box.plan.max_x), cells(origin.y, box.plan.max_y)};
   site.cell_size = cell;
   site.max_height = std::ceil(box.top) + 1.0;
   site.tolerance = options.join_tolerance;
@@ -84,8 +85,8 @@ Camera make_camera(const sh3d::CameraRecord& c, std::string id, Point2 centre, d
   return camera;
 }
 
-std::vector<Camera> make_cameras(const sh3d::Home& home, const Box& box, double z_shift) {
-  const Point2 centre{(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
+std::vector<Camera> make_cameras(const sh3d::Home& home, const HomeExtent& box, double z_shift) {
+  const Point2 centre{(box.plan.min_x + box.plan.max_x) / 2, (box.plan.min_y + box.plan.max_y) / 2};
   std::vector<Camera> cameras;
   for (const sh3d::CameraRecord& c : home.cameras) {
     if (c.kind == "observerCamera") cameras.push_back(make_camera(c, "observer", centre, z_shift));
@@ -93,7 +94,7 @@ std::vector<Camera> make_cameras(const sh3d::Home& home, const Box& box, double 
     if (c.kind == "topCamera" && std::abs(c.direction.z) < 0.95)
       cameras.push_back(make_camera(c, "aerial", centre, z_shift));
   }
-  const double span = std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+  const double span = std::max(box.plan.max_x - box.plan.min_x, box.plan.max_y - box.plan.min_y);
   Camera overview;  // from the south-west, above: the whole home in a 50 degree view
   overview.id = "overview";
   overview.target = {centre.x, centre.y, box.top / 3};
@@ -210,10 +211,10 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   if (out.plan.slabs.size() > kMaxPlanObjects)
     return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(
         file, out.plan.walls.size(), out.plan.slabs.size(), "walls and", "slabs"));
-  const Box box = bounds_of(out.plan, walls);
+  const HomeExtent box = bounds_of(out.plan, walls);
   // The site's cell counts are integers: a home spread over more cells than any plan could
   // use (coordinates like 1e115 cm) is refused rather than overflowing them.
-  const double span = std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+  const double span = std::max(box.plan.max_x - box.plan.min_x, box.plan.max_y - box.plan.min_y);
   if (!((span + 2 * options.site_margin) / options.cell_size <= kMaxSiteCellsPerSide))
     return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format(
         "{}: the walls span {:g} m, more than {:g} cells of {:g} m; check the home's coordinates",

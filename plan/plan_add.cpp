@@ -14,32 +14,50 @@ namespace roomcad {
 namespace {
 
 /// Builds the object in a scratch plan (so set_field type-checks every value), then takes it.
+/// @return the object, or the first value set_field refuses.
 template <class Object>
-Object build(std::vector<Object> Plan::*list, Object object, const std::string& id,
-             const FieldValues& given) {
+Result<Object> build(std::vector<Object> Plan::*list, Object object, const std::string& id,
+                     const FieldValues& given) {
   Plan scratch;
   object.id = id.empty() ? "new" : id;
   (scratch.*list).push_back(std::move(object));
-  for (const auto& [key, value] : given) set_field(scratch, (scratch.*list)[0].id, key, value, "add");
+  for (const auto& [key, value] : given)
+    if (const auto set = set_field(scratch, (scratch.*list)[0].id, key, value, "add"); !set)
+      return set.error();
   Object built = std::move((scratch.*list)[0]);
   built.id = id;  // empty: add_* generates one
   return built;
 }
 
-/// @throws PreconditionError (usage_error) unless `given` holds only fields of the kind and
-///         every required one.
-void check_fields(std::string_view kind, const FieldValues& given) {
+/// @return success, or a usage_error unless `given` holds only fields of the kind and every
+///         required one.
+Status check_fields(std::string_view kind, const FieldValues& given) {
   const std::vector<std::string_view> allowed = settable_fields(kind);
   for (const auto& [key, value] : given) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw PreconditionError(fmt::format("add: a {} has no field '{}' (it takes: {})", kind, key,
-                                          fmt::join(allowed, ", ")),
-                              Code::usage_error);
+      return Status::failure(Code::usage_error,
+                             fmt::format("add: a {} has no field '{}' (it takes: {})", kind, key,
+                                         fmt::join(allowed, ", ")));
   }
   for (const std::string_view key : required_fields(kind)) {
     if (std::none_of(given.begin(), given.end(), [&](const auto& g) { return g.first == key; }))
-      throw PreconditionError(fmt::format("add: a {} needs its field '{}'", kind, key),
-                              Code::usage_error);
+      return Status::failure(Code::usage_error,
+                             fmt::format("add: a {} needs its field '{}'", kind, key));
+  }
+  return Status::success();
+}
+
+/// Builds the object and adds it with `add` (add_wall ... add_camera, whose refusals of an id
+/// or a reference come back as their Error).
+template <class Object, class Add>
+Result<EditSummary> build_and_add(Plan& plan, std::vector<Object> Plan::*list, Object base,
+                                  const std::string& id, const FieldValues& given, Add&& add) {
+  Result<Object> built = build(list, std::move(base), id, given);
+  if (!built) return built.error();
+  try {
+    return add(plan, std::move(built).value());
+  } catch (const PreconditionError& e) {
+    return e.error();
   }
 }
 
@@ -60,20 +78,20 @@ std::vector<std::string_view> required_fields(std::string_view kind) {
   });
 }
 
-EditSummary add_object(Plan& plan, std::string_view kind, const std::string& id,
-                       const FieldValues& fields) {
+Result<EditSummary> add_object(Plan& plan, std::string_view kind, const std::string& id,
+                               const FieldValues& fields) {
   if (std::find(std::begin(kAddableKinds), std::end(kAddableKinds), kind) == std::end(kAddableKinds))
-    throw PreconditionError(fmt::format("add: no kind of object is called '{}' (kinds: {})", kind,
-                                        fmt::join(kAddableKinds, ", ")),
-                            Code::usage_error);
-  check_fields(kind, fields);
-  if (kind == "level") return add_level(plan, build(&Plan::levels, Level{}, id, fields));
-  if (kind == "wall") return add_wall(plan, build(&Plan::walls, Wall{}, id, fields));
-  if (kind == "slab") return add_slab(plan, build(&Plan::slabs, Slab{}, id, fields));
-  if (kind == "light") return add_light(plan, build(&Plan::lights, Light{}, id, fields));
-  if (kind == "camera") return add_camera(plan, build(&Plan::cameras, Camera{}, id, fields));
+    return Result<EditSummary>::failure(
+        Code::usage_error, fmt::format("add: no kind of object is called '{}' (kinds: {})", kind,
+                                       fmt::join(kAddableKinds, ", ")));
+  if (const Status checked = check_fields(kind, fields); !checked) return checked.error();
+  if (kind == "level") return build_and_add(plan, &Plan::levels, Level{}, id, fields, add_level);
+  if (kind == "wall") return build_and_add(plan, &Plan::walls, Wall{}, id, fields, add_wall);
+  if (kind == "slab") return build_and_add(plan, &Plan::slabs, Slab{}, id, fields, add_slab);
+  if (kind == "light") return build_and_add(plan, &Plan::lights, Light{}, id, fields, add_light);
+  if (kind == "camera") return build_and_add(plan, &Plan::cameras, Camera{}, id, fields, add_camera);
   const Opening base = default_opening(*parse_enum<OpeningType>(kind));
-  return add_opening(plan, build(&Plan::openings, base, id, fields));
+  return build_and_add(plan, &Plan::openings, base, id, fields, add_opening);
 }
 
 }  // namespace roomcad

@@ -43,11 +43,11 @@ decltype(auto) with_default_object(std::string_view kind, Visit&& visit) {
 /// Adds an object of `kind` (one of kAddableKinds) with these fields, the others at the
 /// format's defaults (a door's or window's width, height and sill: default_opening). An empty
 /// `id` is generated (`wall-3`). Whether the plan stays valid is the caller's to judge.
-/// @throws PreconditionError (usage_error) naming the kind and field for an unknown kind, a
+/// @return what was added; or a usage_error naming the kind and field for an unknown kind, a
 ///         field the kind does not have, a missing required field or a value of the wrong type;
-///         as add_wall ... add_camera for a used id or an unknown wall or level. The plan is
-///         unchanged then. Cost O(n) in the plan's objects.
-EditSummary add_object(Plan& plan, std::string_view kind, const std::string& id,
-                       const FieldValues& fields);
+///         or add_wall's ... add_camera's error for a used id or an unknown wall or level. The
+///         plan is unchanged then. Never throws for its input. Cost O(n) in the plan's objects.
+[[nodiscard]] Result<EditSummary> add_object(Plan& plan, std::string_view kind,
+                                             const std::string& id, const FieldValues& fields);
 
 }  // namespace roomcad

@@ -123,10 +123,23 @@ EditSummary scale_all(Plan& plan, double factor, std::optional<Point2> about = s
 /// a wall renames its openings' references too.
 /// @param[in] verb  the command named in error messages ("set", or "add" when building a
 ///                   new object field by field)
-/// @throws PreconditionError naming the object, key and value, e.g.
-///         `set: wall 'w1' has no field 'colour' (did you mean 'color'?)`.
-EditSummary set_field(Plan& plan, std::string_view id, std::string_view key,
-                      std::string_view value, std::string_view verb = "set");
+/// @return what changed, or the error naming the object, key and value (the plan unchanged),
+///         e.g. `set: wall 'w1' has no field 'colour' (did you mean 'color'?)` (usage_error),
+///         an unknown id or a used one (precondition). Never throws for its input.
+[[nodiscard]] Result<EditSummary> set_field(Plan& plan, std::string_view id, std::string_view key,
+                                            std::string_view value, std::string_view verb = "set");
+
+/// Runs an edit of `plan` (a callable taking Plan& and returning what it changed or its
+/// Error), whether it returns its Error or throws it as PreconditionError (the typed edits
+/// above do, for their preconditions): the one place front ends turn both into a Result.
+template <class Edit>
+[[nodiscard]] Result<EditSummary> make_edit(Edit&& edit, Plan& plan) {
+  try {
+    return edit(plan);
+  } catch (const PreconditionError& e) {
+    return e.error();
+  }
+}
 
 /// @return the ids of the objects that differ between two versions of a plan that hold the
 ///         same objects in the same order ("site" first if the site differs), as an

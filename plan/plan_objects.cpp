@@ -34,10 +34,16 @@ std::optional<ObjectRef> find_object(const Plan& plan, std::string_view id) {
   return found;
 }
 
-ObjectRef require_object(const Plan& plan, std::string_view id, std::string_view verb) {
+Result<ObjectRef> lookup_object(const Plan& plan, std::string_view id, std::string_view verb) {
   if (const auto ref = find_object(plan, id)) return *ref;
-  throw PreconditionError(
-      fmt::format("{}: no object has id '{}' ({})", verb, id, some_ids(plan, 8)));
+  return Result<ObjectRef>::failure(
+      Code::precondition, fmt::format("{}: no object has id '{}' ({})", verb, id, some_ids(plan, 8)));
+}
+
+ObjectRef require_object(const Plan& plan, std::string_view id, std::string_view verb) {
+  Result<ObjectRef> found = lookup_object(plan, id, verb);
+  if (!found) throw PreconditionError(found.error());
+  return found.value();
 }
 
 std::string_view to_string(ObjectKind kind) {
@@ -85,10 +91,16 @@ void erase_object(Plan& plan, ObjectRef ref) {
   }
 }
 
-void require_unused_id(const Plan& plan, std::string_view id, std::string_view verb) {
+Status check_unused_id(const Plan& plan, std::string_view id, std::string_view verb) {
   if (const auto ref = find_object(plan, id))
-    throw PreconditionError(fmt::format("{}: id '{}' is already used by {} '{}'", verb, id,
-                                        kind_name(plan, *ref), id));
+    return Status::failure(Code::precondition, fmt::format("{}: id '{}' is already used by {} '{}'",
+                                                           verb, id, kind_name(plan, *ref), id));
+  return Status::success();
+}
+
+void require_unused_id(const Plan& plan, std::string_view id, std::string_view verb) {
+  if (const Status unused = check_unused_id(plan, id, verb); !unused)
+    throw PreconditionError(unused.error());
 }
 
 OpeningsByWall openings_by_wall(const Plan& plan) {

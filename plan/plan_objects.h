@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.h"
 #include "plan/plan.h"
 
 namespace roomcad {
@@ -62,8 +63,13 @@ decltype(auto) visit_object(PlanType& plan, ObjectRef ref, Visit&& visit) {
 /// @return the first object with this id, or nullopt. O(n).
 [[nodiscard]] std::optional<ObjectRef> find_object(const Plan& plan, std::string_view id);
 
-/// @return the object with this id.
-/// @throws PreconditionError "<verb>: no object has id '<id>'" naming a few existing ids.
+/// @return the object with this id, or a precondition error "<verb>: no object has id '<id>'"
+///         naming a few existing ids. O(n).
+[[nodiscard]] Result<ObjectRef> lookup_object(const Plan& plan, std::string_view id,
+                                              std::string_view verb);
+
+/// lookup_object for callers whose precondition is that the id exists.
+/// @throws PreconditionError with lookup_object's error.
 [[nodiscard]] ObjectRef require_object(const Plan& plan, std::string_view id,
                                        std::string_view verb);
 
@@ -76,7 +82,12 @@ decltype(auto) visit_object(PlanType& plan, ObjectRef ref, Visit&& visit) {
 /// Erases the object `ref` names (later indices of its list shift down by one).
 void erase_object(Plan& plan, ObjectRef ref);
 
-/// @throws PreconditionError "<verb>: id '<id>' is already used by <kind> '<id>'" if it is.
+/// @return success, or a precondition error "<verb>: id '<id>' is already used by <kind>
+///         '<id>'" if it is. O(n).
+[[nodiscard]] Status check_unused_id(const Plan& plan, std::string_view id, std::string_view verb);
+
+/// check_unused_id for callers whose precondition is a new id.
+/// @throws PreconditionError with check_unused_id's error.
 void require_unused_id(const Plan& plan, std::string_view id, std::string_view verb);
 
 }  // namespace roomcad

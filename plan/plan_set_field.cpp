@@ -21,19 +21,18 @@ std::string suggestion(const std::vector<std::string_view>& names, std::string_v
   return fmt::format(" (fields: {})", fmt::join(names, ", "));
 }
 
-/// Sets `key` of `object` (not its id). @return whether the object changed.
-/// @throws PreconditionError (usage_error) for an unknown field or a value of the wrong type.
+/// Sets `key` of `object` (not its id). @return whether the object changed, or a usage_error
+/// for an unknown field or a value of the wrong type (the object unchanged).
 template <class Object>
-bool set_in(Object& object, std::string_view what, std::string_view key, std::string_view value,
-            std::string_view verb) {
+Result<bool> set_in(Object& object, std::string_view what, std::string_view key,
+                    std::string_view value, std::string_view verb) {
   const Field<Object>* field = find_field<Object>(key);
   if (field == nullptr)
-    throw PreconditionError(fmt::format("{}: {} has no field '{}'{}", verb, what, key,
-                                        suggestion(field_names_of<Object>(), key)),
-                            Code::usage_error);
+    return Result<bool>::failure(Code::usage_error,
+                                 fmt::format("{}: {} has no field '{}'{}", verb, what, key,
+                                             suggestion(field_names_of<Object>(), key)));
   const Object old = object;
-  if (const Status set = set_field_text(object, *field, value, verb, what); !set)
-    throw PreconditionError(set.error());
+  if (const Status set = set_field_text(object, *field, value, verb, what); !set) return set.error();
   return object != old;
 }
 
@@ -57,16 +56,17 @@ std::vector<std::string> follow_rename(Plan& plan, ObjectKind kind,
   return changed;
 }
 
-/// Renames an object and what refers to it. @return the ids changed.
-std::vector<std::string> rename(Plan& plan, ObjectRef ref, std::string_view new_id,
-                                std::string_view verb) {
+/// Renames an object and what refers to it. @return the ids changed, or why the new id is
+/// refused (empty, or another object's).
+Result<std::vector<std::string>> rename(Plan& plan, ObjectRef ref, std::string_view new_id,
+                                        std::string_view verb) {
   std::string& id = id_of(plan, ref);
   if (new_id.empty())
-    throw PreconditionError(fmt::format("{}: {} '{}' field 'id' wants a non-empty id, got ''",
-                                        verb, kind_name(plan, ref), id),
-                            Code::usage_error);
-  if (new_id == id) return {};
-  require_unused_id(plan, new_id, verb);
+    return Result<std::vector<std::string>>::failure(
+        Code::usage_error, fmt::format("{}: {} '{}' field 'id' wants a non-empty id, got ''", verb,
+                                       kind_name(plan, ref), id));
+  if (new_id == id) return std::vector<std::string>{};
+  if (const Status unused = check_unused_id(plan, new_id, verb); !unused) return unused.error();
   std::vector<std::string> changed{std::string(new_id)};
   for (std::string& other : follow_rename(plan, ref.kind, id, new_id)) changed.push_back(other);
   id = new_id;
@@ -75,24 +75,29 @@ std::vector<std::string> rename(Plan& plan, ObjectRef ref, std::string_view new_
 
 }  // namespace
 
-EditSummary set_field(Plan& plan, std::string_view id, std::string_view key,
-                      std::string_view value, std::string_view verb) {
+Result<EditSummary> set_field(Plan& plan, std::string_view id, std::string_view key,
+                              std::string_view value, std::string_view verb) {
   EditSummary summary;
   const auto ref = find_object(plan, id);
   if (!ref && id == "site") {
-    if (set_in(plan.site, "the site", key, value, verb)) summary.changed.push_back("site");
+    const Result<bool> changed = set_in(plan.site, "the site", key, value, verb);
+    if (!changed) return changed.error();
+    if (*changed) summary.changed.push_back("site");
     return summary;
   }
-  const ObjectRef object = require_object(plan, id, verb);
+  const Result<ObjectRef> object = lookup_object(plan, id, verb);
+  if (!object) return object.error();
   if (key == "id") {
-    summary.changed = rename(plan, object, value, verb);
+    Result<std::vector<std::string>> renamed = rename(plan, *object, value, verb);
+    if (!renamed) return renamed.error();
+    summary.changed = std::move(renamed).value();
     return summary;
   }
-  const std::string what = fmt::format("{} '{}'", kind_name(plan, object), id);
-  const bool changed = visit_object(plan, object, [&](auto& o) {
-    return set_in(o, what, key, value, verb);
-  });
-  if (changed) summary.changed.push_back(std::string(id));
+  const std::string what = fmt::format("{} '{}'", kind_name(plan, *object), id);
+  const Result<bool> changed = visit_object(
+      plan, *object, [&](auto& o) { return set_in(o, what, key, value, verb); });
+  if (!changed) return changed.error();
+  if (*changed) summary.changed.push_back(std::string(id));
   return summary;
 }
 

@@ -75,10 +75,13 @@ void require_valid(const PyPlan& self, bool force, std::string_view verb) {
 
 /// Applies `edit` to a copy of the plan and keeps it unless it introduces errors (then raises
 /// edit_refused, unless `force`): what every `roomcad` edit command does (cli/edit_session.h).
+/// The edit's Error, returned or thrown (make_edit), is raised as roomcad.Error.
 template <class Edit>
 EditSummary apply_edit(PyPlan& self, bool force, Edit&& edit) {
   Plan edited = self.plan;
-  EditSummary summary = edit(edited);  // PreconditionError: edit_refused or usage_error
+  Result<EditSummary> made = make_edit(edit, edited);
+  if (!made) raise(made.error());
+  EditSummary summary = std::move(made).value();
   if (edited == self.plan) return summary;
   if (!force) {
     Report fresh;

@@ -14,11 +14,11 @@ namespace {
 glm::dvec3 to_glm(const Vec3& v) { return {v.x, v.y, v.z}; }
 Vec3 to_vec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
-std::array<glm::dvec3, 8> corners_of(const Bounds& b) {
+std::array<glm::dvec3, 8> corners_of(const Box3& b) {
   std::array<glm::dvec3, 8> out;
   for (int i = 0; i < 8; ++i) {
-    out[i] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-              (i & 4) ? b.max.z : b.min.z};
+    out[i] = {(i & 1) ? b.high[0] : b.low[0], (i & 2) ? b.high[1] : b.low[1],
+              (i & 4) ? b.high[2] : b.low[2]};
   }
   return out;
 }
@@ -43,11 +43,11 @@ glm::dmat4 perspective_reversed_z(double fov_deg, double aspect) {
 }
 
 /// Reversed-Z orthographic over the scene's depth range seen by `view` (never behind the eye).
-glm::dmat4 orthographic_reversed_z(const glm::dmat4& view, const Bounds& scene,
+glm::dmat4 orthographic_reversed_z(const glm::dmat4& view, const Box3& scene,
                                    double view_height, double aspect) {
   double near_d = 0.0;
   double far_d = 1.0;
-  if (!scene.is_empty()) {
+  if (!is_empty(scene)) {
     double lo = 1e300, hi = -1e300;
     for (const glm::dvec3& c : corners_of(scene)) {
       const double d = -(view * glm::dvec4(c, 1.0)).z;
@@ -96,7 +96,7 @@ std::optional<ViewPreset> parse_view_preset(std::string_view text) {
   return std::nullopt;
 }
 
-CameraMatrices make_camera_matrices(const Camera& camera, const Bounds& scene, double aspect) {
+CameraMatrices make_camera_matrices(const Camera& camera, const Box3& scene, double aspect) {
   CameraMatrices m;
   m.eye = to_glm(camera.eye);
   const glm::dvec3 to_target = to_glm(camera.target) - m.eye;
@@ -128,7 +128,7 @@ struct Framing {
 
 /// The smallest distance from `center` (backwards along the view) at which every corner of
 /// `scene` is inside the perspective frustum.
-double fitting_distance(const Bounds& scene, const Framing& f, const glm::dvec3& center) {
+double fitting_distance(const Box3& scene, const Framing& f, const glm::dvec3& center) {
   double distance = kPerspectiveNear;
   for (const glm::dvec3& c : corners_of(scene)) {
     const glm::dvec3 q = c - center;
@@ -142,7 +142,7 @@ double fitting_distance(const Bounds& scene, const Framing& f, const glm::dvec3&
 /// Moves the looked-at point so that the box's perspective image is centred in the picture
 /// (a box seen from above and aside projects lopsided around its centre's image). A few
 /// fixed-point steps; each measures the image's extent and shifts by half its imbalance.
-glm::dvec3 centred_target(const Bounds& scene, const Framing& f, glm::dvec3 center) {
+glm::dvec3 centred_target(const Box3& scene, const Framing& f, glm::dvec3 center) {
   for (int step = 0; step < 4; ++step) {
     const double distance = fitting_distance(scene, f, center);
     const glm::dvec3 eye = center - f.forward * distance;
@@ -162,7 +162,7 @@ glm::dvec3 centred_target(const Bounds& scene, const Framing& f, glm::dvec3 cent
 
 }  // namespace
 
-Camera frame_view(const Bounds& scene, ViewPreset preset, Projection projection,
+Camera frame_view(const Box3& scene, ViewPreset preset, Projection projection,
                   double fov_deg, double aspect) {
   const Direction dir = preset_direction(preset);
   Framing f;
@@ -171,13 +171,13 @@ Camera frame_view(const Bounds& scene, ViewPreset preset, Projection projection,
   f.up = glm::cross(f.right, dir.forward);
   f.tan_v = std::tan(glm::radians(fov_deg) / 2.0) / 1.05;
   f.tan_h = f.tan_v * aspect;
-  glm::dvec3 center = (scene.min + scene.max) / 2.0;
+  glm::dvec3 center = (low_corner(scene) + high_corner(scene)) / 2.0;
   double half_w = 0.0, half_h = 0.0;
   for (const glm::dvec3& c : corners_of(scene)) {
     half_w = std::max(half_w, std::abs(glm::dot(c - center, f.right)));
     half_h = std::max(half_h, std::abs(glm::dot(c - center, f.up)));
   }
-  double distance = glm::length(scene.max - scene.min) / 2.0 + 1.0;  // orthographic: outside
+  double distance = glm::length(high_corner(scene) - low_corner(scene)) / 2.0 + 1.0;  // orthographic: outside
   if (projection == Projection::perspective) {
     center = centred_target(scene, f, center);
     distance = fitting_distance(scene, f, center);
@@ -193,7 +193,7 @@ Camera frame_view(const Bounds& scene, ViewPreset preset, Projection projection,
   return cam;
 }
 
-Camera default_camera(const Bounds& scene, double aspect) {
+Camera default_camera(const Box3& scene, double aspect) {
   return frame_view(scene, ViewPreset::iso, Projection::perspective, 50.0, aspect);
 }
 

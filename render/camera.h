@@ -8,20 +8,16 @@
 
 #include <glm/glm.hpp>
 
+#include "core/box.h"
 #include "plan/plan.h"
 
 namespace roomcad {
 
-/// An axis-aligned box in world metres; empty when min > max on any axis.
-struct Bounds {
-  glm::dvec3 min{1e300};
-  glm::dvec3 max{-1e300};
-  [[nodiscard]] bool is_empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
-  void add(const glm::dvec3& p) {
-    min = glm::min(min, p);
-    max = glm::max(max, p);
-  }
-};
+/// The corners of a box (core/box.h) as the renderer's vectors.
+[[nodiscard]] inline glm::dvec3 low_corner(const Box3& b) { return {b.low[0], b.low[1], b.low[2]}; }
+[[nodiscard]] inline glm::dvec3 high_corner(const Box3& b) { return {b.high[0], b.high[1], b.high[2]}; }
+/// Grows `b` to hold `p`. O(1).
+inline void add_point(Box3& b, const glm::dvec3& p) { add_point(b, p.x, p.y, p.z); }
 
 /// The six fixed views and the south-west perspective one (`--view`).
 enum class ViewPreset { front, back, left, right, top, iso };
@@ -49,7 +45,7 @@ struct CameraMatrices {
 /// @param[in] camera  eye != target (else the view looks north from the eye)
 /// @param[in] scene   the model's bounds: the orthographic depth range is fitted to them
 /// @param[in] aspect  width / height of the image, > 0
-[[nodiscard]] CameraMatrices make_camera_matrices(const Camera& camera, const Bounds& scene,
+[[nodiscard]] CameraMatrices make_camera_matrices(const Camera& camera, const Box3& scene,
                                                   double aspect);
 
 /// The same camera for points given relative to `origin` (a scene's frame, scene.h): the view
@@ -63,10 +59,10 @@ struct CameraMatrices {
 /// front looks north (from -y), back south, left east (from -x), right west, top down (north
 /// up), iso from the south-west and above. Keeps `projection` and, for perspective, `fov_deg`.
 /// @pre !scene.is_empty()
-[[nodiscard]] Camera frame_view(const Bounds& scene, ViewPreset preset, Projection projection,
+[[nodiscard]] Camera frame_view(const Box3& scene, ViewPreset preset, Projection projection,
                                 double fov_deg, double aspect);
 
 /// The default camera: frame_view(scene, iso, perspective, 50 degrees, aspect).
-[[nodiscard]] Camera default_camera(const Bounds& scene, double aspect);
+[[nodiscard]] Camera default_camera(const Box3& scene, double aspect);
 
 }  // namespace roomcad

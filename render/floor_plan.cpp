@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/box.h"
 #include "render/detail/plan_paper.h"
 #include "render/detail/scale_bar.h"
 #include "geometry/rooms.h"
@@ -27,26 +28,18 @@ constexpr double kOverallDimensionMm = 18.0;
 constexpr double kMarkMm = 2.0;       // half the side of a point finding's box; a box's margin
 constexpr double kMarkTextMm = 2.5;   // size of a finding's code
 
-struct Box {
-  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-  void add(Point2 p) {
-    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
-  }
-  [[nodiscard]] bool empty() const { return x0 > x1; }
-};
-
 /// The extent of the wall footprints, or of the site when there are no walls.
-Box plan_extent(const Plan& plan, const Joins& joins) {
-  Box box;
+Box2 plan_extent(const Plan& plan, const Joins& joins) {
+  Box2 box = empty_box2();
   for (std::size_t i = 0; i < plan.walls.size(); ++i) {
     const Wall& w = plan.walls[i];
     if (!(detail::length(w.to - w.from) > 0.0 && w.thickness > 0.0)) continue;
-    for (const Point2& p : wall_footprint(plan, joins, i)) box.add(p);
+    for (const Point2& p : wall_footprint(plan, joins, i)) add_point(box, p.x, p.y);
   }
-  if (box.empty()) {
+  if (is_empty(box)) {
     const Site& s = plan.site;
-    box.add(s.origin);
-    box.add({s.origin.x + s.cells[0] * s.cell_size, s.origin.y + s.cells[1] * s.cell_size});
+    add_point(box, s.origin.x, s.origin.y);
+    add_point(box, s.origin.x + s.cells[0] * s.cell_size, s.origin.y + s.cells[1] * s.cell_size);
   }
   return box;
 }
@@ -142,17 +135,17 @@ void for_each_point(Drawing& d, F f) {
 /// Moves everything drawn so that it starts kSheetMarginMm from the top-left corner, and sizes
 /// the page to it plus the footer: door swings and dimensions reach beyond the walls.
 void fit_page(FloorPlanDrawing& d) {
-  Box box;
+  Box2 box = empty_box2();
   for_each_point(std::as_const(d), [&box](const Point2& p, double pad) {
-    box.add(p - Point2{pad, pad});
-    box.add(p + Point2{pad, pad});
+    add_point(box, p.x - pad, p.y - pad);
+    add_point(box, p.x + pad, p.y + pad);
   });
-  if (box.empty()) box.add({0.0, 0.0});
-  const Point2 shift{kSheetMarginMm - box.x0, kSheetMarginMm - box.y0};
+  if (is_empty(box)) add_point(box, 0.0, 0.0);
+  const Point2 shift{kSheetMarginMm - box.min_x, kSheetMarginMm - box.min_y};
   for_each_point(d, [shift](Point2& p, double) { p = p + shift; });
   d.origin = d.origin + shift;
-  d.width = box.x1 - box.x0 + 2.0 * kSheetMarginMm;
-  d.height = box.y1 - box.y0 + 2.0 * kSheetMarginMm + kSheetFooterMm;
+  d.width = box.max_x - box.min_x + 2.0 * kSheetMarginMm;
+  d.height = box.max_y - box.min_y + 2.0 * kSheetMarginMm + kSheetFooterMm;
 }
 
 }  // namespace
@@ -170,20 +163,20 @@ Status check_floor_plan_options(const FloorPlanOptions& o) {
 FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& options) {
   throw_if_failed(check_floor_plan_options(options), "draw_floor_plan");
   const Joins joins = find_joins(plan);
-  const Box box = plan_extent(plan, joins);
+  const Box2 box = plan_extent(plan, joins);
   // Placed anywhere for now: fit_page moves everything onto the page once it is all drawn.
-  const PaperMap map{.mm_per_m = 1000.0 / options.scale, .x_min = box.x0, .y_max = box.y1};
+  const PaperMap map{.mm_per_m = 1000.0 / options.scale, .x_min = box.min_x, .y_max = box.max_y};
   FloorPlanDrawing out;
   out.mm_per_m = map.mm_per_m;
   out.origin = map.to_paper({0.0, 0.0});
   const std::vector<Room> rooms = find_rooms(plan);
   add_rooms(rooms, map, out);
   detail::draw_plan_walls(plan, joins, options, map, out);
-  add_wall_dimensions(plan, rooms, {0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)}, map, out);
+  add_wall_dimensions(plan, rooms, {0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)}, map, out);
   if (!plan.walls.empty()) {
-    detail::add_dimension({box.x0, box.y0}, {box.x1, box.y0}, {0.0, -1.0}, kOverallDimensionMm, map,
+    detail::add_dimension({box.min_x, box.min_y}, {box.max_x, box.min_y}, {0.0, -1.0}, kOverallDimensionMm, map,
                           out);
-    detail::add_dimension({box.x0, box.y0}, {box.x0, box.y1}, {-1.0, 0.0}, kOverallDimensionMm, map,
+    detail::add_dimension({box.min_x, box.min_y}, {box.min_x, box.max_y}, {-1.0, 0.0}, kOverallDimensionMm, map,
                           out);
   }
   add_marks(options.marks, map, out);

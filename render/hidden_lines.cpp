@@ -7,7 +7,8 @@
 #include <tbb/parallel_for.h>
 
 #include "render/camera.h"
-#include "render/detail/box_grid.h"
+#include "core/box.h"
+#include "geometry/box_grid.h"
 #include "render/detail/feature_edges.h"
 #include "render/detail/merge_segments.h"
 #include "render/line_drawing.h"
@@ -15,7 +16,6 @@
 namespace roomcad {
 namespace {
 
-using detail::Box2;
 using detail::Edge3;
 using detail::Triangle3;
 
@@ -55,12 +55,11 @@ bool clip_to_near(const Projector& pr, Edge3& e) {
 
 /// The picture-plane box of a triangle's part in front of the near plane (empty if none).
 Box2 occluder_box(const Projector& pr, const Triangle3& t) {
-  Box2 box;
+  Box2 box = empty_box2();
   for (int i = 0; i < 3; ++i) {
     Edge3 e{t[i], t[(i + 1) % 3]};
     if (!clip_to_near(pr, e)) continue;
-    box.add(pr.project(e.a));
-    box.add(pr.project(e.b));
+    for (const Point2 p : {pr.project(e.a), pr.project(e.b)}) add_point(box, p.x, p.y);
   }
   return box;
 }
@@ -71,17 +70,15 @@ struct Scene2 {
   std::vector<Edge3> edges;         ///< clipped
   std::vector<Segment2> projected;  ///< one per edge
   std::vector<Triangle3> faces;     ///< occluders (not edge-on)
-  std::vector<Box2> face_boxes;
-  detail::BoxGrid edge_grid;
-  detail::BoxGrid face_grid;
+  BoxGrid edge_grid;  ///< of `projected` (Box2::index: the edge)
+  BoxGrid face_grid;  ///< of the faces' picture boxes (Box2::index: the face)
   double far_reach = 1.0;  ///< orthographic: length of the test segment towards the viewer
 };
 
-Box2 segment_box(const Segment2& s) {
-  Box2 b;
-  b.add(s.a);
-  b.add(s.b);
-  return b;
+/// @return the box of s grown by `margin` on every side, tagged `index`.
+Box2 segment_box(const Segment2& s, std::size_t index = 0, double margin = 0.0) {
+  return {std::min(s.a.x, s.b.x) - margin, std::min(s.a.y, s.b.y) - margin,
+          std::max(s.a.x, s.b.x) + margin, std::max(s.a.y, s.b.y) + margin, index};
 }
 
 /// @return the parameters along s where other feature edges cross or touch its projection.
@@ -91,14 +88,14 @@ std::vector<double> split_parameters(const Scene2& sc, std::size_t i) {
   const double len2 = d.x * d.x + d.y * d.y;
   const double tol = 1e-9 * std::sqrt(len2) + 1e-12;
   std::vector<double> ts{0.0, 1.0};
-  std::vector<std::uint32_t> near;
-  sc.edge_grid.query(segment_box(s), near);
+  // The box grown by the tolerance: an end of another edge within it of s splits s.
+  const std::vector<std::size_t> near = sc.edge_grid.find(segment_box(s, 0, tol));
   const auto on_s = [&](Point2 p) {  // parameter of p if it lies on s, else -1
     const Point2 ap{p.x - s.a.x, p.y - s.a.y};
     if (std::abs(ap.x * d.y - ap.y * d.x) > tol * std::sqrt(len2)) return -1.0;
     return (ap.x * d.x + ap.y * d.y) / len2;
   };
-  for (const std::uint32_t j : near) {
+  for (const std::size_t j : near) {
     if (j == i) continue;
     const Segment2& o = sc.projected[j];
     const Point2 e{o.b.x - o.a.x, o.b.y - o.a.y};
@@ -122,7 +119,7 @@ std::vector<double> split_parameters(const Scene2& sc, std::size_t i) {
 }
 
 /// @return whether the point of edge `e` at picture parameter s is hidden by some face.
-bool is_hidden_at(const Scene2& sc, const Edge3& e, double s, std::vector<std::uint32_t>& near) {
+bool is_hidden_at(const Scene2& sc, const Edge3& e, double s, std::vector<std::size_t>& near) {
   const Projector& pr = sc.projector;
   double t = s;
   if (pr.perspective) {  // picture parameter -> edge parameter (1 / depth is linear)
@@ -133,12 +130,8 @@ bool is_hidden_at(const Scene2& sc, const Edge3& e, double s, std::vector<std::u
   const glm::dvec3 target = pr.perspective ? pr.eye : m - pr.forward * sc.far_reach;
   const glm::dvec3 start = m + glm::normalize(target - m) * kOcclusionOffset;
   const Point2 p = pr.project(m);
-  Box2 at;
-  at.add(p);
-  sc.face_grid.query(at, near);
-  for (const std::uint32_t f : near) {
-    const Box2& b = sc.face_boxes[f];
-    if (p.x < b.min.x || p.x > b.max.x || p.y < b.min.y || p.y > b.max.y) continue;
+  sc.face_grid.find({p.x, p.y, p.x, p.y, 0}, near);  // faces whose box holds p
+  for (const std::size_t f : near) {
     if (detail::segment_meets_triangle(start, target, sc.faces[f])) return true;
   }
   return false;
@@ -156,7 +149,7 @@ EdgeLines classify_edge(const Scene2& sc, std::size_t i) {
     return Point2{s.a.x + (s.b.x - s.a.x) * t, s.a.y + (s.b.y - s.a.y) * t};
   };
   EdgeLines out;
-  std::vector<std::uint32_t> near;
+  std::vector<std::size_t> near;
   double run_start = 0.0;
   int run_hidden = -1;
   for (std::size_t k = 0; k + 1 < ts.size(); ++k, ++out.pieces) {
@@ -190,13 +183,7 @@ std::vector<Triangle3> collect_occluders(const Model& model, const Parts& parts,
   return faces;
 }
 
-Box2 picture_bounds(const Scene2& sc) {
-  Box2 all;
-  for (const Segment2& s : sc.projected) all = detail::merge_boxes(all, segment_box(s));
-  for (const Box2& b : sc.face_boxes) all = detail::merge_boxes(all, b);
-  if (all.is_empty()) all.add({0.0, 0.0});
-  return all;
-}
+
 
 }  // namespace
 
@@ -205,26 +192,26 @@ HiddenLineResult remove_hidden_lines(const Model& model, const Parts& parts, con
   std::vector<Edge3> edges = collect_edges(model, parts);
   std::erase_if(edges, [&](Edge3& e) { return !clip_to_near(pr, e); });
   std::vector<Triangle3> faces = collect_occluders(model, parts, view);
-  std::vector<Box2> boxes;
-  for (const Triangle3& t : faces) boxes.push_back(occluder_box(pr, t));
   std::vector<Segment2> projected;
   for (const Edge3& e : edges) projected.push_back({pr.project(e.a), pr.project(e.b)});
-  Scene2 sc{pr, std::move(edges), std::move(projected), std::move(faces), std::move(boxes),
-            detail::BoxGrid({}, 1), detail::BoxGrid({}, 1)};
-  const Box2 bounds = picture_bounds(sc);
-  sc.edge_grid = detail::BoxGrid(bounds, sc.edges.size());
-  sc.face_grid = detail::BoxGrid(bounds, sc.faces.size());
-  Bounds extent;
-  for (std::uint32_t i = 0; i < sc.edges.size(); ++i) {
-    sc.edge_grid.insert(segment_box(sc.projected[i]), i);
-    extent.add(sc.edges[i].a);
-    extent.add(sc.edges[i].b);
+  std::vector<Box2> edge_boxes, face_boxes;
+  for (std::size_t i = 0; i < projected.size(); ++i)
+    edge_boxes.push_back(segment_box(projected[i], i));
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    Box2 box = occluder_box(pr, faces[f]);
+    box.index = f;
+    if (!is_empty(box)) face_boxes.push_back(box);
   }
-  for (std::uint32_t f = 0; f < sc.faces.size(); ++f) {
-    if (!sc.face_boxes[f].is_empty()) sc.face_grid.insert(sc.face_boxes[f], f);
-    for (const glm::dvec3& c : sc.faces[f]) extent.add(c);
+  Scene2 sc{pr, std::move(edges), std::move(projected), std::move(faces),
+            BoxGrid(std::move(edge_boxes)), BoxGrid(std::move(face_boxes))};
+  Box3 extent = empty_box3();
+  for (const Edge3& e : sc.edges) {
+    add_point(extent, e.a);
+    add_point(extent, e.b);
   }
-  if (!extent.is_empty()) sc.far_reach = 2.0 * glm::length(extent.max - extent.min) + 1.0;
+  for (const Triangle3& t : sc.faces)
+    for (const glm::dvec3& c : t) add_point(extent, c);
+  if (!is_empty(extent)) sc.far_reach = 2.0 * glm::length(high_corner(extent) - low_corner(extent)) + 1.0;
   std::vector<EdgeLines> per_edge(sc.edges.size());
   tbb::parallel_for(std::size_t{0}, sc.edges.size(),
                     [&](std::size_t i) { per_edge[i] = classify_edge(sc, i); });

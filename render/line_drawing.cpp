@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "render/detail/box_grid.h"
+#include "core/box.h"
 #include "render/detail/scale_bar.h"
 
 namespace roomcad {
@@ -33,12 +33,12 @@ struct PictureToPaper {
 };
 
 /// Liang-Barsky clip of a segment to a box. @return false if nothing is inside.
-bool clip_to_box(Segment2& s, const detail::Box2& box) {
+bool clip_to_box(Segment2& s, const Box2& box) {
   double t0 = 0.0, t1 = 1.0;
   const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
   const std::array<double, 4> p{-dx, dx, -dy, dy};
-  const std::array<double, 4> q{s.a.x - box.min.x, box.max.x - s.a.x, s.a.y - box.min.y,
-                                box.max.y - s.a.y};
+  const std::array<double, 4> q{s.a.x - box.min_x, box.max_x - s.a.x, s.a.y - box.min_y,
+                                box.max_y - s.a.y};
   for (int i = 0; i < 4; ++i) {
     if (p[i] == 0.0) {
       if (q[i] < 0.0) return false;
@@ -56,41 +56,37 @@ bool clip_to_box(Segment2& s, const detail::Box2& box) {
 }
 
 void map_lines(const std::vector<Segment2>& in, const PictureToPaper& m,
-               const detail::Box2* frame, std::vector<PaperLine>& out) {
+               const Box2* frame, std::vector<PaperLine>& out) {
   for (Segment2 s : in) {
     if (frame && !clip_to_box(s, *frame)) continue;
     out.push_back({m.map(s.a), m.map(s.b)});
   }
 }
 
-detail::Box2 picture_box(const HiddenLineResult& r) {
-  detail::Box2 box;
-  for (const auto* lines : {&r.visible, &r.hidden}) {
-    for (const Segment2& s : *lines) {
-      box.add(s.a);
-      box.add(s.b);
-    }
-  }
-  if (box.is_empty()) box.add({0.0, 0.0});
+Box2 picture_box(const HiddenLineResult& r) {
+  Box2 box = empty_box2();
+  for (const auto* lines : {&r.visible, &r.hidden})
+    for (const Segment2& s : *lines)
+      for (const Point2 p : {s.a, s.b}) add_point(box, p.x, p.y);
+  if (is_empty(box)) add_point(box, 0.0, 0.0);
   return box;
 }
 
 /// Orthographic layout: the picture at 1:scale with margins, a scale bar and the title below.
-PictureToPaper lay_out_to_scale(const detail::Box2& box, double scale, LineDrawing& out) {
-  PictureToPaper m{.mm_per_unit = 1000.0 / scale, .origin = {box.min.x, box.max.y},
+PictureToPaper lay_out_to_scale(const Box2& box, double scale, LineDrawing& out) {
+  PictureToPaper m{.mm_per_unit = 1000.0 / scale, .origin = {box.min_x, box.max_y},
                    .left = kSheetMarginMm, .top = kSheetMarginMm};
-  out.width = std::max(120.0, (box.max.x - box.min.x) * m.mm_per_unit + 2.0 * kSheetMarginMm);
-  out.height = (box.max.y - box.min.y) * m.mm_per_unit + 2.0 * kSheetMarginMm + kSheetFooterMm;
+  out.width = std::max(120.0, (box.max_x - box.min_x) * m.mm_per_unit + 2.0 * kSheetMarginMm);
+  out.height = (box.max_y - box.min_y) * m.mm_per_unit + 2.0 * kSheetMarginMm + kSheetFooterMm;
   detail::add_scale_bar(out.width, out.height, m.mm_per_unit, {out.scale_bar_black, out.scale_bar_white, out.labels});
   return m;
 }
 
 /// Perspective layout: the field of view (vertical fov, aspect 3:2) fills a fixed page.
-PictureToPaper lay_out_frame(const LineView& view, detail::Box2& frame, LineDrawing& out) {
+PictureToPaper lay_out_frame(const LineView& view, Box2& frame, LineDrawing& out) {
   const double half_h = std::tan(view.fov_deg * M_PI / 360.0);
   const double half_w = half_h * kPerspectiveAspect;
-  frame.add({-half_w, -half_h});
-  frame.add({half_w, half_h});
+  frame = {-half_w, -half_h, half_w, half_h, 0};
   PictureToPaper m{.mm_per_unit = kPerspectiveWidthMm / (2.0 * half_w), .origin = {-half_w, half_h},
                    .left = kSheetMarginMm, .top = kSheetMarginMm};
   out.width = kPerspectiveWidthMm + 2.0 * kSheetMarginMm;
@@ -143,11 +139,11 @@ LineDrawing draw_line_view(const Model& model, const LineView& view,
   }
   LineDrawing out;
   out.stats = remove_hidden_lines(model, options.parts, view);
-  detail::Box2 frame;
+  Box2 frame = empty_box2();
   const PictureToPaper m = view.perspective ? lay_out_frame(view, frame, out)
                                             : lay_out_to_scale(picture_box(out.stats),
                                                                options.scale, out);
-  const detail::Box2* clip = view.perspective ? &frame : nullptr;
+  const Box2* clip = view.perspective ? &frame : nullptr;
   map_lines(out.stats.visible, m, clip, out.visible);
   if (options.hidden == HiddenLines::dashed) map_lines(out.stats.hidden, m, clip, out.hidden);
   const std::string scale_text =

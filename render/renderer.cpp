@@ -263,8 +263,8 @@ Status check_render_options(const RenderOptions& o) {
 
 CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options) {
   const double aspect = static_cast<double>(options.width) / options.height;
-  Bounds bounds = scene.bounds;
-  if (bounds.is_empty()) bounds.add(glm::dvec3(0.0));  // nothing to frame: look at the origin
+  Box3 bounds = scene.bounds;
+  if (is_empty(bounds)) add_point(bounds, glm::dvec3(0.0));  // nothing to frame: look at the origin
   const Camera camera =
       options.camera ? *options.camera
                      : frame_view(bounds, options.view, options.view_projection,

@@ -46,13 +46,13 @@ glm::vec3 to_vec3f(const OpenMesh::Vec3d& p) {
 
 /// The centre of the bounding box of the meshes' vertices, or 0 when they have none.
 glm::dvec3 centre_of(const std::vector<std::pair<const SolidMesh*, bool>>& meshes) {
-  Bounds box;
+  Box3 box = empty_box3();
   for (const auto& entry : meshes)
     for (const auto vh : entry.first->vertices()) {
       const OpenMesh::Vec3d& p = entry.first->point(vh);
-      box.add({p[0], p[1], p[2]});
+      add_point(box, {p[0], p[1], p[2]});
     }
-  return box.is_empty() ? glm::dvec3(0.0) : (box.min + box.max) / 2.0;
+  return is_empty(box) ? glm::dvec3(0.0) : (low_corner(box) + high_corner(box)) / 2.0;
 }
 
 /// Opens a new cluster when the current one is full (or there is none).
@@ -73,8 +73,8 @@ void push_triangle(Scene& scene, const std::array<OpenMesh::Vec3d, 3>& corners,
     const glm::dvec3 world(c[0], c[1], c[2]);
     const glm::vec3 local(world - scene.origin);
     scene.corners.push_back(local);
-    cluster.bounds.add(glm::dvec3(local));
-    scene.bounds.add(world);
+    add_point(cluster.bounds, glm::dvec3(local));
+    add_point(scene.bounds, world);
   }
   scene.normals.push_back(normal);
   ++cluster.count;

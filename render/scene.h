@@ -24,7 +24,7 @@ namespace roomcad {
 struct Cluster {
   std::uint32_t first = 0;
   std::uint32_t count = 0;
-  Bounds bounds;  ///< relative to the scene's origin
+  Box3 bounds = empty_box3();  ///< relative to the scene's origin
 };
 
 /// Triangles in metres relative to `origin`, the centre of the model (float: positions within
@@ -40,7 +40,7 @@ struct Scene {
   std::vector<FaceKind> kinds;            ///< 1 per triangle
   std::vector<std::uint8_t> two_sided;    ///< 1 per triangle: 1 = never back-face culled
   std::vector<Cluster> clusters;          ///< cover all triangles, in order
-  Bounds bounds;                          ///< of all triangles, world metres; empty if none
+  Box3 bounds = empty_box3();             ///< of all triangles, world metres; empty if none
   glm::dvec3 origin{0.0};                 ///< world position of the corners' (0, 0, 0)
 
   [[nodiscard]] std::size_t triangle_count() const { return normals.size(); }

@@ -23,16 +23,16 @@ struct LightFrame {
   double half_x = 1.0, half_y = 1.0, near_d = 0.0, far_d = 1.0;
 };
 
-LightFrame fit_light_frame(const Bounds& scene, const glm::dvec3& to_light) {
-  const glm::dvec3 center = (scene.min + scene.max) / 2.0;
-  const double radius = glm::length(scene.max - scene.min) / 2.0 + 1.0;
+LightFrame fit_light_frame(const Box3& scene, const glm::dvec3& to_light) {
+  const glm::dvec3 center = (low_corner(scene) + high_corner(scene)) / 2.0;
+  const double radius = glm::length(high_corner(scene) - low_corner(scene)) / 2.0 + 1.0;
   const glm::dvec3 up = std::abs(to_light.z) < 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
   LightFrame f;
   f.view = glm::lookAtRH(center + to_light * radius, center, up);
   double lo = 1e300, hi = -1e300, hx = 0.0, hy = 0.0;
   for (int i = 0; i < 8; ++i) {
-    const glm::dvec3 c((i & 1) ? scene.max.x : scene.min.x, (i & 2) ? scene.max.y : scene.min.y,
-                       (i & 4) ? scene.max.z : scene.min.z);
+    const glm::dvec3 c((i & 1) ? scene.high[0] : scene.low[0], (i & 2) ? scene.high[1] : scene.low[1],
+                       (i & 4) ? scene.high[2] : scene.low[2]);
     const glm::dvec4 v = f.view * glm::dvec4(c, 1.0);
     hx = std::max(hx, std::abs(v.x));
     hy = std::max(hy, std::abs(v.y));
@@ -92,10 +92,12 @@ void detail::render_shadow_map_into(const Scene& scene, const Light& light, int 
   }
   map.to_light = to_shading_light(light).to_light;
   const glm::dvec3 to_light(map.to_light);
-  if (scene.bounds.is_empty()) return;
-  Bounds local = scene.bounds;  // the map looks at the scene's corners, in the scene's frame
-  local.min -= scene.origin;
-  local.max -= scene.origin;
+  if (is_empty(scene.bounds)) return;
+  Box3 local = scene.bounds;  // the map looks at the scene's corners, in the scene's frame
+  for (int k = 0; k < 3; ++k) {
+    local.low[std::size_t(k)] -= scene.origin[k];
+    local.high[std::size_t(k)] -= scene.origin[k];
+  }
   const LightFrame frame = fit_light_frame(local, to_light);
   map.light_view_projection = glm::mat4(light_projection(frame) * frame.view);
   map.light_rotation = glm::mat3(glm::dmat3(frame.view));

@@ -24,7 +24,7 @@ detail::FlatTriangle flatten(const ScreenTriangle& s) {
     q[c] = {static_cast<double>(s.x[c]) / kSubpixelScale,
             static_cast<double>(s.y[c]) / kSubpixelScale, static_cast<double>(s.depth[c])};
     out.p[c] = {q[c].x, q[c].y};
-    out.box.add(out.p[c]);
+    add_point(out.box, out.p[c].x, out.p[c].y);
   }
   // depth = z0 + a (x - x0) + b (y - y0), solved from the other two corners (set-up rejects
   // triangles of zero area, so det != 0)

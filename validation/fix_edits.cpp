@@ -23,6 +23,13 @@ std::string shell_word(std::string_view word) {
   return out + '\'';
 }
 
+/// set_field, whose refusal breaks apply_fix_edits' precondition.
+void set_or_throw(Plan& plan, const std::string& id, const std::string& key,
+                  const std::string& value, std::string_view verb) {
+  if (const Result<EditSummary> set = set_field(plan, id, key, value, verb); !set)
+    throw PreconditionError(set.error());
+}
+
 void apply_add(Plan& plan, const FixEdit& edit) {
   const auto field = [&](std::string_view key) -> const std::string* {
     for (const auto& [k, v] : edit.fields)
@@ -39,7 +46,7 @@ void apply_add(Plan& plan, const FixEdit& edit) {
   o.wall = *field("wall");
   add_opening(plan, o);
   for (const auto& [key, value] : edit.fields)
-    if (key != "type" && key != "wall") set_field(plan, edit.id, key, value, "add");
+    if (key != "type" && key != "wall") set_or_throw(plan, edit.id, key, value, "add");
 }
 
 }  // namespace
@@ -48,7 +55,7 @@ void apply_fix_edits(Plan& plan, const std::vector<FixEdit>& edits) {
   for (const FixEdit& edit : edits) {
     switch (edit.op) {
       case FixEdit::Op::set:
-        for (const auto& [key, value] : edit.fields) set_field(plan, edit.id, key, value);
+        for (const auto& [key, value] : edit.fields) set_or_throw(plan, edit.id, key, value, "set");
         break;
       case FixEdit::Op::add:
         apply_add(plan, edit);

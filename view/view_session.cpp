@@ -64,6 +64,11 @@ void ViewSession::set_message(std::string text) {
   ++message_count_;
 }
 
+Status ViewSession::refuse(Code code, std::string text) {
+  set_message(std::move(text));
+  return Status::failure(code, message_);
+}
+
 void ViewSession::replace_plan(Plan next) {
   undo_.push_back(std::move(plan_));
   if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
@@ -74,30 +79,28 @@ void ViewSession::replace_plan(Plan next) {
   if (selected_ && !object_kind(plan_, *selected_)) selected_.reset();
 }
 
-bool ViewSession::apply(std::string_view what, const Edit& edit) {
+Status ViewSession::apply(std::string_view what, const Edit& edit) {
   Plan next = plan_;
-  try {
-    edit(next);
-  } catch (const PreconditionError& e) {
-    set_message(fmt::format("{}: not done: {}", what, e.what()));
-    return false;
-  }
-  if (next == plan_) {
-    set_message(fmt::format("{}: nothing changed", what));
-    return false;
-  }
+  const Result<EditSummary> made = make_edit(edit, next);
+  if (!made) return refuse(made.code(), fmt::format("{}: not done: {}", what, made.message()));
+  if (next == plan_) return refuse(Code::edit_refused, fmt::format("{}: nothing changed", what));
   const Report before = report_;
   replace_plan(std::move(next));
   const Report fresh = introduced_errors(before, report_);
   set_message(fresh.ok() ? std::string(what)
                          : fmt::format("{}: introduces {} (in red); Ctrl+Z undoes", what,
                                        error_count(fresh)));
-  return true;
+  return Status::success();
 }
 
-bool ViewSession::move_selection(int dx_cells, int dy_cells) {
+namespace {
+/// The failure of an action on the selection when there is none (the window says nothing).
+Status nothing_selected() { return Status::failure(Code::usage_error, "nothing is selected"); }
+}  // namespace
+
+Status ViewSession::move_selection(int dx_cells, int dy_cells) {
   pending_cascade_.reset();
-  if (!selected_) return false;
+  if (!selected_) return nothing_selected();
   const std::string id = *selected_;
   const double cell = plan_.site.cell_size;
   if (object_kind(plan_, id) == std::optional<std::string_view>("door") ||
@@ -111,36 +114,33 @@ bool ViewSession::move_selection(int dx_cells, int dy_cells) {
                [&](Plan& p) { return move_object(p, id, by); });
 }
 
-bool ViewSession::rotate_selection(double degrees) {
+Status ViewSession::rotate_selection(double degrees) {
   pending_cascade_.reset();
-  if (!selected_) return false;
+  if (!selected_) return nothing_selected();
   const std::string id = *selected_;
   return apply(fmt::format("turned {} by {} degrees", id, degrees),
                [&](Plan& p) { return rotate_object(p, id, degrees); });
 }
 
-bool ViewSession::delete_selection() {
-  if (!selected_) return false;
+Status ViewSession::delete_selection() {
+  if (!selected_) return nothing_selected();
   const std::string id = *selected_;
   const std::vector<std::string> hosted = dependent_objects(plan_, id);
   const bool confirmed = pending_cascade_ == id;
   pending_cascade_.reset();
   if (!hosted.empty() && !confirmed) {
     pending_cascade_ = id;
-    set_message(fmt::format("{} holds {}: press Delete again to delete them with it", id,
-                            fmt::join(hosted, ", ")));
-    return false;
+    return refuse(Code::edit_refused,
+                  fmt::format("{} holds {}: press Delete again to delete them with it", id,
+                              fmt::join(hosted, ", ")));
   }
   return apply(fmt::format("deleted {}", hosted.empty() ? id : fmt::format("{} and {}", id, fmt::join(hosted, ", "))),
                [&](Plan& p) { return remove_object(p, id, RemoveOptions{.cascade = confirmed}); });
 }
 
-bool ViewSession::undo() {
+Status ViewSession::undo() {
   pending_cascade_.reset();
-  if (undo_.empty()) {
-    set_message("nothing to undo");
-    return false;
-  }
+  if (undo_.empty()) return refuse(Code::usage_error, "nothing to undo");
   plan_ = std::move(undo_.back());
   undo_.pop_back();
   report_ = validate(plan_);
@@ -148,7 +148,7 @@ bool ViewSession::undo() {
   ++revision_;
   if (selected_ && !object_kind(plan_, *selected_)) selected_.reset();
   set_message("undone");
-  return true;
+  return Status::success();
 }
 
 }  // namespace roomcad

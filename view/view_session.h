@@ -76,45 +76,55 @@ class ViewSession {
   /// Selects the next object in plan order (walls, openings, lights, cameras), wrapping.
   void select_next();
 
+  // The actions below return success when done (the plan changed, the file written), else
+  // the Error why not: usage_error (nothing selected, nothing to undo or keep), edit_refused
+  // (an edit that cannot be made or changes nothing, a plan with errors or a file changed on
+  // disk not saved over), lock_timeout, or the reading or writing error of the file. The
+  // window shows message() either way.
+
   /// Moves the selection by whole site cells (dx east, dy north); an opening slides along its
-  /// wall by dx cells (dy if dx is 0). @return true if the plan changed.
-  bool move_selection(int dx_cells, int dy_cells);
+  /// wall by dx cells (dy if dx is 0).
+  Status move_selection(int dx_cells, int dy_cells);
   /// Turns the selection counter-clockwise by `degrees` (plan_edit's rotate_object).
-  bool rotate_selection(double degrees);
+  Status rotate_selection(double degrees);
   /// Deletes the selection. A wall with openings is refused with a message the first time;
   /// a second delete of the same wall in a row deletes it with its openings.
-  bool delete_selection();
-  /// Restores the plan before the last change. @return false when there is nothing to undo.
-  bool undo();
+  Status delete_selection();
+  /// Restores the plan before the last change.
+  Status undo();
   /// Validates and, without errors, writes the canonical file atomically, holding the plan's
   /// lock from checking that the file on disk is still the one the edits start from to the
   /// rename. A file changed on disk meanwhile, or a conflict already shown, is not written
   /// over: the conflict's choices are shown instead.
-  /// @return true if written; otherwise the message says why (errors, the lock held by another
-  ///         editor for longer than the lock wait, the conflict, an I/O error).
-  bool save();
+  /// Not written: the plan's errors, the lock held by another editor for longer than the lock
+  /// wait, the conflict, an I/O error.
+  Status save();
   /// Looks at the file: if it changed on disk since it was last loaded or saved (its bytes, not
   /// only its time), reloads it when the window holds no unsaved edits, else enters (or
-  /// updates) the conflict. A file that does not read as a plan is reported and the plan shown
-  /// is kept. @return true if the plan changed. O(1) (one stat) while the file is untouched.
-  bool reload_if_changed();
+  /// updates) the conflict. O(1) (one stat) while the file is untouched.
+  /// @return whether the plan changed; or the error of a changed file that cannot be read or
+  ///         is not a valid plan (reported; the plan shown is kept).
+  [[nodiscard]] Result<bool> reload_if_changed();
   /// Loads the file as it is on disk now, dropping the window's unsaved edits (undo brings
-  /// them back) and ending a conflict. @return false, saying why, if it cannot be read as a
-  /// plan (the plan shown is kept).
-  bool reload_file();
+  /// them back) and ending a conflict. Not done if it cannot be read as a plan (the plan shown
+  /// is kept).
+  Status reload_file();
   /// In a conflict: saves the window's plan over the file, under the lock, if the file still
   /// holds the version the conflict was shown for (if it changed again the conflict is shown
-  /// anew). Refused, as save() is, while the plan has errors. @return true if written.
-  bool keep_window_version();
+  /// anew). Refused, as save() is, while the plan has errors.
+  Status keep_window_version();
 
  private:
   ViewSession() = default;
-  using Edit = std::function<EditSummary(Plan&)>;
-  /// Applies `edit` to a copy; on PreconditionError keeps the plan and shows the reason.
-  bool apply(std::string_view what, const Edit& edit);
+  using Edit = std::function<Result<EditSummary>(Plan&)>;
+  /// Applies `edit` to a copy; where it fails (its Error, or PreconditionError) or changes
+  /// nothing, keeps the plan and shows why.
+  Status apply(std::string_view what, const Edit& edit);
   /// Makes `next` the plan (pushing the old one for undo) and validates it.
   void replace_plan(Plan next);
   void set_message(std::string text);
+  /// Shows `text` and @return it as the failure of an action, with `code`.
+  Status refuse(Code code, std::string text);
   /// The file's version (bytes and plan) becomes what the edits start from; ends a conflict.
   void set_base(std::string text, Plan plan);
   /// Makes the file's version the base and the plan shown. @return true if the plan changed.
@@ -124,15 +134,15 @@ class ViewSession {
   void show_conflict(std::optional<std::string> disk_text, std::string_view why);
   /// @return true if `disk_text` is the version last seen: the conflict's, else the base.
   [[nodiscard]] bool is_known(const std::optional<std::string>& disk_text) const;
-  /// Validates; with errors says so. @return true if the plan may be saved.
-  bool check_savable();
+  /// Validates; with errors says so. @return success if the plan may be saved.
+  Status check_savable();
   /// Validates, takes the lock and writes if the file holds `expected` (nullopt: unreadable);
   /// otherwise shows the conflict, saying the file `changed`. `key` retries after a lock
-  /// timeout. @return true if written.
-  bool save_over(std::optional<std::string_view> expected, std::string_view changed,
-                 std::string_view key);
-  /// Writes the plan; the caller holds the lock and has checked the file. @return true if done.
-  bool write_locked();
+  /// timeout.
+  Status save_over(std::optional<std::string_view> expected, std::string_view changed,
+                   std::string_view key);
+  /// Writes the plan; the caller holds the lock and has checked the file.
+  Status write_locked();
   /// The file's bytes now, or nullopt when it cannot be read.
   [[nodiscard]] std::optional<std::string> read_disk() const;
 

@@ -95,15 +95,15 @@ bool ViewSession::load(std::string text, Plan plan, std::string message) {
   return changed;
 }
 
-bool ViewSession::check_savable() {
+Status ViewSession::check_savable() {
   report_ = validate(plan_);
-  if (report_.ok()) return true;
-  set_message(fmt::format("not saved: the plan has {} (in red); fix or undo (Ctrl+Z) first",
-                          format_report_summary(report_)));
-  return false;
+  if (report_.ok()) return Status::success();
+  return refuse(Code::edit_refused,
+                fmt::format("not saved: the plan has {} (in red); fix or undo (Ctrl+Z) first",
+                            format_report_summary(report_)));
 }
 
-bool ViewSession::write_locked() {
+Status ViewSession::write_locked() {
   std::string text = write_plan_text(plan_);
   const Status written = write_plan_file(plan_, path_);
   stamp_ = stamp_of(path_);
@@ -113,66 +113,59 @@ bool ViewSession::write_locked() {
   set_message(written    ? fmt::format("saved {}", path_.string())
               : in_place ? fmt::format("saved, but: {}", written.message())
                          : fmt::format("not saved: {}", written.message()));
-  return written.ok();
+  return written;
 }
 
-bool ViewSession::save_over(std::optional<std::string_view> expected, std::string_view changed,
-                            std::string_view key) {
-  if (!check_savable()) return false;
+Status ViewSession::save_over(std::optional<std::string_view> expected, std::string_view changed,
+                              std::string_view key) {
+  if (Status savable = check_savable(); !savable) return savable;
   const Result<PlanLock> lock = PlanLock::acquire(path_, lock_wait_, kLockHolder);
-  if (!lock) {
-    set_message(fmt::format("not saved: {}; {} tries again", lock.message(), key));
-    return false;
-  }
+  if (!lock)
+    return refuse(lock.code(), fmt::format("not saved: {}; {} tries again", lock.message(), key));
   std::optional<std::string> disk = read_disk();
   if (disk ? !expected || *disk != *expected : expected.has_value()) {
     show_conflict(std::move(disk), fmt::format("not saved: {} {}", path_.string(), changed));
-    return false;
+    return Status::failure(Code::edit_refused, message_);
   }
   return write_locked();
 }
 
-bool ViewSession::save() {
+Status ViewSession::save() {
   pending_cascade_.reset();
   constexpr std::string_view kChanged = "changed on disk since the window read or saved it";
   if (conflict_) {  // the choice is still to be made
     show_conflict(read_disk(), fmt::format("not saved: {} {}", path_.string(), kChanged));
-    return false;
+    return Status::failure(Code::edit_refused, message_);
   }
   return save_over(base_text_, kChanged, "Ctrl+S");
 }
 
-bool ViewSession::keep_window_version() {
+Status ViewSession::keep_window_version() {
   pending_cascade_.reset();
-  if (!conflict_) {
-    set_message("nothing to keep: the file has not changed on disk (Ctrl+S saves)");
-    return false;
-  }
+  if (!conflict_)
+    return refuse(Code::usage_error,
+                  "nothing to keep: the file has not changed on disk (Ctrl+S saves)");
   return save_over(conflict_->disk_text, "changed on disk again", "Ctrl+K");
 }
 
-bool ViewSession::reload_file() {
+Status ViewSession::reload_file() {
   pending_cascade_.reset();
   stamp_ = stamp_of(path_);
   Result<std::string> text = read_text_file(path_);
-  if (!text) {
-    set_message(fmt::format("not reloaded: {}", text.message()));
-    return false;
-  }
+  if (!text) return refuse(text.code(), fmt::format("not reloaded: {}", text.message()));
   Result<Plan> read = read_plan_text(text.value(), path_.string());
-  if (!read) {
-    set_message(fmt::format("not reloaded: {} is not a valid plan ({}: {})", path_.string(),
-                            to_string(read.code()), read.message()));
-    return false;
-  }
+  if (!read)
+    return refuse(read.code(), fmt::format("not reloaded: {} is not a valid plan ({}: {})",
+                                           path_.string(), to_string(read.code()),
+                                           read.message()));
   const bool dropped = modified_;
   load(std::move(text).value(), std::move(read).value(),
        fmt::format("reloaded {}{}", path_.string(),
                    dropped ? " (the window's edits dropped; Ctrl+Z brings them back)" : ""));
-  return true;
+  return Status::success();
 }
 
-bool ViewSession::reload_if_changed() {
+Result<bool> ViewSession::reload_if_changed() {
   const FileStamp stamp = stamp_of(path_);
   if (stamp == stamp_) return false;
   stamp_ = stamp;
@@ -192,18 +185,17 @@ bool ViewSession::reload_if_changed() {
     return false;
   }
   ++disk_changes_;
-  if (!disk) {
-    set_message(fmt::format("{} cannot be read now; the plan shown is kept", path_.string()));
-    return false;
-  }
+  if (!disk)
+    return refuse(Code::io_error,
+                  fmt::format("{} cannot be read now; the plan shown is kept", path_.string()))
+        .error();
   Result<Plan> read = read_plan_text(*disk, path_.string());
-  if (!read) {
-    set_message(
-        fmt::format("{} changed on disk but is not a valid plan ({}: {}); the plan shown "
-                    "is kept",
-                    path_.string(), to_string(read.code()), read.message()));
-    return false;
-  }
+  if (!read)
+    return refuse(read.code(),
+                  fmt::format("{} changed on disk but is not a valid plan ({}: {}); the plan "
+                              "shown is kept",
+                              path_.string(), to_string(read.code()), read.message()))
+        .error();
   return load(std::move(*disk), std::move(read).value(),
               fmt::format("reloaded {} (changed on disk; Ctrl+Z goes back)", path_.string()));
 }

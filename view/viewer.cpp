@@ -21,9 +21,9 @@ namespace {
 constexpr double kDragDegreesPerPixel = 0.3;
 constexpr double kWheelZoom = 0.9;
 
-Bounds framing_bounds(const Scene& scene) {
-  Bounds b = scene.bounds;
-  if (b.is_empty()) b.add(glm::dvec3(0.0));  // nothing to frame: look at the origin, as render does
+Box3 framing_bounds(const Scene& scene) {
+  Box3 b = scene.bounds;
+  if (is_empty(b)) add_point(b, glm::dvec3(0.0));  // nothing to frame: look at the origin, as render does
   return b;
 }
 
@@ -95,7 +95,7 @@ bool Viewer::handle(const InputEvent& input) {
 
 bool Viewer::poll_file() {
   const std::uint64_t messages = session_.message_count();
-  session_.reload_if_changed();
+  static_cast<void>(session_.reload_if_changed());  // what it found is a message
   if (session_.message_count() == messages) return false;  // every change found says so
   dirty_ = true;
   return true;

@@ -16,11 +16,11 @@ namespace {
 constexpr std::size_t kClustersPerChunk = 64;
 static_assert(kClustersPerChunk * kClusterSize * 7 < (1u << kLocalBits));
 
-bool is_outside_frustum(const Bounds& b, const glm::mat4& view_projection) {
+bool is_outside_frustum(const Box3& b, const glm::mat4& view_projection) {
   std::uint32_t all = 0x3f;
   for (int i = 0; i < 8 && all != 0; ++i) {
-    const glm::vec3 c((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                      (i & 4) ? b.max.z : b.min.z);
+    const glm::vec3 c((i & 1) ? b.high[0] : b.low[0], (i & 2) ? b.high[1] : b.low[1],
+                      (i & 4) ? b.high[2] : b.low[2]);
     all &= outcode(view_projection * glm::vec4(c, 1.f));
   }
   return all != 0;  // every corner outside one same plane

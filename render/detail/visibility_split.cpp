@@ -217,7 +217,7 @@ bool has_boundary_inside(const Context& cx, const Region& r) {
 bool has_triangle_inside(const Context& cx, const Region& r) {
   return std::any_of(r.candidates.begin(), r.candidates.end(), [&](std::uint32_t i) {
     const Box2& b = cx.triangles[i].box;
-    return b.min.x > r.x0 && b.max.x < r.x1 && b.min.y > r.y0 && b.max.y < r.y1;
+    return b.min_x > r.x0 && b.max_x < r.x1 && b.min_y > r.y0 && b.max_y < r.y1;
   });
 }
 
@@ -225,8 +225,8 @@ bool has_triangle_inside(const Context& cx, const Region& r) {
 /// the boxes overlap and no edge line has the whole rectangle on its outer side.
 bool meets_rectangle(const FlatTriangle& t, double x0, double y0, double x1, double y1) {
   const Box2& b = t.box;
-  if (b.max.x < x0 - kCoverSlack || b.min.x > x1 + kCoverSlack || b.max.y < y0 - kCoverSlack ||
-      b.min.y > y1 + kCoverSlack) {
+  if (b.max_x < x0 - kCoverSlack || b.min_x > x1 + kCoverSlack || b.max_y < y0 - kCoverSlack ||
+      b.min_y > y1 + kCoverSlack) {
     return false;
   }
   const Point2 &p0 = t.p[0], &p1 = t.p[1], &p2 = t.p[2];
@@ -296,10 +296,10 @@ void scan_for(const Context& cx, const Region& r, std::uint32_t i, bool inside) 
   const int in = inside ? 1 : 0;
   const auto first = [](double lo) { return static_cast<int>(std::ceil(lo - 0.5)); };
   const auto last = [](double hi) { return static_cast<int>(std::floor(hi - 0.5)); };
-  const int px0 = std::max(static_cast<int>(r.x0) + in, first(t.box.min.x));
-  const int px1 = std::min(static_cast<int>(r.x1) - in, last(t.box.max.x));
-  const int py0 = std::max(static_cast<int>(r.y0) + in, first(t.box.min.y));
-  const int py1 = std::min(static_cast<int>(r.y1) - in, last(t.box.max.y));
+  const int px0 = std::max(static_cast<int>(r.x0) + in, first(t.box.min_x));
+  const int px1 = std::min(static_cast<int>(r.x1) - in, last(t.box.max_x));
+  const int py0 = std::max(static_cast<int>(r.y0) + in, first(t.box.min_y));
+  const int py1 = std::min(static_cast<int>(r.y1) - in, last(t.box.max_y));
   for (int py = py0; py <= py1; ++py)
     for (int px = px0; px <= px1; ++px) {
       if (cx.visible[t.id].load(std::memory_order_relaxed)) return;

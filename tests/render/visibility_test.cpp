@@ -89,7 +89,7 @@ Scene random_boxes(std::uint32_t seed) {
 
 TEST(Visibility, FindsExactlyTheTrianglesTheZBufferShows) {
   const Scene grid = grid_scene(3);
-  const glm::dvec3 centre = (grid.bounds.min + grid.bounds.max) / 2.0;
+  const glm::dvec3 centre = (low_corner(grid.bounds) + high_corner(grid.bounds)) / 2.0;
   const struct {
     const char* name;
     Camera camera;

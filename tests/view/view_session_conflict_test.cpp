@@ -11,6 +11,7 @@
 #include "io/plan_json.h"
 #include "io/plan_lock.h"
 #include "support/run_command.h"
+#include "support/session_reloaded.h"
 #include "view/view_session.h"
 
 namespace roomcad {
@@ -67,7 +68,7 @@ class ViewSessionConflict : public ::testing::Test {
 TEST_F(ViewSessionConflict, AChangeWithoutUnsavedEditsIsReloaded) {
   ViewSession s = open();
   they_save(their_plan());
-  EXPECT_TRUE(s.reload_if_changed());
+  EXPECT_TRUE(test::reloaded(s));
   EXPECT_EQ(s.plan(), their_plan());
   EXPECT_FALSE(s.in_conflict());
   EXPECT_FALSE(s.is_modified());
@@ -78,7 +79,7 @@ TEST_F(ViewSessionConflict, RewritingTheSameBytesIsNoChange) {
   ViewSession s = open();
   edit(s);
   they_save(two_walls());  // a new file (inode, time), the same bytes
-  EXPECT_FALSE(s.reload_if_changed());
+  EXPECT_FALSE(test::reloaded(s));
   EXPECT_FALSE(s.in_conflict());
   EXPECT_EQ(s.disk_changes(), 0u);
   EXPECT_EQ(s.plan(), our_plan());
@@ -90,7 +91,7 @@ TEST_F(ViewSessionConflict, UndoingBackToTheFileLeavesNoUnsavedEdits) {
   ASSERT_TRUE(s.undo());
   EXPECT_FALSE(s.is_modified());
   they_save(their_plan());
-  EXPECT_TRUE(s.reload_if_changed());  // nothing of the window's to lose: reloaded
+  EXPECT_TRUE(test::reloaded(s));  // nothing of the window's to lose: reloaded
   EXPECT_FALSE(s.in_conflict());
 }
 
@@ -98,7 +99,7 @@ TEST_F(ViewSessionConflict, AChangeWithUnsavedEditsIsAConflictThatKeepsBothSides
   ViewSession s = open();
   edit(s);
   they_save(their_plan());
-  EXPECT_FALSE(s.reload_if_changed());
+  EXPECT_FALSE(test::reloaded(s));
   ASSERT_TRUE(s.in_conflict());
   EXPECT_EQ(s.disk_changes(), 1u);
   EXPECT_NE(s.message().find("changed on disk and the window has unsaved edits"),
@@ -109,7 +110,7 @@ TEST_F(ViewSessionConflict, AChangeWithUnsavedEditsIsAConflictThatKeepsBothSides
   EXPECT_FALSE(s.save());           // and not saved over theirs
   EXPECT_TRUE(s.in_conflict());
   EXPECT_EQ(on_disk(), their_plan());
-  EXPECT_FALSE(s.reload_if_changed());  // nothing new
+  EXPECT_FALSE(test::reloaded(s));  // nothing new
   EXPECT_EQ(s.disk_changes(), 1u);
 }
 
@@ -117,7 +118,7 @@ TEST_F(ViewSessionConflict, ReloadTakesTheFileAndUndoBringsTheEditsBack) {
   ViewSession s = open();
   edit(s);
   they_save(their_plan());
-  s.reload_if_changed();
+  test::reloaded(s);
   ASSERT_TRUE(s.reload_file());
   EXPECT_EQ(s.plan(), their_plan());
   EXPECT_FALSE(s.in_conflict());
@@ -133,12 +134,12 @@ TEST_F(ViewSessionConflict, KeepSavesTheWindowsVersionOverTheFile) {
   ViewSession s = open();
   edit(s);
   they_save(their_plan());
-  s.reload_if_changed();
+  test::reloaded(s);
   ASSERT_TRUE(s.keep_window_version()) << s.message();
   EXPECT_EQ(on_disk(), our_plan());
   EXPECT_FALSE(s.in_conflict());
   EXPECT_FALSE(s.is_modified());
-  EXPECT_FALSE(s.reload_if_changed());    // its own save is no change
+  EXPECT_FALSE(test::reloaded(s));    // its own save is no change
   EXPECT_FALSE(s.keep_window_version());  // no conflict: nothing to keep
   EXPECT_NE(s.message().find("nothing to keep"), std::string::npos) << s.message();
 }
@@ -147,7 +148,7 @@ TEST_F(ViewSessionConflict, KeepIsRefusedWhenTheFileChangedAgain) {
   ViewSession s = open();
   edit(s);
   they_save(their_plan());
-  s.reload_if_changed();
+  test::reloaded(s);
   Plan again = their_plan();
   again.walls[0].thickness = 0.3;
   they_save(again);  // not yet seen by the window: its prompt showed the first change
@@ -176,10 +177,10 @@ TEST_F(ViewSessionConflict, TheConflictEndsWhenTheFileComesBack) {
   edit(s);
   const std::string original = test::read_bytes(path_);
   they_save(their_plan());
-  s.reload_if_changed();
+  test::reloaded(s);
   ASSERT_TRUE(s.in_conflict());
   ASSERT_TRUE(test::write_bytes(path_, original));
-  EXPECT_FALSE(s.reload_if_changed());
+  EXPECT_FALSE(test::reloaded(s));
   EXPECT_FALSE(s.in_conflict());
   EXPECT_EQ(s.disk_changes(), 2u);
   ASSERT_TRUE(s.save()) << s.message();
@@ -190,7 +191,7 @@ TEST_F(ViewSessionConflict, AFileThatIsNoLongerAPlanCanOnlyBeKeptOver) {
   ViewSession s = open();
   edit(s);
   ASSERT_TRUE(test::write_bytes(path_, "{ broken"));
-  s.reload_if_changed();
+  test::reloaded(s);
   ASSERT_TRUE(s.in_conflict());
   EXPECT_NE(s.message().find("not a valid plan"), std::string::npos) << s.message();
   EXPECT_FALSE(s.reload_file());

@@ -8,6 +8,7 @@
 
 #include "io/plan_json.h"
 #include "support/run_command.h"
+#include "support/session_reloaded.h"
 #include "view/view_session.h"
 
 namespace roomcad {
@@ -113,23 +114,23 @@ TEST(ViewSession, SavesOnlyAValidPlanAndMarksErrors) {
   ASSERT_TRUE(s.save()) << s.message();
   EXPECT_EQ(file.on_disk(), s.plan());
   EXPECT_FALSE(s.is_modified());
-  EXPECT_FALSE(s.reload_if_changed());  // its own write is not a change on disk
+  EXPECT_FALSE(test::reloaded(s));  // its own write is not a change on disk
 }
 
 TEST(ViewSession, ReloadsWhenTheFileChanges) {
   SessionFile file(corner_plan());
   ViewSession s = file.open();
-  EXPECT_FALSE(s.reload_if_changed());
+  EXPECT_FALSE(test::reloaded(s));
   Plan changed = corner_plan();
   changed.walls[0].height = 3.0;
   const auto later = std::filesystem::last_write_time(file.path) + std::chrono::seconds(2);
   ASSERT_TRUE(test::write_bytes(file.path, write_plan_text(changed)));
   std::filesystem::last_write_time(file.path, later);
-  ASSERT_TRUE(s.reload_if_changed());
+  ASSERT_TRUE(test::reloaded(s));
   EXPECT_EQ(s.plan(), changed);
   ASSERT_TRUE(test::write_bytes(file.path, "{ not json"));
   std::filesystem::last_write_time(file.path, later + std::chrono::seconds(2));
-  EXPECT_FALSE(s.reload_if_changed());
+  EXPECT_FALSE(test::reloaded(s));
   EXPECT_EQ(s.plan(), changed);
   EXPECT_NE(s.message().find("not a valid plan"), std::string::npos) << s.message();
   ASSERT_TRUE(s.undo());  // back to what was shown before the reload

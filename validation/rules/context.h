@@ -14,7 +14,7 @@
 #include "plan/plan.h"
 #include "validation/detail/checks.h"
 #include "validation/rule_set.h"
-#include "validation/rules/box_grid.h"
+#include "geometry/box_grid.h"
 #include "validation/validate.h"
 
 namespace roomcad::rules {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "validation/report.h"
-#include "validation/rules/box_grid.h"
+#include "geometry/box_grid.h"
 #include "validation/rules/context.h"
 #include "validation/rules/scene.h"
 #include "validation/rules/written_number.h"

@@ -14,7 +14,7 @@
 #include "core/flat_index.h"
 #include "geometry/joins.h"
 #include "plan/plan.h"
-#include "validation/rules/box_grid.h"
+#include "geometry/box_grid.h"
 
 namespace roomcad::rules {
 

@@ -18,6 +18,7 @@
 #include <span>
 #include <vector>
 
+#include "core/box.h"
 #include "solid/detail/general_path/exact_planes.h"
 #include "solid/detail/frames/slab_frames.h"
 #include "solid/detail/frames/wall_frame.h"
@@ -56,19 +57,8 @@ bool clip_polygon(const PlaneSet& set, PlanePolygon& polygon, PlaneRef h);
 /// @return the axis along which the plane's normal is largest (its 2D view drops it).
 [[nodiscard]] int dominant_axis(const PlaneSet& set, PlaneId plane);
 
-struct Box3 {
-  std::array<double, 3> low{}, high{};
-};
-
 /// @return the box of the points' intervals (empty: low +inf, high -inf). O(n).
 [[nodiscard]] Box3 box_of(std::span<const XPoint> points);
-
-/// @return whether closed boxes a and b meet.
-[[nodiscard]] inline bool boxes_meet(const Box3& a, const Box3& b) {
-  for (std::size_t k = 0; k < 3; ++k)
-    if (a.high[k] < b.low[k] || b.high[k] < a.low[k]) return false;
-  return true;
-}
 
 /// A convex polyhedron: a solid (wall piece, or a convex piece of a slab) or a hole (an
 /// opening's, or a convex part of it).

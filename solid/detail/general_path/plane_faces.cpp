@@ -21,7 +21,7 @@
 namespace roomcad::detail {
 namespace {
 
-// Bounds (bounds_grid.h) here are low i, low j, high i, high j in the plane's view axes.
+// Boxes (core/box.h) here are in the plane's view axes: x is axis i, y is axis j.
 
 struct Context {
   const PlaneSet& set;
@@ -39,7 +39,7 @@ struct Edge {
   PlaneRef line, from_end, to_end;
   std::size_t start = 0, end = 0;  // point indices
   std::size_t source = 0;          // contribution index; contributions.size() + k for cut k
-  Bounds bounds{};
+  Box2 bounds{};
   // Where other edges split it: (point, the splitting edge's source), in no order.
   std::vector<std::pair<std::size_t, std::size_t>> splits;
 
@@ -52,15 +52,15 @@ struct Piece {
   PlaneRef line;
   std::size_t source = 0;  // the edge's
   std::size_t edge = 0;    // the edge's index
-  Bounds bounds{};
+  Box2 bounds{};
 };
 
-Bounds bounds_of(const Context& cx, std::size_t a, std::size_t b) {
+Box2 bounds_of(const Context& cx, std::size_t a, std::size_t b) {
   const XPoint& p = cx.points[a];
   const XPoint& q = cx.points[b];
   const auto pi = bounds(p, cx.i), pj = bounds(p, cx.j), qi = bounds(q, cx.i), qj = bounds(q, cx.j);
   return {std::min(pi.first, qi.first), std::min(pj.first, qj.first), std::max(pi.second, qi.second),
-          std::max(pj.second, qj.second)};
+          std::max(pj.second, qj.second), 0};
 }
 
 // The cut's segment, directed along n x n_cut.
@@ -128,7 +128,7 @@ void split_pair(const Context& cx, Edge& e, Edge& f) {
 void split_edges(const Context& cx, std::vector<Edge>& edges) {
   // (low bound, edge), sorted by their values: not through the edges, which are far apart.
   std::vector<std::pair<double, std::size_t>> order(edges.size());
-  for (std::size_t k = 0; k < edges.size(); ++k) order[k] = {edges[k].bounds[0], k};
+  for (std::size_t k = 0; k < edges.size(); ++k) order[k] = {edges[k].bounds.min_x, k};
   // The comparison the edges had: NaN bounds fall where they did.
   std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
     return a.first < b.first || (a.first == b.first && a.second < b.second);
@@ -137,7 +137,7 @@ void split_edges(const Context& cx, std::vector<Edge>& edges) {
   for (const auto& [low, idx] : order) {
     Edge& e = edges[idx];
     active.erase(std::remove_if(active.begin(), active.end(),
-                                [&](std::size_t a) { return edges[a].bounds[2] < e.bounds[0]; }),
+                                [&](std::size_t a) { return edges[a].bounds.max_x < e.bounds.min_x; }),
                  active.end());
     for (std::size_t a : active) {
       Edge& f = edges[a];
@@ -280,7 +280,7 @@ PieceFaces faces_of(const Context& cx, const Piece& p, PlaneRef across,
 // passes between them. `across` is a plane crossing the edge; `inside` is scratch space.
 void classify_edge(const Context& cx, std::span<const Piece> pieces, PlaneRef across,
                    const std::vector<std::size_t>& sources,
-                   const std::vector<std::size_t>& first_source, BoundsGrid& near,
+                   const std::vector<std::size_t>& first_source, BoxGrid& near,
                    std::vector<Inside>& inside, std::span<PieceFaces> out) {
   const Piece& first = pieces.front();
   inside.clear();
@@ -380,8 +380,7 @@ struct PlaneBoolean::State {
   std::vector<std::pair<std::size_t, std::size_t>> cuts_by_owner;  // (owner, cut index), sorted
   PointCache points;
   std::vector<Edge> edges;
-  std::vector<Bounds> polygon_bounds;  // per contribution
-  BoundsGrid near;                     // of polygon_bounds
+  BoxGrid near;  // of the contributions' polygons (Box2::index: the contribution)
   // Every edge's pieces with the faces on their two sides.
   std::vector<Piece> pieces;
   std::vector<PieceFaces> owners;
@@ -389,19 +388,21 @@ struct PlaneBoolean::State {
   State(const PlaneSet& s, PlaneRef p, std::vector<Contribution> c)
       : set(s), plane(p), i((dominant_axis(s, p.id) + 1) % 3), j((i + 1) % 3),
         contributions(without_covered(s, without_duplicates(std::move(c)))), points(s),
-        polygon_bounds(bounds_of_polygons()), near(polygon_bounds) {}
+        near(bounds_of_polygons()) {}
   [[nodiscard]] Context context() {
     return {set, plane, i, j, contributions, cuts, cuts_by_owner, points};
   }
 
-  [[nodiscard]] std::vector<Bounds> bounds_of_polygons() const {
-    std::vector<Bounds> out;
+  [[nodiscard]] std::vector<Box2> bounds_of_polygons() const {
+    std::vector<Box2> out;
     out.reserve(contributions.size());
     for (const Contribution& c : contributions) {
-      Bounds b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+      Box2 b = empty_box2();
+      b.index = out.size();
       for (const XPoint& v : c.polygon.vertices) {
         const auto vi = bounds(v, i), vj = bounds(v, j);
-        b = {std::min(b[0], vi.first), std::min(b[1], vj.first), std::max(b[2], vi.second), std::max(b[3], vj.second)};
+        b.min_x = std::min(b.min_x, vi.first), b.min_y = std::min(b.min_y, vj.first);
+        b.max_x = std::max(b.max_x, vi.second), b.max_y = std::max(b.max_y, vj.second);
       }
       out.push_back(b);
     }

@@ -16,13 +16,13 @@
 
 #include <tbb/global_control.h>
 
-#include "io/plan_json.h"
 #include "geometry/broad_phase.h"
+#include "geometry/joins.h"
+#include "io/plan_json.h"
 #include "solid/detail/frames/buildable_plan.h"
 #include "solid/detail/frames/clusters.h"
 #include "solid/detail/frames/slab_frames.h"
 #include "solid/detail/frames/wall_frame.h"
-#include "geometry/joins.h"
 #include "testing/tower_plan.h"
 
 namespace roomcad {

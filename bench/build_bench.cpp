@@ -21,14 +21,14 @@
 
 #include <benchmark/benchmark.h>
 
-#include "testing/grid_plan.h"
 #include "bench/modeling_table.h"
 #include "bench/nef_reference.h"
 #include "bench/openscad_reference.h"
 #include "io/mesh_export.h"
-#include "solid/build_model.h"
 #include "mesh/mesh_check.h"
 #include "solid/analytic_volume.h"
+#include "solid/build_model.h"
+#include "testing/grid_plan.h"
 
 namespace roomcad::bench {
 namespace {
@@ -50,7 +50,8 @@ const Scene& grid_scene(int n) {
   return it->second;
 }
 
-void set_counters(benchmark::State& state, const Scene& s, std::size_t triangles, double volume, double bytes) {
+void set_counters(benchmark::State& state, const Scene& s, std::size_t triangles, double volume,
+                  double bytes) {
   state.counters["walls"] = double(s.plan.walls.size());
   state.counters["openings"] = double(s.plan.openings.size());
   state.counters["triangles"] = double(triangles);
@@ -70,8 +71,10 @@ void run_roomcad(benchmark::State& state, int n, BooleanPath path) {
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     model = build_model(s.plan, options);
-    build_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (const Status written = write_mesh_file(file, MeshParts{{&model.walls}, &model.objects}); !written)
+    build_ms +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (const Status written = write_mesh_file(file, MeshParts{{&model.walls}, &model.objects});
+        !written)
       return state.SkipWithError(written.message().c_str());
   }
   const SolidCheck check = check_solid(model.walls);
@@ -126,17 +129,22 @@ Limits parse_limits(int& argc, char** argv) {
 void register_all(const Limits& limits) {
   for (int n : {1, 2, 5, 10, 20, 50, 70}) {
     if (n > limits.max_n) break;
-    benchmark::RegisterBenchmark(fmt::format("fast/{}", n).c_str(), run_roomcad, n, BooleanPath::automatic)
+    benchmark::RegisterBenchmark(fmt::format("fast/{}", n).c_str(), run_roomcad, n,
+                                 BooleanPath::automatic)
         ->Unit(benchmark::kMillisecond);
     if (n <= limits.cgal_max_n) {
-      benchmark::RegisterBenchmark(fmt::format("cgal/{}", n).c_str(), run_roomcad, n, BooleanPath::nef)
-          ->Unit(benchmark::kMillisecond)->Iterations(1);
+      benchmark::RegisterBenchmark(fmt::format("cgal/{}", n).c_str(), run_roomcad, n,
+                                   BooleanPath::nef)
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(1);
       benchmark::RegisterBenchmark(fmt::format("nef/{}", n).c_str(), run_nef, n)
-          ->Unit(benchmark::kMillisecond)->Iterations(1);
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(1);
     }
     if (n <= limits.openscad_max_n)
       benchmark::RegisterBenchmark(fmt::format("openscad/{}", n).c_str(), run_scad, n)
-          ->Unit(benchmark::kMillisecond)->Iterations(1);
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(1);
   }
 }
 

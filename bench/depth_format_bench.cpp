@@ -35,15 +35,20 @@ double fixed_store(double d) {
   return std::round((1.0 - kNear / d) * scale) / scale;
 }
 template <int bits>
-double fixed_farther(double z) { return z + 1.0 / (std::ldexp(1.0, bits) - 1.0); }
+double fixed_farther(double z) {
+  return z + 1.0 / (std::ldexp(1.0, bits) - 1.0);
+}
 
 const Format kFormats[] = {
-    {"float32 reversed-Z (roomcad)", [](double d) -> double { return static_cast<float>(kNear / d); },
-     next_float_down, [](double z) { return kNear / z; }},
+    {"float32 reversed-Z (roomcad)",
+     [](double d) -> double { return static_cast<float>(kNear / d); }, next_float_down,
+     [](double z) { return kNear / z; }},
     {"float32 standard Z", [](double d) -> double { return static_cast<float>(1.0 - kNear / d); },
      next_float_up, [](double z) { return kNear / (1.0 - z); }},
-    {"fixed 24-bit standard Z", fixed_store<24>, fixed_farther<24>, [](double z) { return kNear / (1.0 - z); }},
-    {"fixed 16-bit standard Z", fixed_store<16>, fixed_farther<16>, [](double z) { return kNear / (1.0 - z); }},
+    {"fixed 24-bit standard Z", fixed_store<24>, fixed_farther<24>,
+     [](double z) { return kNear / (1.0 - z); }},
+    {"fixed 16-bit standard Z", fixed_store<16>, fixed_farther<16>,
+     [](double z) { return kNear / (1.0 - z); }},
     {"float32 linear distance", [](double d) -> double { return static_cast<float>(d); },
      next_float_up, [](double z) { return z; }},
 };
@@ -56,7 +61,8 @@ int main() {
     for (const double d : {1.0, 100.0, 1000.0}) {
       const double z = f.store(d);
       const double step = std::abs(f.distance(f.farther(z)) - f.distance(z));
-      std::printf("%s,%g,%.3g\n", f.name, d, std::isfinite(step) ? step : std::numeric_limits<double>::infinity());
+      std::printf("%s,%g,%.3g\n", f.name, d,
+                  std::isfinite(step) ? step : std::numeric_limits<double>::infinity());
     }
   return 0;
 }

@@ -2,10 +2,10 @@
 // Speed of the floor-plan drawing on the bundled house (21 walls) and on grids of rooms.
 #include <benchmark/benchmark.h>
 
-#include "testing/grid_plan.h"
 #include "io/floor_plan_svg.h"
 #include "io/plan_json.h"
 #include "render/floor_plan.h"
+#include "testing/grid_plan.h"
 
 namespace {
 
@@ -18,7 +18,8 @@ void BM_FloorPlanHouse(benchmark::State& state) {
     return;
   }
   for (auto _ : state) {
-    benchmark::DoNotOptimize(make_floor_plan_svg(draw_floor_plan(read.value(), {}), "").to_string());
+    benchmark::DoNotOptimize(
+        make_floor_plan_svg(draw_floor_plan(read.value(), {}), "").to_string());
   }
 }
 BENCHMARK(BM_FloorPlanHouse)->Unit(benchmark::kMillisecond);

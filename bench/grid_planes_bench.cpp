@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "bench/bundled_homes.h"
-#include "solid/build_model.h"
 #include "mesh/mesh_check.h"
+#include "solid/build_model.h"
 
 namespace {
 

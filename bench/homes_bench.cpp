@@ -38,9 +38,9 @@
 
 #include "bench/bundled_homes.h"
 #include "core/error.h"
-#include "solid/build_model.h"
 #include "mesh/mesh_check.h"
 #include "solid/analytic_volume.h"
+#include "solid/build_model.h"
 
 namespace roomcad::bench {
 namespace {
@@ -114,14 +114,15 @@ void run_home(benchmark::State& state, std::size_t index, const Variant& variant
     const double analytic = analytic_wall_volume(home.plan);
     state.counters["analytic_difference"] = std::abs(volume - analytic) / analytic;
     state.counters["volume_difference"] = -1.0;  // Nef refused
-    if (home.nef_volume > 0.0) {  // the walls alone, as Nef built them
+    if (home.nef_volume > 0.0) {                 // the walls alone, as Nef built them
       const Model walls_alone = build_model(home.plan, options_for(variant, threads, false));
       state.counters["volume_difference"] =
           std::abs(check_solid(walls_alone.walls).volume - home.nef_volume) / home.nef_volume;
     }
   }
   // Shares of the walls as built: an arc wall is built as its chords, each a wall of a path.
-  const double walls = double(stats.fast_path_walls + stats.general_path_walls + stats.nef_path_walls);
+  const double walls =
+      double(stats.fast_path_walls + stats.general_path_walls + stats.nef_path_walls);
   state.counters["walls"] = double(home.plan.walls.size());
   state.counters["fast_pct"] = 100.0 * double(stats.fast_path_walls) / walls;
   state.counters["general_pct"] = 100.0 * double(stats.general_path_walls) / walls;
@@ -159,7 +160,8 @@ class CsvReporter : public benchmark::ConsoleReporter {
     for (const Home& h : homes()) {
       auto get = [&](const char* path, const char* counter) -> double {
         const auto it = rows_.find(fmt::format("{}/{}", path, h.name));
-        return it == rows_.end() || !it->second.count(counter) ? NAN : double(it->second.at(counter));
+        return it == rows_.end() || !it->second.count(counter) ? NAN
+                                                               : double(it->second.at(counter));
       };
       out += fmt::format(
           "{},{},{},{:.1f},{:.1f},{:.1f},{:.2f},{:.2f},{:.2f},{:.1f},{:.1f},{:.2e},{:.2e}\n",

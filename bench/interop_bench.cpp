@@ -8,9 +8,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "testing/grid_plan.h"
 #include "import/ifc_import.h"
 #include "io/ifc_export.h"
+#include "testing/grid_plan.h"
 
 namespace {
 
@@ -29,7 +29,8 @@ void BM_IfcExportGrid70(benchmark::State& state) {
 BENCHMARK(BM_IfcExportGrid70)->Unit(benchmark::kMillisecond);
 
 void BM_IfcImport(benchmark::State& state, const char* name) {
-  std::ifstream in(std::filesystem::path(ROOMCAD_SOURCE_DIR) / "examples" / "ifc" / name, std::ios::binary);
+  std::ifstream in(std::filesystem::path(ROOMCAD_SOURCE_DIR) / "examples" / "ifc" / name,
+                   std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
   const std::string ifc = text.str();
@@ -42,7 +43,8 @@ void BM_IfcImport(benchmark::State& state, const char* name) {
 }
 BENCHMARK_CAPTURE(BM_IfcImport, open_house, "IfcOpenHouse_IFC4.ifc")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_IfcImport, duplex, "duplex.ifc")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_IfcImport, sample_project, "tested_sample_project.ifc")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_IfcImport, sample_project, "tested_sample_project.ifc")
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -59,7 +59,8 @@ std::vector<int> orientations(const std::vector<Triple>& triples, double& ns) {
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < triples.size(); ++i) {
     const Triple& t = triples[i];
-    signs[i] = static_cast<int>(CGAL::orientation(P(t.x[0], t.y[0]), P(t.x[1], t.y[1]), P(t.x[2], t.y[2])));
+    signs[i] = static_cast<int>(
+        CGAL::orientation(P(t.x[0], t.y[0]), P(t.x[1], t.y[1]), P(t.x[2], t.y[2])));
   }
   ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
        static_cast<double>(triples.size());

@@ -42,7 +42,8 @@ struct TableRow {
 };
 
 /// @return one row per grid size, ascending. O(runs log runs).
-inline std::vector<TableRow> make_table(const std::vector<benchmark::BenchmarkReporter::Run>& runs) {
+inline std::vector<TableRow> make_table(
+    const std::vector<benchmark::BenchmarkReporter::Run>& runs) {
   std::map<int, TableRow> rows;
   for (const auto& run : runs) {
     const std::string& name = run.run_name.function_name;
@@ -55,8 +56,11 @@ inline std::vector<TableRow> make_table(const std::vector<benchmark::BenchmarkRe
       return it == run.counters.end() ? 0.0 : double(it->second);
     };
     row.walls = counter("walls"), row.openings = counter("openings");
-    row.cells[name.substr(0, slash)] = {true, run.real_accumulated_time * 1e3 / double(run.iterations),
-                                        counter("triangles"), counter("volume_error"), counter("bytes"),
+    row.cells[name.substr(0, slash)] = {true,
+                                        run.real_accumulated_time * 1e3 / double(run.iterations),
+                                        counter("triangles"),
+                                        counter("volume_error"),
+                                        counter("bytes"),
                                         counter("build_ms")};
   }
   std::vector<TableRow> out;
@@ -65,7 +69,8 @@ inline std::vector<TableRow> make_table(const std::vector<benchmark::BenchmarkRe
 }
 
 /// @return `value` formatted, or "" when the path did not run.
-inline std::string cell(const TableRow& row, const char* path, double PathCell::*field, const char* format) {
+inline std::string cell(const TableRow& row, const char* path, double PathCell::*field,
+                        const char* format) {
   const auto it = row.cells.find(path);
   if (it == row.cells.end() || !it->second.ran) return "";
   return fmt::format(fmt::runtime(format), it->second.*field);
@@ -92,12 +97,26 @@ inline std::vector<std::string> row_fields(const TableRow& row) {
 }
 
 inline const std::vector<std::string>& table_header() {
-  static const std::vector<std::string> header{
-      "scene", "walls", "openings", "fast_ms", "cgal_ms", "nef_ms", "openscad_ms",
-      "fast_triangles", "cgal_triangles", "nef_triangles", "openscad_triangles",
-      "fast_volume_error", "cgal_volume_error", "nef_volume_error", "openscad_volume_error",
-      "cgal_over_fast", "nef_over_fast", "openscad_over_fast", "fast_off_bytes",
-      "fast_build_ms"};
+  static const std::vector<std::string> header{"scene",
+                                               "walls",
+                                               "openings",
+                                               "fast_ms",
+                                               "cgal_ms",
+                                               "nef_ms",
+                                               "openscad_ms",
+                                               "fast_triangles",
+                                               "cgal_triangles",
+                                               "nef_triangles",
+                                               "openscad_triangles",
+                                               "fast_volume_error",
+                                               "cgal_volume_error",
+                                               "nef_volume_error",
+                                               "openscad_volume_error",
+                                               "cgal_over_fast",
+                                               "nef_over_fast",
+                                               "openscad_over_fast",
+                                               "fast_off_bytes",
+                                               "fast_build_ms"};
   return header;
 }
 

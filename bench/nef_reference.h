@@ -24,7 +24,8 @@ using NefKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using Nef = CGAL::Nef_polyhedron_3<NefKernel>;
 
 /// The box [u0, u1] x [w0, w1] x [z0, z1] in the frame of wall w (u along it, w to its left).
-inline Nef make_wall_box(const Wall& w, double u0, double u1, double w0, double w1, double z0, double z1) {
+inline Nef make_wall_box(const Wall& w, double u0, double u1, double w0, double w1, double z0,
+                         double z1) {
   const double len = std::hypot(w.to.x - w.from.x, w.to.y - w.from.y);
   const double dx = (w.to.x - w.from.x) / len, dy = (w.to.y - w.from.y) / len;
   std::vector<NefKernel::Point_3> points;
@@ -62,7 +63,8 @@ inline PolygonSoup build_nef_reference(const Plan& plan) {
     const double t = w.thickness / 2 + 0.01, z0 = w.base + o.sill;
     holes.push_back(make_wall_box(w, o.offset, o.offset + o.width, -t, t, z0, z0 + o.height));
   }
-  const Nef solid = unite_as_balanced_tree(std::move(walls)) - unite_as_balanced_tree(std::move(holes));
+  const Nef solid =
+      unite_as_balanced_tree(std::move(walls)) - unite_as_balanced_tree(std::move(holes));
   std::vector<NefKernel::Point_3> exact;
   PolygonSoup soup;
   CGAL::convert_nef_polyhedron_to_polygon_soup(solid, exact, soup.polygons, false);

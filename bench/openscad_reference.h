@@ -19,10 +19,12 @@
 
 namespace roomcad::bench {
 
-inline std::string scad_box(const Wall& w, double u0, double u1, double w0, double w1, double z0, double z1) {
+inline std::string scad_box(const Wall& w, double u0, double u1, double w0, double w1, double z0,
+                            double z1) {
   const double deg = std::atan2(w.to.y - w.from.y, w.to.x - w.from.x) * 180.0 / std::numbers::pi;
-  return fmt::format("translate([{},{},0]) rotate([0,0,{}]) translate([{},{},{}]) cube([{},{},{}]);\n",
-                     w.from.x, w.from.y, deg, u0, w0, z0, u1 - u0, w1 - w0, z1 - z0);
+  return fmt::format(
+      "translate([{},{},0]) rotate([0,0,{}]) translate([{},{},{}]) cube([{},{},{}]);\n", w.from.x,
+      w.from.y, deg, u0, w0, z0, u1 - u0, w1 - w0, z1 - z0);
 }
 
 /// @return the plan as OpenSCAD source: walls extended by half their thickness at both ends,
@@ -37,7 +39,8 @@ inline std::string to_scad(const Plan& plan) {
   for (const Opening& o : plan.openings) {
     const Wall& w = *find_wall(plan, o.wall);
     const double t = w.thickness / 2 + 0.01;
-    out += scad_box(w, o.offset, o.offset + o.width, -t, t, w.base + o.sill, w.base + o.sill + o.height);
+    out += scad_box(w, o.offset, o.offset + o.width, -t, t, w.base + o.sill,
+                    w.base + o.sill + o.height);
   }
   return out + "}\n}\n";
 }
@@ -66,12 +69,13 @@ inline std::optional<PolygonSoup> read_off(const std::filesystem::path& path) {
 
 /// Runs `openscad -o OUT.off` on the plan in `dir`. @return its result, or nothing if
 /// openscad is missing or fails (or runs past `timeout_s` seconds).
-inline std::optional<PolygonSoup> run_openscad(const Plan& plan, const std::filesystem::path& dir, int timeout_s) {
+inline std::optional<PolygonSoup> run_openscad(const Plan& plan, const std::filesystem::path& dir,
+                                               int timeout_s) {
   const auto scad = dir / "grid.scad", off = dir / "grid.off";
   std::ofstream(scad) << to_scad(plan);
   std::filesystem::remove(off);
-  const std::string command = fmt::format("timeout {} openscad -o '{}' '{}' >/dev/null 2>&1", timeout_s,
-                                          off.string(), scad.string());
+  const std::string command = fmt::format("timeout {} openscad -o '{}' '{}' >/dev/null 2>&1",
+                                          timeout_s, off.string(), scad.string());
   if (std::system(command.c_str()) != 0) return std::nullopt;
   return read_off(off);
 }

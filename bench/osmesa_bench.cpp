@@ -15,8 +15,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "render/renderer.h"
 #include "bench/room_grid.h"
+#include "render/renderer.h"
 
 namespace roomcad {
 namespace {
@@ -52,7 +52,8 @@ GLsizei upload(const Scene& scene) {
   const auto data = reinterpret_cast<BufferData>(OSMesaGetProcAddress("glBufferData"));
   std::vector<unsigned char> colors;
   for (std::size_t t = 0; t < scene.triangle_count(); ++t)
-    for (int k = 0; k < 3; ++k) colors.insert(colors.end(), {scene.colors[t].r, scene.colors[t].g, scene.colors[t].b});
+    for (int k = 0; k < 3; ++k)
+      colors.insert(colors.end(), {scene.colors[t].r, scene.colors[t].g, scene.colors[t].b});
   GLuint buffers[2];
   gen(2, buffers);
   bind(kArrayBuffer, buffers[0]);
@@ -71,9 +72,10 @@ GLsizei upload(const Scene& scene) {
 void load_camera(const Scene& scene) {
   const double aspect = static_cast<double>(kWidth) / kHeight;
   const Camera cam = default_camera(scene.bounds, aspect);
-  const glm::dvec3 eye(cam.eye.x, cam.eye.y, cam.eye.z), target(cam.target.x, cam.target.y,
-                                                                 cam.target.z);
-  const double far = glm::length(eye - target) + glm::length(high_corner(scene.bounds) - low_corner(scene.bounds));
+  const glm::dvec3 eye(cam.eye.x, cam.eye.y, cam.eye.z),
+      target(cam.target.x, cam.target.y, cam.target.z);
+  const double far =
+      glm::length(eye - target) + glm::length(high_corner(scene.bounds) - low_corner(scene.bounds));
   const glm::mat4 projection = glm::perspective(glm::radians(cam.fov_deg), aspect, 0.05, far);
   // The scene's corners are relative to its origin (scene.h).
   const glm::mat4 view =
@@ -101,7 +103,11 @@ void BM_LlvmpipeFrame1080p(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(scene.triangle_count());
 }
 BENCHMARK(BM_LlvmpipeFrame1080p)
-    ->Arg(2)->Arg(10)->Arg(25)->Arg(50)->Arg(82)
+    ->Arg(2)
+    ->Arg(10)
+    ->Arg(25)
+    ->Arg(50)
+    ->Arg(82)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(0.3);

@@ -60,7 +60,8 @@ void BM_ApplyPlainDouble(benchmark::State& state) {
   const Transform2d t = rotate(90.0, {3.3, 1.7});
   Point2 p{1.1, 2.3};
   for (auto _ : state) {
-    p = {p.x * t.m[0][0] + p.y * t.m[1][0] + t.m[2][0], p.x * t.m[0][1] + p.y * t.m[1][1] + t.m[2][1]};
+    p = {p.x * t.m[0][0] + p.y * t.m[1][0] + t.m[2][0],
+         p.x * t.m[0][1] + p.y * t.m[1][1] + t.m[2][1]};
     benchmark::DoNotOptimize(p);
   }
 }

@@ -7,8 +7,8 @@
 #include <map>
 #include <string>
 
-#include "testing/grid_plan.h"
 #include "io/plan_json.h"
+#include "testing/grid_plan.h"
 #include "validation/validate.h"
 
 namespace {

@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   const int n = std::atoi(argv[1]), repeats = std::atoi(argv[3]), threads = std::atoi(argv[4]);
-  if (const Status written = write_plan_file(samples::make_grid_plan({.n = n}), argv[2]); !written) {
+  if (const Status written = write_plan_file(samples::make_grid_plan({.n = n}), argv[2]);
+      !written) {
     std::fprintf(stderr, "%s\n", written.error().message.c_str());
     return 2;
   }

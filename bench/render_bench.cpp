@@ -10,8 +10,8 @@
 #include <map>
 #include <memory>
 
-#include "render/renderer.h"
 #include "bench/room_grid.h"
+#include "render/renderer.h"
 
 namespace roomcad {
 namespace {
@@ -30,7 +30,8 @@ constexpr FrameOutputs kColourOnly{.depth = false, .object_ids = false};
 void BM_Frame1080p(benchmark::State& state) {
   const Scene& scene = grid_scene(static_cast<int>(state.range(0)));
   constexpr ShadowFilter filters[] = {ShadowFilter::off, ShadowFilter::pcf, ShadowFilter::hard};
-  const RenderOptions options{.width = 1920, .height = 1080,
+  const RenderOptions options{.width = 1920,
+                              .height = 1080,
                               .shadows = filters[state.range(1)],
                               .threads = static_cast<int>(state.range(2)),
                               .outputs = kColourOnly};
@@ -103,7 +104,12 @@ void BM_AntiAliasingError(benchmark::State& state) {
   state.counters["pixels_off_pct"] = 300.0 * off / static_cast<double>(ref.pixels.size());
   state.counters["frame_ms"] = frame_ms / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_AntiAliasingError)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_AntiAliasingError)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 /// Shadowed floor pixels of a hard-shadow frame (unlit: a shadowed floor pixel is darker).
 std::vector<int> shadow_classes(const FrameBuffers& out) {
@@ -115,8 +121,7 @@ std::vector<int> shadow_classes(const FrameBuffers& out) {
 }
 
 /// The ray-traced shadow class of every floor pixel of the 3 x 3 grid seen from the top.
-const std::vector<int>& reference_classes(const Model& m, const CameraMatrices& cam, int w,
-                                          int h) {
+const std::vector<int>& reference_classes(const Model& m, const CameraMatrices& cam, int w, int h) {
   static std::vector<int> classes;
   if (!classes.empty()) return classes;
   const test::RayCaster all({&m.walls, &m.floor, &m.fixtures}), occluders({&m.walls, &m.fixtures});
@@ -138,7 +143,9 @@ const std::vector<int>& reference_classes(const Model& m, const CameraMatrices& 
 void BM_ShadowResolutionError(benchmark::State& state) {
   static const Model model = samples::make_room_grid(3);
   const Scene scene = flatten_model(model);
-  RenderOptions options{.width = 800, .height = 800, .shading = ShadingMode::unlit,
+  RenderOptions options{.width = 800,
+                        .height = 800,
+                        .shading = ShadingMode::unlit,
                         .shadows = state.range(1) ? ShadowFilter::pcf : ShadowFilter::hard,
                         .shadow_resolution = static_cast<int>(state.range(0))};
   options.camera = frame_view(scene.bounds, ViewPreset::top, Projection::orthographic, 50.0, 1.0);

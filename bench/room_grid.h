@@ -13,7 +13,7 @@
 
 namespace roomcad::samples {
 
-inline constexpr double kRoom = 4.0;      // metres between wall centres
+inline constexpr double kRoom = 4.0;  // metres between wall centres
 inline constexpr double kThick = 0.2;
 inline constexpr double kHeight = 2.8;
 
@@ -23,8 +23,8 @@ inline void add_wall_with_opening(SolidMesh& mesh, glm::dvec2 start, int axis, d
                                   double width, double sill, double top, int object) {
   auto box = [&](double a0, double a1, double z0, double z1) {
     if (a1 - a0 <= 0.0 || z1 - z0 <= 0.0) return;
-    const glm::dvec3 lo = axis == 0 ? glm::dvec3(start.x + a0, start.y, z0)
-                                    : glm::dvec3(start.x, start.y + a0, z0);
+    const glm::dvec3 lo =
+        axis == 0 ? glm::dvec3(start.x + a0, start.y, z0) : glm::dvec3(start.x, start.y + a0, z0);
     const glm::dvec3 hi = axis == 0 ? glm::dvec3(start.x + a1, start.y + kThick, z1)
                                     : glm::dvec3(start.x + kThick, start.y + a1, z1);
     test::add_box(mesh, lo, hi, object);

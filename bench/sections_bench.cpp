@@ -27,9 +27,9 @@
 #include <vector>
 
 #include "bench/bundled_homes.h"
+#include "geometry/joins.h"
 #include "solid/detail/frames/buildable_plan.h"
 #include "solid/detail/general_path/primitive_section.h"
-#include "geometry/joins.h"
 
 namespace {
 
@@ -52,7 +52,8 @@ struct Sections {
 void make_sections(const Plan& input, Sections& s) {
   const BuildablePlan buildable = make_buildable(input);
   const Plan& plan = buildable.plan;
-  const std::vector<WallFrame> frames = make_wall_frames(plan, find_joins(plan), buildable.through_mitre);
+  const std::vector<WallFrame> frames =
+      make_wall_frames(plan, find_joins(plan), buildable.through_mitre);
   const std::vector<SlabFrame> slabs = make_slab_frames(plan, frames);
   std::vector<const WallFrame*> walls;
   for (const WallFrame& f : frames) walls.push_back(&f);
@@ -60,9 +61,11 @@ void make_sections(const Plan& input, Sections& s) {
   for (const SlabFrame& f : slabs) slab_ptrs.push_back(&f);
   s.box = add_box_planes(s.set, largest_coordinate(walls, slab_ptrs));
   s.prims = make_primitives(s.set, s.box, walls, slab_ptrs);
-  std::map<PlaneId, std::pair<std::size_t, Box3>> planes;  // per plane: a primitive with a face on it
+  std::map<PlaneId, std::pair<std::size_t, Box3>>
+      planes;  // per plane: a primitive with a face on it
   for (std::size_t p = 0; p < s.prims.size(); ++p)
-    for (const PlanePolygon& f : s.prims[p].faces) planes.try_emplace(f.plane.id, p, box_of(f.vertices));
+    for (const PlanePolygon& f : s.prims[p].faces)
+      planes.try_emplace(f.plane.id, p, box_of(f.vertices));
   const IntervalScope intervals;
   for (const auto& [id, owner] : planes)
     for (std::size_t p = 0; p < s.prims.size(); ++p) {
@@ -87,7 +90,8 @@ double timed_pass(const Sections& s, Make make, std::vector<std::vector<PlaneId>
     if (section)
       for (const PlaneRef& t : section->lines) lines[k].push_back(t.id);
   }
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 }  // namespace
@@ -105,22 +109,28 @@ int main(int argc, char** argv) {
     }
   }
   std::printf("%d rounds, one thread; ms per pass over every pair\n", rounds);
-  std::printf("%-28s %7s %9s %9s %9s %9s %9s %7s %s\n", "home", "pairs", "crossing", "clip_min", "clip_med",
-              "edges_min", "edges_med", "ratio", "same lines");
+  std::printf("%-28s %7s %9s %9s %9s %9s %9s %7s %s\n", "home", "pairs", "crossing", "clip_min",
+              "clip_med", "edges_min", "edges_med", "ratio", "same lines");
   for (const bench::NamedPlan& home : bench::read_homes(dirs)) {
     Sections s;
     make_sections(home.plan, s);
     std::size_t from_crossings = 0;
     {
       const IntervalScope intervals;
-      for (const auto& [p, plane] : s.pairs) from_crossings += section_from_crossings(s.set, s.prims[p], plane).has_value();
+      for (const auto& [p, plane] : s.pairs)
+        from_crossings += section_from_crossings(s.set, s.prims[p], plane).has_value();
     }
-    const auto clipped = [&](const Primitive& prim, PlaneRef plane) { return section_by_clipping(s.set, s.box, prim, plane); };
-    const auto from_edges = [&](const Primitive& prim, PlaneRef plane) { return section_of(s.set, s.box, prim, plane); };
+    const auto clipped = [&](const Primitive& prim, PlaneRef plane) {
+      return section_by_clipping(s.set, s.box, prim, plane);
+    };
+    const auto from_edges = [&](const Primitive& prim, PlaneRef plane) {
+      return section_of(s.set, s.box, prim, plane);
+    };
     std::vector<std::vector<PlaneId>> clip_lines(s.pairs.size()), edge_lines(s.pairs.size());
     std::vector<double> clip_ms, edge_ms, ratios;
     for (int r = 0; r < rounds; ++r) {
-      const double c = timed_pass(s, clipped, clip_lines), e = timed_pass(s, from_edges, edge_lines);
+      const double c = timed_pass(s, clipped, clip_lines),
+                   e = timed_pass(s, from_edges, edge_lines);
       clip_ms.push_back(c), edge_ms.push_back(e), ratios.push_back(e / c);
     }
     bool same = true;
@@ -129,7 +139,8 @@ int main(int argc, char** argv) {
       std::sort(edge_lines[k].begin(), edge_lines[k].end());
       same = clip_lines[k] == edge_lines[k];
     }
-    std::printf("%-28s %7zu %8.1f%% %9.3f %9.3f %9.3f %9.3f %7.3f %s\n", home.name.c_str(), s.pairs.size(),
+    std::printf("%-28s %7zu %8.1f%% %9.3f %9.3f %9.3f %9.3f %7.3f %s\n", home.name.c_str(),
+                s.pairs.size(),
                 100.0 * double(from_crossings) / double(std::max<std::size_t>(1, s.pairs.size())),
                 *std::min_element(clip_ms.begin(), clip_ms.end()), median(clip_ms),
                 *std::min_element(edge_ms.begin(), edge_ms.end()), median(edge_ms), median(ratios),

@@ -12,10 +12,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "testing/grid_plan.h"
 #include "io/plan_json.h"
-#include "solid/build_model.h"
 #include "render/renderer.h"
+#include "solid/build_model.h"
+#include "testing/grid_plan.h"
 
 namespace roomcad {
 namespace {
@@ -59,7 +59,9 @@ const std::array<View, 4>& views() {
 void BM_Skipping(benchmark::State& state) {
   const View& view = views()[static_cast<std::size_t>(state.range(0))];
   constexpr FaceCull culls[] = {FaceCull::none, FaceCull::back_faces, FaceCull::visibility};
-  const RenderOptions options{.width = 1920, .height = 1080, .camera = view.camera,
+  const RenderOptions options{.width = 1920,
+                              .height = 1080,
+                              .camera = view.camera,
                               .shadows = ShadowFilter::off,
                               .cull = culls[state.range(1)],
                               .cull_frustum = state.range(2) == 1,

@@ -11,9 +11,7 @@ namespace {
 
 using namespace roomcad;
 
-SurfaceExpression compile(const char* text) {
-  return parse_surface_expression(text).value();
-}
+SurfaceExpression compile(const char* text) { return parse_surface_expression(text).value(); }
 
 void BM_EvaluateDampedWave(benchmark::State& state) {
   const SurfaceExpression e = compile("cos(sqrt(x*x+z*z))/(sqrt(x*x+z*z)+1)");

@@ -50,7 +50,8 @@ Timing time_validate(const roomcad::Plan& plan, const roomcad::ValidateOptions& 
     const double all = cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - process_start;
     best.cpu_ms = std::min(best.cpu_ms, all);
     best.critical_ms = std::min(best.critical_ms, std::max(main_thread, all - main_thread));
-    best.wall_ms = std::min(best.wall_ms, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    best.wall_ms = std::min(
+        best.wall_ms, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     best.errors = report.error_count();
   }
   return best;
@@ -67,15 +68,19 @@ roomcad::Plan entrance_grid(int n) {
 /// @return "code count, ..." of the report's items.
 std::string count_codes(const roomcad::Report& report) {
   std::map<std::string, int> counts;
-  for (const roomcad::Diagnostic& d : report.items) ++counts[std::string(roomcad::to_string(d.code))];
+  for (const roomcad::Diagnostic& d : report.items)
+    ++counts[std::string(roomcad::to_string(d.code))];
   std::string out;
-  for (const auto& [code, count] : counts) out += (out.empty() ? "" : ", ") + code + " " + std::to_string(count);
+  for (const auto& [code, count] : counts)
+    out += (out.empty() ? "" : ", ") + code + " " + std::to_string(count);
   return out.empty() ? "none" : out;
 }
 
 /// The rule sets' cost: `--rules all` on grids with an entrance, findings counted per code.
 void print_rules_table(bool quick) {
-  std::printf("\n| rules all: grid | walls | openings | wall ms | cpu ms | critical path ms | findings |\n");
+  std::printf(
+      "\n| rules all: grid | walls | openings | wall ms | cpu ms | critical path ms | findings "
+      "|\n");
   std::printf("| --- | ---: | ---: | ---: | ---: | ---: | --- |\n");
   for (const int n : {7, 22, 70, 223}) {
     if (quick && n > 22) break;
@@ -95,16 +100,19 @@ void print_rules_table(bool quick) {
 void print_rule_costs(int n) {
   const roomcad::Plan plan = entrance_grid(n);
   const Timing base = time_validate(plan, {}, 3);
-  std::printf("\n| %d x %d grid, one rule | wall ms beyond validate (%.1f ms) | cpu ms beyond (%.1f ms) | findings |\n",
-              n, n, base.wall_ms, base.cpu_ms);
+  std::printf(
+      "\n| %d x %d grid, one rule | wall ms beyond validate (%.1f ms) | cpu ms beyond (%.1f ms) | "
+      "findings |\n",
+      n, n, base.wall_ms, base.cpu_ms);
   std::printf("| --- | ---: | ---: | ---: |\n");
   for (const roomcad::Code code : roomcad::kRuleCodes) {
     roomcad::ValidateOptions options;
     options.rules.enabled[*roomcad::rule_index(code)] = true;
     const Timing t = time_validate(plan, options, 3);
-    std::printf("| %s | %.1f | %.1f | %zu |\n", std::string(roomcad::to_string(code)).c_str(),
-                t.wall_ms - base.wall_ms, t.cpu_ms - base.cpu_ms, roomcad::validate(plan, options).items.size() -
-                roomcad::validate(plan).items.size());
+    std::printf(
+        "| %s | %.1f | %.1f | %zu |\n", std::string(roomcad::to_string(code)).c_str(),
+        t.wall_ms - base.wall_ms, t.cpu_ms - base.cpu_ms,
+        roomcad::validate(plan, options).items.size() - roomcad::validate(plan).items.size());
     std::fflush(stdout);
   }
 }
@@ -114,8 +122,9 @@ void print_rule_costs(int n) {
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   const int sides[] = {2, 7, 22, 70, 223};
-  std::printf("| grid | walls | openings | wall ms | cpu ms | critical path ms | no rooms: wall ms | "
-              "no rooms: cpu ms | errors |\n");
+  std::printf(
+      "| grid | walls | openings | wall ms | cpu ms | critical path ms | no rooms: wall ms | "
+      "no rooms: cpu ms | errors |\n");
   std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   for (const int n : sides) {
     if (quick && n > 22) break;

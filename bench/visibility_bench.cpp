@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "testing/grid_plan.h"
 #include "io/plan_json.h"
-#include "solid/build_model.h"
 #include "render/line_drawing.h"
 #include "render/renderer.h"
 #include "render/visibility.h"
+#include "solid/build_model.h"
+#include "testing/grid_plan.h"
 
 namespace {
 
@@ -106,7 +106,8 @@ int main(int argc, char** argv) {
   for (const BenchScene& s : scenes) {
     for (const FaceCull cull : {FaceCull::back_faces, FaceCull::visibility}) {
       benchmark::RegisterBenchmark(
-          ("BM_Render/" + s.name + (cull == FaceCull::visibility ? "/visibility" : "/back")).c_str(),
+          ("BM_Render/" + s.name + (cull == FaceCull::visibility ? "/visibility" : "/back"))
+              .c_str(),
           render_frames, &s, cull)
           ->Unit(benchmark::kMillisecond);
     }

@@ -45,8 +45,8 @@ FieldValues given_fields(const AddArgs& args) {
     const auto& [key, option] = args.fields[i];
     if (option->count() == 0) continue;
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw_usage_error(fmt::format("{} does not apply to a {} (it takes: {})",
-                                              option_name(key), args.kind, fmt::join(allowed, ", ")));
+      throw_usage_error(fmt::format("{} does not apply to a {} (it takes: {})", option_name(key),
+                                    args.kind, fmt::join(allowed, ", ")));
     given.emplace_back(key, args.values[i]);
   }
   for (const std::string_view key : required_fields(args.kind)) {
@@ -73,8 +73,8 @@ std::string field_help(std::string_view key) {
 
 void add_add_command(CLI::App& root, Commands& commands) {
   auto args = std::make_shared<AddArgs>();
-  CLI::App* app =
-      root.add_subcommand("add", "Add a level, wall, door, window, slab, light or camera to a plan");
+  CLI::App* app = root.add_subcommand(
+      "add", "Add a level, wall, door, window, slab, light or camera to a plan");
   app->footer(
       "Examples:\n"
       "  roomcad add plan.json wall --from 1,1 --to 11,1 --thickness 0.2\n"
@@ -98,13 +98,14 @@ void add_add_command(CLI::App& root, Commands& commands) {
       if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.emplace_back(key);
   args->values.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i)
-    args->fields.emplace_back(keys[i], app->add_option(option_name(keys[i]), args->values[i],
-                                                       field_help(keys[i])));
+    args->fields.emplace_back(
+        keys[i], app->add_option(option_name(keys[i]), args->values[i], field_help(keys[i])));
   add_edit_flags(*app, args->flags);
   commands.push_back({app, [args] {
                         const auto given = given_fields(*args);
-                        return run_edit("add", args->path, args->flags,
-                                        [&](Plan& plan) { return add_object(plan, args->kind, args->id, given); });
+                        return run_edit("add", args->path, args->flags, [&](Plan& plan) {
+                          return add_object(plan, args->kind, args->id, given);
+                        });
                       }});
 }
 

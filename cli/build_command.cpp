@@ -17,8 +17,8 @@
 #include "io/ifc_export.h"
 #include "io/mesh_export.h"
 #include "io/wall_check_format.h"
-#include "solid/build_model.h"
 #include "plan/plan_levels.h"
+#include "solid/build_model.h"
 #include "solid/wall_check.h"
 
 namespace roomcad::cli {
@@ -44,12 +44,12 @@ BooleanPath parse_boolean_path(const std::string& name) {
 }
 
 void print_stats(const Model& model, const BuildStats& stats) {
-  std::fprintf(stderr,
-               "build: %zu walls on the fast path, %zu on the general path, %zu on the Nef path, %.3f ms\n"
-               "  walls %zu faces, floor %zu faces, fixtures %zu faces\n",
-               stats.fast_path_walls, stats.general_path_walls, stats.nef_path_walls, stats.build_ms,
-               model.walls.n_faces(),
-               model.floor.n_faces(), model.fixtures.n_faces());
+  std::fprintf(
+      stderr,
+      "build: %zu walls on the fast path, %zu on the general path, %zu on the Nef path, %.3f ms\n"
+      "  walls %zu faces, floor %zu faces, fixtures %zu faces\n",
+      stats.fast_path_walls, stats.general_path_walls, stats.nef_path_walls, stats.build_ms,
+      model.walls.n_faces(), model.floor.n_faces(), model.fixtures.n_faces());
 }
 
 /// What -o writes: a mesh file, an IFC model (no mesh needed) or a glTF scene.
@@ -115,9 +115,10 @@ int run_build(const BuildCommandOptions& options) {
   }
   if (!options.check) return kExitOk;
   const WallCheck verdict = check_walls(model, plan);
-  std::fputs((options.format == "json" ? format_wall_check_json(verdict)
-                                       : format_wall_check_text(verdict)).c_str(),
-             stdout);
+  std::fputs(
+      (options.format == "json" ? format_wall_check_json(verdict) : format_wall_check_text(verdict))
+          .c_str(),
+      stdout);
   return verdict.ok ? kExitOk : kExitPlanErrors;
 }
 
@@ -137,9 +138,12 @@ void add_build_command(CLI::App& root, Commands& commands) {
       "written so they read back to the same doubles (except STL and glTF). The plan is\n"
       "validated first: errors stop the build unless --force.");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
-  app->add_option("-o,--output", options->out, "the file to write (.obj .off .ply .stl .glb .gltf .ifc)")
+  app->add_option("-o,--output", options->out,
+                  "the file to write (.obj .off .ply .stl .glb .gltf .ifc)")
       ->type_name("OUT");
-  app->add_option("--parts", options->parts, "what to build and write: any of walls,slabs,floor,fixtures (walls,slabs: the building's solid)")
+  app->add_option("--parts", options->parts,
+                  "what to build and write: any of walls,slabs,floor,fixtures (walls,slabs: the "
+                  "building's solid)")
       ->capture_default_str();
   app->add_option("--boolean", options->boolean,
                   "auto: the exact fast path where no boolean is needed, else the exact general\n"

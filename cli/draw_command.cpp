@@ -53,9 +53,10 @@ int run_draw(const DrawOptions& o) {
     return report_failure("draw", checked.error());
   const bool dxf = o.output.extension() == ".dxf";
   if (o.output.extension() != ".svg" && !(dxf && request.view == "plan"))
-    return report_failure("draw", {Code::unsupported, fmt::format("-o \"{}\": drawings are written "
-                                                                  "as .svg (and the plan view as .dxf too)",
-                                                                  o.output.string())});
+    return report_failure("draw",
+                          {Code::unsupported, fmt::format("-o \"{}\": drawings are written "
+                                                          "as .svg (and the plan view as .dxf too)",
+                                                          o.output.string())});
   if (o.findings && request.view != "plan")
     return report_failure("draw", {Code::usage_error, fmt::format("--findings: only the plan view "
                                                                   "marks findings, not --view {}",
@@ -114,21 +115,26 @@ void add_draw_command(CLI::App& root, Commands& commands) {
         return fmt::format("\"{}\" is not {} or camera:ID", v, fmt::join(names, ", "));
       },
       "VIEW");
-  app->add_option("--view", o->request.view, "which drawing: plan, north, south, east, west, iso, camera:ID")
+  app->add_option("--view", o->request.view,
+                  "which drawing: plan, north, south, east, west, iso, camera:ID")
       ->check(known_view)
       ->capture_default_str();
   app->add_option("--hidden", o->request.hidden, "hidden edges of views: dashed or off")
       ->check(CLI::IsMember({"dashed", "off"}))
       ->capture_default_str();
-  app->add_option("--parts", o->request.parts, "parts a view draws: walls,slabs,floor,fixtures (floor as outline)")
+  app->add_option("--parts", o->request.parts,
+                  "parts a view draws: walls,slabs,floor,fixtures (floor as outline)")
       ->capture_default_str();
   app->add_option("--scale", o->request.scale, "paper scale 1:N, between 1:1 and 1:10000")
       ->capture_default_str();
   app->add_option("--cut-height", o->request.cut_height,
                   "height of the plan's section, metres (above the level's floor with --level)")
       ->capture_default_str();
-  app->add_option("--level", o->request.level, "draw only the level with this id (plan format version 2)");
-  app->add_option("-o,--output", o->output, "OUT.svg, or OUT.dxf for the plan view (written atomically)")->required();
+  app->add_option("--level", o->request.level,
+                  "draw only the level with this id (plan format version 2)");
+  app->add_option("-o,--output", o->output,
+                  "OUT.svg, or OUT.dxf for the plan view (written atomically)")
+      ->required();
   app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
   app->add_flag("--findings", o->findings,
                 "plan view: mark what validate --rules finds in red, with its code");

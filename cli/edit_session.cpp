@@ -12,8 +12,8 @@
 #include "cli/line_diff.h"
 #include "cli/plan_loading.h"
 #include "io/plan_json.h"
-#include "solid/build_model.h"
 #include "plan/value_text.h"
+#include "solid/build_model.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
 #include "validation/validate.h"
@@ -52,8 +52,8 @@ bool accept_new_errors(std::string_view command, const std::string& path, const 
 /// Prints why an edit was not made. @return its exit status: 1 refused, 2 cannot be made.
 int report_not_made(std::string_view command, std::string_view path, const Error& error) {
   if (error.code == Code::edit_refused) {
-    fmt::print(stderr, "roomcad {}: refused: {}; '{}' is left as it was\n", command,
-               error.message, path);
+    fmt::print(stderr, "roomcad {}: refused: {}; '{}' is left as it was\n", command, error.message,
+               path);
     return kExitPlanErrors;
   }
   std::string_view message = error.message;  // "<command>: ...", as the edits name their verb
@@ -68,8 +68,9 @@ int report_not_made(std::string_view command, std::string_view path, const Error
 void add_edit_flags(CLI::App& command, EditFlags& flags) {
   command.add_flag("--force", flags.force,
                    "write the edit even if it introduces plan errors (they are printed)");
-  command.add_flag("--dry-run", flags.dry_run,
-                   "print what would change (objects, then a line diff of the file), write nothing");
+  command.add_flag(
+      "--dry-run", flags.dry_run,
+      "print what would change (objects, then a line diff of the file), write nothing");
   add_wait_option(command, flags.wait_seconds);
 }
 
@@ -91,11 +92,13 @@ int run_edit(std::string_view command, const std::string& path, const EditFlags&
     fmt::print("nothing to change: '{}' is left as it was\n", path);
     return kExitOk;
   }
-  if (!accept_new_errors(command, path, flags, introduced_errors(validate(read->plan), validate(edited))))
+  if (!accept_new_errors(command, path, flags,
+                         introduced_errors(validate(read->plan), validate(edited))))
     return kExitPlanErrors;
   print_summary(summary);
   if (flags.dry_run) {
-    std::fputs(diff_lines(read->text, write_plan_text(edited)).c_str(), stdout);  // the file as it is
+    std::fputs(diff_lines(read->text, write_plan_text(edited)).c_str(),
+               stdout);  // the file as it is
     fmt::print("dry run: '{}' not written\n", path);
     return kExitOk;
   }

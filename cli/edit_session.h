@@ -28,8 +28,8 @@ namespace roomcad::cli {
 
 /// The flags every edit command takes.
 struct EditFlags {
-  bool force = false;    ///< write even when the edit introduces errors
-  bool dry_run = false;  ///< print what would change, write nothing (takes no lock)
+  bool force = false;         ///< write even when the edit introduces errors
+  bool dry_run = false;       ///< print what would change, write nothing (takes no lock)
   double wait_seconds = 0.0;  ///< how long to wait for another editor's lock (--wait)
 };
 

@@ -2,10 +2,10 @@
 // `roomcad fmt PLAN [-o OUT] [--check]`: rewrites a plan in the canonical form.
 #include <algorithm>
 #include <cstdio>
-#include <vector>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
@@ -54,7 +54,8 @@ int run_fmt(const FmtOptions& options) {
   if (!options.out.empty() && options.plans.size() != 1)
     return report_failure("fmt", {Code::usage_error, "-o/--output takes exactly one PLAN"});
   int status = kExitOk;
-  for (const std::string& plan : options.plans) status = std::max(status, format_one(options, plan));
+  for (const std::string& plan : options.plans)
+    status = std::max(status, format_one(options, plan));
   return status;
 }
 

@@ -26,7 +26,7 @@ struct ImportArgs {
   std::string level;  ///< empty: every level
   bool ceilings = false;
   std::optional<double> chord_tolerance;  ///< unset: the format's default
-  double wait_seconds = 0.0;  ///< --wait: for an editor of the plan being replaced
+  double wait_seconds = 0.0;              ///< --wait: for an editor of the plan being replaced
 };
 
 void print_warnings(const Report& warnings) {
@@ -53,17 +53,19 @@ int run_ifc_import(const ImportArgs& args) {
     report_failure("import", imported.error());
     return kExitCannotRun;  // a model that cannot be read is not a plan with errors: no plan yet
   }
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const IfcImport& r = imported.value();
   print_warnings(r.warnings);
   if (const Status written = write_plan_file(r.plan, args.output); !written)
     return report_failure("import", written.error());
-  fmt::print(stderr,
-             "roomcad import: {} ({}): {} of {} walls, {} of {} openings, {} of {} slabs, {} levels; "
-             "{} other elements skipped; {} warnings; {:.0f} ms; written to {}\n",
-             args.home, r.schema, r.plan.walls.size(), r.source_walls, r.plan.openings.size(),
-             r.source_openings, r.plan.slabs.size(), r.source_slabs, r.storeys, r.skipped,
-             r.warnings.items.size(), ms, args.output);
+  fmt::print(
+      stderr,
+      "roomcad import: {} ({}): {} of {} walls, {} of {} openings, {} of {} slabs, {} levels; "
+      "{} other elements skipped; {} warnings; {:.0f} ms; written to {}\n",
+      args.home, r.schema, r.plan.walls.size(), r.source_walls, r.plan.openings.size(),
+      r.source_openings, r.plan.slabs.size(), r.source_slabs, r.storeys, r.skipped,
+      r.warnings.items.size(), ms, args.output);
   return kExitOk;
 }
 
@@ -86,10 +88,11 @@ int run_import(const ImportArgs& args) {
   if (!lock) return exit_status_of(lock.code());
   if (const Status written = write_plan_file(plan, args.output); !written)
     return report_failure("import", written.error());
-  fmt::print(stderr,
-             "roomcad import: {} levels, {} walls, {} openings and {} slabs from {} written to {}\n",
-             plan.levels.size(), plan.walls.size(), plan.openings.size(), plan.slabs.size(),
-             args.home, args.output);
+  fmt::print(
+      stderr,
+      "roomcad import: {} levels, {} walls, {} openings and {} slabs from {} written to {}\n",
+      plan.levels.size(), plan.walls.size(), plan.openings.size(), plan.slabs.size(), args.home,
+      args.output);
   return kExitOk;
 }
 
@@ -106,7 +109,8 @@ void add_import_command(CLI::App& root, Commands& commands) {
       "be represented (doors and windows that fit no wall, walls of no length, IFC bodies that "
       "are not extrusions) and elements left out are reported as warnings naming the wall, item "
       "or entity (\"#1234 IFCCURTAINWALL\").");
-  app->add_option("home", args->home, "Sweet Home 3D Home.xml or .sh3d file, or an .ifc file")->required();
+  app->add_option("home", args->home, "Sweet Home 3D Home.xml or .sh3d file, or an .ifc file")
+      ->required();
   app->add_option("-o,--output", args->output, "plan JSON file to write")->required();
   app->add_option("--level", args->level, "import only the level with this name");
   app->add_flag("--ceilings", args->ceilings,

@@ -41,7 +41,7 @@ struct PlanInfo {
   std::size_t windows = 0;
   double total_wall_length = 0.0;
   double max_wall_height = 0.0;
-  std::optional<Box3> bounds;  ///< of the walls' footprints, base to top
+  std::optional<Box3> bounds;     ///< of the walls' footprints, base to top
   std::vector<LevelRooms> rooms;  ///< closed regions of the walls, level by level, with their
                                   ///< clear floor areas
 };
@@ -70,7 +70,8 @@ std::optional<Point2> side_crossing(const WallEndView& a, double side_a, const W
 /// and at an end point shared by exactly two walls, the two corners of their mitre.
 PlanInfo measure(const Plan& plan) {
   PlanInfo info;
-  for (const Opening& o : plan.openings) (o.type == OpeningType::door ? info.doors : info.windows)++;
+  for (const Opening& o : plan.openings)
+    (o.type == OpeningType::door ? info.doors : info.windows)++;
   std::vector<std::pair<WallEndView, const Wall*>> ends;
   for (const Wall& w : plan.walls) {
     const double dx = w.to.x - w.from.x;
@@ -156,11 +157,13 @@ std::string json_rooms(const std::vector<LevelRooms>& levels) {
   for (const LevelRooms& l : levels)
     for (std::size_t i = 0; i < l.rooms.size(); ++i, first = false) {
       const Room& r = l.rooms[i];
-      out += fmt::format("{}\n    {{\"name\": \"room {}\", {}\"area\": {}, \"walls\": {}, \"doors\": {}, "
-                         "\"windows\": {}}}", first ? "" : ",", i + 1,
-                         l.level.empty() ? "" : fmt::format("\"level\": {}, ", json_string(l.level)),
-                         json_number(r.area), json_strings(r.walls), json_strings(r.doors),
-                         json_strings(r.windows));
+      out += fmt::format(
+          "{}\n    {{\"name\": \"room {}\", {}\"area\": {}, \"walls\": {}, \"doors\": {}, "
+          "\"windows\": {}}}",
+          first ? "" : ",", i + 1,
+          l.level.empty() ? "" : fmt::format("\"level\": {}, ", json_string(l.level)),
+          json_number(r.area), json_strings(r.walls), json_strings(r.doors),
+          json_strings(r.windows));
     }
   return out + (first ? "],\n" : "\n  ],\n");
 }
@@ -173,7 +176,8 @@ std::string text_rooms(const std::vector<LevelRooms>& levels) {
   };
   std::size_t count = 0;
   for (const LevelRooms& l : levels) count += l.rooms.size();
-  std::string out = fmt::format("  rooms     {}{}\n", count, count == 0 ? " (no closed region of walls)" : "");
+  std::string out =
+      fmt::format("  rooms     {}{}\n", count, count == 0 ? " (no closed region of walls)" : "");
   for (const LevelRooms& l : levels)
     for (std::size_t i = 0; i < l.rooms.size(); ++i) {
       const Room& r = l.rooms[i];
@@ -215,11 +219,12 @@ void print_json(const std::string& file, const Plan& plan, const PlanInfo& info)
 void print_text(const std::string& file, const Plan& plan, const PlanInfo& info) {
   const Site& s = plan.site;
   std::string out = file + '\n';
-  out += fmt::format("  site      {} x {} cells of {} m = {} m x {} m from ({}, {}), max height {} m\n",
-                     s.cells[0], s.cells[1], metres(s.cell_size),
-                     metres(static_cast<double>(s.cells[0]) * s.cell_size),
-                     metres(static_cast<double>(s.cells[1]) * s.cell_size), metres(s.origin.x),
-                     metres(s.origin.y), metres(s.max_height));
+  out += fmt::format(
+      "  site      {} x {} cells of {} m = {} m x {} m from ({}, {}), max height {} m\n",
+      s.cells[0], s.cells[1], metres(s.cell_size),
+      metres(static_cast<double>(s.cells[0]) * s.cell_size),
+      metres(static_cast<double>(s.cells[1]) * s.cell_size), metres(s.origin.x), metres(s.origin.y),
+      metres(s.max_height));
   out += fmt::format("  walls     {}, {} m long in all, up to {} m high\n", plan.walls.size(),
                      metres(info.total_wall_length), metres(info.max_wall_height));
   out += fmt::format("  openings  {}: {} door{}, {} window{}\n", plan.openings.size(), info.doors,

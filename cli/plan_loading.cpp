@@ -26,8 +26,9 @@ namespace {
 
 /// The report's first error as the reason a command stops, worded as its summary line.
 Error first_error(const Report& report, const std::filesystem::path& path) {
-  const auto error = std::find_if(report.items.begin(), report.items.end(),
-                                  [](const Diagnostic& d) { return d.severity == Severity::error; });
+  const auto error =
+      std::find_if(report.items.begin(), report.items.end(),
+                   [](const Diagnostic& d) { return d.severity == Severity::error; });
   return Error{error == report.items.end() ? Code::invalid_value : error->code,
                fmt::format("{}: {}", path.string(), format_report_summary(report))};
 }

@@ -13,10 +13,10 @@
 #include "cli/plan_loading.h"
 #include "io/id_image.h"
 #include "io/image_io.h"
-#include "solid/build_model.h"
 #include "plan/plan_levels.h"
 #include "render/render_request.h"
 #include "render/renderer.h"
+#include "solid/build_model.h"
 
 namespace roomcad::cli {
 namespace {
@@ -53,7 +53,8 @@ int run_render(const RenderArgs& a) {
     std::fprintf(stderr, "roomcad render: warning: %s has %zu lights; the first %d are drawn\n",
                  a.plan.c_str(), plan.lights.size(), kMaxLights);
   }
-  const Model model = build_model(plan, BuildOptions{.parts = options.parts, .threads = a.request.threads});
+  const Model model =
+      build_model(plan, BuildOptions{.parts = options.parts, .threads = a.request.threads});
   FrameBuffers out;
   RenderStats stats;
   render_model(model, options, out, &stats);
@@ -79,30 +80,45 @@ void add_render_command(CLI::App& root, Commands& commands) {
   app->add_option("plan", args->plan, "The plan file (JSON)")->required();
   app->add_option("-o,--output", args->output, "The picture to write (PNG)")->required();
   const auto pixels = CLI::Range(1, kMaxImageSide);
-  app->add_option("--width", args->request.width, "Picture width in pixels")->check(pixels)->capture_default_str();
-  app->add_option("--height", args->request.height, "Picture height in pixels")->check(pixels)->capture_default_str();
+  app->add_option("--width", args->request.width, "Picture width in pixels")
+      ->check(pixels)
+      ->capture_default_str();
+  app->add_option("--height", args->request.height, "Picture height in pixels")
+      ->check(pixels)
+      ->capture_default_str();
   app->add_option("--camera", args->request.camera, "Use the plan's camera with this id");
   app->add_option("--eye", args->request.eye, "Camera position x,y,z (metres), with --target");
   app->add_option("--target", args->request.target, "Point looked at x,y,z (metres), with --eye");
   app->add_option("--up", args->request.up, "Camera up direction x,y,z")->capture_default_str();
   app->add_option("--fov", args->request.fov, "Vertical field of view, degrees (perspective)")
-      ->check(CLI::Range(1e-3, 179.999))->capture_default_str();
-  app->add_option("--projection", args->request.projection, "perspective or orthographic")->capture_default_str();
-  app->add_option("--view-height", args->request.view_height, "Metres seen vertically (orthographic)")
-      ->check(CLI::PositiveNumber)->capture_default_str();
+      ->check(CLI::Range(1e-3, 179.999))
+      ->capture_default_str();
+  app->add_option("--projection", args->request.projection, "perspective or orthographic")
+      ->capture_default_str();
+  app->add_option("--view-height", args->request.view_height,
+                  "Metres seen vertically (orthographic)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app->add_option("--level", args->level,
                   "Render only the level with this id (its walls, openings and slabs, at their "
                   "height)");
-  app->add_option("--view", args->request.view, "Frame the model from front|back|left|right|top|iso (default iso)");
-  app->add_option("--shading", args->request.shading, "unlit, flat, gouraud or phong")->capture_default_str();
+  app->add_option("--view", args->request.view,
+                  "Frame the model from front|back|left|right|top|iso (default iso)");
+  app->add_option("--shading", args->request.shading, "unlit, flat, gouraud or phong")
+      ->capture_default_str();
   app->add_option("--shadows", args->request.shadows, "off, hard or pcf")->capture_default_str();
   app->add_option("--shadow-res", args->request.shadow_res, "Shadow-map texels per side")
-      ->check(CLI::Range(1, kMaxShadowResolution))->capture_default_str();
+      ->check(CLI::Range(1, kMaxShadowResolution))
+      ->capture_default_str();
   app->add_option("--ssaa", args->request.ssaa, "Supersampling per pixel side: 1, 2 or 4")
-      ->check(CLI::IsMember({1, 2, 4}))->capture_default_str();
-  app->add_option("--background", args->request.background, "Background colour #rrggbb")->capture_default_str();
-  app->add_option("--grid", args->request.grid, "Draw the site's tiles on the floor: on or off")->capture_default_str();
-  app->add_option("--parts", args->request.parts, "Parts to draw: walls,floor,fixtures")->capture_default_str();
+      ->check(CLI::IsMember({1, 2, 4}))
+      ->capture_default_str();
+  app->add_option("--background", args->request.background, "Background colour #rrggbb")
+      ->capture_default_str();
+  app->add_option("--grid", args->request.grid, "Draw the site's tiles on the floor: on or off")
+      ->capture_default_str();
+  app->add_option("--parts", args->request.parts, "Parts to draw: walls,floor,fixtures")
+      ->capture_default_str();
   app->add_option("--cull", args->request.cull,
                   "none: draw every face; back: skip faces turned away; visibility: also faces "
                   "Makarov & Safin's visible-surface pre-pass finds hidden (same picture)")
@@ -114,7 +130,8 @@ void add_render_command(CLI::App& root, Commands& commands) {
       ->capture_default_str();
   app->add_option("--depth", args->depth, "Also write the depth (metres along the view) as PFM");
   app->add_option("--ids", args->ids, "Also write object ids as PNG, with a JSON legend beside it");
-  app->add_option("--threads", args->request.threads, "Threads, 0 = all cores (same picture at any count)")
+  app->add_option("--threads", args->request.threads,
+                  "Threads, 0 = all cores (same picture at any count)")
       ->check(CLI::Range(0, kMaxThreads));
   app->add_flag("--force", args->force, "Render even if the plan has validation errors");
   app->add_flag("--stats", args->stats, "Print triangles and timings as one JSON line on stderr");

@@ -29,14 +29,14 @@ Result<EditSummary> set_all(Plan& plan, const SetArgs& args) {
     const std::size_t eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0)
       return Result<EditSummary>::failure(
-          Code::usage_error,
-          fmt::format("'{}' is not key=value (e.g. thickness=0.3)", assignment));
+          Code::usage_error, fmt::format("'{}' is not key=value (e.g. thickness=0.3)", assignment));
     const std::string key = assignment.substr(0, eq);
     const std::string value = assignment.substr(eq + 1);
     Result<EditSummary> set = set_field(plan, id, key, value);
     if (!set) return set.error();
     for (std::string& changed : set->changed)
-      if (std::find(summary.changed.begin(), summary.changed.end(), changed) == summary.changed.end())
+      if (std::find(summary.changed.begin(), summary.changed.end(), changed) ==
+          summary.changed.end())
         summary.changed.push_back(std::move(changed));
     if (key == "id") id = value;  // later assignments address the renamed object
   }

@@ -80,8 +80,8 @@ std::string lower_extension(const std::filesystem::path& path) {
 int run_surface(const SurfaceOptions& o) {
   Result<SurfaceExpression> parsed = parse_surface_expression(o.expression);
   if (!parsed)
-    return report_failure("surface", usage_error(fmt::format("EXPR \"{}\": {}", o.expression,
-                                                             parsed.message())));
+    return report_failure(
+        "surface", usage_error(fmt::format("EXPR \"{}\": {}", o.expression, parsed.message())));
   const SurfaceExpression expression = std::move(parsed).value();
   SurfaceView view{.rotate_x_deg = o.rotate_x, .rotate_y_deg = o.rotate_y};
   const Result<std::pair<double, double>> x = parse_range("--x", o.x_range);

@@ -39,7 +39,8 @@ CLI::App* add_transform(CLI::App& root, const std::string& name, const std::stri
               "file untouched) unless --force.");
   app->add_option("PLAN", args.path, "plan file to edit")->required();
   app->add_option("ID", args.id, "id of the object to transform");
-  app->add_flag("--all", args.all, "transform the whole plan (site included) instead of one object");
+  app->add_flag("--all", args.all,
+                "transform the whole plan (site included) instead of one object");
   add_edit_flags(*app, args.flags);
   return app;
 }
@@ -65,7 +66,7 @@ int run_transform(const std::string& name, const TransformArgs& args, const Sign
                   bool undoable) {
   if (args.all == !args.id.empty())
     throw_usage_error(args.all ? "give an object ID or --all, not both"
-                                         : "give the ID of the object to transform, or --all");
+                               : "give the ID of the object to transform, or --all");
   return run_edit(name, args.path, args.flags, [&](Plan& plan) {
     const Plan before = plan;
     EditSummary summary = edit(plan, 1.0);
@@ -81,28 +82,33 @@ std::optional<Point2> optional_about(const TransformArgs& args) {
 
 void add_move(CLI::App& root, Commands& commands) {
   auto args = std::make_shared<TransformArgs>();
-  CLI::App* app = add_transform(root, "move", "Move an object, or the whole plan, by a distance",
-                                "Examples:\n"
-                                "  roomcad move plan.json south --by 0.5,0      # a wall and its openings\n"
-                                "  roomcad move plan.json win1 --by -0.25       # an opening along its wall\n"
-                                "  roomcad move plan.json --all --by 2,-1\n",
-                                *args);
-  app->add_option("--by", args->amount, "dx,dy in metres; for a door or window one number du, "
-                                        "along its wall")->required();
-  commands.push_back({app, [args] {
-    const auto by = parse_point2(args->amount);
-    const auto du = parse_number(args->amount);
-    if (!by && (!du || args->all))
-      throw_usage_error(fmt::format(
-          "--by wants dx,dy in metres{}, got '{}'",
-          args->all ? "" : " (or one number du to move a door or window along its wall)", args->amount));
-    const auto move = [&](Plan& plan, double sign) {
-      if (!by) return slide_opening(plan, args->id, sign * *du);
-      const Point2 shift{sign * by->x, sign * by->y};
-      return args->all ? move_all(plan, shift) : move_object(plan, args->id, shift);
-    };
-    return run_transform("move", *args, move, true);
-  }});
+  CLI::App* app =
+      add_transform(root, "move", "Move an object, or the whole plan, by a distance",
+                    "Examples:\n"
+                    "  roomcad move plan.json south --by 0.5,0      # a wall and its openings\n"
+                    "  roomcad move plan.json win1 --by -0.25       # an opening along its wall\n"
+                    "  roomcad move plan.json --all --by 2,-1\n",
+                    *args);
+  app->add_option("--by", args->amount,
+                  "dx,dy in metres; for a door or window one number du, "
+                  "along its wall")
+      ->required();
+  commands.push_back(
+      {app, [args] {
+         const auto by = parse_point2(args->amount);
+         const auto du = parse_number(args->amount);
+         if (!by && (!du || args->all))
+           throw_usage_error(fmt::format(
+               "--by wants dx,dy in metres{}, got '{}'",
+               args->all ? "" : " (or one number du to move a door or window along its wall)",
+               args->amount));
+         const auto move = [&](Plan& plan, double sign) {
+           if (!by) return slide_opening(plan, args->id, sign * *du);
+           const Point2 shift{sign * by->x, sign * by->y};
+           return args->all ? move_all(plan, shift) : move_object(plan, args->id, shift);
+         };
+         return run_transform("move", *args, move, true);
+       }});
 }
 
 /// rotate and scale: one number (--deg / --factor) and an optional centre (--about).
@@ -121,51 +127,54 @@ void add_about_command(CLI::App& root, Commands& commands, const AboutCommand& s
   auto args = std::make_shared<TransformArgs>();
   CLI::App* app = add_transform(root, spec.name, spec.description, spec.footer, *args);
   app->add_option(spec.amount_option, args->amount, spec.amount_help)->required();
-  app->add_option("--about", args->about, "centre x,y in metres (default: a wall's midpoint, a "
-                                          "camera's target, the site's centre for --all)");
+  app->add_option("--about", args->about,
+                  "centre x,y in metres (default: a wall's midpoint, a "
+                  "camera's target, the site's centre for --all)");
   commands.push_back({app, [args, spec] {
-    const double amount = require_number(spec.amount_option, args->amount);
-    const auto about = optional_about(*args);
-    const auto edit = [&](Plan& plan, double sign) {
-      return args->all ? spec.whole(plan, sign * amount, about)
-                       : spec.one(plan, args->id, sign * amount, about);
-    };
-    return run_transform(spec.name, *args, edit, spec.undo_is_exact(amount));
-  }});
+                        const double amount = require_number(spec.amount_option, args->amount);
+                        const auto about = optional_about(*args);
+                        const auto edit = [&](Plan& plan, double sign) {
+                          return args->all ? spec.whole(plan, sign * amount, about)
+                                           : spec.one(plan, args->id, sign * amount, about);
+                        };
+                        return run_transform(spec.name, *args, edit, spec.undo_is_exact(amount));
+                      }});
 }
 
 }  // namespace
 
 void add_transform_commands(CLI::App& root, Commands& commands) {
   add_move(root, commands);
-  add_about_command(root, commands, {
-      .name = "rotate",
-      .description = "Turn an object, or the whole plan, counter-clockwise",
-      .footer = "Examples:\n"
-                "  roomcad rotate plan.json south --deg 90          # about its midpoint\n"
-                "  roomcad rotate plan.json view --deg -30 --about 6,4\n"
-                "  roomcad rotate plan.json --all --deg 90          # about the site centre\n"
-                "Multiples of 90 degrees are exact: four quarter turns give back the file.\n"
-                "A light's direction turns; a camera turns about its target by default.\n",
-      .amount_option = "--deg",
-      .amount_help = "angle in degrees, counter-clockwise",
-      .one = rotate_object,
-      .whole = rotate_all,
-      .undo_is_exact = is_quarter_turn});
-  add_about_command(root, commands, {
-      .name = "scale",
-      .description = "Scale an object, or the whole plan, in plan",
-      .footer = "Examples:\n"
-                "  roomcad scale plan.json south --factor 1.5 --about 1,1\n"
-                "  roomcad scale plan.json --all --factor 0.5\n"
-                "Scales positions and lengths in plan (openings' offsets and widths with\n"
-                "their wall, the site's cell size with --all); heights and wall\n"
-                "thickness are kept.\n",
-      .amount_option = "--factor",
-      .amount_help = "scale factor, > 0",
-      .one = scale_object,
-      .whole = scale_all,
-      .undo_is_exact = [](double) { return false; }});  // 1/factor is rarely a short decimal
+  add_about_command(
+      root, commands,
+      {.name = "rotate",
+       .description = "Turn an object, or the whole plan, counter-clockwise",
+       .footer = "Examples:\n"
+                 "  roomcad rotate plan.json south --deg 90          # about its midpoint\n"
+                 "  roomcad rotate plan.json view --deg -30 --about 6,4\n"
+                 "  roomcad rotate plan.json --all --deg 90          # about the site centre\n"
+                 "Multiples of 90 degrees are exact: four quarter turns give back the file.\n"
+                 "A light's direction turns; a camera turns about its target by default.\n",
+       .amount_option = "--deg",
+       .amount_help = "angle in degrees, counter-clockwise",
+       .one = rotate_object,
+       .whole = rotate_all,
+       .undo_is_exact = is_quarter_turn});
+  add_about_command(
+      root, commands,
+      {.name = "scale",
+       .description = "Scale an object, or the whole plan, in plan",
+       .footer = "Examples:\n"
+                 "  roomcad scale plan.json south --factor 1.5 --about 1,1\n"
+                 "  roomcad scale plan.json --all --factor 0.5\n"
+                 "Scales positions and lengths in plan (openings' offsets and widths with\n"
+                 "their wall, the site's cell size with --all); heights and wall\n"
+                 "thickness are kept.\n",
+       .amount_option = "--factor",
+       .amount_help = "scale factor, > 0",
+       .one = scale_object,
+       .whole = scale_all,
+       .undo_is_exact = [](double) { return false; }});  // 1/factor is rarely a short decimal
 }
 
 }  // namespace roomcad::cli

@@ -90,11 +90,13 @@ void add_validate_command(CLI::App& root, Commands& commands) {
       "baseline's items that are gone are listed as fixed.");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
   add_format_option(*app, options->format);
-  app->add_option("--rules", options->rules,
-                  "rule set: default (the format's checks), accessibility, all, or a rules file (JSON)")
+  app->add_option(
+         "--rules", options->rules,
+         "rule set: default (the format's checks), accessibility, all, or a rules file (JSON)")
       ->type_name("NAME|FILE")
       ->capture_default_str();
-  app->add_option("--baseline", options->baseline, "an earlier revision of the plan to compare with")
+  app->add_option("--baseline", options->baseline,
+                  "an earlier revision of the plan to compare with")
       ->type_name("OLD");
   app->footer(
       "Exit status: 0 no errors (warnings allowed); 1 the plan has errors; 2 could not run\n"
@@ -104,7 +106,8 @@ void add_validate_command(CLI::App& root, Commands& commands) {
       "  roomcad validate examples/house.json\n"
       "  roomcad validate --format json plan.json\n"
       "  roomcad validate plan.json --rules all\n"
-      "  roomcad validate plan.json --rules examples/rules/accessible-ground-floor.json --baseline old.json");
+      "  roomcad validate plan.json --rules examples/rules/accessible-ground-floor.json --baseline "
+      "old.json");
   commands.push_back({app, [options] { return run_validate(*options); }});
 }
 

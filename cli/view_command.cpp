@@ -25,13 +25,15 @@ struct ViewArgs {
 
 /// @return the viewer options the flags ask for, or an error naming the flag and value.
 Result<ViewerOptions> make_options(const ViewArgs& a, const Plan& plan) {
-  ViewerOptions o{.width = a.width, .height = a.height, .overlay = !a.no_overlay, .threads = a.threads};
+  ViewerOptions o{
+      .width = a.width, .height = a.height, .overlay = !a.no_overlay, .threads = a.threads};
   if (const Status size = check_render_options({.width = a.width, .height = a.height}); !size)
     return Result<ViewerOptions>::failure(Code::usage_error,
                                           fmt::format("--width, --height: {}", size.message()));
   const auto preset = parse_view_preset(a.view);
   if (!preset)
-    return Result<ViewerOptions>::failure(Code::usage_error,
+    return Result<ViewerOptions>::failure(
+        Code::usage_error,
         fmt::format("--view '{}': expected one of front, back, left, right, top, iso", a.view));
   o.view = *preset;
   if (const Result<Plan> level = select_level(plan, a.level); !level) return level.error();
@@ -40,7 +42,8 @@ Result<ViewerOptions> make_options(const ViewArgs& a, const Plan& plan) {
   for (const Camera& c : plan.cameras)
     if (c.id == a.camera) o.camera = c;
   if (!o.camera)
-    return Result<ViewerOptions>::failure(Code::usage_error,
+    return Result<ViewerOptions>::failure(
+        Code::usage_error,
         fmt::format("--camera '{}': {} has no camera with that id", a.camera, a.plan));
   return o;
 }
@@ -71,23 +74,32 @@ int run_view(const ViewArgs& a) {
 
 void add_view_command(CLI::App& root, Commands& commands) {
   auto args = std::make_shared<ViewArgs>();
-  CLI::App* app = root.add_subcommand("view", "Open a window on the plan: look around, select, edit, save");
+  CLI::App* app =
+      root.add_subcommand("view", "Open a window on the plan: look around, select, edit, save");
   app->add_option("plan", args->plan, "The plan file (JSON)")->required();
   const auto pixels = CLI::Range(1, 16384);
-  app->add_option("--width", args->width, "Window width in pixels")->check(pixels)->capture_default_str();
-  app->add_option("--height", args->height, "Window height in pixels")->check(pixels)->capture_default_str();
+  app->add_option("--width", args->width, "Window width in pixels")
+      ->check(pixels)
+      ->capture_default_str();
+  app->add_option("--height", args->height, "Window height in pixels")
+      ->check(pixels)
+      ->capture_default_str();
   app->add_option("--camera", args->camera, "Start from the plan's camera with this id");
   app->add_option("--view", args->view, "Else frame the model from front|back|left|right|top|iso")
       ->capture_default_str();
-  app->add_option("--keys", args->keys, "Inputs applied at start: " + std::string(kKeyScriptSyntax));
+  app->add_option("--keys", args->keys,
+                  "Inputs applied at start: " + std::string(kKeyScriptSyntax));
   app->add_option("--screenshot", args->screenshot,
                   "Show --frames frames, save the window's content as this PNG and close");
   app->add_option("--frames", args->frames, "Frames shown before the screenshot")
-      ->check(CLI::Range(1, 1000))->capture_default_str();
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
   app->add_option("--level", args->level,
                   "Start showing only the level with this id ('l' steps through the levels)");
-  app->add_flag("--no-overlay", args->no_overlay, "Start without the text overlay ('o' toggles it)");
-  app->add_option("--threads", args->threads, "Render threads, 0 = all cores")->check(CLI::NonNegativeNumber);
+  app->add_flag("--no-overlay", args->no_overlay,
+                "Start without the text overlay ('o' toggles it)");
+  app->add_option("--threads", args->threads, "Render threads, 0 = all cores")
+      ->check(CLI::NonNegativeNumber);
   add_wait_option(*app, args->wait_seconds,
                   "seconds a save (Ctrl+S, Ctrl+K) waits for another editor of the plan to "
                   "finish; then it is not made, and says who holds the plan");

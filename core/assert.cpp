@@ -10,8 +10,8 @@
 namespace roomcad::core_detail {
 
 void assertion_failed(const char* condition, const char* why, const char* file, int line) {
-  const std::string message = "internal error: " + std::string(file) + ":" +
-                              std::to_string(line) + ": " + condition + " (" + why + ")";
+  const std::string message = "internal error: " + std::string(file) + ":" + std::to_string(line) +
+                              ": " + condition + " (" + why + ")";
 #ifdef NDEBUG
   throw PreconditionError(message, Code::internal);
 #else

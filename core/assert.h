@@ -18,7 +18,7 @@ namespace roomcad::core_detail {
                                    int line);
 }  // namespace roomcad::core_detail
 
-#define RC_ASSERT(condition, why)                                                          \
-  (__builtin_expect(static_cast<bool>(condition), 1)                                     \
-       ? static_cast<void>(0)                                                             \
+#define RC_ASSERT(condition, why)                    \
+  (__builtin_expect(static_cast<bool>(condition), 1) \
+       ? static_cast<void>(0)                        \
        : ::roomcad::core_detail::assertion_failed(#condition, why, __FILE__, __LINE__))

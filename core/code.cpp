@@ -2,8 +2,8 @@
 #include "core/code.h"
 
 #include <array>
-#include <ostream>
 #include <cstddef>
+#include <ostream>
 
 namespace roomcad {
 namespace {

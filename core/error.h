@@ -48,8 +48,8 @@ std::ostream& operator<<(std::ostream& out, const Error& error);
 /// Success, or an Error. `if (!status) ... status.error()`.
 class [[nodiscard]] Status {
  public:
-  Status() = default;                                       ///< success
-  Status(Error error) : error_(std::move(error)) {}         // NOLINT: implicit, as std::unexpected
+  Status() = default;                                ///< success
+  Status(Error error) : error_(std::move(error)) {}  // NOLINT: implicit, as std::unexpected
   static Status success() { return {}; }
   static Status failure(Code code, std::string message, std::optional<Location> at = {}) {
     return Error{code, std::move(message), std::move(at)};
@@ -70,7 +70,7 @@ class [[nodiscard]] Status {
 template <class T>
 class [[nodiscard]] Result {
  public:
-  Result(T value) : value_(std::move(value)) {}    // NOLINT: implicit, like std::expected
+  Result(T value) : value_(std::move(value)) {}      // NOLINT: implicit, like std::expected
   Result(Error error) : error_(std::move(error)) {}  // NOLINT
   static Result failure(Code code, std::string message, std::optional<Location> at = {}) {
     return Error{code, std::move(message), std::move(at)};

@@ -31,7 +31,9 @@ namespace roomcad {
 
 /// Hash of a 64-bit key or an array of them, for FlatIndex.
 struct BitsHash {
-  [[nodiscard]] std::size_t operator()(std::uint64_t key) const { return std::size_t(mix_bits(key)); }
+  [[nodiscard]] std::size_t operator()(std::uint64_t key) const {
+    return std::size_t(mix_bits(key));
+  }
   template <std::size_t N>
   [[nodiscard]] std::size_t operator()(const std::array<std::uint64_t, N>& key) const {
     std::uint64_t h = 0;
@@ -47,7 +49,8 @@ template <class Key>
   return a == b;
 }
 template <std::size_t N>
-[[nodiscard]] bool same_key(const std::array<std::uint64_t, N>& a, const std::array<std::uint64_t, N>& b) {
+[[nodiscard]] bool same_key(const std::array<std::uint64_t, N>& a,
+                            const std::array<std::uint64_t, N>& b) {
   bool same = true;
   for (std::size_t k = 0; k < N; ++k) same = same && a[k] == b[k];
   return same;
@@ -83,7 +86,7 @@ class FlatIndex {
   }
 
  private:
-  [[nodiscard]] std::size_t slot_of(const Key& key) const { return Hash{}(key) & mask_; }
+  [[nodiscard]] std::size_t slot_of(const Key& key) const { return Hash{}(key)&mask_; }
 
   // At least twice as many slots as `expected` keys (a power of two), so probes stay short;
   // the keys stored so far are filed again.
@@ -118,7 +121,8 @@ using IdIndex = FlatIndex<std::string_view, std::hash<std::string_view>>;
 template <class Objects>
 [[nodiscard]] IdIndex index_by_id(const Objects& objects) {
   IdIndex index(objects.size());
-  for (std::size_t i = 0; i < objects.size(); ++i) index.try_emplace(objects[i].id, std::uint32_t(i));
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    index.try_emplace(objects[i].id, std::uint32_t(i));
   return index;
 }
 

@@ -21,7 +21,8 @@ void PreciseInterval::init() {
 
 PreciseInterval::PreciseInterval() { init(); }
 
-PreciseInterval PreciseInterval::corner_hull(const PreciseInterval& a, const PreciseInterval& b, Operation op) {
+PreciseInterval PreciseInterval::corner_hull(const PreciseInterval& a, const PreciseInterval& b,
+                                             Operation op) {
   // The four products (quotients) of the bounds, each rounded down (low) and up (high).
   mpfr_t low[4], high[4];
   mp_limb_t low_limbs[4][kLimbs], high_limbs[4][kLimbs];
@@ -151,7 +152,9 @@ bool operator<(const PreciseInterval& a, const PreciseInterval& b) {
   throw UndecidedComparison();
 }
 
-std::optional<double> PreciseInterval::nearest_double() const { return nearest_double_if_clear(lo_, hi_); }
+std::optional<double> PreciseInterval::nearest_double() const {
+  return nearest_double_if_clear(lo_, hi_);
+}
 
 std::optional<double> nearest_double_if_clear(mpfr_srcptr lo, mpfr_srcptr hi) {
   const double d = mpfr_get_d(lo, MPFR_RNDN);
@@ -167,7 +170,8 @@ std::optional<double> nearest_double_if_clear(mpfr_srcptr lo, mpfr_srcptr hi) {
   mpfr_set_d(above, std::nextafter(d, INFINITY), MPFR_RNDN);
   mpfr_add_d(above, above, d, MPFR_RNDN);
   mpfr_div_2ui(above, above, 1, MPFR_RNDN);
-  if (mpfr_less_p(below, lo) && mpfr_less_p(hi, above)) return d + 0.0;  // -0 as +0, as exact rounding gives
+  if (mpfr_less_p(below, lo) && mpfr_less_p(hi, above))
+    return d + 0.0;  // -0 as +0, as exact rounding gives
   return std::nullopt;
 }
 

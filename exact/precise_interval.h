@@ -36,7 +36,7 @@ class PreciseInterval {
  public:
   static constexpr mpfr_prec_t kBits = 128;
 
-  PreciseInterval();  ///< zero
+  PreciseInterval();          ///< zero
   PreciseInterval(double x);  // NOLINT(google-explicit-constructor): a number type, like double
   PreciseInterval(const PreciseInterval& other);
   PreciseInterval& operator=(const PreciseInterval& other);
@@ -70,7 +70,8 @@ class PreciseInterval {
   using Operation = int (*)(mpfr_ptr, mpfr_srcptr, mpfr_srcptr, mpfr_rnd_t);
   void init();
   /// [min, max] of op over the corners of a x b, rounded outward (op: mpfr_mul or mpfr_div).
-  static PreciseInterval corner_hull(const PreciseInterval& a, const PreciseInterval& b, Operation op);
+  static PreciseInterval corner_hull(const PreciseInterval& a, const PreciseInterval& b,
+                                     Operation op);
   /// [op(low_x, low_y) rounded down, op(high_x, high_y) rounded up]: the result when the
   /// operands' signs tell which corners bound it.
   static PreciseInterval between_corners(Operation op, mpfr_srcptr low_x, mpfr_srcptr low_y,

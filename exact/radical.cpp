@@ -10,8 +10,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace roomcad::exact {
@@ -49,7 +49,8 @@ Terms combine(const Terms& a, const Terms& b, int b_sign) {
       out.emplace_back(b[j].first, b_sign < 0 ? mpq_class(-b[j].second) : b[j].second);
       ++j;
     } else {
-      mpq_class c = b_sign < 0 ? mpq_class(a[i].second - b[j].second) : mpq_class(a[i].second + b[j].second);
+      mpq_class c =
+          b_sign < 0 ? mpq_class(a[i].second - b[j].second) : mpq_class(a[i].second + b[j].second);
       if (sgn(c) != 0) out.emplace_back(a[i].first, std::move(c));
       ++i, ++j;
     }
@@ -178,9 +179,9 @@ int sign(const Radical& x) {
 /// for a subset P of the registered radicands (P empty: s is a square); otherwise s is new.
 Radical sqrt(const Radical& x) {
   if (x.terms_.empty()) return {};
-  RC_ASSERT(x.terms_.size() == 1 && x.terms_.front().first == 0 &&
-                sgn(x.terms_.front().second) >= 0,
-            "a Radical's square root is taken of a non-negative rational only");
+  RC_ASSERT(
+      x.terms_.size() == 1 && x.terms_.front().first == 0 && sgn(x.terms_.front().second) >= 0,
+      "a Radical's square root is taken of a non-negative rational only");
   const mpq_class& s = x.terms_.front().second;
   std::vector<mpq_class>& table = radicands();
   for (Radical::Mask p = 0; p < (Radical::Mask{1} << table.size()); ++p) {

@@ -71,7 +71,7 @@ class Radical {
   friend std::optional<double> round_if_clear(const Radical& x);
 
  private:
-  using Mask = std::uint64_t;  ///< bit i: the term has the factor sqrt(s_i)
+  using Mask = std::uint64_t;                      ///< bit i: the term has the factor sqrt(s_i)
   std::vector<std::pair<Mask, mpq_class>> terms_;  ///< by increasing mask, no zero coefficient
 
   static Radical from_terms(std::vector<std::pair<Mask, mpq_class>> terms);

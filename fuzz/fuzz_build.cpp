@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const roomcad::Plan plan = roomcad::fuzz::decode_plan(data, size);
   roomcad::Model model;
   try {
-    model = roomcad::build_model(plan, roomcad::BuildOptions{.parts = {true, false, true}, .threads = 1});
+    model = roomcad::build_model(plan,
+                                 roomcad::BuildOptions{.parts = {true, false, true}, .threads = 1});
   } catch (const roomcad::PreconditionError& e) {
     if (e.code() == roomcad::Code::internal) __builtin_trap();  // an invariant of the build broke
     return 0;

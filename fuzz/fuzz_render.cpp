@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "fuzz/plan_bytes.h"
-#include "solid/build_model.h"
 #include "render/renderer.h"
+#include "solid/build_model.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const roomcad::Plan plan = roomcad::fuzz::decode_plan(data, size);

@@ -28,7 +28,9 @@ class ByteReader {
   ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
   std::uint8_t next() { return pos_ < size_ ? data_[pos_++] : 0; }
   template <class T, std::size_t N>
-  const T& pick(const std::array<T, N>& table) { return table[next() % N]; }
+  const T& pick(const std::array<T, N>& table) {
+    return table[next() % N];
+  }
 
  private:
   const std::uint8_t* data_;
@@ -63,7 +65,9 @@ inline Plan decode_plan(const std::uint8_t* data, std::size_t size) {
   ByteReader r(data, size);
   Plan plan;
   const double scale = r.pick(kScales), shift = r.pick(kShifts);
-  auto grid = [&] { return shift + (int(r.next() % 9) - 4) * scale + (r.next() % 4) * 0.3 * scale; };
+  auto grid = [&] {
+    return shift + (int(r.next() % 9) - 4) * scale + (r.next() % 4) * 0.3 * scale;
+  };
   std::vector<Point2> points;
   auto some_point = [&]() -> Point2 {
     const std::uint8_t how = r.next();
@@ -76,8 +80,10 @@ inline Plan decode_plan(const std::uint8_t* data, std::size_t size) {
     w.id = named('w', i);
     w.from = some_point();
     switch (r.next() % 5) {
-      case 0: w.to = w.from; break;                                                    // zero length
-      case 1: w.to = {nudge(w.from.x, 1), w.from.y + 1e-9 * scale * (r.next() % 3)}; break;  // hairline
+      case 0: w.to = w.from; break;  // zero length
+      case 1:
+        w.to = {nudge(w.from.x, 1), w.from.y + 1e-9 * scale * (r.next() % 3)};
+        break;  // hairline
       default: w.to = some_point(); break;
     }
     w.thickness = r.pick(kThickness) * scale;
@@ -97,8 +103,12 @@ inline Plan decode_plan(const std::uint8_t* data, std::size_t size) {
     o.width = std::min(r.pick(kSpan) * scale, length);
     o.height = std::min(r.pick(kSpan) * 2.0 * scale, w.height);
     const std::uint8_t where = r.next();
-    o.offset = where % 3 == 0 ? 0.0 : where % 3 == 1 ? length - o.width : (length - o.width) / 2.0;  // flush or middle
-    o.sill = where / 3 % 3 == 0 ? 0.0 : where / 3 % 3 == 1 ? w.height - o.height : (w.height - o.height) / 2.0;
+    o.offset = where % 3 == 0   ? 0.0
+               : where % 3 == 1 ? length - o.width
+                                : (length - o.width) / 2.0;  // flush or middle
+    o.sill = where / 3 % 3 == 0   ? 0.0
+             : where / 3 % 3 == 1 ? w.height - o.height
+                                  : (w.height - o.height) / 2.0;
     plan.openings.push_back(std::move(o));
   }
   return plan;
@@ -115,7 +125,8 @@ inline Plan decode_plan_file(const std::filesystem::path& path) {
 /// @return the files of a corpus folder, sorted by name.
 inline std::vector<std::filesystem::path> corpus_files(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) files.push_back(entry.path());
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
 }

@@ -10,8 +10,8 @@ BoxGrid::BoxGrid(std::vector<Box2> boxes) : boxes_(std::move(boxes)), seen_(boxe
   // The extent of the finite bounds; infinite ones are clamped to the grid's edge cells.
   std::array<double, 2> low{INFINITY, INFINITY}, high{-INFINITY, -INFINITY};
   for (const Box2& b : boxes_)
-    for (const auto& [a, v] : {std::pair{0, b.min_x}, std::pair{0, b.max_x},
-                               std::pair{1, b.min_y}, std::pair{1, b.max_y}})
+    for (const auto& [a, v] : {std::pair{0, b.min_x}, std::pair{0, b.max_x}, std::pair{1, b.min_y},
+                               std::pair{1, b.max_y}})
       if (std::isfinite(v)) low[a] = std::min(low[a], v), high[a] = std::max(high[a], v);
   auto set_side = [&](int side) {
     side_ = side;
@@ -42,10 +42,8 @@ BoxGrid::BoxGrid(std::vector<Box2> boxes) : boxes_(std::move(boxes)), seen_(boxe
   const std::size_t cells = std::size_t(side_) * std::size_t(side_);
   first_.assign(cells + 1, 0);
   for (std::uint32_t k = 0; k < boxes_.size(); ++k) {
-    if (!covered[k].valid())
-      everywhere_.push_back(k);
-    else
-      for_each_cell(covered[k], [&](std::size_t cell) { ++first_[cell + 1]; });
+    if (!covered[k].valid()) everywhere_.push_back(k);
+    else for_each_cell(covered[k], [&](std::size_t cell) { ++first_[cell + 1]; });
   }
   for (std::size_t c = 0; c < cells; ++c) first_[c + 1] += first_[c];
   filed_.resize(first_[cells]);

@@ -97,12 +97,12 @@ class BoxGrid {
   }
 
   std::vector<Box2> boxes_;
-  int side_ = 1;                             // cells along each axis
+  int side_ = 1;                                     // cells along each axis
   std::array<double, 2> origin_{}, cell_{1.0, 1.0};  // the grid's low corner and cell size
-  std::vector<std::uint32_t> first_{0, 0};   // per cell, where its boxes start in filed_
-  std::vector<std::uint32_t> filed_;         // box positions, cell by cell
-  std::vector<std::uint32_t> everywhere_;    // boxes with no valid span: tested by every query
-  std::vector<std::uint32_t> seen_;          // per box, the last query that considered it
+  std::vector<std::uint32_t> first_{0, 0};           // per cell, where its boxes start in filed_
+  std::vector<std::uint32_t> filed_;                 // box positions, cell by cell
+  std::vector<std::uint32_t> everywhere_;  // boxes with no valid span: tested by every query
+  std::vector<std::uint32_t> seen_;        // per box, the last query that considered it
   std::uint32_t stamp_ = 0;
 };
 

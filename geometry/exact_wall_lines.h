@@ -51,11 +51,12 @@ Pt<NT> side_point(const WallLine<NT>& w, WallEnd end, int side) {
 /// Parallel partners (a straight continuation) give a square end; see below for what counts
 /// as parallel.
 template <class NT>
-Pt<NT> mitre_corner(const WallLine<NT>& mine, WallEnd end, const WallLine<NT>& other, WallEnd other_end,
-                    int side) {
+Pt<NT> mitre_corner(const WallLine<NT>& mine, WallEnd end, const WallLine<NT>& other,
+                    WallEnd other_end, int side) {
   // Travelling into the joint along `mine` reverses it at its from-end; leaving along
   // `other` reverses it at its to-end. Each reversal swaps left and right.
-  const int other_side = side * (end == WallEnd::from ? -1 : 1) * (other_end == WallEnd::to ? -1 : 1);
+  const int other_side =
+      side * (end == WallEnd::from ? -1 : 1) * (other_end == WallEnd::to ? -1 : 1);
   const Pt<NT> p = side_point(mine, end, side);
   const Pt<NT> q = side_point(other, other_end, other_side);
   const Pt<NT> d1 = mine.to - mine.from;
@@ -89,7 +90,8 @@ std::array<Pt<NT>, 4> wall_corners(const Plan& plan, const Joins& joins, std::si
     if (!partner) return {side_point(line, end, -1), side_point(line, end, 1)};
     const WallEnd other_end = joins.mitre[*partner][0] == w ? WallEnd::from : WallEnd::to;
     const WallLine<NT> other = wall_line<NT>(plan.walls[*partner]);
-    return {mitre_corner(line, end, other, other_end, -1), mitre_corner(line, end, other, other_end, 1)};
+    return {mitre_corner(line, end, other, other_end, -1),
+            mitre_corner(line, end, other, other_end, 1)};
   };
   const std::array<Pt<NT>, 2> from = end_corners(WallEnd::from), to = end_corners(WallEnd::to);
   return {from[0], to[0], to[1], from[1]};

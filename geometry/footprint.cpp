@@ -34,12 +34,14 @@ std::optional<std::array<Point2, 4>> find_exact_corners_fast(const Plan& plan, c
 /// Corners held by 128-bit intervals (a skewed wall's: the square roots of the walls' squared
 /// lengths) whose nearest doubles the intervals tell; @return them, or nothing when a corner
 /// lies too near a midpoint between doubles (a tie) or a parallel mitre cannot be told.
-std::optional<std::array<Point2, 4>> find_corners_precisely(const Plan& plan, const Joins& joins, std::size_t wall) {
+std::optional<std::array<Point2, 4>> find_corners_precisely(const Plan& plan, const Joins& joins,
+                                                            std::size_t wall) {
   try {
     const auto corners = exact::wall_corners<exact::PreciseInterval>(plan, joins, wall);
     std::array<Point2, 4> out;
     for (std::size_t i = 0; i < 4; ++i) {
-      const std::optional<double> x = corners[i].x.nearest_double(), y = corners[i].y.nearest_double();
+      const std::optional<double> x = corners[i].x.nearest_double(),
+                                  y = corners[i].y.nearest_double();
       if (!x || !y) return std::nullopt;
       out[i] = {*x, *y};
     }
@@ -55,16 +57,16 @@ std::optional<std::array<Point2, 4>> find_corners_precisely(const Plan& plan, co
 double add_ties_down(double a, double b) {
   const double s = a + b, bb = s - a;
   const double e = (a - (s - bb)) + (b - bb);  // a + b = s + e exactly (TwoSum)
-  if (e >= 0.0) return s;                       // s is the lower neighbour already (or exact)
+  if (e >= 0.0) return s;                      // s is the lower neighbour already (or exact)
   const double below = std::nextafter(s, -INFINITY);
-  return below - s == 2.0 * e ? below : s;      // a tie (the exact sum halfway): take the lower
+  return below - s == 2.0 * e ? below : s;  // a tie (the exact sum halfway): take the lower
 }
 
 // The side line of an axis-aligned wall: x[axis] = (the end point's coordinate) + offset,
 // offset +-half the thickness (exact: a double's sign flipped, halved).
 struct AxisSide {
-  int axis = 0;       // the coordinate the line fixes: 1 for a wall along x, 0 along y
-  double at = 0.0;    // the end point's coordinate on that axis
+  int axis = 0;     // the coordinate the line fixes: 1 for a wall along x, 0 along y
+  double at = 0.0;  // the end point's coordinate on that axis
   double offset = 0.0;
   double value() const { return add_ties_down(at, offset); }  // the exact sum, rounded
 };
@@ -80,8 +82,9 @@ int axis_of(const Wall& w) {
 AxisSide axis_side(const Wall& w, WallEnd end, int side) {
   const Point2& p = end == WallEnd::from ? w.from : w.to;
   const double half = w.thickness / 2.0;
-  if (axis_of(w) == 0) return {1, p.y, side * (w.to.x > w.from.x ? half : -half)};  // left normal (0, sx)
-  return {0, p.x, side * (w.to.y > w.from.y ? -half : half)};                         // left normal (-sy, 0)
+  if (axis_of(w) == 0)
+    return {1, p.y, side * (w.to.x > w.from.x ? half : -half)};  // left normal (0, sx)
+  return {0, p.x, side * (w.to.y > w.from.y ? -half : half)};    // left normal (-sy, 0)
 }
 
 /// An axis-aligned wall mitred only to axis-aligned walls has corners whose coordinates are
@@ -103,14 +106,16 @@ std::optional<std::array<Point2, 4>> find_axis_aligned_corners(const Plan& plan,
       if (other_axis < 0) return std::nullopt;
       if (other_axis != axis) {  // perpendicular: the corner is where the two side lines cross
         const WallEnd other_end = joins.mitre[*partner][0] == wall ? WallEnd::from : WallEnd::to;
-        const int other_side = side * (end == WallEnd::from ? -1 : 1) * (other_end == WallEnd::to ? -1 : 1);
+        const int other_side =
+            side * (end == WallEnd::from ? -1 : 1) * (other_end == WallEnd::to ? -1 : 1);
         along = axis_side(v, other_end, other_side).value();
       }  // parallel: a square end, as wall_corners makes it
     }
     return axis == 0 ? Point2{along, mine.value()} : Point2{mine.value(), along};
   };
   std::array<Point2, 4> out;
-  const std::array<std::pair<WallEnd, int>, 4> order{{{WallEnd::from, -1}, {WallEnd::to, -1}, {WallEnd::to, 1}, {WallEnd::from, 1}}};
+  const std::array<std::pair<WallEnd, int>, 4> order{
+      {{WallEnd::from, -1}, {WallEnd::to, -1}, {WallEnd::to, 1}, {WallEnd::from, 1}}};
   for (std::size_t i = 0; i < 4; ++i) {
     const auto c = corner(order[i].first, order[i].second);
     if (!c) return std::nullopt;

@@ -27,7 +27,6 @@
 #include <cmath>
 #include <optional>
 
-
 #include "geometry/broad_phase.h"
 #include "geometry/exact_wall_lines.h"
 #include "geometry/segment_predicates.h"
@@ -140,12 +139,12 @@ bool is_mitre_end(const Plan& plan, const std::vector<std::array<EndNeighbours, 
   const EndNeighbours& mine = ends[w][e];
   if (mine.count != 1 || mine.matched_ends != 1) return false;
   const EndNeighbours& theirs = ends[mine.wall][mine.matched_end];
-  if (theirs.count != 1 || theirs.matched_ends != 1 || theirs.wall != w ||
-      theirs.matched_end != e)
+  if (theirs.count != 1 || theirs.matched_ends != 1 || theirs.wall != w || theirs.matched_end != e)
     return false;
   const Wall& a = plan.walls[w];
   const Wall& b = plan.walls[mine.wall];
-  return !overlap_collinearly(a.from, a.to, b.from, b.to) && is_within_reach(a, e, b, mine.matched_end);
+  return !overlap_collinearly(a.from, a.to, b.from, b.to) &&
+         is_within_reach(a, e, b, mine.matched_end);
 }
 
 // Each wall's centre line grown by the tolerance, between its base and top: walls that do not
@@ -178,7 +177,8 @@ Joins find_joins(const Plan& plan) {
     record_ends(test, a, b, ends);
     if (test.meets)
       joins.pairs.push_back(
-          Join{a, b, JoinKind::unite, test.point.value_or(crossing_point(plan.walls[a], plan.walls[b]))});
+          Join{a, b, JoinKind::unite,
+               test.point.value_or(crossing_point(plan.walls[a], plan.walls[b]))});
   }
   for (Join& j : joins.pairs)
     for (int e = 0; e < 2; ++e) {
@@ -195,10 +195,11 @@ bool Joins::are_joined(std::size_t a, std::size_t b) const { return find(a, b) !
 
 const Join* Joins::find(std::size_t a, std::size_t b) const {
   if (a > b) std::swap(a, b);
-  const auto it = std::lower_bound(pairs.begin(), pairs.end(), std::pair{a, b},
-                                   [](const Join& j, const std::pair<std::size_t, std::size_t>& key) {
-                                     return std::pair{j.a, j.b} < key;
-                                   });
+  const auto it =
+      std::lower_bound(pairs.begin(), pairs.end(), std::pair{a, b},
+                       [](const Join& j, const std::pair<std::size_t, std::size_t>& key) {
+                         return std::pair{j.a, j.b} < key;
+                       });
   return it != pairs.end() && it->a == a && it->b == b ? &*it : nullptr;
 }
 

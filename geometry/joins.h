@@ -65,7 +65,8 @@ inline constexpr double kMitreReach = 4.0;
 /// the cross product of their directions evaluated in doubles is 0).
 /// Corners are the exact points rounded to the nearest double, so a corner shared by the two
 /// walls of a mitre comes out bit-identical for both. Cost O(log n); O(1) when the corners
-/// are exact in interval arithmetic (axis-aligned walls), else an exact construction (exact::Radical).
+/// are exact in interval arithmetic (axis-aligned walls), else an exact construction
+/// (exact::Radical).
 /// @pre the wall has positive length and thickness.
 [[nodiscard]] std::array<Point2, 4> wall_footprint(const Plan& plan, const Joins& joins,
                                                    std::size_t wall);

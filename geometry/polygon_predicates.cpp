@@ -37,8 +37,8 @@ CgalPolygon outline_in_wall(const Opening& o) {
   const Polygon& unit = o.shape.empty() ? kRectangle : o.shape;
   CgalPolygon out;
   for (const Point2& p : unit)
-    out.push_back(Kernel::Point_2(FT(o.offset) + FT(p.x) * FT(o.width),
-                                  FT(o.sill) + FT(p.y) * FT(o.height)));
+    out.push_back(
+        Kernel::Point_2(FT(o.offset) + FT(p.x) * FT(o.width), FT(o.sill) + FT(p.y) * FT(o.height)));
   if (out.is_clockwise_oriented()) out.reverse_orientation();
   return out;
 }

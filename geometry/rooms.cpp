@@ -14,12 +14,12 @@
 #include <string_view>
 #include <tuple>
 
-#include "geometry/joins.h"
 #include "geometry/detail/arrangement.h"
 #include "geometry/detail/centre_lines.h"
+#include "geometry/joins.h"
+#include "geometry/rooms.h"
 #include "plan/plan_levels.h"
 #include "plan/plan_objects.h"
-#include "geometry/rooms.h"
 #include "plan/signed_area.h"
 
 namespace roomcad {
@@ -44,7 +44,8 @@ constexpr double kCornerReach = 10.0;
 
 /// @return the foot of the perpendicular from `at` on line a.
 Point2 foot_on(const Line& a, Point2 at) {
-  const double t = ((at.x - a.p.x) * a.d.x + (at.y - a.p.y) * a.d.y) / (a.d.x * a.d.x + a.d.y * a.d.y);
+  const double t =
+      ((at.x - a.p.x) * a.d.x + (at.y - a.p.y) * a.d.y) / (a.d.x * a.d.x + a.d.y * a.d.y);
   return {a.p.x + t * a.d.x, a.p.y + t * a.d.y};
 }
 
@@ -74,7 +75,9 @@ void collect_openings(const Plan& plan, const OpeningsByWall& by_wall, const det
   const Wall& w = plan.walls[e.wall];
   const Point2 d{w.to.x - w.from.x, w.to.y - w.from.y};
   const double len = std::hypot(d.x, d.y);
-  const auto along = [&](Point2 p) { return ((p.x - w.from.x) * d.x + (p.y - w.from.y) * d.y) / len; };
+  const auto along = [&](Point2 p) {
+    return ((p.x - w.from.x) * d.x + (p.y - w.from.y) * d.y) / len;
+  };
   const double lo = std::min(along(e.source), along(e.target));
   const double hi = std::max(along(e.source), along(e.target));
   for (const std::size_t i : by_wall[e.wall]) {
@@ -102,7 +105,8 @@ Room room_of(const Plan& plan, const OpeningsByWall& by_wall, const detail::Face
     starts.push_back(e.source);
   }
   const std::size_t n = lines.size();
-  for (std::size_t i = 0; i < n; ++i) add_corner(lines[(i + n - 1) % n], lines[i], starts[i], room.outline);
+  for (std::size_t i = 0; i < n; ++i)
+    add_corner(lines[(i + n - 1) % n], lines[i], starts[i], room.outline);
   room.area = std::max(0.0, signed_area(room.outline) - face.hole_area);
   sort_unique(room.walls);
   sort_unique(room.doors);
@@ -143,8 +147,9 @@ std::vector<Room> find_rooms_on_level(const Plan& plan, std::string_view level) 
 
 std::vector<LevelRooms> find_rooms_by_level(const Plan& plan) {
   std::vector<LevelRooms> out;
-  const bool unlevelled = plan.levels.empty() ||
-                          std::any_of(plan.walls.begin(), plan.walls.end(), [](const Wall& w) { return w.level.empty(); });
+  const bool unlevelled =
+      plan.levels.empty() || std::any_of(plan.walls.begin(), plan.walls.end(),
+                                         [](const Wall& w) { return w.level.empty(); });
   if (unlevelled) out.push_back({"", find_rooms_on_level(plan, "")});
   for (const Level& l : plan.levels) out.push_back({l.id, find_rooms_on_level(plan, l.id)});
   return out;

@@ -15,13 +15,13 @@ namespace roomcad {
 /// A closed region of the wall arrangement (a room), as a simple polygon on the wall faces
 /// that bound it, counter-clockwise, in metres.
 struct Room {
-  std::vector<Point2> outline;           ///< the clear floor: centre-line face moved inward
-                                         ///< by each bounding wall's half-thickness
-  double area = 0.0;                     ///< clear floor area, square metres (rooms nested
-                                         ///< inside are subtracted by their centre-line area)
-  std::vector<std::string> walls;        ///< ids of the walls bounding it
-  std::vector<std::string> doors;        ///< ids of doors in those walls
-  std::vector<std::string> windows;      ///< ids of windows in those walls
+  std::vector<Point2> outline;       ///< the clear floor: centre-line face moved inward
+                                     ///< by each bounding wall's half-thickness
+  double area = 0.0;                 ///< clear floor area, square metres (rooms nested
+                                     ///< inside are subtracted by their centre-line area)
+  std::vector<std::string> walls;    ///< ids of the walls bounding it
+  std::vector<std::string> doors;    ///< ids of doors in those walls
+  std::vector<std::string> windows;  ///< ids of windows in those walls
 };
 
 /// Finds the rooms of a plan: bounded faces of the walls' centre-line arrangement, numbered

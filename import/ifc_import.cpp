@@ -30,15 +30,17 @@ void import_storeys(ImportState& s) {
       z = Geometry::param(e, 9).number;
     storeys.emplace_back(s.metres(s.metres_per_unit * z), &e);
   }
-  std::stable_sort(storeys.begin(), storeys.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(storeys.begin(), storeys.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   std::map<std::uint32_t, std::string> level_of_storey;
   for (std::size_t i = 0; i < storeys.size(); ++i) {
     const auto& [elevation, e] = storeys[i];
     Level level;
     level.id = s.unique_id(Geometry::param(*e, 2).text, "storey", e->id);
     level.elevation = elevation;
-    level.height = i + 1 < storeys.size() && storeys[i + 1].first > elevation ? s.metres(storeys[i + 1].first - elevation)
-                                                                               : kDefaultLevelHeight;
+    level.height = i + 1 < storeys.size() && storeys[i + 1].first > elevation
+                       ? s.metres(storeys[i + 1].first - elevation)
+                       : kDefaultLevelHeight;
     s.elevation_of_level.emplace(level.id, level.elevation);
     level_of_storey.emplace(e->id, level.id);
     s.plan.levels.push_back(std::move(level));
@@ -47,7 +49,8 @@ void import_storeys(ImportState& s) {
     if (rel.type != "IFCRELCONTAINEDINSPATIALSTRUCTURE") continue;
     const auto level = level_of_storey.find(Geometry::param(rel, 5).id);
     if (level == level_of_storey.end()) continue;
-    for (const Value& element : Geometry::param(rel, 4).items) s.level_of_element.emplace(element.id, level->second);
+    for (const Value& element : Geometry::param(rel, 4).items)
+      s.level_of_element.emplace(element.id, level->second);
   }
   // Doors and windows sit in their wall's storey, and openings in their wall.
 }
@@ -65,7 +68,9 @@ void fit_last_level(Plan& plan) {
 /// Raises a model reaching below z = 0 so that its lowest point is at 0. @return the shift.
 double raise_to_floor(Plan& plan, const std::unordered_map<std::string, double>& elevation) {
   double lowest = 0.0;
-  auto at = [&elevation](const std::string& level) { return level.empty() ? 0.0 : elevation.at(level); };
+  auto at = [&elevation](const std::string& level) {
+    return level.empty() ? 0.0 : elevation.at(level);
+  };
   for (const Wall& w : plan.walls) lowest = std::min(lowest, at(w.level) + w.base);
   for (const Slab& s : plan.slabs) lowest = std::min(lowest, at(s.level) + s.top - s.thickness);
   if (lowest >= 0.0) return 0.0;
@@ -82,7 +87,8 @@ double raise_to_floor(Plan& plan, const std::unordered_map<std::string, double>&
 void fit_site(Plan& plan, const IfcImportOptions& options) {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, top = 0.0;
   auto add = [&](Point2 p, double pad) {
-    x0 = std::min(x0, p.x - pad), y0 = std::min(y0, p.y - pad), x1 = std::max(x1, p.x + pad), y1 = std::max(y1, p.y + pad);
+    x0 = std::min(x0, p.x - pad), y0 = std::min(y0, p.y - pad), x1 = std::max(x1, p.x + pad),
+    y1 = std::max(y1, p.y + pad);
   };
   auto elevation = [&plan](const std::string& id) {
     for (const Level& l : plan.levels)
@@ -99,9 +105,11 @@ void fit_site(Plan& plan, const IfcImportOptions& options) {
   }
   const double cell = options.cell_size;
   plan.site.cell_size = cell;
-  plan.site.origin = {std::floor((x0 - options.site_margin) / cell) * cell, std::floor((y0 - options.site_margin) / cell) * cell};
-  plan.site.cells = {static_cast<std::int64_t>(std::ceil((x1 + options.site_margin - plan.site.origin.x) / cell)),
-                     static_cast<std::int64_t>(std::ceil((y1 + options.site_margin - plan.site.origin.y) / cell))};
+  plan.site.origin = {std::floor((x0 - options.site_margin) / cell) * cell,
+                      std::floor((y0 - options.site_margin) / cell) * cell};
+  plan.site.cells = {
+      static_cast<std::int64_t>(std::ceil((x1 + options.site_margin - plan.site.origin.x) / cell)),
+      static_cast<std::int64_t>(std::ceil((y1 + options.site_margin - plan.site.origin.y) / cell))};
   plan.site.max_height = std::ceil(top + options.site_margin);
   plan.site.tolerance = options.join_tolerance;
 }
@@ -111,18 +119,22 @@ bool is_product(const ImportState& s, const step::Instance& e) {
   const Value& id = Geometry::param(e, 0);
   if (id.kind != Value::Kind::string || id.text.size() != 22) return false;
   const step::Instance* placement = s.geometry.get(Geometry::param(e, 5));
-  return placement && (placement->type == "IFCLOCALPLACEMENT" || placement->type == "IFCGRIDPLACEMENT");
+  return placement &&
+         (placement->type == "IFCLOCALPLACEMENT" || placement->type == "IFCGRIDPLACEMENT");
 }
 
 std::size_t warn_skipped(ImportState& s) {
   std::size_t skipped = 0;
   for (const step::Instance& e : s.file.instances) {
-    if (s.handled.contains(e.id) || e.type == "IFCSITE" || e.type == "IFCBUILDING" || !is_product(s, e)) continue;
+    if (s.handled.contains(e.id) || e.type == "IFCSITE" || e.type == "IFCBUILDING" ||
+        !is_product(s, e))
+      continue;
     ++skipped;
     s.warn(Code::import_skipped_element, e,
-           e.type == "IFCSPACE" ? "not imported: roomcad finds rooms from the walls"
-                                : "not imported: the importer reads walls, openings with their doors and "
-                                  "windows, slabs and storeys");
+           e.type == "IFCSPACE"
+               ? "not imported: roomcad finds rooms from the walls"
+               : "not imported: the importer reads walls, openings with their doors and "
+                 "windows, slabs and storeys");
   }
   return skipped;
 }
@@ -134,21 +146,24 @@ bool is_step_text(std::string_view head) {
   return start != std::string_view::npos && head.substr(start).starts_with("ISO-10303-21");
 }
 
-Result<IfcImport> import_ifc_text(std::string_view text, std::string_view file, const IfcImportOptions& options) {
+Result<IfcImport> import_ifc_text(std::string_view text, std::string_view file,
+                                  const IfcImportOptions& options) {
   Result<step::File> parsed = step::parse(text, file);
   if (!parsed) return parsed.error();
   const step::File& f = parsed.value();
   if (!f.schema.starts_with("IFC2X3") && !f.schema.starts_with("IFC4"))
-    return Result<IfcImport>::failure(Code::unsupported, fmt::format("{}: schema \"{}\" is not IFC2X3 or IFC4", file, f.schema));
+    return Result<IfcImport>::failure(
+        Code::unsupported, fmt::format("{}: schema \"{}\" is not IFC2X3 or IFC4", file, f.schema));
   ImportState s(f);
   import_storeys(s);
   ifc::import_walls(s);
   ifc::import_openings(s);
   ifc::import_slabs(s);
   if (s.plan.walls.empty() && s.plan.slabs.empty())
-    return Result<IfcImport>::failure(Code::parse_error, fmt::format("{}: no wall or slab to import ({} walls and {} slabs "
-                                                                     "in the file, none an extrusion the importer reads)",
-                                                                     file, s.walls, s.slabs));
+    return Result<IfcImport>::failure(
+        Code::parse_error, fmt::format("{}: no wall or slab to import ({} walls and {} slabs "
+                                       "in the file, none an extrusion the importer reads)",
+                                       file, s.walls, s.slabs));
   IfcImport out;
   out.skipped = warn_skipped(s);
   fit_last_level(s.plan);
@@ -164,7 +179,8 @@ Result<IfcImport> import_ifc_text(std::string_view text, std::string_view file, 
   return out;
 }
 
-Result<IfcImport> import_ifc_file(const std::filesystem::path& path, const IfcImportOptions& options) {
+Result<IfcImport> import_ifc_file(const std::filesystem::path& path,
+                                  const IfcImportOptions& options) {
   const Result<std::string> text = read_text_file(path);
   if (!text) return text.error();
   return import_ifc_text(text.value(), path.string(), options);

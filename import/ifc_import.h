@@ -48,14 +48,14 @@ struct IfcImportOptions {
 
 struct IfcImport {
   Plan plan;
-  Report warnings;            ///< every element left out and every approximation
-  std::string schema;         ///< FILE_SCHEMA: "IFC4", "IFC2X3", ...
+  Report warnings;                  ///< every element left out and every approximation
+  std::string schema;               ///< FILE_SCHEMA: "IFC4", "IFC2X3", ...
   std::size_t source_walls = 0;     ///< IFC walls in the file
   std::size_t source_openings = 0;  ///< openings voiding an element
   std::size_t source_slabs = 0;
   std::size_t storeys = 0;
-  std::size_t skipped = 0;    ///< other products (roofs, stairs, furniture, ...) left out
-  double z_shift = 0.0;       ///< metres added to every height of the file
+  std::size_t skipped = 0;  ///< other products (roofs, stairs, furniture, ...) left out
+  double z_shift = 0.0;     ///< metres added to every height of the file
 };
 
 /// Imports the text of an IFC file named `file` (in messages).

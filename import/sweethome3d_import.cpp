@@ -11,16 +11,16 @@
 
 #include <fmt/format.h>
 
-#include "io/plan_json.h"
-#include "plan/plan_levels.h"
+#include "core/box.h"
 #include "import/detail/sh3d_archive.h"
 #include "import/detail/sh3d_home.h"
 #include "import/detail/sh3d_levels.h"
 #include "import/detail/sh3d_openings.h"
-#include "core/box.h"
 #include "import/detail/sh3d_rooms.h"
 #include "import/detail/sh3d_walls.h"
+#include "io/plan_json.h"
 #include "io/text_file.h"
+#include "plan/plan_levels.h"
 
 namespace roomcad {
 namespace {
@@ -73,8 +73,8 @@ Site make_site(const HomeExtent& box, const Sh3dImportOptions& options) {
 Camera make_camera(const sh3d::CameraRecord& c, std::string id, Point2 centre, double z_shift) {
   const Vec3 eye{c.eye.x, c.eye.y, c.eye.z + z_shift};
   // Aim at the point of the view line nearest the home's centre (at least 1 m ahead).
-  const double ahead = std::max(
-      1.0, (centre.x - eye.x) * c.direction.x + (centre.y - eye.y) * c.direction.y);
+  const double ahead =
+      std::max(1.0, (centre.x - eye.x) * c.direction.x + (centre.y - eye.y) * c.direction.y);
   const double vertical = 2 * std::atan(std::tan(c.field_of_view / 2) * 0.75);
   Camera camera;
   camera.id = std::move(id);
@@ -150,9 +150,10 @@ Result<std::string> select_level(const sh3d::Home& home, const Sh3dImportOptions
     if (l.name == *options.level) return l.id;
     names += fmt::format("{}'{}'", names.empty() ? "" : ", ", l.name);
   }
-  return Result<std::string>::failure(Code::usage_error, fmt::format(
-      "{}: --level '{}' names no level of the home (its levels: {})", file, *options.level,
-      names.empty() ? "none, it has a single unnamed level" : names));
+  return Result<std::string>::failure(
+      Code::usage_error,
+      fmt::format("{}: --level '{}' names no level of the home (its levels: {})", file,
+                  *options.level, names.empty() ? "none, it has a single unnamed level" : names));
 }
 
 }  // namespace
@@ -172,18 +173,23 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   std::vector<sh3d::Level> selected = home.levels;
   std::erase_if(selected, [&](const sh3d::Level& l) { return !on_level(l.id); });
   if (home.walls.empty())
-    return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format("{}: no <wall> to import", file));
+    return Result<Sh3dImport>::failure(Code::invalid_value,
+                                       fmt::format("{}: no <wall> to import", file));
   if (home.walls.size() > kMaxPlanObjects || home.items.size() > kMaxPlanObjects)
-    return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(file, home.walls.size(), home.items.size(),
-                                                        "<wall> and", "<doorOrWindow> elements"));
+    return Result<Sh3dImport>::failure(
+        Code::too_large, too_many_objects(file, home.walls.size(), home.items.size(), "<wall> and",
+                                          "<doorOrWindow> elements"));
   // Matching is O(walls x (items + levels)): bounded, so that no file can make it hang.
   const double pairs = static_cast<double>(home.walls.size()) *
                        static_cast<double>(home.items.size() + home.levels.size());
   if (pairs > kMaxImportPairs)
-    return Result<Sh3dImport>::failure(Code::too_large, fmt::format(
-        "{}: {} <wall> and {} <doorOrWindow> and <level> elements; at most {:.0f} pairs of them "
-        "are matched (a home of a thousand walls and a thousand items has a million)",
-        file, home.walls.size(), home.items.size() + home.levels.size(), kMaxImportPairs));
+    return Result<Sh3dImport>::failure(
+        Code::too_large,
+        fmt::format("{}: {} <wall> and {} <doorOrWindow> and <level> elements; at most {:.0f} "
+                    "pairs of them "
+                    "are matched (a home of a thousand walls and a thousand items has a million)",
+                    file, home.walls.size(), home.items.size() + home.levels.size(),
+                    kMaxImportPairs));
 
   Sh3dImport out;
   out.source_walls = home.walls.size();
@@ -201,24 +207,27 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
   // Found by fuzz_sh3d_archive: with every wall left out, the site's box stayed empty.
   if (out.plan.walls.empty())
-    return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format(
-        "{}: no wall to import: each of its {} <wall> elements starts and ends at the same point",
-        file, home.walls.size()));
+    return Result<Sh3dImport>::failure(Code::invalid_value,
+                                       fmt::format("{}: no wall to import: each of its {} <wall> "
+                                                   "elements starts and ends at the same point",
+                                                   file, home.walls.size()));
   const sh3d::Placement placement{levels, z_shift_cm, wall_options.chord_tolerance, nullptr};
   out.plan.openings = sh3d::place_openings(home.items, walls, placement, out.warnings);
   out.plan.slabs = sh3d::make_slabs(home, home.rooms, levels, sh3d::z_of(z_shift_cm),
                                     options.ceilings, out.warnings);
   if (out.plan.slabs.size() > kMaxPlanObjects)
-    return Result<Sh3dImport>::failure(Code::too_large, too_many_objects(
-        file, out.plan.walls.size(), out.plan.slabs.size(), "walls and", "slabs"));
+    return Result<Sh3dImport>::failure(
+        Code::too_large,
+        too_many_objects(file, out.plan.walls.size(), out.plan.slabs.size(), "walls and", "slabs"));
   const HomeExtent box = bounds_of(out.plan, walls);
   // The site's cell counts are integers: a home spread over more cells than any plan could
   // use (coordinates like 1e115 cm) is refused rather than overflowing them.
   const double span = std::max(box.plan.max_x - box.plan.min_x, box.plan.max_y - box.plan.min_y);
   if (!((span + 2 * options.site_margin) / options.cell_size <= kMaxSiteCellsPerSide))
-    return Result<Sh3dImport>::failure(Code::invalid_value, fmt::format(
-        "{}: the walls span {:g} m, more than {:g} cells of {:g} m; check the home's coordinates",
-        file, span, kMaxSiteCellsPerSide, options.cell_size));
+    return Result<Sh3dImport>::failure(
+        Code::invalid_value, fmt::format("{}: the walls span {:g} m, more than {:g} cells of {:g} "
+                                         "m; check the home's coordinates",
+                                         file, span, kMaxSiteCellsPerSide, options.cell_size));
   out.plan.site = make_site(box, options);
   out.plan.lights = {default_light()};
   out.plan.cameras = make_cameras(home, box, out.z_shift);
@@ -230,15 +239,18 @@ Result<Sh3dImport> import_sweethome3d_file(const std::filesystem::path& path,
   std::error_code error;
   if (const std::uintmax_t size = std::filesystem::file_size(path, error);
       !error && size > kMaxTextFileBytes)
-    return Result<Sh3dImport>::failure(Code::too_large,
+    return Result<Sh3dImport>::failure(
+        Code::too_large,
         fmt::format("{}: it is {} bytes; files of at most {} bytes (256 MiB) are read",
                     path.string(), size, kMaxTextFileBytes));
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    return Result<Sh3dImport>::failure(Code::io_error, fmt::format("{}: cannot open the file", path.string()));
+    return Result<Sh3dImport>::failure(Code::io_error,
+                                       fmt::format("{}: cannot open the file", path.string()));
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (in.bad())
-    return Result<Sh3dImport>::failure(Code::io_error, fmt::format("{}: cannot read the file", path.string()));
+    return Result<Sh3dImport>::failure(Code::io_error,
+                                       fmt::format("{}: cannot read the file", path.string()));
   if (!sh3d::is_zip_data(bytes) && path.extension() != ".sh3d")
     return import_sweethome3d_text(bytes, path.string(), options);
   const Result<std::string> xml = sh3d::read_home_xml_entry(path);

@@ -35,7 +35,7 @@
 namespace roomcad {
 
 struct Sh3dImportOptions {
-  std::optional<std::string> level{};///< import only the level with this name; all if unset
+  std::optional<std::string> level{};  ///< import only the level with this name; all if unset
   /// The plan's `site.chord_tolerance` (metres between an arc and its chords; also the one
   /// for curved cut-out shapes); unset: the format's default (1 mm), not written.
   std::optional<double> chord_tolerance{};
@@ -43,8 +43,8 @@ struct Sh3dImportOptions {
   /// Off by default: Sweet Home 3D draws a ceiling as a surface seen from below only, so a
   /// home seen from above shows its rooms; as slabs they would close every top storey.
   bool ceilings = false;
-  double site_margin = 1.0;          ///< metres of site around the walls
-  double cell_size = 1.0;            ///< site tile side, metres
+  double site_margin = 1.0;  ///< metres of site around the walls
+  double cell_size = 1.0;    ///< site tile side, metres
   /// Join tolerance of the plan. Sweet Home 3D keeps float32 centimetres (a few 1e-7 m of
   /// rounding at 10 m), so an end point drawn onto another wall's centre line can miss it by
   /// about 1e-6 m; 1e-5 m absorbs that and is far below any drawn detail.
@@ -53,7 +53,7 @@ struct Sh3dImportOptions {
 
 struct Sh3dImport {
   Plan plan;
-  Report warnings;              ///< every approximation or omission, naming the object
+  Report warnings;               ///< every approximation or omission, naming the object
   std::size_t source_walls = 0;  ///< `<wall>` elements imported (before splitting arcs)
   std::size_t source_items = 0;  ///< `<doorOrWindow>` elements on the imported levels
   double z_shift = 0.0;          ///< metres added to every Sweet Home 3D elevation

@@ -158,8 +158,9 @@ int sync_directory(const std::filesystem::path& target) {
 }
 
 Status fail(const std::filesystem::path& path, std::string_view what, int error) {
-  return Status::failure(Code::io_error, "cannot write " + path.string() + ": " + std::string(what) +
-                         (error > 0 ? std::string(": ") + std::strerror(error) : std::string()));
+  return Status::failure(
+      Code::io_error, "cannot write " + path.string() + ": " + std::string(what) +
+                          (error > 0 ? std::string(": ") + std::strerror(error) : std::string()));
 }
 
 }  // namespace
@@ -189,8 +190,10 @@ Status write_file_atomically(const std::filesystem::path& path,
   if (!stream) return fail(path, "write failed", EIO);
   if (const int e = temp.commit(target, mode); e != 0) return fail(path, "write failed", e);
   if (const int e = sync_directory(path); e != 0)
-    return fail(path, "the new file is in place, but its folder could not be flushed to disk, so "
-                      "a power cut may still bring back the old one", e);
+    return fail(path,
+                "the new file is in place, but its folder could not be flushed to disk, so "
+                "a power cut may still bring back the old one",
+                e);
   return Status::success();
 }
 

@@ -165,7 +165,8 @@ class PlanDxf {
 
 /// One symbol table: its head, the entries `write_entries` adds, its end.
 template <class F>
-void table(DxfWriter& w, std::string_view name, std::string_view handle, int count, F write_entries) {
+void table(DxfWriter& w, std::string_view name, std::string_view handle, int count,
+           F write_entries) {
   w.group(0, "TABLE");
   w.group(2, name);
   w.group(5, handle);
@@ -177,8 +178,8 @@ void table(DxfWriter& w, std::string_view name, std::string_view handle, int cou
   w.group(0, "ENDTAB");
 }
 
-void entry(DxfWriter& w, std::string_view type, std::string_view table_handle, std::string_view subclass,
-           std::string_view name, int handle_code = 5) {
+void entry(DxfWriter& w, std::string_view type, std::string_view table_handle,
+           std::string_view subclass, std::string_view name, int handle_code = 5) {
   w.group(0, type);
   w.handle(handle_code);
   w.group(330, table_handle);
@@ -213,8 +214,11 @@ void write_tables(DxfWriter& w, double mm_per_m) {
     linetype(w, "DASHED", "Dashed __ __ __", {2.0 / mm_per_m, -1.0 / mm_per_m});
   });
   table(w, "LAYER", "2", 1 + static_cast<int>(std::size(kDxfLayers)), [&] {
-    for (std::string_view name : {std::string_view("0")}) entry(w, "LAYER", "2", "AcDbLayerTableRecord", name), w.group(62, 7), w.group(6, "Continuous");
-    const int colours[] = {7, 8, 8, 5, 3, 1, 2};  // ACI: white, grey, grey, blue, green, red, yellow
+    for (std::string_view name : {std::string_view("0")})
+      entry(w, "LAYER", "2", "AcDbLayerTableRecord", name), w.group(62, 7),
+          w.group(6, "Continuous");
+    const int colours[] = {7, 8, 8, 5,
+                           3, 1, 2};  // ACI: white, grey, grey, blue, green, red, yellow
     for (std::size_t i = 0; i < std::size(kDxfLayers); ++i) {
       entry(w, "LAYER", "2", "AcDbLayerTableRecord", kDxfLayers[i]);
       w.group(62, colours[i]);
@@ -229,7 +233,8 @@ void write_tables(DxfWriter& w, double mm_per_m) {
   table(w, "VIEW", "6", 0, [] {});
   table(w, "UCS", "7", 0, [] {});
   table(w, "APPID", "9", 1, [&] { entry(w, "APPID", "9", "AcDbRegAppTableRecord", "ACAD"); });
-  table(w, "DIMSTYLE", "A", 1, [&] { entry(w, "DIMSTYLE", "A", "AcDbDimStyleTableRecord", "Standard", 105); });
+  table(w, "DIMSTYLE", "A", 1,
+        [&] { entry(w, "DIMSTYLE", "A", "AcDbDimStyleTableRecord", "Standard", 105); });
   table(w, "BLOCK_RECORD", "1", 2, [&] {
     for (const char* name : {"*Model_Space", "*Paper_Space"}) {
       w.group(0, "BLOCK_RECORD");
@@ -305,10 +310,11 @@ std::string format_floor_plan_dxf(const FloorPlanDrawing& drawing) {
   header.group(0, "SECTION");
   header.group(2, "HEADER");
   header.group(9, "$ACADVER"), header.group(1, "AC1015");
-  header.group(9, "$HANDSEED"), header.group(5, std::string_view(fmt::format("{:X}", body.next_handle())));
-  header.group(9, "$INSUNITS"), header.group(70, 6);  // metres
+  header.group(9, "$HANDSEED"),
+      header.group(5, std::string_view(fmt::format("{:X}", body.next_handle())));
+  header.group(9, "$INSUNITS"), header.group(70, 6);     // metres
   header.group(9, "$MEASUREMENT"), header.group(70, 1);  // metric
-  header.group(9, "$LUNITS"), header.group(70, 2);  // decimal
+  header.group(9, "$LUNITS"), header.group(70, 2);       // decimal
   header.group(0, "ENDSEC");
   return header.text() + body.text();
 }

@@ -7,20 +7,17 @@
 namespace roomcad {
 namespace {
 
-constexpr double kThin = 0.18;    // mm: dimensions, swings, things seen below the cut
-constexpr double kMedium = 0.25;  // windows
-constexpr double kThick = 0.5;    // door leaves
+constexpr double kThin = 0.18;     // mm: dimensions, swings, things seen below the cut
+constexpr double kMedium = 0.25;   // windows
+constexpr double kThick = 0.5;     // door leaves
 constexpr double kOutline = 0.35;  // visible edges of elevations and views
 constexpr const char* kFindingRed = "#d00000";
 
 std::string_view anchor_name(TextAnchor anchor) {
   switch (anchor) {
-    case TextAnchor::start:
-      return "start";
-    case TextAnchor::end:
-      return "end";
-    default:
-      return "middle";
+    case TextAnchor::start: return "start";
+    case TextAnchor::end: return "end";
+    default: return "middle";
   }
 }
 
@@ -54,7 +51,9 @@ void add_texts(SvgDocument& doc, std::string_view id, std::span<const PaperText>
   doc.begin_group(id, id);
   for (const PaperText& t : texts) {
     doc.add_text(t.at, t.text,
-                 {.size = t.size, .anchor = std::string(anchor_name(t.anchor)), .fill = fill,
+                 {.size = t.size,
+                  .anchor = std::string(anchor_name(t.anchor)),
+                  .fill = fill,
                   .rotate_deg = t.rotate_deg});
   }
   doc.end_group();
@@ -98,7 +97,8 @@ SvgDocument make_floor_plan_svg(const FloorPlanDrawing& d, const std::string& ti
   add_scale_bar(doc, d.scale_bar_black, d.scale_bar_white);
   add_texts(doc, "labels", d.labels);
   if (!d.marks.empty()) {  // findings, over everything else
-    add_polygons(doc, "findings", d.marks, {.stroke = kFindingRed, .stroke_width = kMedium, .fill = "none"});
+    add_polygons(doc, "findings", d.marks,
+                 {.stroke = kFindingRed, .stroke_width = kMedium, .fill = "none"});
     add_texts(doc, "finding-codes", d.mark_labels, kFindingRed);
   }
   return doc;
@@ -108,8 +108,9 @@ SvgDocument make_line_drawing_svg(const LineDrawing& d, const std::string& title
   SvgDocument doc(d.width, d.height);
   if (!title.empty()) doc.set_title(title);
   doc.add_rect({0, 0}, d.width, d.height, {.fill = "#fff"});
-  add_line_group(doc, "hidden", d.hidden,
-                 {.stroke = "#000", .stroke_width = kThin, .dashes = {1.5, 1.0}, .linecap = "butt"});
+  add_line_group(
+      doc, "hidden", d.hidden,
+      {.stroke = "#000", .stroke_width = kThin, .dashes = {1.5, 1.0}, .linecap = "butt"});
   add_line_group(doc, "visible", d.visible,
                  {.stroke = "#000", .stroke_width = kOutline, .linecap = "round"});
   add_line_group(doc, "frame", d.frame, {.stroke = "#000", .stroke_width = kThin});

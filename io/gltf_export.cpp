@@ -38,14 +38,17 @@ struct Primitive {
 /// A node's primitives by colour (0xrrggbb).
 using NodeMeshes = std::map<int, std::map<std::uint32_t, Primitive>>;
 
-std::uint32_t colour_key(Color c) { return (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b; }
+std::uint32_t colour_key(Color c) {
+  return (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
+}
 
 /// Adds the mesh's triangles to the nodes of their objects (-1: no object), y up.
 void gather(const SolidMesh& mesh, NodeMeshes& nodes) {
   if (mesh.n_faces() == 0) return;
   const FacePropertyHandles h = face_property_handles(mesh);
   for (const FloatTriangle& t : triangulate_in_float(mesh)) {
-    Primitive& p = nodes[mesh.property(h.object, t.face)][colour_key(mesh.property(h.color, t.face))];
+    Primitive& p =
+        nodes[mesh.property(h.object, t.face)][colour_key(mesh.property(h.color, t.face))];
     for (const OpenMesh::Vec3f& c : t.corners) p.add({c[0], c[2], c[1] == 0.0f ? 0.0f : -c[1]});
   }
 }
@@ -72,10 +75,12 @@ struct ObjectInfo {
 std::unordered_map<std::string, ObjectInfo> object_infos(const Plan& plan) {
   std::unordered_map<std::string, ObjectInfo> out;
   std::unordered_map<std::string, std::string> wall_level;
-  for (const Wall& w : plan.walls) wall_level.emplace(w.id, w.level), out.emplace(w.id, ObjectInfo{"wall", w.level});
+  for (const Wall& w : plan.walls)
+    wall_level.emplace(w.id, w.level), out.emplace(w.id, ObjectInfo{"wall", w.level});
   for (const Opening& o : plan.openings) {
     const auto it = wall_level.find(o.wall);
-    out.emplace(o.id, ObjectInfo{std::string(to_string(o.type)), it == wall_level.end() ? "" : it->second});
+    out.emplace(
+        o.id, ObjectInfo{std::string(to_string(o.type)), it == wall_level.end() ? "" : it->second});
   }
   for (const Slab& s : plan.slabs) out.emplace(s.id, ObjectInfo{"slab", s.level});
   return out;
@@ -98,9 +103,11 @@ class GltfBuilder {
                   {"level", nullptr}};
       if (info != infos.end() && !info->second.level.empty()) extras["level"] = info->second.level;
       Json mesh{{"name", name}, {"primitives", Json::array()}};
-      for (const auto& [colour, primitive] : primitives) mesh["primitives"].push_back(write(primitive, colour));
+      for (const auto& [colour, primitive] : primitives)
+        mesh["primitives"].push_back(write(primitive, colour));
       scene_nodes.push_back(json_["nodes"].size());
-      json_["nodes"].push_back({{"name", name}, {"mesh", json_["meshes"].size()}, {"extras", extras}});
+      json_["nodes"].push_back(
+          {{"name", name}, {"mesh", json_["meshes"].size()}, {"extras", extras}});
       json_["meshes"].push_back(mesh);
     }
     json_["asset"] = {{"version", "2.0"}, {"generator", "roomcad"}};
@@ -116,8 +123,11 @@ class GltfBuilder {
   }
 
  private:
-  Json json_{{"nodes", Json::array()}, {"meshes", Json::array()}, {"materials", Json::array()},
-             {"accessors", Json::array()}, {"bufferViews", Json::array()}};
+  Json json_{{"nodes", Json::array()},
+             {"meshes", Json::array()},
+             {"materials", Json::array()},
+             {"accessors", Json::array()},
+             {"bufferViews", Json::array()}};
   std::string bin_;
   std::map<std::uint32_t, std::size_t> materials_;
 
@@ -127,8 +137,9 @@ class GltfBuilder {
     json_["materials"].push_back(
         {{"name", fmt::format("c_{:06x}", colour)},
          {"pbrMetallicRoughness",
-          {{"baseColorFactor", {linear_channel(colour >> 16), linear_channel((colour >> 8) & 0xff),
-                                linear_channel(colour & 0xff), 1.0}},
+          {{"baseColorFactor",
+            {linear_channel(colour >> 16), linear_channel((colour >> 8) & 0xff),
+             linear_channel(colour & 0xff), 1.0}},
            {"metallicFactor", 0.0},
            {"roughnessFactor", 1.0}}}});
     materials_.emplace(colour, index);
@@ -136,7 +147,8 @@ class GltfBuilder {
   }
 
   std::size_t view(std::size_t offset, std::size_t length, int target) {
-    json_["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}, {"target", target}});
+    json_["bufferViews"].push_back(
+        {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}, {"target", target}});
     return json_["bufferViews"].size() - 1;
   }
 
@@ -144,21 +156,30 @@ class GltfBuilder {
     Float3 lo = p.positions.front();
     Float3 hi = lo;
     for (const Float3& q : p.positions) {
-      for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
+      for (std::size_t k = 0; k < 3; ++k)
+        lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
     }
     const std::size_t positions = append_bytes(bin_, p.positions);
-    const std::size_t position_view = view(positions, bin_.size() - positions, 34962);  // ARRAY_BUFFER
+    const std::size_t position_view =
+        view(positions, bin_.size() - positions, 34962);  // ARRAY_BUFFER
     const std::size_t indices = append_bytes(bin_, p.indices);
-    const std::size_t index_view = view(indices, bin_.size() - indices, 34963);  // ELEMENT_ARRAY_BUFFER
+    const std::size_t index_view =
+        view(indices, bin_.size() - indices, 34963);  // ELEMENT_ARRAY_BUFFER
     // min and max as the doubles the floats are: a reader compares them with the data exactly.
-    json_["accessors"].push_back({{"bufferView", position_view}, {"componentType", 5126},
-                                  {"count", p.positions.size()}, {"type", "VEC3"},
+    json_["accessors"].push_back({{"bufferView", position_view},
+                                  {"componentType", 5126},
+                                  {"count", p.positions.size()},
+                                  {"type", "VEC3"},
                                   {"min", {double{lo[0]}, double{lo[1]}, double{lo[2]}}},
                                   {"max", {double{hi[0]}, double{hi[1]}, double{hi[2]}}}});
-    json_["accessors"].push_back({{"bufferView", index_view}, {"componentType", 5125},
-                                  {"count", p.indices.size()}, {"type", "SCALAR"}});
+    json_["accessors"].push_back({{"bufferView", index_view},
+                                  {"componentType", 5125},
+                                  {"count", p.indices.size()},
+                                  {"type", "SCALAR"}});
     const std::size_t n = json_["accessors"].size();
-    return {{"attributes", {{"POSITION", n - 2}}}, {"indices", n - 1}, {"material", materials_.at(colour)}};
+    return {{"attributes", {{"POSITION", n - 2}}},
+            {"indices", n - 1},
+            {"material", materials_.at(colour)}};
   }
 };
 
@@ -186,7 +207,8 @@ std::string pack_glb(const GltfDocument& document) {
   std::string json = document.json;
   while (json.size() % 4) json += ' ';
   std::string out;
-  const std::size_t total = 12 + 8 + json.size() + (document.bin.empty() ? 0 : 8 + document.bin.size());
+  const std::size_t total =
+      12 + 8 + json.size() + (document.bin.empty() ? 0 : 8 + document.bin.size());
   append_u32(out, 0x46546C67);  // "glTF"
   append_u32(out, 2);
   append_u32(out, static_cast<std::uint32_t>(total));
@@ -203,9 +225,11 @@ std::string pack_glb(const GltfDocument& document) {
 
 Status write_gltf_file(const std::filesystem::path& path, const Model& model, const Plan& plan) {
   const std::string extension = path.extension().string();
-  if (extension == ".glb") return write_file_atomically(path, pack_glb(format_gltf(model, plan, "")));
+  if (extension == ".glb")
+    return write_file_atomically(path, pack_glb(format_gltf(model, plan, "")));
   if (extension != ".gltf")
-    return Status::failure(Code::unsupported, fmt::format("{}: glTF is written as .glb or .gltf", path.string()));
+    return Status::failure(Code::unsupported,
+                           fmt::format("{}: glTF is written as .glb or .gltf", path.string()));
   std::filesystem::path bin = path;
   bin.replace_extension(".bin");
   const GltfDocument document = format_gltf(model, plan, bin.filename().string());

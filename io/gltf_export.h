@@ -20,8 +20,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "plan/plan.h"
 #include "mesh/solid_mesh.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 

@@ -59,21 +59,24 @@ Result<RgbImage> decode_png(std::string_view bytes, std::string_view file) {
   std::memset(&header, 0, sizeof header);
   header.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&header, bytes.data(), bytes.size())) {
-    return Result<RgbImage>::failure(Code::unsupported,
+    return Result<RgbImage>::failure(
+        Code::unsupported,
         fmt::format("read_png: '{}' is not a PNG file: {}", file, header.message));
   }
   if (header.width > kMaxPngSide || header.height > kMaxPngSide ||
       static_cast<long long>(header.width) * header.height > kMaxPngPixels) {
     png_image_free(&header);
-    return Result<RgbImage>::failure(Code::too_large, fmt::format(
-        "read_png: '{}' is {} x {} pixels; at most {} per side and {} in all are read", file,
-        header.width, header.height, kMaxPngSide, kMaxPngPixels));
+    return Result<RgbImage>::failure(
+        Code::too_large,
+        fmt::format("read_png: '{}' is {} x {} pixels; at most {} per side and {} in all are read",
+                    file, header.width, header.height, kMaxPngSide, kMaxPngPixels));
   }
   header.format = PNG_FORMAT_RGB;  // drops alpha, expands grey and palettes
   RgbImage image(static_cast<int>(header.width), static_cast<int>(header.height));
   if (!png_image_finish_read(&header, nullptr, image.pixels.data(), 0, nullptr)) {
     png_image_free(&header);
-    return Result<RgbImage>::failure(Code::parse_error,
+    return Result<RgbImage>::failure(
+        Code::parse_error,
         fmt::format("read_png: '{}' could not be decoded: {}", file, header.message));
   }
   return image;
@@ -84,14 +87,16 @@ Result<RgbImage> decode_png(std::string_view bytes, std::string_view file) {
 Status write_png(const RgbImage& image, const std::filesystem::path& path) {
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
-    return Status::failure(Code::precondition, fmt::format("write_png: '{}': image is {} x {} with {} bytes",
-                                       path.string(), image.width, image.height,
-                                       image.pixels.size()));
+    return Status::failure(
+        Code::precondition,
+        fmt::format("write_png: '{}': image is {} x {} with {} bytes", path.string(), image.width,
+                    image.height, image.pixels.size()));
   }
   std::string bytes;
   std::string error;
   if (!encode_png(image, bytes, error)) {
-    return Status::failure(Code::io_error, fmt::format("write_png: '{}': {}", path.string(), error));
+    return Status::failure(Code::io_error,
+                           fmt::format("write_png: '{}': {}", path.string(), error));
   }
   return write_file_atomically(path, bytes);
 }
@@ -99,8 +104,8 @@ Status write_png(const RgbImage& image, const std::filesystem::path& path) {
 Result<RgbImage> read_png(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    return Result<RgbImage>::failure(Code::io_error,
-        fmt::format("read_png: cannot open '{}' for reading", path.string()));
+    return Result<RgbImage>::failure(
+        Code::io_error, fmt::format("read_png: cannot open '{}' for reading", path.string()));
   }
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   return decode_png(bytes, path.string());
@@ -113,9 +118,10 @@ Result<RgbImage> read_png_bytes(std::string_view bytes, std::string_view file) {
 Status write_pfm(const FloatImage& image, const std::filesystem::path& path) {
   if (image.width <= 0 || image.height <= 0 ||
       image.values.size() != static_cast<std::size_t>(image.width) * image.height) {
-    return Status::failure(Code::precondition, fmt::format("write_pfm: '{}': image is {} x {} with {} values",
-                                       path.string(), image.width, image.height,
-                                       image.values.size()));
+    return Status::failure(
+        Code::precondition,
+        fmt::format("write_pfm: '{}': image is {} x {} with {} values", path.string(), image.width,
+                    image.height, image.values.size()));
   }
   // A negative scale means little-endian; rows go bottom-up.
   std::string bytes = fmt::format("Pf\n{} {}\n-1.0\n", image.width, image.height);
@@ -123,8 +129,8 @@ Status write_pfm(const FloatImage& image, const std::filesystem::path& path) {
   static_assert(sizeof(float) == 4 && std::endian::native == std::endian::little,
                 "PFM is written as little-endian IEEE single floats");
   for (int y = image.height - 1; y >= 0; --y) {
-    const char* row = reinterpret_cast<const char*>(&image.values[static_cast<std::size_t>(y) *
-                                                                   image.width]);
+    const char* row =
+        reinterpret_cast<const char*>(&image.values[static_cast<std::size_t>(y) * image.width]);
     bytes.append(row, row_bytes);
   }
   return write_file_atomically(path, bytes);

@@ -96,7 +96,8 @@ std::string group_name(const MeshParts& parts, int object) {
   if (object < 0 || parts.objects == nullptr || std::size_t(object) >= parts.objects->size())
     return "floor";
   std::string name = (*parts.objects)[std::size_t(object)];
-  std::replace_if(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) != 0; }, '_');
+  std::replace_if(
+      name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) != 0; }, '_');
   return name.empty() ? "_" : name;
 }
 
@@ -134,13 +135,15 @@ std::map<int, std::vector<FaceRef>> faces_by_object(const MeshParts& parts) {
 
 Result<MeshFormat> mesh_format_of(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   if (ext == ".obj") return MeshFormat::obj;
   if (ext == ".off") return MeshFormat::off;
   if (ext == ".ply") return MeshFormat::ply;
   if (ext == ".stl") return MeshFormat::stl;
-  return Result<MeshFormat>::failure(Code::unsupported, "output file '" + path.string() + "': extension '" + ext +
-                                     "' is not one of .obj, .off, .ply, .stl");
+  return Result<MeshFormat>::failure(Code::unsupported,
+                                     "output file '" + path.string() + "': extension '" + ext +
+                                         "' is not one of .obj, .off, .ply, .stl");
 }
 
 std::string format_obj(const MeshParts& parts, const std::string& mtl_name) {
@@ -155,7 +158,8 @@ std::string format_obj(const MeshParts& parts, const std::string& mtl_name) {
     out += "g " + group_name(parts, object == INT32_MAX ? -1 : object) + "\n";
     std::string material;
     for (const FaceRef& r : faces) {
-      const std::string m = material_name(r.mesh->property(face_property_handles(*r.mesh).color, r.face));
+      const std::string m =
+          material_name(r.mesh->property(face_property_handles(*r.mesh).color, r.face));
       if (m != material) out += "usemtl " + (material = m) + "\n";
       append_obj_face(out, r);
     }
@@ -194,8 +198,9 @@ std::string format_ply(const MeshParts& parts) {
   append_int(out, static_cast<long long>(count_vertices(parts)));
   out += "\nproperty double x\nproperty double y\nproperty double z\nelement face ";
   append_int(out, static_cast<long long>(count_faces(parts)));
-  out += "\nproperty list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\n"
-         "property uchar blue\nend_header\n";
+  out +=
+      "\nproperty list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\n"
+      "property uchar blue\nend_header\n";
   append_vertices(out, parts, "");
   append_colored_faces(out, parts);
   return out;

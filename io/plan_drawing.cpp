@@ -9,11 +9,11 @@
 #include <fmt/format.h>
 
 #include "io/floor_plan_svg.h"
-#include "solid/build_model.h"
 #include "plan/plan_chords.h"
 #include "plan/plan_levels.h"
 #include "render/floor_plan.h"
 #include "render/line_drawing.h"
+#include "solid/build_model.h"
 
 namespace roomcad {
 namespace {
@@ -44,8 +44,9 @@ FloorPlanDrawing draw_floor_plan_of(const Plan& shown, const DrawRequest& o, dou
 }
 
 Result<SvgDocument> draw_plan_view(const Plan& plan, const DrawRequest& o, double scale) {
-  const std::string title = o.level.empty() ? fmt::format("{}: floor plan", o.title)
-                                            : fmt::format("{}: floor plan of level {}", o.title, o.level);
+  const std::string title = o.level.empty()
+                                ? fmt::format("{}: floor plan", o.title)
+                                : fmt::format("{}: floor plan of level {}", o.title, o.level);
   return make_floor_plan_svg(draw_floor_plan_of(plan, o, scale), title);
 }
 
@@ -71,7 +72,7 @@ ViewDrawer preset_drawer(const std::string& name) {
 
 const std::map<std::string, ViewDrawer>& views() {
   static const std::map<std::string, ViewDrawer> table{
-      {"plan", draw_plan_view},         {"north", preset_drawer("north")},
+      {"plan", draw_plan_view},          {"north", preset_drawer("north")},
       {"south", preset_drawer("south")}, {"east", preset_drawer("east")},
       {"west", preset_drawer("west")},   {"iso", preset_drawer("iso")}};
   return table;
@@ -96,9 +97,9 @@ Result<ViewDrawer> find_view(const std::string& name, const Plan& plan) {
     }
     known += (known.empty() ? "" : ", ") + c.id;
   }
-  return Result<ViewDrawer>::failure(Code::usage_error,
-      fmt::format("--view \"{}\": the plan has no camera \"{}\" (it has: {})", name, id,
-                  known.empty() ? "none" : known));
+  return Result<ViewDrawer>::failure(
+      Code::usage_error, fmt::format("--view \"{}\": the plan has no camera \"{}\" (it has: {})",
+                                     name, id, known.empty() ? "none" : known));
 }
 
 /// Parses "1:N" or "N" into N. @return NaN if the text is neither.
@@ -120,9 +121,11 @@ std::vector<std::string> drawing_view_names() {
 Status check_draw_request(const DrawRequest& request) {
   const double scale = parse_scale(request.scale);
   if (std::isnan(scale))
-    return Error{Code::usage_error, fmt::format("--scale \"{}\": expected 1:N, e.g. 1:50", request.scale)};
+    return Error{Code::usage_error,
+                 fmt::format("--scale \"{}\": expected 1:N, e.g. 1:50", request.scale)};
   if (request.hidden != "dashed" && request.hidden != "off")
-    return Error{Code::usage_error, fmt::format("--hidden \"{}\": expected dashed or off", request.hidden)};
+    return Error{Code::usage_error,
+                 fmt::format("--hidden \"{}\": expected dashed or off", request.hidden)};
   return check_floor_plan_options({.scale = scale, .cut_height = request.cut_height});
 }
 

@@ -20,9 +20,9 @@ inline constexpr std::string_view kCameraViewPrefix = "camera:";
 
 /// The defaults are the command's.
 struct DrawRequest {
-  std::string view = "plan";  ///< plan, north, south, east, west, iso, or camera:ID
-  std::string scale = "1:50";  ///< paper scale 1:N (or N)
-  double cut_height = 1.0;     ///< metres, the floor plan's section
+  std::string view = "plan";      ///< plan, north, south, east, west, iso, or camera:ID
+  std::string scale = "1:50";     ///< paper scale 1:N (or N)
+  double cut_height = 1.0;        ///< metres, the floor plan's section
   std::string hidden = "dashed";  ///< hidden edges of views: dashed or off
   std::string parts = "walls,floor,fixtures";
   std::string title;  ///< the drawing's title starts with it (the plan file's name)
@@ -41,7 +41,8 @@ struct DrawRequest {
 /// and the DXF: arcs drawn as their chords; with a level, its walls cut at the cut height above
 /// its floor, else every wall at its absolute height.
 /// @return the drawing, or a usage_error (bad options, unknown level). O(plan + drawing).
-[[nodiscard]] Result<FloorPlanDrawing> draw_requested_floor_plan(const Plan& plan, const DrawRequest& request);
+[[nodiscard]] Result<FloorPlanDrawing> draw_requested_floor_plan(const Plan& plan,
+                                                                 const DrawRequest& request);
 
 /// Draws `plan` (validated: errors are drawn as they are) as `request` asks.
 /// @return the document, or a usage_error (unknown view or camera, bad options or parts).

@@ -31,9 +31,10 @@ std::vector<const ExtraField*> writable_extras(const ExtraFields& extra,
     if (std::find(written.begin(), written.end(), e.key) == written.end()) sorted.push_back(&e);
   std::stable_sort(sorted.begin(), sorted.end(),
                    [](const ExtraField* a, const ExtraField* b) { return a->key < b->key; });
-  sorted.erase(std::unique(sorted.begin(), sorted.end(),
-                           [](const ExtraField* a, const ExtraField* b) { return a->key == b->key; }),
-               sorted.end());
+  sorted.erase(
+      std::unique(sorted.begin(), sorted.end(),
+                  [](const ExtraField* a, const ExtraField* b) { return a->key == b->key; }),
+      sorted.end());
   return sorted;
 }
 
@@ -92,10 +93,8 @@ class LineWriter {
     out_ += ']';
   }
   template <class E>
-    requires std::is_enum_v<E>
-  void value(E e) {
-    append_string(out_, to_string(e));
-  }
+  requires std::is_enum_v<E>
+  void value(E e) { append_string(out_, to_string(e)); }
 
   std::string& out_;
   bool first_ = true;
@@ -128,13 +127,19 @@ bool non_finite(const Polygon& polygon) {
 template <class T>
 std::string_view unwritable(const T& v) {
   constexpr std::string_view not_finite = "holds a number that is not finite";
-  if constexpr (std::is_same_v<T, std::string>) return first_ill_formed_utf8(v) ? "holds text that is not UTF-8" : "";
-  else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, Point2> || std::is_same_v<T, Polygon>)
+  if constexpr (std::is_same_v<T, std::string>)
+    return first_ill_formed_utf8(v) ? "holds text that is not UTF-8" : "";
+  else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, Point2> ||
+                     std::is_same_v<T, Polygon>)
     return non_finite(v) ? not_finite : "";
-  else if constexpr (std::is_same_v<T, std::optional<double>>) return v && non_finite(*v) ? not_finite : "";
-  else if constexpr (std::is_same_v<T, Vec3>) return non_finite(v.x) || non_finite(v.y) || non_finite(v.z) ? not_finite : "";
+  else if constexpr (std::is_same_v<T, std::optional<double>>)
+    return v && non_finite(*v) ? not_finite : "";
+  else if constexpr (std::is_same_v<T, Vec3>)
+    return non_finite(v.x) || non_finite(v.y) || non_finite(v.z) ? not_finite : "";
   else if constexpr (std::is_same_v<T, std::vector<Polygon>>)
-    return std::any_of(v.begin(), v.end(), [](const Polygon& p) { return non_finite(p); }) ? not_finite : "";
+    return std::any_of(v.begin(), v.end(), [](const Polygon& p) { return non_finite(p); })
+               ? not_finite
+               : "";
   else return "";
 }
 
@@ -144,12 +149,14 @@ template <class Object>
 void find_unwritable(const Object& o, std::string_view object, std::string& where) {
   for (const Field<Object>& f : fields_of<Object>()) {
     if (!where.empty()) return;
-    const std::string_view why = std::visit([&](auto member) { return unwritable(o.*member); }, f.member);
+    const std::string_view why =
+        std::visit([&](auto member) { return unwritable(o.*member); }, f.member);
     if (!why.empty()) where = fmt::format("{} field '{}' {}", object, f.name, why);
   }
   for (const ExtraField& e : o.extra)
     if (where.empty() && first_ill_formed_utf8(e.key))
-      where = fmt::format("{} has an unknown field named '{}', which is not UTF-8", object, printable_utf8(e.key));
+      where = fmt::format("{} has an unknown field named '{}', which is not UTF-8", object,
+                          printable_utf8(e.key));
 }
 
 /// @return where the first value of the plan that JSON cannot hold is, and why, or "".
@@ -207,8 +214,8 @@ std::string write_plan_text(const Plan& plan) {
 
 Status write_plan_file(const Plan& plan, const std::filesystem::path& path) {
   if (const std::string where = first_unwritable(plan); !where.empty())
-    return Status::failure(Code::invalid_value,
-                           "cannot write " + path.string() + ": " + where + " (JSON cannot hold it)");
+    return Status::failure(Code::invalid_value, "cannot write " + path.string() + ": " + where +
+                                                    " (JSON cannot hold it)");
   return write_file_atomically(path, write_plan_text(plan));
 }
 

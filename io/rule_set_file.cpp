@@ -15,8 +15,8 @@ Result<RuleSet> load_rule_set(const std::string& name_or_file, std::string_view 
   std::error_code ec;
   if (!std::filesystem::exists(name_or_file, ec))
     return Error{Code::usage_error,
-                 fmt::format("{} \"{}\": neither a rule set ({}) nor a rules file", argument, name_or_file,
-                             fmt::join(builtin_rule_set_names(), ", "))};
+                 fmt::format("{} \"{}\": neither a rule set ({}) nor a rules file", argument,
+                             name_or_file, fmt::join(builtin_rule_set_names(), ", "))};
   const Result<std::string> text = read_text_file(name_or_file);
   if (!text) return text.error();
   return parse_rule_set(text.value(), name_or_file);

@@ -17,6 +17,7 @@ namespace roomcad {
 /// @return the set; a usage_error naming the argument and value for neither a set nor a
 ///         file, naming the file, field and value for a bad file; an io_error for a file
 ///         that cannot be read.
-[[nodiscard]] Result<RuleSet> load_rule_set(const std::string& name_or_file, std::string_view argument);
+[[nodiscard]] Result<RuleSet> load_rule_set(const std::string& name_or_file,
+                                            std::string_view argument);
 
 }  // namespace roomcad

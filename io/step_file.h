@@ -46,11 +46,21 @@ class Writer {
 
 /// One parameter value of an instance.
 struct Value {
-  enum class Kind : std::uint8_t { null, derived, ref, integer, real, string, enumeration, list, typed };
+  enum class Kind : std::uint8_t {
+    null,
+    derived,
+    ref,
+    integer,
+    real,
+    string,
+    enumeration,
+    list,
+    typed
+  };
   Kind kind = Kind::null;
-  double number = 0.0;        ///< integer and real
-  std::uint32_t id = 0;       ///< ref: the instance number
-  std::string text{};         ///< string (decoded to UTF-8), enumeration (without dots), typed: type name
+  double number = 0.0;   ///< integer and real
+  std::uint32_t id = 0;  ///< ref: the instance number
+  std::string text{};  ///< string (decoded to UTF-8), enumeration (without dots), typed: type name
   std::vector<Value> items{};  ///< list items; typed: its one parameter
 
   [[nodiscard]] bool is_number() const { return kind == Kind::integer || kind == Kind::real; }

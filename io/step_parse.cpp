@@ -57,7 +57,8 @@ std::string decode_string(std::string_view raw) {
   for (std::size_t i = 0; i < raw.size();) {
     if (raw.compare(i, 4, "\\X2\\") == 0) {
       const std::size_t end = raw.find("\\X0\\", i + 4);
-      const std::string_view hex = raw.substr(i + 4, end == std::string_view::npos ? 0 : end - i - 4);
+      const std::string_view hex =
+          raw.substr(i + 4, end == std::string_view::npos ? 0 : end - i - 4);
       for (std::size_t k = 0; k + 4 <= hex.size(); k += 4) {
         std::uint32_t cp = hex_value(hex.substr(k, 4));
         const std::uint32_t next = k + 8 <= hex.size() ? hex_value(hex.substr(k + 4, 4)) : 0;
@@ -129,8 +130,8 @@ class Parser {
   std::string_view word() {
     skip();
     const std::size_t start = i_;
-    while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_' ||
-                              s_[i_] == '-'))
+    while (i_ < s_.size() &&
+           (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_' || s_[i_] == '-'))
       ++i_;
     return s_.substr(start, i_ - start);
   }
@@ -271,9 +272,10 @@ class Parser {
   void read_number(Value& v) {
     std::size_t end = i_ + 1;
     bool real = false;
-    while (end < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[end])) || s_[end] == '.' ||
-                               s_[end] == 'E' || s_[end] == 'e' ||
-                               ((s_[end] == '-' || s_[end] == '+') && (s_[end - 1] == 'E' || s_[end - 1] == 'e')))) {
+    while (end < s_.size() &&
+           (std::isdigit(static_cast<unsigned char>(s_[end])) || s_[end] == '.' || s_[end] == 'E' ||
+            s_[end] == 'e' ||
+            ((s_[end] == '-' || s_[end] == '+') && (s_[end - 1] == 'E' || s_[end - 1] == 'e')))) {
       real = real || !std::isdigit(static_cast<unsigned char>(s_[end]));
       ++end;
     }
@@ -294,11 +296,14 @@ Result<File> parse(std::string_view text, std::string_view name) {
     return Parser(text).run();
   } catch (const ParseFailure& failure) {
     const std::size_t at = std::min(failure.at, text.size());
-    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    const std::size_t line =
+        1 + static_cast<std::size_t>(
+                std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
     const Code code = failure.what == "too many instances" ? Code::too_large : Code::parse_error;
     return Result<File>::failure(
-        code, fmt::format("{}: line {}: {} (a STEP physical file, ISO 10303-21, is expected)",
-                          name, line, failure.what),
+        code,
+        fmt::format("{}: line {}: {} (a STEP physical file, ISO 10303-21, is expected)", name, line,
+                    failure.what),
         Location{.file = std::string(name), .pointer = "", .line = line, .column = 0});
   }
 }

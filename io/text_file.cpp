@@ -21,7 +21,7 @@ Result<std::string> read_text_file(const std::filesystem::path& path) {
   if (!S_ISREG(info.st_mode)) return failure("it is not a regular file");
   if (static_cast<std::uintmax_t>(info.st_size) > kMaxTextFileBytes)
     return failure("it is " + std::to_string(info.st_size) + " bytes; files of at most " +
-                   std::to_string(kMaxTextFileBytes) + " bytes (256 MiB) are read",
+                       std::to_string(kMaxTextFileBytes) + " bytes (256 MiB) are read",
                    Code::too_large);
 
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"), std::fclose);

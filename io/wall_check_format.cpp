@@ -15,10 +15,11 @@ std::string yes_no(bool b) { return b ? "yes" : "NO"; }
 
 std::string format_wall_check_text(const WallCheck& v) {
   const SolidCheck& c = v.solid;
-  std::string out = fmt::format("wall solid: {} vertices, {} faces ({} triangles), {} component{}\n",
-                                c.vertices, c.faces, c.triangles, c.components,
-                                c.components == 1 ? "" : "s");
-  out += fmt::format("  closed              {} ({} border edges)\n", yes_no(c.is_closed()), c.border_edges);
+  std::string out =
+      fmt::format("wall solid: {} vertices, {} faces ({} triangles), {} component{}\n", c.vertices,
+                  c.faces, c.triangles, c.components, c.components == 1 ? "" : "s");
+  out += fmt::format("  closed              {} ({} border edges)\n", yes_no(c.is_closed()),
+                     c.border_edges);
   out += fmt::format("  2-manifold          {} ({} non-manifold vertices, {} rejected triangles)\n",
                      yes_no(c.is_manifold()), c.non_manifold_vertices, c.rejected_triangles);
   out +=
@@ -28,8 +29,9 @@ std::string format_wall_check_text(const WallCheck& v) {
                       : fmt::format(" ({} pairs of triangles touch at a shared point or edge only)",
                                     c.touching_pairs));
   out += fmt::format("  degenerate faces    {}\n", c.degenerate_triangles);
-  out += fmt::format("  outward oriented    {} ({} inward components{})\n", yes_no(c.inward_components == 0),
-                     c.inward_components, c.cavities == 0 ? "" : fmt::format(", {} cavities", c.cavities));
+  out += fmt::format("  outward oriented    {} ({} inward components{})\n",
+                     yes_no(c.inward_components == 0), c.inward_components,
+                     c.cavities == 0 ? "" : fmt::format(", {} cavities", c.cavities));
   out += fmt::format("  genus               {}\n", c.genus);
   out += fmt::format("  volume              {} m^3\n", c.volume);
   out += fmt::format(

@@ -50,7 +50,8 @@ P3 point_of(const RoundedPoints& r, int id) {
 // the seam too). A spike (a, b, a) is where rounding closed a sliver of the face: the ring runs
 // to b and straight back. Its two edges cancel, and written they would lie on the edges of the
 // faces beside the sliver, so that an edge between two rounded points would join four facets.
-std::vector<int> rounded_ring(const SolidMesh& mesh, SolidMesh::FaceHandle f, const RoundedPoints& r) {
+std::vector<int> rounded_ring(const SolidMesh& mesh, SolidMesh::FaceHandle f,
+                              const RoundedPoints& r) {
   std::vector<int> ring;
   for (const auto v : mesh.fv_range(f)) {
     const int id = r.of_vertex[std::size_t(v.idx())];
@@ -68,15 +69,15 @@ std::vector<int> rounded_ring(const SolidMesh& mesh, SolidMesh::FaceHandle f, co
       ring.pop_back();  // a repeat, or a spike b at the end returning to the first corner
     else if (m > 2 && ring[m - 1] == ring[1])
       ring.erase(ring.begin());  // a spike at the first corner, from and back to the last
-    else
-      cut = false;
+    else cut = false;
   }
   return ring;
 }
 
 // Appends the ear-clipping of `ring` (point numbers), each triangle tagged with `face`.
 void append_ring_triangles(const std::vector<int>& ring, const OpenMesh::Vec3d& normal,
-                           SolidMesh::FaceHandle face, const RoundedPoints& r, std::vector<Triangle>& out) {
+                           SolidMesh::FaceHandle face, const RoundedPoints& r,
+                           std::vector<Triangle>& out) {
   std::vector<OpenMesh::Vec3d> points;
   points.reserve(ring.size());
   for (const int id : ring) points.push_back(r.points[std::size_t(id)]);
@@ -86,7 +87,8 @@ void append_ring_triangles(const std::vector<int>& ring, const OpenMesh::Vec3d& 
   if (triangles.empty())
     for (int k = 1; k + 1 < int(ring.size()); ++k) triangles.push_back({0, k, k + 1});
   for (const auto& t : triangles)
-    out.push_back({{ring[std::size_t(t[0])], ring[std::size_t(t[1])], ring[std::size_t(t[2])]}, face});
+    out.push_back(
+        {{ring[std::size_t(t[0])], ring[std::size_t(t[1])], ring[std::size_t(t[2])]}, face});
 }
 
 bool has_repeated_corner(const Corners& v) { return v[0] == v[1] || v[1] == v[2] || v[2] == v[0]; }
@@ -95,13 +97,17 @@ bool is_collinear(const Corners& v, const RoundedPoints& r) {
   return CGAL::collinear(point_of(r, v[0]), point_of(r, v[1]), point_of(r, v[2]));
 }
 
-bool is_flat(const Corners& v, const RoundedPoints& r) { return has_repeated_corner(v) || is_collinear(v, r); }
+bool is_flat(const Corners& v, const RoundedPoints& r) {
+  return has_repeated_corner(v) || is_collinear(v, r);
+}
 
 // The points to insert into edges: every corner of a collinear triangle, sorted, once each.
-std::vector<int> corners_of_collinear_triangles(const std::vector<Triangle>& triangles, const RoundedPoints& r) {
+std::vector<int> corners_of_collinear_triangles(const std::vector<Triangle>& triangles,
+                                                const RoundedPoints& r) {
   std::vector<int> corners;
   for (const Triangle& t : triangles)
-    if (!has_repeated_corner(t.v) && is_collinear(t.v, r)) corners.insert(corners.end(), t.v.begin(), t.v.end());
+    if (!has_repeated_corner(t.v) && is_collinear(t.v, r))
+      corners.insert(corners.end(), t.v.begin(), t.v.end());
   std::sort(corners.begin(), corners.end());
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
   return corners;
@@ -109,7 +115,8 @@ std::vector<int> corners_of_collinear_triangles(const std::vector<Triangle>& tri
 
 // The triangle's corners with every inserted point that lies strictly inside one of its edges,
 // in order along the edge (exact predicates: the points are exactly on the edge in float).
-std::vector<int> refined_ring(const Corners& v, const std::vector<int>& inserted, const RoundedPoints& r) {
+std::vector<int> refined_ring(const Corners& v, const std::vector<int>& inserted,
+                              const RoundedPoints& r) {
   std::vector<int> ring;
   for (int k = 0; k < 3; ++k) {
     const P3 a = point_of(r, v[std::size_t(k)]), b = point_of(r, v[std::size_t(k + 1) % 3]);
@@ -117,7 +124,8 @@ std::vector<int> refined_ring(const Corners& v, const std::vector<int>& inserted
     const auto first = static_cast<std::ptrdiff_t>(ring.size());
     for (const int q : inserted) {
       const P3 p = point_of(r, q);
-      if (CGAL::collinear(a, p, b) && CGAL::collinear_are_strictly_ordered_along_line(a, p, b)) ring.push_back(q);
+      if (CGAL::collinear(a, p, b) && CGAL::collinear_are_strictly_ordered_along_line(a, p, b))
+        ring.push_back(q);
     }
     std::sort(ring.begin() + first, ring.end(), [&](int p, int q) {
       return CGAL::collinear_are_strictly_ordered_along_line(a, point_of(r, p), point_of(r, q));
@@ -143,20 +151,23 @@ std::vector<FloatTriangle> triangulate_in_float(const SolidMesh& mesh) {
   kept.reserve(triangles.size());
   for (const Triangle& t : triangles) {
     if (is_flat(t.v, r)) continue;
-    const std::vector<int> ring = inserted.empty() ? std::vector<int>{} : refined_ring(t.v, inserted, r);
+    const std::vector<int> ring =
+        inserted.empty() ? std::vector<int>{} : refined_ring(t.v, inserted, r);
     if (ring.size() <= 3) {
       kept.push_back(t);
       continue;
     }
     const OpenMesh::Vec3d a = r.points[std::size_t(t.v[0])];
-    const OpenMesh::Vec3d normal = (r.points[std::size_t(t.v[1])] - a) % (r.points[std::size_t(t.v[2])] - a);
+    const OpenMesh::Vec3d normal =
+        (r.points[std::size_t(t.v[1])] - a) % (r.points[std::size_t(t.v[2])] - a);
     append_ring_triangles(ring, normal, t.face, r, kept);
   }
   std::vector<FloatTriangle> out;
   out.reserve(kept.size());
   for (const Triangle& t : kept) {
     FloatTriangle& ft = out.emplace_back();
-    for (int k = 0; k < 3; ++k) ft.corners[std::size_t(k)] = OpenMesh::Vec3f(r.points[std::size_t(t.v[std::size_t(k)])]);
+    for (int k = 0; k < 3; ++k)
+      ft.corners[std::size_t(k)] = OpenMesh::Vec3f(r.points[std::size_t(t.v[std::size_t(k)])]);
     ft.face = t.face;
   }
   return out;

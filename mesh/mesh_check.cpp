@@ -40,10 +40,12 @@ TriMesh triangulate_copy(const SolidMesh& mesh, SolidCheck& check) {
     }
     const OpenMesh::Vec3d n = mesh.has_face_normals() ? mesh.normal(f) : OpenMesh::Vec3d(0, 0, 1);
     const auto triangles = triangulate_face(points, n);
-    if (points.size() < 3 || triangles.size() + 2 < points.size()) ++check.degenerate_triangles;  // zero area
+    if (points.size() < 3 || triangles.size() + 2 < points.size())
+      ++check.degenerate_triangles;  // zero area
     for (const auto& t : triangles) {
       ++check.triangles;
-      if (tri.add_face(ids[t[0]], ids[t[1]], ids[t[2]]) == TriMesh::null_face()) ++check.rejected_triangles;
+      if (tri.add_face(ids[t[0]], ids[t[1]], ids[t[2]]) == TriMesh::null_face())
+        ++check.rejected_triangles;
     }
   }
   return tri;
@@ -54,8 +56,9 @@ TriMesh triangulate_copy(const SolidMesh& mesh, SolidCheck& check) {
 // products) and rounded once. In doubles, even relative to a point of the component, the
 // differences of coordinates far apart round: a solid of 5.7e-15 m^3 spanning 46 m, 10 m
 // high, read as 110 times its volume (stress finding S6).
-std::vector<double> component_volumes(const TriMesh& tri, const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,
-                                      std::size_t count) {
+std::vector<double> component_volumes(
+    const TriMesh& tri, const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,
+    std::size_t count) {
   std::vector<CGAL::Mpzf> volume(count, CGAL::Mpzf(0.0));
   for (const auto f : tri.faces()) {
     const auto h = tri.halfedge(f);
@@ -71,7 +74,8 @@ std::vector<double> component_volumes(const TriMesh& tri, const TriMesh::Propert
   return rounded;
 }
 
-long component_genus(const TriMesh& tri, const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,
+long component_genus(const TriMesh& tri,
+                     const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,
                      std::size_t count) {
   std::vector<long> v(count, 0), e(count, 0), f(count, 0);
   for (const auto face : tri.faces()) ++f[comp[face]];
@@ -106,10 +110,8 @@ void count_cavities(TriMesh& tri, SolidCheck& check) {
   check.inward_components = 0;
   for (std::size_t c = 0; c < nesting.size(); ++c) {
     const bool void_side = nesting[c] % 2 == 1;
-    if (void_side && !outward[c])
-      ++check.cavities;
-    else if (void_side || !outward[c])
-      ++check.inward_components;
+    if (void_side && !outward[c]) ++check.cavities;
+    else if (void_side || !outward[c]) ++check.inward_components;
   }
 }
 
@@ -155,7 +157,8 @@ SolidCheck check_solid(const SolidMesh& mesh) {
   std::vector<TriMesh::Halfedge_index> pinched;  // one halfedge per extra umbrella, O(n) in all
   PMP::non_manifold_vertices(tri, std::back_inserter(pinched));
   check.non_manifold_vertices = pinched.size();
-  for (const auto f : tri.faces()) check.degenerate_triangles += PMP::is_degenerate_triangle_face(f, tri);
+  for (const auto f : tri.faces())
+    check.degenerate_triangles += PMP::is_degenerate_triangle_face(f, tri);
   if (PMP::does_self_intersect(tri)) {
     std::vector<std::pair<TriMesh::Face_index, TriMesh::Face_index>> pairs;
     PMP::self_intersections(tri, std::back_inserter(pairs));
@@ -169,7 +172,8 @@ SolidCheck check_solid(const SolidMesh& mesh) {
     check.volume += v;
     check.inward_components += v <= 0.0;
   }
-  if (check.inward_components > 0 && check.is_closed() && check.is_manifold() && check.self_intersections == 0)
+  if (check.inward_components > 0 && check.is_closed() && check.is_manifold() &&
+      check.self_intersections == 0)
     count_cavities(tri, check);
   check.genus = component_genus(tri, comp, check.components);
   return check;

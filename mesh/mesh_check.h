@@ -5,17 +5,17 @@
 
 #include <cstddef>
 
-#include "plan/plan.h"
 #include "mesh/solid_mesh.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 
 /// What check_solid found. A solid passes when is_valid() holds.
 struct SolidCheck {
   std::size_t vertices = 0;
-  std::size_t faces = 0;       ///< polygons
-  std::size_t triangles = 0;   ///< after triangulating each polygon (triangulate_face)
-  std::size_t border_edges = 0;          ///< 0 when closed
+  std::size_t faces = 0;         ///< polygons
+  std::size_t triangles = 0;     ///< after triangulating each polygon (triangulate_face)
+  std::size_t border_edges = 0;  ///< 0 when closed
   std::size_t non_manifold_vertices = 0;
   std::size_t rejected_triangles = 0;    ///< triangles that would make an edge non-manifold
   std::size_t degenerate_triangles = 0;  ///< collinear corners (exact predicate)
@@ -25,14 +25,16 @@ struct SolidCheck {
   /// only, a slab's corner on a wall's edge), a copy of the vertex per side keeps the mesh
   /// 2-manifold. Not an intersection: the faces do not cross.
   std::size_t touching_pairs = 0;
-  std::size_t inward_components = 0;     ///< components facing the wrong way (inside out)
-  std::size_t cavities = 0;              ///< components bounding a void inside the solid (facing in, rightly)
+  std::size_t inward_components = 0;  ///< components facing the wrong way (inside out)
+  std::size_t cavities = 0;  ///< components bounding a void inside the solid (facing in, rightly)
   std::size_t components = 0;
   long genus = 0;       ///< sum over components of (2 - Euler characteristic) / 2
   double volume = 0.0;  ///< cubic metres
 
   [[nodiscard]] bool is_closed() const { return border_edges == 0; }
-  [[nodiscard]] bool is_manifold() const { return non_manifold_vertices == 0 && rejected_triangles == 0; }
+  [[nodiscard]] bool is_manifold() const {
+    return non_manifold_vertices == 0 && rejected_triangles == 0;
+  }
   [[nodiscard]] bool is_valid() const {
     return is_closed() && is_manifold() && degenerate_triangles == 0 && self_intersections == 0 &&
            inward_components == 0;

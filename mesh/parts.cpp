@@ -20,8 +20,8 @@ Result<Parts> parse_parts(std::string_view list) {
     else if (name == "fixtures") parts.fixtures = true;
     else
       return Result<Parts>::failure(
-          Code::usage_error, fmt::format("--parts '{}': '{}' is not one of {}", list, name,
-                                         kPartNames));
+          Code::usage_error,
+          fmt::format("--parts '{}': '{}' is not one of {}", list, name, kPartNames));
     start = comma + 1;
   }
   return parts;

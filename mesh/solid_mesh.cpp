@@ -3,7 +3,6 @@
 
 #include "core/assert.h"
 
-
 namespace roomcad {
 
 std::string_view to_string(FaceKind k) {
@@ -26,7 +25,8 @@ std::string_view to_string(FaceKind k) {
 void add_face_properties(SolidMesh& mesh) {
   // get_property_handle finds a property added earlier, which makes this idempotent.
   OpenMesh::FPropHandleT<int> object;
-  if (!mesh.get_property_handle(object, kObjectProperty)) mesh.add_property(object, kObjectProperty);
+  if (!mesh.get_property_handle(object, kObjectProperty))
+    mesh.add_property(object, kObjectProperty);
   OpenMesh::FPropHandleT<FaceKind> kind;
   if (!mesh.get_property_handle(kind, kKindProperty)) mesh.add_property(kind, kKindProperty);
   OpenMesh::FPropHandleT<Color> color;

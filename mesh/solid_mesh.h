@@ -33,21 +33,22 @@ enum class FaceKind : std::uint8_t {
   wall_face,  ///< a side of a wall (either side)
   wall_top,
   wall_bottom,
-  wall_end,   ///< the end cap of a free wall end
-  jamb,       ///< the vertical side of an opening
-  sill,       ///< the bottom of an opening
-  lintel,     ///< the top of an opening
+  wall_end,  ///< the end cap of a free wall end
+  jamb,      ///< the vertical side of an opening
+  sill,      ///< the bottom of an opening
+  lintel,    ///< the top of an opening
   floor,
-  door,       ///< a door leaf fixture
-  window,     ///< a window pane fixture
-  slab,       ///< any face of a slab (a floor or ceiling of plan format version 2)
+  door,    ///< a door leaf fixture
+  window,  ///< a window pane fixture
+  slab,    ///< any face of a slab (a floor or ceiling of plan format version 2)
 };
 std::string_view to_string(FaceKind k);
 
 /// Names of the persistent face properties (OpenMesh property names, "rc:" prefix).
-inline constexpr const char* kObjectProperty = "rc:object";  ///< int: index into Model::objects, -1 none
-inline constexpr const char* kKindProperty = "rc:kind";      ///< FaceKind
-inline constexpr const char* kColorProperty = "rc:color";    ///< Color
+inline constexpr const char* kObjectProperty =
+    "rc:object";  ///< int: index into Model::objects, -1 none
+inline constexpr const char* kKindProperty = "rc:kind";    ///< FaceKind
+inline constexpr const char* kColorProperty = "rc:color";  ///< Color
 
 /// Adds the persistent face properties to a mesh (idempotent).
 void add_face_properties(SolidMesh& mesh);
@@ -68,9 +69,9 @@ struct FacePropertyHandles {
 
 /// The result of building a plan: one mesh per part, sharing one object table.
 struct Model {
-  SolidMesh walls;     ///< the wall solid: closed, 2-manifold, outward oriented
-  SolidMesh floor;     ///< the tiled floor
-  SolidMesh fixtures;  ///< door leaves and window panes
+  SolidMesh walls;                   ///< the wall solid: closed, 2-manifold, outward oriented
+  SolidMesh floor;                   ///< the tiled floor
+  SolidMesh fixtures;                ///< door leaves and window panes
   std::vector<std::string> objects;  ///< object ids; rc:object indexes this
   bool slabs_built = true;           ///< `walls` holds the plan's slabs (false: built without them)
 };

@@ -30,7 +30,7 @@ bool parse_value(std::string_view text, std::array<std::int64_t, 2>& out);
 bool parse_value(std::string_view text, Polygon& out);
 bool parse_value(std::string_view text, std::vector<Polygon>& out);
 template <class E>
-  requires std::is_enum_v<E>
+requires std::is_enum_v<E>
 bool parse_value(std::string_view text, E& out) {
   const auto value = parse_enum<E>(text);
   if (value) out = *value;
@@ -47,10 +47,7 @@ std::string value_text(const std::array<std::int64_t, 2>& value);
 std::string value_text(const Polygon& value);
 std::string value_text(const std::vector<Polygon>& value);
 template <class E>
-  requires std::is_enum_v<E>
-std::string value_text(E value) {
-  return std::string(to_string(value));
-}
+requires std::is_enum_v<E> std::string value_text(E value) { return std::string(to_string(value)); }
 
 /// @return "set: wall 'w1' field 'height' wants metres, got 'tall'".
 std::string wrong_value_message(std::string_view verb, std::string_view object,

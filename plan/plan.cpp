@@ -35,7 +35,8 @@ std::string to_string(Color c) {
 
 OpeningDefaults opening_defaults(OpeningType type) {
   // The spec's example door and window; a window's sill defaults to 0.9 m, a door's to 0.
-  return type == OpeningType::door ? OpeningDefaults{0.9, 2.1, 0.0} : OpeningDefaults{1.4, 1.3, 0.9};
+  return type == OpeningType::door ? OpeningDefaults{0.9, 2.1, 0.0}
+                                   : OpeningDefaults{1.4, 1.3, 0.9};
 }
 
 const Wall* find_wall(const Plan& plan, std::string_view id) {

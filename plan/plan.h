@@ -66,7 +66,7 @@ struct Site {
   std::array<std::int64_t, 2> cells{12, 8};  ///< tiles along x and y
   double cell_size = 1.0;                    ///< metres per tile side
   double max_height = 6.0;
-  double tolerance = 1e-6;                   ///< join tolerance, metres
+  double tolerance = 1e-6;  ///< join tolerance, metres
   Color floor_color{0xc8, 0xc8, 0xc8};
   /// Largest sagitta of the chords an arc wall is built as (version 2; absent: 0.001 m).
   std::optional<double> chord_tolerance{};
@@ -118,11 +118,11 @@ enum class Swing { in, out };
 struct Opening {
   std::string id{};
   OpeningType type = OpeningType::door;
-  std::string wall{};      ///< id of the host wall
-  double offset = 0.0;   ///< start along the wall from its `from` end, metres
+  std::string wall{};   ///< id of the host wall
+  double offset = 0.0;  ///< start along the wall from its `from` end, metres
   double width = 0.9;
   double height = 2.1;
-  double sill = 0.0;     ///< bottom above the wall's base
+  double sill = 0.0;  ///< bottom above the wall's base
   Hinge hinge = Hinge::left;
   Swing swing = Swing::in;
   /// The hole's outline in the unit square of its rectangle (version 2), counter-clockwise;
@@ -136,8 +136,8 @@ struct Opening {
 /// to top (top measured from its level's elevation, or from z = 0 without a level).
 struct Slab {
   std::string id{};
-  std::string level{};  ///< id of its level, empty for none
-  Polygon outline{};    ///< counter-clockwise
+  std::string level{};           ///< id of its level, empty for none
+  Polygon outline{};             ///< counter-clockwise
   std::vector<Polygon> holes{};  ///< stair wells: strictly inside the outline, disjoint
   double top = 0.0;
   double thickness = 0.2;
@@ -161,7 +161,7 @@ struct Light {
   LightType type = LightType::directional;
   Vec3 direction{-0.4, 0.5, -1.0};  ///< from the light into the scene
   double intensity = 1.0;
-  double ambient = 0.25;            ///< in [0, 1]
+  double ambient = 0.25;  ///< in [0, 1]
   ExtraFields extra{};
   friend bool operator==(const Light&, const Light&) = default;
 };
@@ -182,7 +182,7 @@ struct Camera {
 
 struct Plan {
   Site site;
-  std::vector<Level> levels{};    ///< version 2
+  std::vector<Level> levels{};  ///< version 2
   std::vector<Wall> walls{};
   std::vector<Opening> openings{};
   std::vector<Slab> slabs{};      ///< version 2

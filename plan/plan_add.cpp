@@ -80,7 +80,8 @@ std::vector<std::string_view> required_fields(std::string_view kind) {
 
 Result<EditSummary> add_object(Plan& plan, std::string_view kind, const std::string& id,
                                const FieldValues& fields) {
-  if (std::find(std::begin(kAddableKinds), std::end(kAddableKinds), kind) == std::end(kAddableKinds))
+  if (std::find(std::begin(kAddableKinds), std::end(kAddableKinds), kind) ==
+      std::end(kAddableKinds))
     return Result<EditSummary>::failure(
         Code::usage_error, fmt::format("add: no kind of object is called '{}' (kinds: {})", kind,
                                        fmt::join(kAddableKinds, ", ")));
@@ -89,7 +90,8 @@ Result<EditSummary> add_object(Plan& plan, std::string_view kind, const std::str
   if (kind == "wall") return build_and_add(plan, &Plan::walls, Wall{}, id, fields, add_wall);
   if (kind == "slab") return build_and_add(plan, &Plan::slabs, Slab{}, id, fields, add_slab);
   if (kind == "light") return build_and_add(plan, &Plan::lights, Light{}, id, fields, add_light);
-  if (kind == "camera") return build_and_add(plan, &Plan::cameras, Camera{}, id, fields, add_camera);
+  if (kind == "camera")
+    return build_and_add(plan, &Plan::cameras, Camera{}, id, fields, add_camera);
   const Opening base = default_opening(*parse_enum<OpeningType>(kind));
   return build_and_add(plan, &Plan::openings, base, id, fields, add_opening);
 }

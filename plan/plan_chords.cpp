@@ -38,7 +38,9 @@ std::vector<Wall> chord_walls(const Wall& w, const std::vector<Point2>& line) {
     const double next = along + std::hypot(line[k].x - line[k - 1].x, line[k].y - line[k - 1].y);
     // The ends of the polyline keep the wall's own heights (no rounding through the ratio).
     chord.height = k == 1 ? w.height : w.height + rise * along / length;
-    if (w.height_at_end) chord.height_at_end = k + 1 == line.size() ? *w.height_at_end : w.height + rise * next / length;
+    if (w.height_at_end)
+      chord.height_at_end =
+          k + 1 == line.size() ? *w.height_at_end : w.height + rise * next / length;
     chords.push_back(std::move(chord));
     along = next;
   }

@@ -79,8 +79,9 @@ EditSummary add_wall(Plan& plan, Wall wall) {
 
 EditSummary add_opening(Plan& plan, Opening opening) {
   if (!find_wall(plan, opening.wall))
-    throw PreconditionError(fmt::format("add: {} '{}' names wall '{}', and the plan has no such wall",
-                                        to_string(opening.type), opening.id, opening.wall));
+    throw PreconditionError(
+        fmt::format("add: {} '{}' names wall '{}', and the plan has no such wall",
+                    to_string(opening.type), opening.id, opening.wall));
   const std::string_view prefix = to_string(opening.type);
   return append_object(plan, plan.openings, std::move(opening), prefix);
 }
@@ -90,11 +91,12 @@ EditSummary add_level(Plan& plan, Level level) {
 }
 
 EditSummary add_slab(Plan& plan, Slab slab) {
-  if (!slab.level.empty() &&
-      std::none_of(plan.levels.begin(), plan.levels.end(),
-                   [&](const Level& l) { return l.id == slab.level; }))
-    throw PreconditionError(fmt::format("add: slab '{}' names level '{}', and the plan has no "
-                                        "such level", slab.id, slab.level));
+  if (!slab.level.empty() && std::none_of(plan.levels.begin(), plan.levels.end(),
+                                          [&](const Level& l) { return l.id == slab.level; }))
+    throw PreconditionError(
+        fmt::format("add: slab '{}' names level '{}', and the plan has no "
+                    "such level",
+                    slab.id, slab.level));
   return append_object(plan, plan.slabs, std::move(slab), "slab");
 }
 
@@ -110,12 +112,11 @@ EditSummary remove_object(Plan& plan, std::string_view id, const RemoveOptions& 
   const ObjectRef ref = require_object(plan, id, "rm");
   std::vector<std::string> dependents = dependent_objects(plan, id);
   if (!dependents.empty() && !options.cascade)
-    throw PreconditionError(fmt::format("{} '{}' has {} ({}); --cascade removes them too",
-                                        kind_name(plan, ref), id,
-                                        ref.kind == ObjectKind::wall ? "openings"
-                                                                             : "objects on it",
-                                        fmt::join(dependents, ", ")),
-                            Code::edit_refused);
+    throw PreconditionError(
+        fmt::format("{} '{}' has {} ({}); --cascade removes them too", kind_name(plan, ref), id,
+                    ref.kind == ObjectKind::wall ? "openings" : "objects on it",
+                    fmt::join(dependents, ", ")),
+        Code::edit_refused);
   EditSummary summary;
   summary.removed.push_back(std::string(id));
   summary.removed.insert(summary.removed.end(), dependents.begin(), dependents.end());

@@ -67,8 +67,7 @@ const Field<Slab> kSlabFields[] = {
     {"id", &Slab::id, none, Check::any, required, 0, kId},
     {"level", &Slab::level, none, Check::any, version2, 0, "id of its level"},
     {"outline", &Slab::outline, metre, Check::polygon, required, 0, "x,y;x,y;... in metres"},
-    {"holes", &Slab::holes, metre, Check::polygons, version2, 0,
-     "x,y;x,y;...|x,y;... in metres"},
+    {"holes", &Slab::holes, metre, Check::polygons, version2, 0, "x,y;x,y;...|x,y;... in metres"},
     {"top", &Slab::top, metre, Check::finite, optional, 0.0, "metres above its level"},
     {"thickness", &Slab::thickness, metre, Check::positive, optional, 0.2, kMetres},
     {"color", &Slab::color, none, Check::any, optional, 0, kColour},
@@ -107,13 +106,34 @@ bool uses_version2_fields(const std::vector<Object>& objects) {
 
 }  // namespace
 
-template <> std::span<const Field<Site>> fields_of<Site>() { return kSiteFields; }
-template <> std::span<const Field<Level>> fields_of<Level>() { return kLevelFields; }
-template <> std::span<const Field<Wall>> fields_of<Wall>() { return kWallFields; }
-template <> std::span<const Field<Opening>> fields_of<Opening>() { return kOpeningFields; }
-template <> std::span<const Field<Slab>> fields_of<Slab>() { return kSlabFields; }
-template <> std::span<const Field<Light>> fields_of<Light>() { return kLightFields; }
-template <> std::span<const Field<Camera>> fields_of<Camera>() { return kCameraFields; }
+template <>
+std::span<const Field<Site>> fields_of<Site>() {
+  return kSiteFields;
+}
+template <>
+std::span<const Field<Level>> fields_of<Level>() {
+  return kLevelFields;
+}
+template <>
+std::span<const Field<Wall>> fields_of<Wall>() {
+  return kWallFields;
+}
+template <>
+std::span<const Field<Opening>> fields_of<Opening>() {
+  return kOpeningFields;
+}
+template <>
+std::span<const Field<Slab>> fields_of<Slab>() {
+  return kSlabFields;
+}
+template <>
+std::span<const Field<Light>> fields_of<Light>() {
+  return kLightFields;
+}
+template <>
+std::span<const Field<Camera>> fields_of<Camera>() {
+  return kCameraFields;
+}
 
 bool uses_version2(const Plan& plan) {
   return !plan.levels.empty() || !plan.slabs.empty() ||

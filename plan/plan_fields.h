@@ -28,20 +28,20 @@ enum class Unit : std::uint8_t { none, metre, degree };
 /// What a value must be beyond its type; validation reports invalid_value otherwise (a number
 /// is always finite, an id never empty).
 enum class Check : std::uint8_t {
-  finite,        ///< any finite number
-  positive,      ///< > 0
-  non_negative,  ///< >= 0
-  level_offset,  ///< a wall's base: >= 0 without a level; on a level any finite number (a
-                 ///< wall reaching down through its level's floor), its absolute z >= 0
-  unit_interval, ///< in [0, 1] (ambient)
-  non_zero,      ///< a direction other than (0, 0, 0)
-  turn,          ///< an arc's extent: 0 < |x| < 360 degrees
-  lens,          ///< a camera's fov (perspective: 0 < x < 180 degrees) or view height
-                 ///< (orthographic: > 0), checked for the camera's projection only
-  positive_cells,///< site cells: whole numbers >= 1
-  polygon,       ///< at least 3 corners, simple (checked with the geometry)
-  polygons,      ///< each a polygon
-  any,           ///< ids, references, colours, enums: their type says it all
+  finite,          ///< any finite number
+  positive,        ///< > 0
+  non_negative,    ///< >= 0
+  level_offset,    ///< a wall's base: >= 0 without a level; on a level any finite number (a
+                   ///< wall reaching down through its level's floor), its absolute z >= 0
+  unit_interval,   ///< in [0, 1] (ambient)
+  non_zero,        ///< a direction other than (0, 0, 0)
+  turn,            ///< an arc's extent: 0 < |x| < 360 degrees
+  lens,            ///< a camera's fov (perspective: 0 < x < 180 degrees) or view height
+                   ///< (orthographic: > 0), checked for the camera's projection only
+  positive_cells,  ///< site cells: whole numbers >= 1
+  polygon,         ///< at least 3 corners, simple (checked with the geometry)
+  polygons,        ///< each a polygon
+  any,             ///< ids, references, colours, enums: their type says it all
 };
 
 /// Whether a field must be given, and when it is written.
@@ -58,9 +58,8 @@ template <class Object>
 using Member = std::variant<double Object::*, std::optional<double> Object::*, Point2 Object::*,
                             Vec3 Object::*, Color Object::*, std::string Object::*,
                             std::array<std::int64_t, 2> Object::*, Polygon Object::*,
-                            std::vector<Polygon> Object::*, OpeningType Object::*,
-                            Hinge Object::*, Swing Object::*, LightType Object::*,
-                            Projection Object::*>;
+                            std::vector<Polygon> Object::*, OpeningType Object::*, Hinge Object::*,
+                            Swing Object::*, LightType Object::*, Projection Object::*>;
 
 /// One field of the format.
 template <class Object>
@@ -78,17 +77,24 @@ struct Field {
 /// O(1). Defined for Site, Level, Wall, Opening, Slab, Light and Camera.
 template <class Object>
 [[nodiscard]] std::span<const Field<Object>> fields_of();
-template <> std::span<const Field<Site>> fields_of<Site>();
-template <> std::span<const Field<Level>> fields_of<Level>();
-template <> std::span<const Field<Wall>> fields_of<Wall>();
-template <> std::span<const Field<Opening>> fields_of<Opening>();
-template <> std::span<const Field<Slab>> fields_of<Slab>();
-template <> std::span<const Field<Light>> fields_of<Light>();
-template <> std::span<const Field<Camera>> fields_of<Camera>();
+template <>
+std::span<const Field<Site>> fields_of<Site>();
+template <>
+std::span<const Field<Level>> fields_of<Level>();
+template <>
+std::span<const Field<Wall>> fields_of<Wall>();
+template <>
+std::span<const Field<Opening>> fields_of<Opening>();
+template <>
+std::span<const Field<Slab>> fields_of<Slab>();
+template <>
+std::span<const Field<Light>> fields_of<Light>();
+template <>
+std::span<const Field<Camera>> fields_of<Camera>();
 
 /// The keys of a plan document's top level, in the order the writer writes them.
 inline constexpr std::array<std::string_view, 10> kTopLevelKeys = {
-    "format", "version", "units", "site",   "levels",
+    "format", "version",  "units", "site",   "levels",
     "walls",  "openings", "slabs", "lights", "cameras"};
 
 /// @return the field named `name`, or nullptr. O(fields).

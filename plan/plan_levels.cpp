@@ -58,9 +58,10 @@ Result<Plan> select_level(const Plan& plan, std::string_view level) {
   if (find_level(plan, level) != nullptr) return plan_of_level(plan, level);
   std::string known;
   for (const Level& l : plan.levels) known += (known.empty() ? "'" : ", '") + l.id + "'";
-  return Result<Plan>::failure(Code::usage_error,
-                               "--level '" + std::string(level) + "': the plan has no such level (its levels: " +
-                                   (known.empty() ? "none" : known) + ")");
+  return Result<Plan>::failure(
+      Code::usage_error,
+      "--level '" + std::string(level) +
+          "': the plan has no such level (its levels: " + (known.empty() ? "none" : known) + ")");
 }
 
 }  // namespace roomcad

@@ -37,7 +37,8 @@ std::optional<ObjectRef> find_object(const Plan& plan, std::string_view id) {
 Result<ObjectRef> lookup_object(const Plan& plan, std::string_view id, std::string_view verb) {
   if (const auto ref = find_object(plan, id)) return *ref;
   return Result<ObjectRef>::failure(
-      Code::precondition, fmt::format("{}: no object has id '{}' ({})", verb, id, some_ids(plan, 8)));
+      Code::precondition,
+      fmt::format("{}: no object has id '{}' ({})", verb, id, some_ids(plan, 8)));
 }
 
 ObjectRef require_object(const Plan& plan, std::string_view id, std::string_view verb) {
@@ -107,7 +108,8 @@ OpeningsByWall openings_by_wall(const Plan& plan) {
   const IdIndex wall_index = index_by_id(plan.walls);
   OpeningsByWall out(plan.walls.size());
   for (std::size_t i = 0; i < plan.openings.size(); ++i)
-    if (const std::uint32_t w = wall_index.find(plan.openings[i].wall); w != wall_index.kNone) out[w].push_back(i);
+    if (const std::uint32_t w = wall_index.find(plan.openings[i].wall); w != wall_index.kNone)
+      out[w].push_back(i);
   return out;
 }
 

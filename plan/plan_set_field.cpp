@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <vector>
 
-#include "plan/plan_objects.h"
 #include "plan/field_text.h"
 #include "plan/nearest_name.h"
 #include "plan/plan_edit.h"
+#include "plan/plan_objects.h"
 
 namespace roomcad {
 namespace {
@@ -32,14 +32,15 @@ Result<bool> set_in(Object& object, std::string_view what, std::string_view key,
                                  fmt::format("{}: {} has no field '{}'{}", verb, what, key,
                                              suggestion(field_names_of<Object>(), key)));
   const Object old = object;
-  if (const Status set = set_field_text(object, *field, value, verb, what); !set) return set.error();
+  if (const Status set = set_field_text(object, *field, value, verb, what); !set)
+    return set.error();
   return object != old;
 }
 
 /// Points every reference to `old_id` (a wall's openings, a level's walls and slabs) at
 /// `new_id`. @return the ids of the objects changed.
-std::vector<std::string> follow_rename(Plan& plan, ObjectKind kind,
-                                       std::string_view old_id, std::string_view new_id) {
+std::vector<std::string> follow_rename(Plan& plan, ObjectKind kind, std::string_view old_id,
+                                       std::string_view new_id) {
   std::vector<std::string> changed;
   auto retarget = [&](auto& objects, auto member) {
     for (auto& o : objects) {
@@ -94,8 +95,8 @@ Result<EditSummary> set_field(Plan& plan, std::string_view id, std::string_view 
     return summary;
   }
   const std::string what = fmt::format("{} '{}'", kind_name(plan, *object), id);
-  const Result<bool> changed = visit_object(
-      plan, *object, [&](auto& o) { return set_in(o, what, key, value, verb); });
+  const Result<bool> changed =
+      visit_object(plan, *object, [&](auto& o) { return set_in(o, what, key, value, verb); });
   if (!changed) return changed.error();
   if (*changed) summary.changed.push_back(std::string(id));
   return summary;

@@ -10,19 +10,18 @@
 #include <string_view>
 #include <utility>
 
-#include "plan/plan_objects.h"
 #include "plan/plan_edit.h"
+#include "plan/plan_objects.h"
 #include "plan/transform2d.h"
 
 namespace roomcad {
 namespace {
 
-
 /// How one plan transform acts on each kind of quantity.
 struct PlanMap {
   std::array<Transform2d, 3> points;  ///< positions: T(-centre), linear part, T(centre)
-  Transform2d directions;       ///< the rotation alone: directions ignore moves and scales
-  double length_factor = 1.0;   ///< lengths along a wall
+  Transform2d directions;             ///< the rotation alone: directions ignore moves and scales
+  double length_factor = 1.0;         ///< lengths along a wall
 };
 
 double scaled(double length, double factor) {
@@ -81,10 +80,9 @@ void map_site(Site& site, const PlanMap& map) {
   const bool keeps_axes = m[0][1] == 0.0 && m[1][0] == 0.0;
   const bool swaps_axes = m[0][0] == 0.0 && m[1][1] == 0.0;
   if (!keeps_axes && !swaps_axes) return;
-  const Point2 far{exact_dot(std::array{site.origin.x, double(site.cells[0])},
-                             std::array{1.0, site.cell_size}),
-                   exact_dot(std::array{site.origin.y, double(site.cells[1])},
-                             std::array{1.0, site.cell_size})};
+  const Point2 far{
+      exact_dot(std::array{site.origin.x, double(site.cells[0])}, std::array{1.0, site.cell_size}),
+      exact_dot(std::array{site.origin.y, double(site.cells[1])}, std::array{1.0, site.cell_size})};
   const Point2 a = map_point(map, site.origin);
   const Point2 b = map_point(map, far);
   site.origin = {std::min(a.x, b.x), std::min(a.y, b.y)};
@@ -129,7 +127,8 @@ EditSummary map_object(Plan& plan, ObjectRef ref, const PlanMap& map, std::strin
     case ObjectKind::level:
       throw PreconditionError(fmt::format(
           "{}: '{}' is a level, which has no position in plan; {} its walls and slabs, or the "
-          "whole plan with --all", verb, plan.levels[ref.index].id, verb));
+          "whole plan with --all",
+          verb, plan.levels[ref.index].id, verb));
     case ObjectKind::opening:
       throw PreconditionError(fmt::format(
           "{}: '{}' is an opening; it goes with its wall '{}' (move it along the wall with "
@@ -152,7 +151,8 @@ EditSummary map_everything(Plan& plan, const PlanMap& map) {
 
 void require_finite(double value, std::string_view verb, std::string_view what) {
   if (!std::isfinite(value))
-    throw PreconditionError(fmt::format("{}: {} must be a finite number, got {}", verb, what, value));
+    throw PreconditionError(
+        fmt::format("{}: {} must be a finite number, got {}", verb, what, value));
 }
 
 void require_factor(double factor) {
@@ -163,15 +163,16 @@ void require_factor(double factor) {
 
 void require_not_light(const Plan& plan, ObjectRef ref, std::string_view verb) {
   if (ref.kind == ObjectKind::light)
-    throw PreconditionError(fmt::format(
-        "{}: light '{}' is directional and has no position; turn it with `rotate`", verb,
-        plan.lights[ref.index].id));
+    throw PreconditionError(
+        fmt::format("{}: light '{}' is directional and has no position; turn it with `rotate`",
+                    verb, plan.lights[ref.index].id));
 }
 
 PlanMap translation_map(Point2 by) {
   require_finite(by.x, "move", "--by dx");
   require_finite(by.y, "move", "--by dy");
-  return {{identity_transform(), identity_transform(), translate(by.x, by.y)}, identity_transform(),
+  return {{identity_transform(), identity_transform(), translate(by.x, by.y)},
+          identity_transform(),
           1.0};
 }
 
@@ -214,7 +215,8 @@ EditSummary slide_opening(Plan& plan, std::string_view id, double du) {
   if (ref.kind != ObjectKind::opening)
     throw PreconditionError(fmt::format(
         "move: {} '{}' moves in the plan: give --by dx,dy (one number moves an opening along "
-        "its wall)", kind_name(plan, ref), id));
+        "its wall)",
+        kind_name(plan, ref), id));
   require_finite(du, "move", "--by du");
   Opening& opening = plan.openings[ref.index];
   const double offset = exact_add(opening.offset, du);

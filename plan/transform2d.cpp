@@ -41,7 +41,7 @@ Transform2d translate(double dx, double dy) {
 Transform2d rotate(double degrees, Point2 about) {
   const auto [c, s] = cos_sin(degrees);
   Transform2d r;
-  r.m[0] = {c, s, 0.0};   // row-vector convention: x' = x c - y s, y' = x s + y c
+  r.m[0] = {c, s, 0.0};  // row-vector convention: x' = x c - y s, y' = x s + y c
   r.m[1] = {-s, c, 0.0};
   return compose_chain(about_point(r, about));
 }
@@ -76,9 +76,7 @@ Point2 apply_to_direction(const Transform2d& t, Point2 v) {
           exact_dot(row, std::array{t.m[0][1], t.m[1][1]})};
 }
 
-double exact_add(double a, double b) {
-  return exact_dot(std::array{a, b}, std::array{1.0, 1.0});
-}
+double exact_add(double a, double b) { return exact_dot(std::array{a, b}, std::array{1.0, 1.0}); }
 
 bool is_quarter_turn(double degrees) { return std::fmod(degrees, 90.0) == 0.0; }
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// 2D homogeneous transforms of a plan (lab 1 of the Tomsk State University manual "Laboratory works in computer graphics"), in the manual's ROW-VECTOR convention:
-// a point is the row [x y 1] and maps to [x' y' 1] = [x y 1] * M, so the translation sits in the
-// bottom row (m[2][0], m[2][1]) and `compose(a, b)` = a * b means "first a, then b".
+// 2D homogeneous transforms of a plan (lab 1 of the Tomsk State University manual "Laboratory works
+// in computer graphics"), in the manual's ROW-VECTOR convention: a point is the row [x y 1] and
+// maps to [x' y' 1] = [x y 1] * M, so the translation sits in the bottom row (m[2][0], m[2][1]) and
+// `compose(a, b)` = a * b means "first a, then b".
 //
 // Decimal-exact arithmetic. Plans are written and typed as decimals ("1.1", "-0.35"), and the
 // file stores each number as the shortest decimal that reads back to its double. So this type

@@ -18,13 +18,13 @@
 #include "io/plan_json.h"
 #include "io/rule_set_file.h"
 #include "io/text_file.h"
-#include "solid/build_model.h"
 #include "plan/plan_add.h"
 #include "plan/plan_objects.h"
 #include "python/py_error.h"
 #include "python/py_plan_values.h"
 #include "python/py_types.h"
 #include "render/render_request.h"
+#include "solid/build_model.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
 #include "validation/validate.h"
@@ -34,7 +34,9 @@ namespace py = pybind11;
 namespace roomcad::python {
 namespace {
 
-py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+py::object json_loads(const std::string& text) {
+  return py::module_::import("json").attr("loads")(text);
+}
 
 PyPlan read_text(const std::string& text, const std::string& file, std::string name) {
   PyPlan out;
@@ -111,11 +113,13 @@ Parts parts_of(const std::string& parts) {
 // Made in place on the heap and handed to Python as it is: an OpenMesh mesh has no move
 // constructor (its kernel declares a destructor), so every "move" of a Model copies its
 // meshes, which cost 10% of a build.
-std::unique_ptr<PyModel> build(const PyPlan& self, bool force, const std::string& parts, int threads) {
+std::unique_ptr<PyModel> build(const PyPlan& self, bool force, const std::string& parts,
+                               int threads) {
   require_valid(self, force, "build");
   const BuildOptions options{.parts = parts_of(parts), .threads = threads};
   py::gil_scoped_release free;
-  return std::unique_ptr<PyModel>(new PyModel{.model = build_model(self.plan, options), .plan = self.plan});
+  return std::unique_ptr<PyModel>(
+      new PyModel{.model = build_model(self.plan, options), .plan = self.plan});
 }
 
 /// The object with this id, as the dict of its entry in to_dict().
@@ -179,129 +183,164 @@ using PlanClass = py::class_<PyPlan>;
 
 /// Plan.load, from_json, from_dict, to_dict, to_json, save, validate.
 void register_reading(PlanClass& plan) {
-  plan
-      .def_static("load", &load, py::arg("path"),
+  plan.def_static("load", &load, py::arg("path"),
                   "Reads a plan file (JSON).\n"
                   "@raise roomcad.Error io_error (unreadable), parse_error or invalid_value\n"
                   "       (with .file, .line, .column) when it is not a plan")
-      .def_static("from_json", [](const std::string& text) { return read_text(text, "<json>", "plan"); },
-                  py::arg("text"), "Reads a plan from its JSON text. @raise roomcad.Error as load")
-      .def_static("from_dict", [](const py::dict& d) {
-        // Compact, unchecked for cycles: the dict's text costs more than reading it.
-        const std::string text = py::module_::import("json")
-                                     .attr("dumps")(d, py::arg("separators") = py::make_tuple(",", ":"),
-                                                    py::arg("check_circular") = false,
-                                                    py::arg("ensure_ascii") = false)
-                                     .cast<std::string>();
-        return read_text(text, "<dict>", "plan");
-      }, py::arg("d"), "Reads a plan from a dict shaped like its JSON (as to_dict() gives).\n"
-                       "@raise roomcad.Error as load (.file is '<dict>')")
-      .def("to_dict", [](const PyPlan& self) { return json_loads(write_plan_text(self.plan)); },
-           "The plan as a dict: the canonical JSON `roomcad fmt` writes, every field present.")
-      .def("to_json", [](const PyPlan& self) { return write_plan_text(self.plan); },
-           "The canonical JSON text of the plan: the bytes `roomcad fmt` writes.")
-      .def("save", [](const PyPlan& self, const std::filesystem::path& path) {
-        require(write_plan_file(self.plan, path));
-      }, py::arg("path"), "Writes the canonical JSON (as `roomcad fmt`), atomically: if anything\n"
-                          "fails the old file is left as it was. @raise roomcad.Error io_error")
-      .def("validate", [](const PyPlan& self, const std::string& rules) {
-        const RuleSet set = take(load_rule_set(rules, "rules"));
-        require(check_accessible_rooms(self.plan, set));
-        PyReport out{check(self, set), {}};
-        out.format.ids = set.any_enabled();  // as `roomcad validate` prints it
-        out.format.plan_file = self.file;
-        return out;
-      }, py::arg("rules") = "default",
-         "Checks the plan: every problem at once, exact for the numbers as written.\n"
-         "@param rules  the rule set, as `roomcad validate --rules`: 'default' (the format's checks),\n"
-         "              'accessibility', 'all', or the path of a rules file (JSON)\n"
-         "@return a Report; report.to_dict() is what `roomcad validate --format json --rules RULES`\n"
-         "        prints\n"
-         "@raise roomcad.Error usage_error for an unknown set or a bad rules file (naming its field),\n"
-         "       io_error for a file that cannot be read");
+      .def_static(
+          "from_json", [](const std::string& text) { return read_text(text, "<json>", "plan"); },
+          py::arg("text"), "Reads a plan from its JSON text. @raise roomcad.Error as load")
+      .def_static(
+          "from_dict",
+          [](const py::dict& d) {
+            // Compact, unchecked for cycles: the dict's text costs more than reading it.
+            const std::string text =
+                py::module_::import("json")
+                    .attr("dumps")(d, py::arg("separators") = py::make_tuple(",", ":"),
+                                   py::arg("check_circular") = false,
+                                   py::arg("ensure_ascii") = false)
+                    .cast<std::string>();
+            return read_text(text, "<dict>", "plan");
+          },
+          py::arg("d"),
+          "Reads a plan from a dict shaped like its JSON (as to_dict() gives).\n"
+          "@raise roomcad.Error as load (.file is '<dict>')")
+      .def(
+          "to_dict", [](const PyPlan& self) { return json_loads(write_plan_text(self.plan)); },
+          "The plan as a dict: the canonical JSON `roomcad fmt` writes, every field present.")
+      .def(
+          "to_json", [](const PyPlan& self) { return write_plan_text(self.plan); },
+          "The canonical JSON text of the plan: the bytes `roomcad fmt` writes.")
+      .def(
+          "save",
+          [](const PyPlan& self, const std::filesystem::path& path) {
+            require(write_plan_file(self.plan, path));
+          },
+          py::arg("path"),
+          "Writes the canonical JSON (as `roomcad fmt`), atomically: if anything\n"
+          "fails the old file is left as it was. @raise roomcad.Error io_error")
+      .def(
+          "validate",
+          [](const PyPlan& self, const std::string& rules) {
+            const RuleSet set = take(load_rule_set(rules, "rules"));
+            require(check_accessible_rooms(self.plan, set));
+            PyReport out{check(self, set), {}};
+            out.format.ids = set.any_enabled();  // as `roomcad validate` prints it
+            out.format.plan_file = self.file;
+            return out;
+          },
+          py::arg("rules") = "default",
+          "Checks the plan: every problem at once, exact for the numbers as written.\n"
+          "@param rules  the rule set, as `roomcad validate --rules`: 'default' (the format's "
+          "checks),\n"
+          "              'accessibility', 'all', or the path of a rules file (JSON)\n"
+          "@return a Report; report.to_dict() is what `roomcad validate --format json --rules "
+          "RULES`\n"
+          "        prints\n"
+          "@raise roomcad.Error usage_error for an unknown set or a bad rules file (naming its "
+          "field),\n"
+          "       io_error for a file that cannot be read");
 }
 
 /// Plan.add, remove, move, rotate, scale, set: the edits of `roomcad add` ... `set`.
 void register_edits(PlanClass& plan) {
   using About = std::optional<std::pair<double, double>>;
-  plan
-      .def("add", [](PyPlan& self, const std::string& kind, const std::optional<std::string>& id,
-                     bool force, const py::kwargs& fields) {
-        FieldValues values;
-        for (const auto& [key, value] : fields) {
-          const std::string name = py::str(key);
-          values.emplace_back(name, field_value_text(value, name));
-        }
-        const EditSummary done = apply_edit(self, force, [&](Plan& plan) {
-          return add_object(plan, kind, id.value_or(""), values);
-        });
-        return done.added.empty() ? std::string() : done.added.front();
-      }, py::arg("kind"), py::arg("id") = py::none(), py::kw_only(), py::arg("force") = false,
-         "Adds a level, wall, door, window, slab, light or camera, as `roomcad add`.\n"
-         "@param kind    'level', 'wall', 'door', 'window', 'slab', 'light' or 'camera'\n"
-         "@param id      its id (default: generated, e.g. 'wall-3')\n"
-         "@param fields  the object's fields by name (docs/plan-format.md): numbers in metres or\n"
-         "               degrees, points (x, y), vectors (x, y, z), colours '#rrggbb', polygons\n"
-         "               as lists of points, e.g. add('wall', **{'from': (0, 0)}, to=(4, 0))\n"
-         "@param force   keep the edit even if it introduces plan errors\n"
-         "@return the new object's id\n"
-         "@raise roomcad.Error usage_error (unknown field, bad value), edit_refused")
-      .def("remove", [](PyPlan& self, const std::string& id, bool cascade, bool force) {
-        apply_edit(self, force, [&](Plan& plan) {
-          return remove_object(plan, id, RemoveOptions{.cascade = cascade});
-        });
-      }, py::arg("id"), py::kw_only(), py::arg("cascade") = false, py::arg("force") = false,
-         "Removes an object, as `roomcad rm`. @param cascade  also its openings (a wall) or its\n"
-         "walls and slabs (a level). @raise roomcad.Error edit_refused when others depend on it")
-      .def("move", [](PyPlan& self, const std::string& id, double dx, double dy, bool force) {
-        apply_edit(self, force, [&](Plan& plan) { return move_object(plan, id, Point2{dx, dy}); });
-      }, py::arg("id"), py::arg("dx"), py::arg("dy"), py::kw_only(), py::arg("force") = false,
-         "Moves a wall (with its openings) or a camera by (dx, dy) metres, as `roomcad move`.")
-      .def("rotate", [](PyPlan& self, const std::string& id, double degrees, const About& about,
-                        bool force) {
-        apply_edit(self, force, [&](Plan& plan) {
-          return rotate_object(plan, id, degrees, about_point(about));
-        });
-      }, py::arg("id"), py::arg("degrees"), py::arg("about") = py::none(), py::kw_only(),
-         py::arg("force") = false,
-         "Turns an object counter-clockwise by `degrees` about the point `about` (x, y) (default:\n"
-         "a wall's midpoint, a camera's target), as `roomcad rotate`; exact for quarter turns.")
-      .def("scale", [](PyPlan& self, const std::string& id, double factor, const About& about,
-                       bool force) {
-        apply_edit(self, force, [&](Plan& plan) {
-          return scale_object(plan, id, factor, about_point(about));
-        });
-      }, py::arg("id"), py::arg("factor"), py::arg("about") = py::none(), py::kw_only(),
-         py::arg("force") = false,
-         "Scales an object by `factor` (> 0) about `about` (x, y), as `roomcad scale`.")
-      .def("set", [](PyPlan& self, const std::string& id, const std::string& field,
-                     const py::object& value, bool force) {
-        const std::string text = field_value_text(value, field);
-        apply_edit(self, force, [&](Plan& plan) { return set_field(plan, id, field, text); });
-      }, py::arg("id"), py::arg("field"), py::arg("value"), py::kw_only(), py::arg("force") = false,
-         "Sets one field of an object ('site' for the site's), type-checked, as `roomcad set`.\n"
-         "@raise roomcad.Error usage_error (unknown object or field, bad value), edit_refused");
+  plan.def(
+          "add",
+          [](PyPlan& self, const std::string& kind, const std::optional<std::string>& id,
+             bool force, const py::kwargs& fields) {
+            FieldValues values;
+            for (const auto& [key, value] : fields) {
+              const std::string name = py::str(key);
+              values.emplace_back(name, field_value_text(value, name));
+            }
+            const EditSummary done = apply_edit(self, force, [&](Plan& plan) {
+              return add_object(plan, kind, id.value_or(""), values);
+            });
+            return done.added.empty() ? std::string() : done.added.front();
+          },
+          py::arg("kind"), py::arg("id") = py::none(), py::kw_only(), py::arg("force") = false,
+          "Adds a level, wall, door, window, slab, light or camera, as `roomcad add`.\n"
+          "@param kind    'level', 'wall', 'door', 'window', 'slab', 'light' or 'camera'\n"
+          "@param id      its id (default: generated, e.g. 'wall-3')\n"
+          "@param fields  the object's fields by name (docs/plan-format.md): numbers in metres or\n"
+          "               degrees, points (x, y), vectors (x, y, z), colours '#rrggbb', polygons\n"
+          "               as lists of points, e.g. add('wall', **{'from': (0, 0)}, to=(4, 0))\n"
+          "@param force   keep the edit even if it introduces plan errors\n"
+          "@return the new object's id\n"
+          "@raise roomcad.Error usage_error (unknown field, bad value), edit_refused")
+      .def(
+          "remove",
+          [](PyPlan& self, const std::string& id, bool cascade, bool force) {
+            apply_edit(self, force, [&](Plan& plan) {
+              return remove_object(plan, id, RemoveOptions{.cascade = cascade});
+            });
+          },
+          py::arg("id"), py::kw_only(), py::arg("cascade") = false, py::arg("force") = false,
+          "Removes an object, as `roomcad rm`. @param cascade  also its openings (a wall) or its\n"
+          "walls and slabs (a level). @raise roomcad.Error edit_refused when others depend on it")
+      .def(
+          "move",
+          [](PyPlan& self, const std::string& id, double dx, double dy, bool force) {
+            apply_edit(self, force, [&](Plan& plan) {
+              return move_object(plan, id, Point2{dx, dy});
+            });
+          },
+          py::arg("id"), py::arg("dx"), py::arg("dy"), py::kw_only(), py::arg("force") = false,
+          "Moves a wall (with its openings) or a camera by (dx, dy) metres, as `roomcad move`.")
+      .def(
+          "rotate",
+          [](PyPlan& self, const std::string& id, double degrees, const About& about, bool force) {
+            apply_edit(self, force, [&](Plan& plan) {
+              return rotate_object(plan, id, degrees, about_point(about));
+            });
+          },
+          py::arg("id"), py::arg("degrees"), py::arg("about") = py::none(), py::kw_only(),
+          py::arg("force") = false,
+          "Turns an object counter-clockwise by `degrees` about the point `about` (x, y) "
+          "(default:\n"
+          "a wall's midpoint, a camera's target), as `roomcad rotate`; exact for quarter turns.")
+      .def(
+          "scale",
+          [](PyPlan& self, const std::string& id, double factor, const About& about, bool force) {
+            apply_edit(self, force, [&](Plan& plan) {
+              return scale_object(plan, id, factor, about_point(about));
+            });
+          },
+          py::arg("id"), py::arg("factor"), py::arg("about") = py::none(), py::kw_only(),
+          py::arg("force") = false,
+          "Scales an object by `factor` (> 0) about `about` (x, y), as `roomcad scale`.")
+      .def(
+          "set",
+          [](PyPlan& self, const std::string& id, const std::string& field, const py::object& value,
+             bool force) {
+            const std::string text = field_value_text(value, field);
+            apply_edit(self, force, [&](Plan& plan) { return set_field(plan, id, field, text); });
+          },
+          py::arg("id"), py::arg("field"), py::arg("value"), py::kw_only(),
+          py::arg("force") = false,
+          "Sets one field of an object ('site' for the site's), type-checked, as `roomcad set`.\n"
+          "@raise roomcad.Error usage_error (unknown object or field, bad value), edit_refused");
 }
 
 /// plan[id], `id in plan`, ids(), import_warnings.
 void register_objects(PlanClass& plan) {
-  plan
-      .def_property_readonly("import_warnings", [](const PyPlan& self) {
-        return self.import_warnings.items;
-      }, "What import_sweethome3d approximated or left out, as Findings (else empty)")
+  plan.def_property_readonly(
+          "import_warnings", [](const PyPlan& self) { return self.import_warnings.items; },
+          "What import_sweethome3d approximated or left out, as Findings (else empty)")
       .def("__getitem__", &object_dict, py::arg("id"),
            "The object with this id as a dict of its fields. @raise KeyError")
-      .def("__contains__", [](const PyPlan& self, const std::string& id) {
-        return find_object(self.plan, id).has_value();
-      })
+      .def("__contains__",
+           [](const PyPlan& self, const std::string& id) {
+             return find_object(self.plan, id).has_value();
+           })
       .def("ids", &ids, py::arg("kind") = py::none(),
            "The ids of the plan's objects in file order, or of one kind ('wall', 'door', ...).");
 }
 
 /// Plan.build, render, draw, _repr_svg_, __repr__.
 void register_pictures(PlanClass& plan) {
-  plan
-      .def("build", &build, py::arg("force") = false, py::arg("parts") = "all",
+  plan.def("build", &build, py::arg("force") = false, py::arg("parts") = "all",
            py::arg("threads") = 0,
            "Builds the 3D model, as `roomcad build`: exact walls with their openings cut, the\n"
            "floor and the fixtures. Releases the GIL.\n"
@@ -309,58 +348,65 @@ void register_pictures(PlanClass& plan) {
            "@param parts    'all' or a list such as 'walls,floor' (walls, floor, fixtures)\n"
            "@param threads  worker threads, 0 for all cores (the same model at any count)\n"
            "@return a Model. @raise roomcad.Error (the first error's code, not_buildable)")
-      .def("render", [](const PyPlan& self, const std::optional<std::string>& camera, int width,
-                        int height, const std::optional<std::string>& view,
-                        const py::object& eye, const py::object& target, const py::object& up, const std::string& projection, double fov,
-                        double view_height, const std::string& shading, const std::string& shadows,
-                        int shadow_res, int ssaa, const std::string& background, bool grid,
-                        const std::string& parts, int threads, bool force) {
-        RenderRequest r;
-        r.camera = camera.value_or("");
-        r.width = width, r.height = height, r.view = view.value_or("");
-        r.eye = eye.is_none() ? "" : field_value_text(eye, "eye");
-        r.target = target.is_none() ? "" : field_value_text(target, "target");
-        r.up = field_value_text(up, "up");
-        r.projection = projection, r.fov = fov, r.view_height = view_height;
-        r.shading = shading, r.shadows = shadows, r.shadow_res = shadow_res, r.ssaa = ssaa;
-        r.background = background, r.grid = grid ? "on" : "off";
-        r.parts = parts == "all" ? kAllParts : parts, r.threads = threads;
-        return render(self, r, force);
-      }, py::arg("camera") = py::none(), py::arg("width") = 1280, py::arg("height") = 720,
-         py::arg("view") = py::none(), py::arg("eye") = py::none(), py::arg("target") = py::none(),
-         py::arg("up") = py::make_tuple(0, 0, 1), py::arg("projection") = "perspective", py::arg("fov") = 50.0,
-         py::arg("view_height") = 10.0, py::arg("shading") = "phong", py::arg("shadows") = "pcf",
-         py::arg("shadow_res") = 1024, py::arg("ssaa") = 1, py::arg("background") = "#ffffff",
-         py::arg("grid") = true, py::arg("parts") = "all", py::arg("threads") = 0,
-         py::arg("force") = false,
-         "Renders the model on the CPU: an H x W x 3 uint8 array (sRGB), pixel for pixel what\n"
-         "`roomcad render` writes with the same options (the same defaults). Releases the GIL.\n"
-         "@param camera   a plan camera's id; else eye and target ((x, y, z) metres); else `view`\n"
-         "@param view     front, back, left, right, top or iso (default iso)\n"
-         "@param shading  unlit, flat, gouraud, phong; shadows: off, hard, pcf; ssaa: 1, 2, 4\n"
-         "@raise roomcad.Error usage_error naming the option, or the plan's first error")
-      .def("draw", [](const PyPlan& self, const std::string& view, const std::optional<std::string>& scale,
-                      double cut_height, const std::string& hidden, const std::string& parts,
-                      bool force) {
-        DrawRequest r;
-        r.view = view, r.cut_height = cut_height, r.hidden = hidden;
-        if (scale) r.scale = *scale;
-        r.parts = parts == "all" ? kAllParts : parts;
-        return draw(self, r, force);
-      }, py::arg("view") = "plan", py::arg("scale") = py::none(), py::arg("cut_height") = 1.0,
-         py::arg("hidden") = "dashed", py::arg("parts") = "all", py::arg("force") = false,
-         "A line drawing as SVG text, what `roomcad draw` writes.\n"
-         "@param view        plan, north, south, east, west, iso or camera:ID\n"
-         "@param scale       paper scale '1:N' (default 1:50)\n"
-         "@param cut_height  metres: the floor plan's horizontal section\n"
-         "@param hidden      hidden edges of views: dashed or off")
-      .def("_repr_svg_", [](const PyPlan& self) -> py::object {
-        try {
-          return py::str(draw(self, DrawRequest{}, true));
-        } catch (const std::exception&) {
-          return py::none();  // a plan that cannot be drawn shows as its repr
-        }
-      })
+      .def(
+          "render",
+          [](const PyPlan& self, const std::optional<std::string>& camera, int width, int height,
+             const std::optional<std::string>& view, const py::object& eye,
+             const py::object& target, const py::object& up, const std::string& projection,
+             double fov, double view_height, const std::string& shading, const std::string& shadows,
+             int shadow_res, int ssaa, const std::string& background, bool grid,
+             const std::string& parts, int threads, bool force) {
+            RenderRequest r;
+            r.camera = camera.value_or("");
+            r.width = width, r.height = height, r.view = view.value_or("");
+            r.eye = eye.is_none() ? "" : field_value_text(eye, "eye");
+            r.target = target.is_none() ? "" : field_value_text(target, "target");
+            r.up = field_value_text(up, "up");
+            r.projection = projection, r.fov = fov, r.view_height = view_height;
+            r.shading = shading, r.shadows = shadows, r.shadow_res = shadow_res, r.ssaa = ssaa;
+            r.background = background, r.grid = grid ? "on" : "off";
+            r.parts = parts == "all" ? kAllParts : parts, r.threads = threads;
+            return render(self, r, force);
+          },
+          py::arg("camera") = py::none(), py::arg("width") = 1280, py::arg("height") = 720,
+          py::arg("view") = py::none(), py::arg("eye") = py::none(), py::arg("target") = py::none(),
+          py::arg("up") = py::make_tuple(0, 0, 1), py::arg("projection") = "perspective",
+          py::arg("fov") = 50.0, py::arg("view_height") = 10.0, py::arg("shading") = "phong",
+          py::arg("shadows") = "pcf", py::arg("shadow_res") = 1024, py::arg("ssaa") = 1,
+          py::arg("background") = "#ffffff", py::arg("grid") = true, py::arg("parts") = "all",
+          py::arg("threads") = 0, py::arg("force") = false,
+          "Renders the model on the CPU: an H x W x 3 uint8 array (sRGB), pixel for pixel what\n"
+          "`roomcad render` writes with the same options (the same defaults). Releases the GIL.\n"
+          "@param camera   a plan camera's id; else eye and target ((x, y, z) metres); else "
+          "`view`\n"
+          "@param view     front, back, left, right, top or iso (default iso)\n"
+          "@param shading  unlit, flat, gouraud, phong; shadows: off, hard, pcf; ssaa: 1, 2, 4\n"
+          "@raise roomcad.Error usage_error naming the option, or the plan's first error")
+      .def(
+          "draw",
+          [](const PyPlan& self, const std::string& view, const std::optional<std::string>& scale,
+             double cut_height, const std::string& hidden, const std::string& parts, bool force) {
+            DrawRequest r;
+            r.view = view, r.cut_height = cut_height, r.hidden = hidden;
+            if (scale) r.scale = *scale;
+            r.parts = parts == "all" ? kAllParts : parts;
+            return draw(self, r, force);
+          },
+          py::arg("view") = "plan", py::arg("scale") = py::none(), py::arg("cut_height") = 1.0,
+          py::arg("hidden") = "dashed", py::arg("parts") = "all", py::arg("force") = false,
+          "A line drawing as SVG text, what `roomcad draw` writes.\n"
+          "@param view        plan, north, south, east, west, iso or camera:ID\n"
+          "@param scale       paper scale '1:N' (default 1:50)\n"
+          "@param cut_height  metres: the floor plan's horizontal section\n"
+          "@param hidden      hidden edges of views: dashed or off")
+      .def("_repr_svg_",
+           [](const PyPlan& self) -> py::object {
+             try {
+               return py::str(draw(self, DrawRequest{}, true));
+             } catch (const std::exception&) {
+               return py::none();  // a plan that cannot be drawn shows as its repr
+             }
+           })
       .def("__repr__", [](const PyPlan& self) {
         return fmt::format("<Plan {}: {} walls, {} openings>", self.name, self.plan.walls.size(),
                            self.plan.openings.size());

@@ -15,7 +15,8 @@ namespace {
 
 bool is_number(py::handle v) {
   if (py::isinstance<py::bool_>(v) || py::isinstance<py::str>(v)) return false;
-  return PyFloat_Check(v.ptr()) || PyLong_Check(v.ptr()) || PyObject_HasAttrString(v.ptr(), "__float__");
+  return PyFloat_Check(v.ptr()) || PyLong_Check(v.ptr()) ||
+         PyObject_HasAttrString(v.ptr(), "__float__");
 }
 
 bool is_sequence(py::handle v) {
@@ -55,8 +56,10 @@ std::string field_value_text(py::handle value, const std::string& field) {
   if (py::len(items) == 0) return value_text(Polygon{});
   if (is_number(items[0])) {
     if (py::len(items) == 2) return value_text(point_of(items, field));
-    if (py::len(items) != 3 || !is_number(items[1]) || !is_number(items[2])) wrong_value(field, value);
-    return value_text(Vec3{items[0].cast<double>(), items[1].cast<double>(), items[2].cast<double>()});
+    if (py::len(items) != 3 || !is_number(items[1]) || !is_number(items[2]))
+      wrong_value(field, value);
+    return value_text(
+        Vec3{items[0].cast<double>(), items[1].cast<double>(), items[2].cast<double>()});
   }
   const py::object first = items[0];
   if (is_sequence(first) && py::len(first) > 0 && is_number(py::sequence(first)[0]))

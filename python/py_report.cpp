@@ -6,7 +6,6 @@
 
 #include <pybind11/stl.h>
 
-
 namespace py = pybind11;
 
 namespace roomcad::python {
@@ -30,19 +29,24 @@ std::vector<Diagnostic> of_severity(const Report& report, Severity severity) {
 
 void register_report(py::module_& m) {
   py::class_<Diagnostic>(m, "Finding", "One problem of a plan: an error or a warning.")
-      .def_property_readonly("severity", [](const Diagnostic& d) {
-        return d.severity == Severity::error ? "error" : "warning";
-      }, "'error' or 'warning'")
-      .def_property_readonly("code", [](const Diagnostic& d) { return std::string(to_string(d.code)); },
-                             "its code (docs/plan-format.md, 'Validation codes'), e.g. 'wall_overlap'")
+      .def_property_readonly(
+          "severity",
+          [](const Diagnostic& d) { return d.severity == Severity::error ? "error" : "warning"; },
+          "'error' or 'warning'")
+      .def_property_readonly(
+          "code", [](const Diagnostic& d) { return std::string(to_string(d.code)); },
+          "its code (docs/plan-format.md, 'Validation codes'), e.g. 'wall_overlap'")
       .def_readonly("objects", &Diagnostic::objects, "the ids of the objects involved")
       .def_readonly("message", &Diagnostic::message, "one sentence a person can act on")
       .def_readonly("fix", &Diagnostic::fix, "a concrete change that removes it ('' if none)")
       .def_property_readonly("where", &where_of,
                              "(x, y) or ((xmin, ymin), (xmax, ymax)) in metres, or None")
-      .def_property_readonly("line", [](const Diagnostic& d) -> py::object {
-        return d.location ? py::object(py::int_(d.location->line)) : py::object(py::none());
-      }, "line in the plan's text, or None")
+      .def_property_readonly(
+          "line",
+          [](const Diagnostic& d) -> py::object {
+            return d.location ? py::object(py::int_(d.location->line)) : py::object(py::none());
+          },
+          "line in the plan's text, or None")
       .def("__repr__", [](const Diagnostic& d) {
         return (d.severity == Severity::error ? "<error " : "<warning ") +
                std::string(to_string(d.code)) + ": " + d.message + ">";
@@ -50,21 +54,32 @@ void register_report(py::module_& m) {
 
   py::class_<PyReport>(m, "Report",
                        "What validating a plan found: report.ok, report.errors, report.warnings.")
-      .def_property_readonly("ok", [](const PyReport& r) { return r.report.ok(); },
-                             "True when there is no error (warnings allowed)")
-      .def_property_readonly("findings", [](const PyReport& r) { return r.report.items; },
-                             "every finding, errors first")
-      .def_property_readonly("errors", [](const PyReport& r) { return of_severity(r.report, Severity::error); },
-                             "the findings that are errors")
-      .def_property_readonly("warnings", [](const PyReport& r) { return of_severity(r.report, Severity::warning); },
-                             "the findings that are warnings")
-      .def("to_json", [](const PyReport& r) { return format_report_json(r.report, r.format); },
-           "The JSON text `roomcad validate --format json` prints for the same plan and rules.")
-      .def("to_dict", [](const PyReport& r) {
-        return py::module_::import("json").attr("loads")(format_report_json(r.report, r.format));
-      }, "The object `roomcad validate --format json` prints: {'ok', 'errors', 'warnings'}.")
-      .def("__str__", [](const PyReport& r) { return format_report_text(r.report, false, r.format); })
-      .def("__repr__", [](const PyReport& r) { return "<Report: " + format_report_summary(r.report) + ">"; });
+      .def_property_readonly(
+          "ok", [](const PyReport& r) { return r.report.ok(); },
+          "True when there is no error (warnings allowed)")
+      .def_property_readonly(
+          "findings", [](const PyReport& r) { return r.report.items; },
+          "every finding, errors first")
+      .def_property_readonly(
+          "errors", [](const PyReport& r) { return of_severity(r.report, Severity::error); },
+          "the findings that are errors")
+      .def_property_readonly(
+          "warnings", [](const PyReport& r) { return of_severity(r.report, Severity::warning); },
+          "the findings that are warnings")
+      .def(
+          "to_json", [](const PyReport& r) { return format_report_json(r.report, r.format); },
+          "The JSON text `roomcad validate --format json` prints for the same plan and rules.")
+      .def(
+          "to_dict",
+          [](const PyReport& r) {
+            return py::module_::import("json").attr("loads")(
+                format_report_json(r.report, r.format));
+          },
+          "The object `roomcad validate --format json` prints: {'ok', 'errors', 'warnings'}.")
+      .def("__str__",
+           [](const PyReport& r) { return format_report_text(r.report, false, r.format); })
+      .def("__repr__",
+           [](const PyReport& r) { return "<Report: " + format_report_summary(r.report) + ">"; });
 }
 
 }  // namespace roomcad::python

@@ -10,8 +10,8 @@
 
 #include <pybind11/pybind11.h>
 
-#include "plan/plan.h"
 #include "mesh/solid_mesh.h"
+#include "plan/plan.h"
 #include "validation/report.h"
 #include "validation/report_format.h"
 

@@ -43,8 +43,8 @@ glm::dmat4 perspective_reversed_z(double fov_deg, double aspect) {
 }
 
 /// Reversed-Z orthographic over the scene's depth range seen by `view` (never behind the eye).
-glm::dmat4 orthographic_reversed_z(const glm::dmat4& view, const Box3& scene,
-                                   double view_height, double aspect) {
+glm::dmat4 orthographic_reversed_z(const glm::dmat4& view, const Box3& scene, double view_height,
+                                   double aspect) {
   double near_d = 0.0;
   double far_d = 1.0;
   if (!is_empty(scene)) {
@@ -88,9 +88,13 @@ Direction preset_direction(ViewPreset preset) {
 }  // namespace
 
 std::optional<ViewPreset> parse_view_preset(std::string_view text) {
-  constexpr std::array<std::pair<std::string_view, ViewPreset>, 6> names{{
-      {"front", ViewPreset::front}, {"back", ViewPreset::back}, {"left", ViewPreset::left},
-      {"right", ViewPreset::right}, {"top", ViewPreset::top}, {"iso", ViewPreset::iso}}};
+  constexpr std::array<std::pair<std::string_view, ViewPreset>, 6> names{
+      {{"front", ViewPreset::front},
+       {"back", ViewPreset::back},
+       {"left", ViewPreset::left},
+       {"right", ViewPreset::right},
+       {"top", ViewPreset::top},
+       {"iso", ViewPreset::iso}}};
   for (const auto& [name, preset] : names)
     if (name == text) return preset;
   return std::nullopt;
@@ -103,9 +107,8 @@ CameraMatrices make_camera_matrices(const Camera& camera, const Box3& scene, dou
   m.forward = glm::length(to_target) > 0.0 ? glm::normalize(to_target) : glm::dvec3(0, 1, 0);
   m.view = glm::lookAtRH(m.eye, m.eye + m.forward, usable_up(m.forward, to_glm(camera.up)));
   m.orthographic = camera.projection == Projection::orthographic;
-  m.projection = m.orthographic
-                     ? orthographic_reversed_z(m.view, scene, camera.view_height, aspect)
-                     : perspective_reversed_z(camera.fov_deg, aspect);
+  m.projection = m.orthographic ? orthographic_reversed_z(m.view, scene, camera.view_height, aspect)
+                                : perspective_reversed_z(camera.fov_deg, aspect);
   m.view_projection = m.projection * m.view;
   return m;
 }
@@ -162,8 +165,8 @@ glm::dvec3 centred_target(const Box3& scene, const Framing& f, glm::dvec3 center
 
 }  // namespace
 
-Camera frame_view(const Box3& scene, ViewPreset preset, Projection projection,
-                  double fov_deg, double aspect) {
+Camera frame_view(const Box3& scene, ViewPreset preset, Projection projection, double fov_deg,
+                  double aspect) {
   const Direction dir = preset_direction(preset);
   Framing f;
   f.forward = dir.forward;
@@ -177,7 +180,8 @@ Camera frame_view(const Box3& scene, ViewPreset preset, Projection projection,
     half_w = std::max(half_w, std::abs(glm::dot(c - center, f.right)));
     half_h = std::max(half_h, std::abs(glm::dot(c - center, f.up)));
   }
-  double distance = glm::length(high_corner(scene) - low_corner(scene)) / 2.0 + 1.0;  // orthographic: outside
+  double distance =
+      glm::length(high_corner(scene) - low_corner(scene)) / 2.0 + 1.0;  // orthographic: outside
   if (projection == Projection::perspective) {
     center = centred_target(scene, f, center);
     distance = fitting_distance(scene, f, center);

@@ -15,7 +15,9 @@ namespace roomcad {
 
 /// The corners of a box (core/box.h) as the renderer's vectors.
 [[nodiscard]] inline glm::dvec3 low_corner(const Box3& b) { return {b.low[0], b.low[1], b.low[2]}; }
-[[nodiscard]] inline glm::dvec3 high_corner(const Box3& b) { return {b.high[0], b.high[1], b.high[2]}; }
+[[nodiscard]] inline glm::dvec3 high_corner(const Box3& b) {
+  return {b.high[0], b.high[1], b.high[2]};
+}
 /// Grows `b` to hold `p`. O(1).
 inline void add_point(Box3& b, const glm::dvec3& p) { add_point(b, p.x, p.y, p.z); }
 

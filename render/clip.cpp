@@ -14,8 +14,8 @@ float plane_value(const glm::vec4& p, int plane) {
     case 1: return p.w - p.x;
     case 2: return p.w + p.y;
     case 3: return p.w - p.y;
-    case 4: return p.z;        // far (reversed-Z: depth 0)
-    default: return p.w - p.z; // near (depth 1)
+    case 4: return p.z;         // far (reversed-Z: depth 0)
+    default: return p.w - p.z;  // near (depth 1)
   }
 }
 

@@ -36,23 +36,34 @@ Status check_view(const SurfaceView& v) {
                                     {"rotate_x", v.rotate_x_deg},
                                     {"rotate_y", v.rotate_y_deg}}) {
     if (!std::isfinite(value))
-      return Status::failure(Code::usage_error, fmt::format("{} must be a finite number, got {}", name, value));
+      return Status::failure(Code::usage_error,
+                             fmt::format("{} must be a finite number, got {}", name, value));
   }
-  if (!(v.x_min < v.x_max)) return Status::failure(Code::usage_error, fmt::format("x range {}:{} is empty", v.x_min, v.x_max));
-  if (!(v.z_min <= v.z_max)) return Status::failure(Code::usage_error, fmt::format("z range {}:{} is reversed", v.z_min, v.z_max));
-  if (!(v.dx > 0.0)) return Status::failure(Code::usage_error, fmt::format("dx must be positive, got {}", v.dx));
-  if (!(v.dz > 0.0)) return Status::failure(Code::usage_error, fmt::format("dz must be positive, got {}", v.dz));
+  if (!(v.x_min < v.x_max))
+    return Status::failure(Code::usage_error,
+                           fmt::format("x range {}:{} is empty", v.x_min, v.x_max));
+  if (!(v.z_min <= v.z_max))
+    return Status::failure(Code::usage_error,
+                           fmt::format("z range {}:{} is reversed", v.z_min, v.z_max));
+  if (!(v.dx > 0.0))
+    return Status::failure(Code::usage_error, fmt::format("dx must be positive, got {}", v.dx));
+  if (!(v.dz > 0.0))
+    return Status::failure(Code::usage_error, fmt::format("dz must be positive, got {}", v.dz));
   for (const auto& [name, value] :
        {std::pair{"rotate_x", v.rotate_x_deg}, {"rotate_y", v.rotate_y_deg}}) {
     if (!(std::fabs(value) < 90.0)) {
-      return Status::failure(Code::usage_error, fmt::format("{} must lie strictly between -90 and 90 degrees, got {}", name, value));
+      return Status::failure(
+          Code::usage_error,
+          fmt::format("{} must lie strictly between -90 and 90 degrees, got {}", name, value));
     }
   }
   const double nx = count_steps(v.x_max - v.x_min, v.dx) + 1.0;
   const double nz = count_steps(v.z_max - v.z_min, v.dz) + 1.0;
   if (nx > kMaxSamplesPerAxis || nz > kMaxSamplesPerAxis || nx * nz > kMaxSamples) {
-    return Status::failure(Code::usage_error, fmt::format("dx {} and dz {} give {} x {} samples; at most {} per axis and {} in all",
-                       v.dx, v.dz, nx, nz, kMaxSamplesPerAxis, kMaxSamples));
+    return Status::failure(
+        Code::usage_error,
+        fmt::format("dx {} and dz {} give {} x {} samples; at most {} per axis and {} in all", v.dx,
+                    v.dz, nx, nz, kMaxSamplesPerAxis, kMaxSamples));
   }
   return Status::success();
 }
@@ -142,14 +153,18 @@ Status check_surface_request(const SurfaceView& view, const SurfaceScreen& scree
   if (Status status = check_view(view); !status) return status;
   if (!(screen.width > 0.0 && screen.height > 0.0 && std::isfinite(screen.width) &&
         std::isfinite(screen.height))) {
-    return Status::failure(Code::usage_error, fmt::format("screen size must be positive, got {} x {}", screen.width, screen.height));
+    return Status::failure(
+        Code::usage_error,
+        fmt::format("screen size must be positive, got {} x {}", screen.width, screen.height));
   }
   if (!(screen.margin >= 0.0 && 2.0 * screen.margin < std::min(screen.width, screen.height))) {
-    return Status::failure(Code::usage_error, fmt::format("margin {} leaves no room on a {} x {} screen", screen.margin, screen.width,
-                       screen.height));
+    return Status::failure(Code::usage_error,
+                           fmt::format("margin {} leaves no room on a {} x {} screen",
+                                       screen.margin, screen.width, screen.height));
   }
   if (screen.columns < 1 || screen.columns > kMaxColumns) {
-    return Status::failure(Code::usage_error, fmt::format("columns must lie in [1, {}], got {}", kMaxColumns, screen.columns));
+    return Status::failure(Code::usage_error, fmt::format("columns must lie in [1, {}], got {}",
+                                                          kMaxColumns, screen.columns));
   }
   return Status::success();
 }

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The floating-horizon drawing of a surface y = f(x, z) (lab 4, variant 3 of the Tomsk manual "Laboratory works in computer
-// graphics"): the
-// surface is cut by the planes z = const, taken from the front (z_min) to the back; each
-// section is drawn where it lies above the upper or below the lower horizon of the sections
-// before it, with its crossings of the horizons found by linear intersection.
+// The floating-horizon drawing of a surface y = f(x, z) (lab 4, variant 3 of the Tomsk manual
+// "Laboratory works in computer graphics"): the surface is cut by the planes z = const, taken from
+// the front (z_min) to the back; each section is drawn where it lies above the upper or below the
+// lower horizon of the sections before it, with its crossings of the horizons found by linear
+// intersection.
 #pragma once
 
 #include <cstdint>
@@ -71,8 +71,7 @@ using SurfaceFunction = std::function<double(double x, double z)>;
 
 /// Checks a view and a screen. @return success, or a usage_error naming the field and its
 /// value (e.g. "dx must be positive, got -1").
-[[nodiscard]] Status check_surface_request(const SurfaceView& view,
-                                                const SurfaceScreen& screen);
+[[nodiscard]] Status check_surface_request(const SurfaceView& view, const SurfaceScreen& screen);
 
 /// Draws y = f(x, z) by the floating-horizon method. The picture is scaled to fill the screen
 /// inside its margin (see SurfaceScreen::keep_aspect) and centred. Missing samples cut the sections

@@ -9,9 +9,9 @@
 #include <utility>
 
 #include "core/box.h"
+#include "geometry/rooms.h"
 #include "render/detail/plan_paper.h"
 #include "render/detail/scale_bar.h"
-#include "geometry/rooms.h"
 
 namespace roomcad {
 namespace {
@@ -25,8 +25,8 @@ using detail::operator*;
 
 constexpr double kWallDimensionMm = 5.0;  // per-wall dimension beyond the wall face
 constexpr double kOverallDimensionMm = 18.0;
-constexpr double kMarkMm = 2.0;       // half the side of a point finding's box; a box's margin
-constexpr double kMarkTextMm = 2.5;   // size of a finding's code
+constexpr double kMarkMm = 2.0;      // half the side of a point finding's box; a box's margin
+constexpr double kMarkTextMm = 2.5;  // size of a finding's code
 
 /// The extent of the wall footprints, or of the site when there are no walls.
 Box2 plan_extent(const Plan& plan, const Joins& joins) {
@@ -108,7 +108,10 @@ void add_marks(const std::vector<PlanMark>& marks, const PaperMap& map, FloorPla
       return std::abs(c.first.x - lo.x) < kMarkTextMm && std::abs(c.first.y - lo.y) < kMarkTextMm;
     });
     if (it == corners.end()) it = corners.insert(corners.end(), {lo, 0});
-    out.mark_labels.push_back({{lo.x, lo.y - 0.8 - kMarkTextMm * 1.2 * it->second++}, m.label, kMarkTextMm, 0.0,
+    out.mark_labels.push_back({{lo.x, lo.y - 0.8 - kMarkTextMm * 1.2 * it->second++},
+                               m.label,
+                               kMarkTextMm,
+                               0.0,
                                TextAnchor::start});
   }
 }
@@ -152,10 +155,13 @@ void fit_page(FloorPlanDrawing& d) {
 
 Status check_floor_plan_options(const FloorPlanOptions& o) {
   if (!(o.scale >= 1.0 && o.scale <= 10000.0)) {
-    return Status::failure(Code::usage_error, fmt::format("scale 1:{} is not between 1:1 and 1:10000", o.scale));
+    return Status::failure(Code::usage_error,
+                           fmt::format("scale 1:{} is not between 1:1 and 1:10000", o.scale));
   }
   if (!(std::isfinite(o.cut_height) && o.cut_height > 0.0)) {
-    return Status::failure(Code::usage_error, fmt::format("cut height must be a positive number of metres, got {}", o.cut_height));
+    return Status::failure(
+        Code::usage_error,
+        fmt::format("cut height must be a positive number of metres, got {}", o.cut_height));
   }
   return Status::success();
 }
@@ -172,17 +178,19 @@ FloorPlanDrawing draw_floor_plan(const Plan& plan, const FloorPlanOptions& optio
   const std::vector<Room> rooms = find_rooms(plan);
   add_rooms(rooms, map, out);
   detail::draw_plan_walls(plan, joins, options, map, out);
-  add_wall_dimensions(plan, rooms, {0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)}, map, out);
+  add_wall_dimensions(plan, rooms, {0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)},
+                      map, out);
   if (!plan.walls.empty()) {
-    detail::add_dimension({box.min_x, box.min_y}, {box.max_x, box.min_y}, {0.0, -1.0}, kOverallDimensionMm, map,
-                          out);
-    detail::add_dimension({box.min_x, box.min_y}, {box.min_x, box.max_y}, {-1.0, 0.0}, kOverallDimensionMm, map,
-                          out);
+    detail::add_dimension({box.min_x, box.min_y}, {box.max_x, box.min_y}, {0.0, -1.0},
+                          kOverallDimensionMm, map, out);
+    detail::add_dimension({box.min_x, box.min_y}, {box.min_x, box.max_y}, {-1.0, 0.0},
+                          kOverallDimensionMm, map, out);
   }
   add_marks(options.marks, map, out);
   fit_page(out);
   const double footer = out.height - kSheetFooterMm;
-  detail::add_scale_bar(out.width, out.height, map.mm_per_m, {out.scale_bar_black, out.scale_bar_white, out.labels});
+  detail::add_scale_bar(out.width, out.height, map.mm_per_m,
+                        {out.scale_bar_black, out.scale_bar_white, out.labels});
   out.labels.push_back(
       {{kSheetMarginMm, footer + 16.0},
        fmt::format("Floor plan, section at {:.2f} m, scale 1:{}, dimensions in metres",

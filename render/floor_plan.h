@@ -81,8 +81,8 @@ struct FloorPlanDrawing {
   /// (x, y) metres is at paper (origin.x + x * mm_per_m, origin.y - y * mm_per_m).
   double mm_per_m = 20.0;
   Point2 origin{};
-  std::vector<PaperPolygon> marks;            ///< a box round each marked finding (red)
-  std::vector<PaperText> mark_labels;         ///< its code, at the box's top-left corner (red)
+  std::vector<PaperPolygon> marks;     ///< a box round each marked finding (red)
+  std::vector<PaperText> mark_labels;  ///< its code, at the box's top-left corner (red)
 };
 
 /// Checks the options. @return success, or a usage_error naming the option and its value.

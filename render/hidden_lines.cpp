@@ -6,9 +6,9 @@
 
 #include <tbb/parallel_for.h>
 
-#include "render/camera.h"
 #include "core/box.h"
 #include "geometry/box_grid.h"
+#include "render/camera.h"
 #include "render/detail/feature_edges.h"
 #include "render/detail/merge_segments.h"
 #include "render/line_drawing.h"
@@ -70,9 +70,9 @@ struct Scene2 {
   std::vector<Edge3> edges;         ///< clipped
   std::vector<Segment2> projected;  ///< one per edge
   std::vector<Triangle3> faces;     ///< occluders (not edge-on)
-  BoxGrid edge_grid;  ///< of `projected` (Box2::index: the edge)
-  BoxGrid face_grid;  ///< of the faces' picture boxes (Box2::index: the face)
-  double far_reach = 1.0;  ///< orthographic: length of the test segment towards the viewer
+  BoxGrid edge_grid;                ///< of `projected` (Box2::index: the edge)
+  BoxGrid face_grid;                ///< of the faces' picture boxes (Box2::index: the face)
+  double far_reach = 1.0;           ///< orthographic: length of the test segment towards the viewer
 };
 
 /// @return the box of s grown by `margin` on every side, tagged `index`.
@@ -155,7 +155,8 @@ EdgeLines classify_edge(const Scene2& sc, std::size_t i) {
   for (std::size_t k = 0; k + 1 < ts.size(); ++k, ++out.pieces) {
     const int hidden = is_hidden_at(sc, sc.edges[i], 0.5 * (ts[k] + ts[k + 1]), near) ? 1 : 0;
     if (hidden == run_hidden) continue;
-    if (run_hidden >= 0) (run_hidden ? out.hidden : out.visible).push_back({at(run_start), at(ts[k])});
+    if (run_hidden >= 0)
+      (run_hidden ? out.hidden : out.visible).push_back({at(run_start), at(ts[k])});
     run_start = ts[k];
     run_hidden = hidden;
   }
@@ -183,8 +184,6 @@ std::vector<Triangle3> collect_occluders(const Model& model, const Parts& parts,
   return faces;
 }
 
-
-
 }  // namespace
 
 HiddenLineResult remove_hidden_lines(const Model& model, const Parts& parts, const LineView& view) {
@@ -202,8 +201,12 @@ HiddenLineResult remove_hidden_lines(const Model& model, const Parts& parts, con
     box.index = f;
     if (!is_empty(box)) face_boxes.push_back(box);
   }
-  Scene2 sc{pr, std::move(edges), std::move(projected), std::move(faces),
-            BoxGrid(std::move(edge_boxes)), BoxGrid(std::move(face_boxes))};
+  Scene2 sc{pr,
+            std::move(edges),
+            std::move(projected),
+            std::move(faces),
+            BoxGrid(std::move(edge_boxes)),
+            BoxGrid(std::move(face_boxes))};
   Box3 extent = empty_box3();
   for (const Edge3& e : sc.edges) {
     add_point(extent, e.a);
@@ -211,7 +214,8 @@ HiddenLineResult remove_hidden_lines(const Model& model, const Parts& parts, con
   }
   for (const Triangle3& t : sc.faces)
     for (const glm::dvec3& c : t) add_point(extent, c);
-  if (!is_empty(extent)) sc.far_reach = 2.0 * glm::length(high_corner(extent) - low_corner(extent)) + 1.0;
+  if (!is_empty(extent))
+    sc.far_reach = 2.0 * glm::length(high_corner(extent) - low_corner(extent)) + 1.0;
   std::vector<EdgeLines> per_edge(sc.edges.size());
   tbb::parallel_for(std::size_t{0}, sc.edges.size(),
                     [&](std::size_t i) { per_edge[i] = classify_edge(sc, i); });

@@ -55,8 +55,8 @@ bool clip_to_box(Segment2& s, const Box2& box) {
   return true;
 }
 
-void map_lines(const std::vector<Segment2>& in, const PictureToPaper& m,
-               const Box2* frame, std::vector<PaperLine>& out) {
+void map_lines(const std::vector<Segment2>& in, const PictureToPaper& m, const Box2* frame,
+               std::vector<PaperLine>& out) {
   for (Segment2 s : in) {
     if (frame && !clip_to_box(s, *frame)) continue;
     out.push_back({m.map(s.a), m.map(s.b)});
@@ -74,11 +74,14 @@ Box2 picture_box(const HiddenLineResult& r) {
 
 /// Orthographic layout: the picture at 1:scale with margins, a scale bar and the title below.
 PictureToPaper lay_out_to_scale(const Box2& box, double scale, LineDrawing& out) {
-  PictureToPaper m{.mm_per_unit = 1000.0 / scale, .origin = {box.min_x, box.max_y},
-                   .left = kSheetMarginMm, .top = kSheetMarginMm};
+  PictureToPaper m{.mm_per_unit = 1000.0 / scale,
+                   .origin = {box.min_x, box.max_y},
+                   .left = kSheetMarginMm,
+                   .top = kSheetMarginMm};
   out.width = std::max(120.0, (box.max_x - box.min_x) * m.mm_per_unit + 2.0 * kSheetMarginMm);
   out.height = (box.max_y - box.min_y) * m.mm_per_unit + 2.0 * kSheetMarginMm + kSheetFooterMm;
-  detail::add_scale_bar(out.width, out.height, m.mm_per_unit, {out.scale_bar_black, out.scale_bar_white, out.labels});
+  detail::add_scale_bar(out.width, out.height, m.mm_per_unit,
+                        {out.scale_bar_black, out.scale_bar_white, out.labels});
   return m;
 }
 
@@ -87,12 +90,14 @@ PictureToPaper lay_out_frame(const LineView& view, Box2& frame, LineDrawing& out
   const double half_h = std::tan(view.fov_deg * M_PI / 360.0);
   const double half_w = half_h * kPerspectiveAspect;
   frame = {-half_w, -half_h, half_w, half_h, 0};
-  PictureToPaper m{.mm_per_unit = kPerspectiveWidthMm / (2.0 * half_w), .origin = {-half_w, half_h},
-                   .left = kSheetMarginMm, .top = kSheetMarginMm};
+  PictureToPaper m{.mm_per_unit = kPerspectiveWidthMm / (2.0 * half_w),
+                   .origin = {-half_w, half_h},
+                   .left = kSheetMarginMm,
+                   .top = kSheetMarginMm};
   out.width = kPerspectiveWidthMm + 2.0 * kSheetMarginMm;
   out.height = kPerspectiveWidthMm / kPerspectiveAspect + 2.0 * kSheetMarginMm + kSheetFooterMm;
-  const Point2 c[4] = {m.map({-half_w, -half_h}), m.map({half_w, -half_h}),
-                       m.map({half_w, half_h}), m.map({-half_w, half_h})};
+  const Point2 c[4] = {m.map({-half_w, -half_h}), m.map({half_w, -half_h}), m.map({half_w, half_h}),
+                       m.map({-half_w, half_h})};
   for (int i = 0; i < 4; ++i) out.frame.push_back({c[i], c[(i + 1) % 4]});
   return m;
 }
@@ -140,17 +145,18 @@ LineDrawing draw_line_view(const Model& model, const LineView& view,
   LineDrawing out;
   out.stats = remove_hidden_lines(model, options.parts, view);
   Box2 frame = empty_box2();
-  const PictureToPaper m = view.perspective ? lay_out_frame(view, frame, out)
-                                            : lay_out_to_scale(picture_box(out.stats),
-                                                               options.scale, out);
+  const PictureToPaper m = view.perspective
+                               ? lay_out_frame(view, frame, out)
+                               : lay_out_to_scale(picture_box(out.stats), options.scale, out);
   const Box2* clip = view.perspective ? &frame : nullptr;
   map_lines(out.stats.visible, m, clip, out.visible);
   if (options.hidden == HiddenLines::dashed) map_lines(out.stats.hidden, m, clip, out.hidden);
-  const std::string scale_text =
-      view.perspective ? std::string("perspective, not to scale")
-                       : fmt::format("scale 1:{}", options.scale);
+  const std::string scale_text = view.perspective ? std::string("perspective, not to scale")
+                                                  : fmt::format("scale 1:{}", options.scale);
   out.labels.push_back({{kSheetMarginMm, out.height - kSheetFooterMm + 16.0},
-                        fmt::format("{}, {}, {}", title, view.name, scale_text), 3.5, 0.0,
+                        fmt::format("{}, {}, {}", title, view.name, scale_text),
+                        3.5,
+                        0.0,
                         TextAnchor::start});
   return out;
 }

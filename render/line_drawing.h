@@ -29,12 +29,12 @@ enum class HiddenLines { off, dashed };
 
 /// How a drawing looks at the model.
 struct LineView {
-  std::string name;               ///< for the title, e.g. "North elevation (looking south)"
+  std::string name;  ///< for the title, e.g. "North elevation (looking south)"
   bool perspective = false;
-  glm::dvec3 eye{0.0};            ///< perspective: the eye, metres
-  glm::dvec3 forward{0, 1, 0};    ///< view direction, non-zero; kept as given for exact tests
-  glm::dvec3 up{0, 0, 1};         ///< not parallel to forward
-  double fov_deg = 50.0;          ///< perspective: vertical field of view
+  glm::dvec3 eye{0.0};          ///< perspective: the eye, metres
+  glm::dvec3 forward{0, 1, 0};  ///< view direction, non-zero; kept as given for exact tests
+  glm::dvec3 up{0, 0, 1};       ///< not parallel to forward
+  double fov_deg = 50.0;        ///< perspective: vertical field of view
 };
 
 /// @return the view named north|south|east|west|iso, or nullopt. O(1).
@@ -71,9 +71,9 @@ struct HiddenLineResult {
                                                    const LineView& view);
 
 struct LineDrawingOptions {
-  double scale = 50.0;                     ///< 1:scale; unused by perspective views
+  double scale = 50.0;  ///< 1:scale; unused by perspective views
   HiddenLines hidden = HiddenLines::dashed;
-  Parts parts{};                           ///< walls, floor outline, fixtures
+  Parts parts{};  ///< walls, floor outline, fixtures
 };
 
 /// A line drawing on paper, mm, y down.
@@ -85,8 +85,8 @@ struct LineDrawing {
   std::vector<PaperLine> frame;               ///< the picture's border (perspective views)
   std::vector<PaperPolygon> scale_bar_black;  ///< orthographic views only
   std::vector<PaperPolygon> scale_bar_white;
-  std::vector<PaperText> labels;              ///< title, scale, scale bar figures
-  HiddenLineResult stats;                     ///< the projected result, before layout
+  std::vector<PaperText> labels;  ///< title, scale, scale bar figures
+  HiddenLineResult stats;         ///< the projected result, before layout
 };
 
 /// Draws a view: remove_hidden_lines, then the page. Orthographic views at 1:scale with a

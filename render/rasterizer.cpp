@@ -103,7 +103,9 @@ class EdgeSpan {
     switch (kind_) {
       case Kind::left: lo = std::max(lo, q_); break;
       case Kind::right: hi = std::min(hi, q_); break;
-      case Kind::flat: if (w_ < 0) hi = lo; break;
+      case Kind::flat:
+        if (w_ < 0) hi = lo;
+        break;
     }
   }
 
@@ -124,7 +126,7 @@ class EdgeSpan {
   enum class Kind { left, right, flat };
   Kind kind_ = Kind::flat;
   std::int64_t q_ = 0, r_ = 0, d_ = 1, q_step_ = 0, r_step_ = 0;  // left and right
-  std::int64_t w_ = 0, step_ = 0;                                  // flat
+  std::int64_t w_ = 0, step_ = 0;                                 // flat
 };
 
 /// Depth-tests pixels [lo, hi) of a row whose depth is z0 + i * dz at pixel i (reversed-Z: a
@@ -164,8 +166,7 @@ bool covers_no_sample(const ScreenTriangle& t) {
 }
 
 std::optional<ScreenTriangle> set_up_triangle(const std::array<ClipVertex, 3>& v, int width,
-                                              int height, std::uint32_t triangle,
-                                              Culling culling) {
+                                              int height, std::uint32_t triangle, Culling culling) {
   ScreenTriangle t;
   t.triangle = triangle;
   for (int i = 0; i < 3; ++i) {
@@ -229,8 +230,8 @@ ROOMCAD_WIDE_LOOPS void rasterize_triangle(const ScreenTriangle& t, const Raster
     // the clamp only makes the narrowing to int safe by construction.
     const int lo = static_cast<int>(std::min(lo_edge, box_width));
     const int hi = static_cast<int>(std::max<std::int64_t>(lo, hi_edge));
-    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - target.y0) * stride +
-                               (x_begin - target.x0);
+    const std::ptrdiff_t row =
+        static_cast<std::ptrdiff_t>(y - target.y0) * stride + (x_begin - target.x0);
     // The row's depth in double, then float across the span (a vector of pixels per step):
     // at most a tile wide, that adds a few float ulps to the correctly rounded value.
     const float row_z = static_cast<float>(plane.start + (y - y_begin) * plane.dy);
@@ -267,9 +268,11 @@ BarycentricPlanes barycentric_planes(const ScreenTriangle& t) {
   BarycentricPlanes p;
   for (int k = 0; k < 3; ++k) {  // edge function k over pixels, divided by corner k's w
     const int a = (k + 1) % 3, b = (k + 2) % 3;
-    const double dx = static_cast<double>(t.x[b]) - t.x[a], dy = static_cast<double>(t.y[b]) - t.y[a];
-    const glm::dvec3 e = glm::dvec3(-dy * kSubpixelScale, dx * kSubpixelScale,
-                                    dy * t.x[a] - dx * t.y[a]) * static_cast<double>(t.inv_w[k]);
+    const double dx = static_cast<double>(t.x[b]) - t.x[a],
+                 dy = static_cast<double>(t.y[b]) - t.y[a];
+    const glm::dvec3 e =
+        glm::dvec3(-dy * kSubpixelScale, dx * kSubpixelScale, dy * t.x[a] - dx * t.y[a]) *
+        static_cast<double>(t.inv_w[k]);
     p.denominator += e;
     p.weight1 += e * static_cast<double>(t.source[k].x);
     p.weight2 += e * static_cast<double>(t.source[k].y);

@@ -27,12 +27,12 @@ inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 /// A triangle after the divide by w and the viewport transform, oriented so that its edge
 /// functions are positive inside.
 struct ScreenTriangle {
-  std::array<std::int32_t, 3> x{};   ///< 1/256 pixel
-  std::array<std::int32_t, 3> y{};   ///< 1/256 pixel, down
-  std::array<float, 3> depth{};      ///< reversed-Z, in [0, 1]
-  std::array<float, 3> inv_w{};      ///< 1 / clip w, for perspective-correct interpolation
-  std::array<glm::vec2, 3> source{}; ///< barycentrics in the scene triangle (see ClipVertex)
-  std::uint32_t triangle = 0;        ///< index of the scene triangle
+  std::array<std::int32_t, 3> x{};    ///< 1/256 pixel
+  std::array<std::int32_t, 3> y{};    ///< 1/256 pixel, down
+  std::array<float, 3> depth{};       ///< reversed-Z, in [0, 1]
+  std::array<float, 3> inv_w{};       ///< 1 / clip w, for perspective-correct interpolation
+  std::array<glm::vec2, 3> source{};  ///< barycentrics in the scene triangle (see ClipVertex)
+  std::uint32_t triangle = 0;         ///< index of the scene triangle
 };
 
 /// Which screen-space orientations survive set-up.
@@ -56,10 +56,10 @@ enum class Culling { back_faces, none };
 /// [x0, x1) x [y0, y1); pixel (x, y) is stored at depth[(y - y0) * stride + (x - x0)].
 struct RasterTarget {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  float* depth = nullptr;         ///< start at 0 (far)
-  std::uint32_t* ids = nullptr;   ///< same layout, or nullptr for depth-only passes
-  std::uint32_t id_value = 0;     ///< written to `ids` where the triangle wins the depth test
-  int stride = 0;                 ///< values per row; 0 means x1 - x0
+  float* depth = nullptr;        ///< start at 0 (far)
+  std::uint32_t* ids = nullptr;  ///< same layout, or nullptr for depth-only passes
+  std::uint32_t id_value = 0;    ///< written to `ids` where the triangle wins the depth test
+  int stride = 0;                ///< values per row; 0 means x1 - x0
 };
 
 /// Rasterises one triangle into the target with the top-left rule and a reversed-Z depth test
@@ -72,8 +72,8 @@ void rasterize_triangle(const ScreenTriangle& t, const RasterTarget& target);
 /// is on the target's corner (x0, y0) (a tile's). Used to decide visibility exactly as the
 /// z-buffer does without drawing.
 /// @return the depth, or nullopt if the triangle does not cover the pixel's centre. O(1).
-[[nodiscard]] std::optional<float> depth_at_pixel(const ScreenTriangle& t, int px, int py,
-                                                  int x0, int y0);
+[[nodiscard]] std::optional<float> depth_at_pixel(const ScreenTriangle& t, int px, int py, int x0,
+                                                  int y0);
 
 /// The perspective-correct weights of a screen triangle's scene triangle as planes over the
 /// screen: each sample then costs six multiply-adds and a division. Double precision.

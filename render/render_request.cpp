@@ -83,9 +83,10 @@ void check_frame_size(const RenderRequest& a, FirstProblem& problem) {
   }
   const long long samples = pixels * a.ssaa * a.ssaa;
   if (samples > kMaxImageSamples) {
-    problem.add(fmt::format("--width {} x --height {} at --ssaa {} is {} samples; at most {} are "
-                            "rendered (lower --ssaa or the size)",
-                            a.width, a.height, a.ssaa, samples, kMaxImageSamples));
+    problem.add(
+        fmt::format("--width {} x --height {} at --ssaa {} is {} samples; at most {} are "
+                    "rendered (lower --ssaa or the size)",
+                    a.width, a.height, a.ssaa, samples, kMaxImageSamples));
   }
 }
 
@@ -108,21 +109,24 @@ Result<RenderOptions> make_render_options(const RenderRequest& a, const Plan& pl
   }
   o.view_projection = projection;
   o.view_fov_deg = a.fov;
-  o.shading = parse_choice("--shading", a.shading, parse_shading_mode(a.shading), "unlit, flat, gouraud, phong", problem);
-  o.shadows = parse_choice<ShadowFilter>(
-      "--shadows", a.shadows,
-      a.shadows == "off" ? std::optional(ShadowFilter::off)
-      : a.shadows == "hard" ? std::optional(ShadowFilter::hard)
-      : a.shadows == "pcf" ? std::optional(ShadowFilter::pcf) : std::nullopt,
-      "off, hard, pcf", problem);
+  o.shading = parse_choice("--shading", a.shading, parse_shading_mode(a.shading),
+                           "unlit, flat, gouraud, phong", problem);
+  o.shadows = parse_choice<ShadowFilter>("--shadows", a.shadows,
+                                         a.shadows == "off"    ? std::optional(ShadowFilter::off)
+                                         : a.shadows == "hard" ? std::optional(ShadowFilter::hard)
+                                         : a.shadows == "pcf"  ? std::optional(ShadowFilter::pcf)
+                                                               : std::nullopt,
+                                         "off, hard, pcf", problem);
   o.shadow_resolution = a.shadow_res;
   o.ssaa = a.ssaa;
-  o.background = parse_choice("--background", a.background, parse_color(a.background), "#rrggbb",
-                              problem);
+  o.background =
+      parse_choice("--background", a.background, parse_color(a.background), "#rrggbb", problem);
   if (a.grid != "on" && a.grid != "off")
     problem.add(fmt::format("--grid '{}': expected on or off", a.grid));
-  o.grid = GridLines{.enabled = a.grid == "on", .origin = {plan.site.origin.x, plan.site.origin.y},
-                     .cell_size = plan.site.cell_size, .cells = plan.site.cells};
+  o.grid = GridLines{.enabled = a.grid == "on",
+                     .origin = {plan.site.origin.x, plan.site.origin.y},
+                     .cell_size = plan.site.cell_size,
+                     .cells = plan.site.cells};
   o.lights = plan.lights;
   const Result<Parts> parts = parse_parts(a.parts);
   if (parts) o.parts = parts.value();

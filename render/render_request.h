@@ -18,7 +18,7 @@ struct RenderRequest {
   std::string camera;       ///< a plan camera's id, or empty
   std::string eye, target;  ///< both or neither: a camera given by its points (metres)
   std::string up = "0,0,1", projection = "perspective";
-  std::string view;         ///< front, back, left, right, top, iso; empty: iso
+  std::string view;  ///< front, back, left, right, top, iso; empty: iso
   double fov = 50.0, view_height = 10.0;
   std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";
   std::string parts = kAllParts, cull = "back", frustum_cull = "on";

@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <glm/gtc/type_ptr.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "render/detail/geometry_pass.h"
 #include "render/detail/sample_shading.h"
@@ -32,7 +32,9 @@ double ms_since(Clock::time_point start) {
 struct DepthToDistance {
   double a = 0.0, b = 0.0, c = 0.0, d = 1.0;
   explicit DepthToDistance(const glm::dmat4& inverse_projection = glm::dmat4(1.0))
-      : a(inverse_projection[2][2]), b(inverse_projection[3][2]), c(inverse_projection[2][3]),
+      : a(inverse_projection[2][2]),
+        b(inverse_projection[3][2]),
+        c(inverse_projection[2][3]),
         d(inverse_projection[3][3]) {}
   [[nodiscard]] float operator()(float depth) const {
     return depth <= 0.f ? 0.f : static_cast<float>(-(a * depth + b) / (c * depth + d));
@@ -50,8 +52,7 @@ struct FrameMemory {
 
 /// Everything the tile tasks read (the frame's `uniform_` state).
 struct FrameContext {
-  explicit FrameContext(FrameMemory& memory)
-      : bins(memory.bins), shadow_maps(memory.shadow_maps) {}
+  explicit FrameContext(FrameMemory& memory) : bins(memory.bins), shadow_maps(memory.shadow_maps) {}
   detail::BinnedTriangles& bins;
   std::vector<ShadowMap>& shadow_maps;
   detail::ShadeUniforms shade;
@@ -168,8 +169,8 @@ void size_buffers(int width, int height, FrameOutputs outputs, FrameBuffers& out
 
 void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers& out,
                   RenderStats& stats) {
-  const std::vector<Light> lights = options.lights.empty() ? std::vector<Light>{default_light()}
-                                                           : options.lights;
+  const std::vector<Light> lights =
+      options.lights.empty() ? std::vector<Light>{default_light()} : options.lights;
   thread_local FrameMemory memory;
   FrameContext f(memory);
   f.shade.scene = &scene;
@@ -180,13 +181,12 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   f.shade.filter = options.shadows;
   f.shade.background = to_unit_rgb(options.background);
   const auto shadow_start = Clock::now();
-  const std::size_t maps = options.shadows == ShadowFilter::off
-                               ? 0
-                               : std::min<std::size_t>(lights.size(), kMaxLights);
+  const std::size_t maps =
+      options.shadows == ShadowFilter::off ? 0 : std::min<std::size_t>(lights.size(), kMaxLights);
   f.shadow_maps.resize(maps);
   for (std::size_t k = 0; k < maps; ++k) {
-    detail::render_shadow_map_into(scene, lights[k], options.shadow_resolution,
-                                   f.shadow_maps[k], memory.shadow_bins);
+    detail::render_shadow_map_into(scene, lights[k], options.shadow_resolution, f.shadow_maps[k],
+                                   memory.shadow_bins);
   }
   stats.shadow_ms = ms_since(shadow_start);
   const auto raster_start = Clock::now();
@@ -204,16 +204,17 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
     stats.cull_ms = ms_since(cull_start);
   }
   detail::run_geometry_pass(
-      scene, detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
-                                  .width = options.width * options.ssaa,
-                                  .height = options.height * options.ssaa,
-                                  .tile_size = 128,
-                                  .cull_back_faces = options.cull != FaceCull::none,
-                                  .cull_frustum = options.cull_frustum,
-                                  .uniform_draw = seen.empty() ? nullptr : seen.data(),
-                                  .uniform_viewer = cam.orthographic
-                                                        ? glm::vec4(-glm::vec3(cam.forward), 0.f)
-                                                        : glm::vec4(glm::vec3(cam.eye), 1.f)},
+      scene,
+      detail::GeometryPass{.uniform_view_projection = glm::mat4(cam.view_projection),
+                           .width = options.width * options.ssaa,
+                           .height = options.height * options.ssaa,
+                           .tile_size = 128,
+                           .cull_back_faces = options.cull != FaceCull::none,
+                           .cull_frustum = options.cull_frustum,
+                           .uniform_draw = seen.empty() ? nullptr : seen.data(),
+                           .uniform_viewer = cam.orthographic
+                                                 ? glm::vec4(-glm::vec3(cam.forward), 0.f)
+                                                 : glm::vec4(glm::vec3(cam.eye), 1.f)},
       f.bins);
   size_buffers(options.width, options.height, options.outputs, out);
   tbb::parallel_for(0, f.bins.tile_count(), [&](int tile) { render_tile(f, tile, out); });
@@ -226,37 +227,48 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
 
 Status check_render_options(const RenderOptions& o) {
   if (o.width < 1 || o.width > kMaxImageSide || o.height < 1 || o.height > kMaxImageSide) {
-    return Status::failure(Code::usage_error, fmt::format("width x height is {} x {}; each must be 1 to {}", o.width, o.height,
-                       kMaxImageSide));
+    return Status::failure(Code::usage_error,
+                           fmt::format("width x height is {} x {}; each must be 1 to {}", o.width,
+                                       o.height, kMaxImageSide));
   }
   const long long pixels = static_cast<long long>(o.width) * o.height;
   if (pixels > kMaxImagePixels) {
-    return Status::failure(Code::usage_error, fmt::format("width x height is {} x {} = {} pixels; at most {} are rendered", o.width,
-                       o.height, pixels, kMaxImagePixels));
+    return Status::failure(
+        Code::usage_error,
+        fmt::format("width x height is {} x {} = {} pixels; at most {} are rendered", o.width,
+                    o.height, pixels, kMaxImagePixels));
   }
   if (o.ssaa != 1 && o.ssaa != 2 && o.ssaa != 4) {
-    return Status::failure(Code::usage_error, fmt::format("ssaa is {}; it must be 1, 2 or 4", o.ssaa));
+    return Status::failure(Code::usage_error,
+                           fmt::format("ssaa is {}; it must be 1, 2 or 4", o.ssaa));
   }
   if (pixels * o.ssaa * o.ssaa > kMaxImageSamples) {
-    return Status::failure(Code::usage_error, fmt::format("width x height x ssaa^2 is {} x {} x {} = {} samples; at most {}",
-                       o.width, o.height, o.ssaa * o.ssaa, pixels * o.ssaa * o.ssaa,
-                       kMaxImageSamples));
+    return Status::failure(
+        Code::usage_error,
+        fmt::format("width x height x ssaa^2 is {} x {} x {} = {} samples; at most {}", o.width,
+                    o.height, o.ssaa * o.ssaa, pixels * o.ssaa * o.ssaa, kMaxImageSamples));
   }
   if (o.shadow_resolution < 1 || o.shadow_resolution > kMaxShadowResolution) {
-    return Status::failure(Code::usage_error, fmt::format("shadow resolution is {}; it must be 1 to {}", o.shadow_resolution,
-                       kMaxShadowResolution));
+    return Status::failure(Code::usage_error,
+                           fmt::format("shadow resolution is {}; it must be 1 to {}",
+                                       o.shadow_resolution, kMaxShadowResolution));
   }
   if (o.threads < 0 || o.threads > kMaxThreads) {
-    return Status::failure(Code::usage_error, fmt::format("threads is {}; it must be 0 (all cores) to {}", o.threads, kMaxThreads));
+    return Status::failure(
+        Code::usage_error,
+        fmt::format("threads is {}; it must be 0 (all cores) to {}", o.threads, kMaxThreads));
   }
   const double fov = o.camera ? o.camera->fov_deg : o.view_fov_deg;
   if (!(fov > 0.0 && fov < 180.0)) {
-    return Status::failure(Code::usage_error, fmt::format("field of view is {} degrees; it must be between 0 and 180", fov));
+    return Status::failure(
+        Code::usage_error,
+        fmt::format("field of view is {} degrees; it must be between 0 and 180", fov));
   }
   if (o.camera && o.camera->projection == Projection::orthographic &&
       !(o.camera->view_height > 0.0 && std::isfinite(o.camera->view_height))) {
-    return Status::failure(Code::usage_error, fmt::format("camera '{}' view height is {} m; it must be positive", o.camera->id,
-                       o.camera->view_height));
+    return Status::failure(Code::usage_error,
+                           fmt::format("camera '{}' view height is {} m; it must be positive",
+                                       o.camera->id, o.camera->view_height));
   }
   return Status::success();
 }
@@ -265,10 +277,9 @@ CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options) {
   const double aspect = static_cast<double>(options.width) / options.height;
   Box3 bounds = scene.bounds;
   if (is_empty(bounds)) add_point(bounds, glm::dvec3(0.0));  // nothing to frame: look at the origin
-  const Camera camera =
-      options.camera ? *options.camera
-                     : frame_view(bounds, options.view, options.view_projection,
-                                  options.view_fov_deg, aspect);
+  const Camera camera = options.camera ? *options.camera
+                                       : frame_view(bounds, options.view, options.view_projection,
+                                                    options.view_fov_deg, aspect);
   return make_camera_matrices(camera, bounds, aspect);
 }
 

@@ -68,21 +68,22 @@ inline constexpr int kMaxThreads = 256;
 enum class FaceCull {
   none,        ///< nothing: every face is rasterised (to measure what culling saves)
   back_faces,  ///< one-sided faces turned away from the camera
-  visibility,  ///< also every face Makarov & Safin's visible-surface pre-pass (render/visibility.h) finds unseen
+  visibility,  ///< also every face Makarov & Safin's visible-surface pre-pass (render/visibility.h)
+               ///< finds unseen
 };
 
 /// Everything a frame depends on besides the model. Designated initialisers welcome.
 struct RenderOptions {
-  int width = 1280;   ///< output pixels, 1 .. kMaxImageSide, width * height <= kMaxImagePixels
+  int width = 1280;  ///< output pixels, 1 .. kMaxImageSide, width * height <= kMaxImagePixels
   int height = 720;
-  std::optional<Camera> camera{};        ///< nullopt: frame the scene from `view`
-  ViewPreset view = ViewPreset::iso;     ///< without a camera: frame_view() of the scene's
+  std::optional<Camera> camera{};     ///< nullopt: frame the scene from `view`
+  ViewPreset view = ViewPreset::iso;  ///< without a camera: frame_view() of the scene's
   Projection view_projection = Projection::perspective;  ///< bounds with this projection
-  double view_fov_deg = 50.0;            ///< and field of view (the default camera)
+  double view_fov_deg = 50.0;                            ///< and field of view (the default camera)
   ShadingMode shading = ShadingMode::phong;
   ShadowFilter shadows = ShadowFilter::pcf;
-  int shadow_resolution = 1024;          ///< texels per side of each light's map, 1 .. 8192
-  int ssaa = 1;                          ///< samples per pixel side: 1, 2 or 4 (see kMaxImageSamples)
+  int shadow_resolution = 1024;  ///< texels per side of each light's map, 1 .. 8192
+  int ssaa = 1;                  ///< samples per pixel side: 1, 2 or 4 (see kMaxImageSamples)
   Color background{0xff, 0xff, 0xff};
   std::vector<Light> lights{};           ///< empty: default_light(); at most kMaxLights used
   GridLines grid{};                      ///< tile lines on floor faces

@@ -99,7 +99,8 @@ void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene) {
       push_triangle(scene, {points[t[0]], points[t[1]], points[t[2]]}, unit);
     }
     const std::size_t added = scene.triangle_count() - before;
-    scene.objects.insert(scene.objects.end(), added, props.has_object ? mesh.property(props.object, fh) : -1);
+    scene.objects.insert(scene.objects.end(), added,
+                         props.has_object ? mesh.property(props.object, fh) : -1);
     scene.kinds.insert(scene.kinds.end(), added,
                        props.has_kind ? mesh.property(props.kind, fh) : FaceKind::wall_face);
     scene.colors.insert(scene.colors.end(), added,

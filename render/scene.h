@@ -15,7 +15,6 @@
 
 #include "mesh/parts.h"
 #include "mesh/solid_mesh.h"
-#include "mesh/solid_mesh.h"
 #include "render/camera.h"
 
 namespace roomcad {
@@ -32,16 +31,16 @@ struct Cluster {
 /// away a float step is 6 cm, and shadow depths compared in it make acne (stress finding S3).
 /// The renderer moves its cameras and lights' maps into this frame (rebase_camera).
 struct Scene {
-  std::vector<glm::vec3> corners;         ///< 3 per triangle, counter-clockwise from outside,
-                                          ///< relative to origin
-  std::vector<glm::vec3> normals;         ///< 1 per triangle, unit
-  std::vector<Color> colors;              ///< 1 per triangle
-  std::vector<std::int32_t> objects;      ///< 1 per triangle: index into Model::objects or -1
-  std::vector<FaceKind> kinds;            ///< 1 per triangle
-  std::vector<std::uint8_t> two_sided;    ///< 1 per triangle: 1 = never back-face culled
-  std::vector<Cluster> clusters;          ///< cover all triangles, in order
-  Box3 bounds = empty_box3();             ///< of all triangles, world metres; empty if none
-  glm::dvec3 origin{0.0};                 ///< world position of the corners' (0, 0, 0)
+  std::vector<glm::vec3> corners;       ///< 3 per triangle, counter-clockwise from outside,
+                                        ///< relative to origin
+  std::vector<glm::vec3> normals;       ///< 1 per triangle, unit
+  std::vector<Color> colors;            ///< 1 per triangle
+  std::vector<std::int32_t> objects;    ///< 1 per triangle: index into Model::objects or -1
+  std::vector<FaceKind> kinds;          ///< 1 per triangle
+  std::vector<std::uint8_t> two_sided;  ///< 1 per triangle: 1 = never back-face culled
+  std::vector<Cluster> clusters;        ///< cover all triangles, in order
+  Box3 bounds = empty_box3();           ///< of all triangles, world metres; empty if none
+  glm::dvec3 origin{0.0};               ///< world position of the corners' (0, 0, 0)
 
   [[nodiscard]] std::size_t triangle_count() const { return normals.size(); }
 };

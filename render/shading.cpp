@@ -11,10 +11,10 @@
 namespace roomcad {
 namespace {
 
-constexpr float kSpecular = 0.2f;    // white highlights, a matte finish
+constexpr float kSpecular = 0.2f;  // white highlights, a matte finish
 constexpr float kGridDarkening = 0.6f;
 constexpr float kGridHalfWidth = 0.015f;  // of a cell
-constexpr float kLastLine = 0x1p24f;       // the last line paint_grid tells from the next
+constexpr float kLastLine = 0x1p24f;      // the last line paint_grid tells from the next
 
 /// The Blinn-Phong highlight (exponent 32) of light direction l on a surface of normal n
 /// (both unit) that faces the light, seen from the direction e (any length). With s = |e|,
@@ -25,12 +25,13 @@ constexpr float kLastLine = 0x1p24f;       // the last line paint_grid tells fro
 inline float highlight_at(const glm::vec3& l, const glm::vec3& n, float ex, float ey, float ez) {
   constexpr float kTiny = 1e-30f;  // keeps the division finite where e is 0 or opposes l
   const float s = std::sqrt(ex * ex + ey * ey + ez * ez);
-  const float cos_half = std::max(s * (n.x * l.x + n.y * l.y + n.z * l.z) +
-                                      (n.x * ex + n.y * ey + n.z * ez), 0.f);  // times s |h|
-  const float h2 = cos_half * cos_half /
-                   std::max(2.f * s * (s + l.x * ex + l.y * ey + l.z * ez), kTiny);
+  const float cos_half =
+      std::max(s * (n.x * l.x + n.y * l.y + n.z * l.z) + (n.x * ex + n.y * ey + n.z * ez),
+               0.f);  // times s |h|
+  const float h2 =
+      cos_half * cos_half / std::max(2.f * s * (s + l.x * ex + l.y * ey + l.z * ez), kTiny);
   const float h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8;  // written out: a loop here would
-  return kSpecular * (h16 * h16);                          // keep the caller's from vectorising
+  return kSpecular * (h16 * h16);                         // keep the caller's from vectorising
 }
 
 /// The viewer, homogeneous: (eye, 1) in perspective, (-forward, 0) orthographic, so that the
@@ -46,8 +47,8 @@ float highlight_from(const ShadingUniforms& u, const glm::vec3& l, const glm::ve
 }
 
 /// The specular of light `k` at every sample of the run, as the mode evaluates it.
-void run_specular(const ShadingUniforms& u, const SurfaceLighting& s, const SampleRun& run,
-                  int k, float* out) {
+void run_specular(const ShadingUniforms& u, const SurfaceLighting& s, const SampleRun& run, int k,
+                  float* out) {
   const int n = run.count;
   if (s.diffuse[k] <= 0.f) {  // facing away: no highlight
     std::fill(out, out + n, 0.f);
@@ -108,8 +109,8 @@ SurfaceLighting light_surface(const ShadingUniforms& u, const glm::vec3& normal,
   return s;
 }
 
-ROOMCAD_WIDE_LOOPS void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface, const SampleRun& run,
-               glm::vec3* out) {
+ROOMCAD_WIDE_LOOPS void shade_run(const ShadingUniforms& u, const SurfaceLighting& surface,
+                                  const SampleRun& run, glm::vec3* out) {
   if (u.mode == ShadingMode::unlit) return shade_unlit(u, run, out);
   std::array<float, kMaxRunSamples> brightness, highlight, specular;
   std::fill_n(brightness.begin(), run.count, surface.ambient);
@@ -123,8 +124,8 @@ ROOMCAD_WIDE_LOOPS void shade_run(const ShadingUniforms& u, const SurfaceLightin
     }
   }
   for (int i = 0; i < run.count; ++i) {
-    out[i] = glm::clamp(run.color * (run.tint[i] * brightness[i]) + glm::vec3(highlight[i]),
-                        0.f, 1.f);
+    out[i] =
+        glm::clamp(run.color * (run.tint[i] * brightness[i]) + glm::vec3(highlight[i]), 0.f, 1.f);
   }
 }
 
@@ -149,7 +150,8 @@ void mark_grid_lines(const GridLines& grid, SampleRun& run) {
   };
   for (int i = 0; i < n; ++i) {
     const float fx = (run.x[i] - ox) * per_metre, fy = (run.y[i] - oy) * per_metre;
-    const bool inside = fx >= -kGridHalfWidth && fy >= -kGridHalfWidth && fx <= end_x && fy <= end_y;
+    const bool inside =
+        fx >= -kGridHalfWidth && fy >= -kGridHalfWidth && fx <= end_x && fy <= end_y;
     const bool on_line = std::min(to_line(fx), to_line(fy)) < kGridHalfWidth;
     run.tint[i] = inside && on_line ? kGridDarkening : 1.f;
   }

@@ -45,8 +45,8 @@ struct ShadingUniforms {
   ShadingMode mode = ShadingMode::phong;
   std::array<ShadingLight, kMaxLights> lights{};
   int light_count = 0;
-  glm::vec3 eye{0.f};        ///< perspective: the eye; orthographic: unused
-  glm::vec3 forward{0.f};    ///< unit view direction (orthographic view vectors)
+  glm::vec3 eye{0.f};      ///< perspective: the eye; orthographic: unused
+  glm::vec3 forward{0.f};  ///< unit view direction (orthographic view vectors)
   bool orthographic = false;
   GridLines grid;
 };
@@ -55,10 +55,10 @@ struct ShadingUniforms {
 /// Normals are per triangle (scene.h), so the diffuse factor of a light is constant; only the
 /// specular highlight varies: per point (phong), between the corners (gouraud) or not (flat).
 struct SurfaceLighting {
-  glm::vec3 normal{0.f, 0.f, 1.f};             ///< unit, facing the viewer
-  float ambient = 0.f;                         ///< sum of ambient * intensity over the lights
-  std::array<float, kMaxLights> direct{};      ///< (1 - ambient) * intensity of each light
-  std::array<float, kMaxLights> diffuse{};     ///< max(n . l, 0) of each light
+  glm::vec3 normal{0.f, 0.f, 1.f};          ///< unit, facing the viewer
+  float ambient = 0.f;                      ///< sum of ambient * intensity over the lights
+  std::array<float, kMaxLights> direct{};   ///< (1 - ambient) * intensity of each light
+  std::array<float, kMaxLights> diffuse{};  ///< max(n . l, 0) of each light
   std::array<std::array<float, 3>, kMaxLights> corner_specular{};  ///< flat, gouraud
 };
 

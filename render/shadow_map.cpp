@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "render/detail/shadow_pass.h"
 #include "render/detail/wide_loops.h"
@@ -31,7 +31,8 @@ LightFrame fit_light_frame(const Box3& scene, const glm::dvec3& to_light) {
   f.view = glm::lookAtRH(center + to_light * radius, center, up);
   double lo = 1e300, hi = -1e300, hx = 0.0, hy = 0.0;
   for (int i = 0; i < 8; ++i) {
-    const glm::dvec3 c((i & 1) ? scene.high[0] : scene.low[0], (i & 2) ? scene.high[1] : scene.low[1],
+    const glm::dvec3 c((i & 1) ? scene.high[0] : scene.low[0],
+                       (i & 2) ? scene.high[1] : scene.low[1],
                        (i & 4) ? scene.high[2] : scene.low[2]);
     const glm::dvec4 v = f.view * glm::dvec4(c, 1.0);
     hx = std::max(hx, std::abs(v.x));
@@ -59,12 +60,13 @@ glm::dmat4 light_projection(const LightFrame& f) {
 void rasterize_map(const Scene& scene, int resolution, ShadowMap& map,
                    detail::BinnedTriangles& bins) {
   detail::run_geometry_pass(
-      scene, detail::GeometryPass{.uniform_view_projection = map.light_view_projection,
-                                  .width = resolution,
-                                  .height = resolution,
-                                  .tile_size = 128,
-                                  .cull_back_faces = true,
-                                  .uniform_viewer = glm::vec4(map.to_light, 0.f)},
+      scene,
+      detail::GeometryPass{.uniform_view_projection = map.light_view_projection,
+                           .width = resolution,
+                           .height = resolution,
+                           .tile_size = 128,
+                           .cull_back_faces = true,
+                           .uniform_viewer = glm::vec4(map.to_light, 0.f)},
       bins);
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     RasterTarget target = detail::tile_rectangle(bins, tile);  // tiles write disjoint texels
@@ -120,7 +122,7 @@ ShadowReceiver shadow_receiver(const ShadowMap& map, const glm::vec3& normal,
   const glm::vec3 n = map.light_rotation * normal;  // light view: +z towards the light
   r.faces_light = n.z > 0.f;
   if (!r.faces_light || map.texel_x == 0.f) return r;
-  const float cos_t = std::max(n.z, 0.1f);          // caps tan(angle) at about 10
+  const float cos_t = std::max(n.z, 0.1f);  // caps tan(angle) at about 10
   const float tan_t = std::sqrt(1.f - cos_t * cos_t) / cos_t;
   r.grad_u = -n.x * map.texel_x / (cos_t * map.depth_range);
   r.grad_v = n.y * map.texel_y / (cos_t * map.depth_range);

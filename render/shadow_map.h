@@ -28,11 +28,11 @@ struct ShadowMap {
   /// read the frame instead of testing bounds. Map texel (x, y) is depth.at(x + kShadowBorder,
   /// y + kShadowBorder).
   FloatImage depth;
-  glm::mat3 light_rotation{1.f};         ///< world -> light view directions (z to the light)
-  glm::vec3 to_light{0.f, 0.f, 1.f};     ///< unit, from the scene towards the light
-  float texel_x = 0.f;                   ///< metres covered by one texel, across
-  float texel_y = 0.f;                   ///< and up the map
-  float depth_range = 1.f;               ///< metres per unit of depth
+  glm::mat3 light_rotation{1.f};      ///< world -> light view directions (z to the light)
+  glm::vec3 to_light{0.f, 0.f, 1.f};  ///< unit, from the scene towards the light
+  float texel_x = 0.f;                ///< metres covered by one texel, across
+  float texel_y = 0.f;                ///< and up the map
+  float depth_range = 1.f;            ///< metres per unit of depth
 
   /// The larger side of a texel, metres: what "one texel from a shadow edge" measures.
   [[nodiscard]] float texel_size() const { return texel_x > texel_y ? texel_x : texel_y; }
@@ -57,7 +57,7 @@ struct ShadowReceiver {
   float grad_u = 0.f;
   float grad_v = 0.f;
   float bias = 0.f;
-  glm::vec3 corner0{0.f};  ///< (u, v, depth) of corner 0
+  glm::vec3 corner0{0.f};     ///< (u, v, depth) of corner 0
   glm::vec3 to_corner1{0.f};  ///< corner 1 minus corner 0
   glm::vec3 to_corner2{0.f};  ///< corner 2 minus corner 0
 };

@@ -66,8 +66,8 @@ class ExpressionCompiler {
   }
   [[noreturn]] void fail(std::string_view expected) const {
     const std::size_t column = pos_ + 1;
-    throw ParseFailure{column,
-                       "expected " + std::string(expected) + " at column " + std::to_string(column)};
+    throw ParseFailure{
+        column, "expected " + std::string(expected) + " at column " + std::to_string(column)};
   }
   /// Appends an op and tracks the stack depth: operands push one value, binary ops pop one.
   void emit(ExprOp op) {
@@ -187,40 +187,26 @@ namespace {
 /// @return the value of a one-argument function, NaN outside its domain.
 double apply_function(ExprOp op, double a) {
   switch (op) {
-    case ExprOp::neg:
-      return -a;
-    case ExprOp::abs:
-      return std::fabs(a);
-    case ExprOp::sqrt:
-      return a < 0.0 ? std::nan("") : std::sqrt(a);
-    case ExprOp::exp:
-      return std::exp(a);
-    case ExprOp::ln:
-      return a <= 0.0 ? std::nan("") : std::log(a);
-    case ExprOp::sin:
-      return std::sin(a);
-    case ExprOp::cos:
-      return std::cos(a);
-    default:
-      return std::nan("");
+    case ExprOp::neg: return -a;
+    case ExprOp::abs: return std::fabs(a);
+    case ExprOp::sqrt: return a < 0.0 ? std::nan("") : std::sqrt(a);
+    case ExprOp::exp: return std::exp(a);
+    case ExprOp::ln: return a <= 0.0 ? std::nan("") : std::log(a);
+    case ExprOp::sin: return std::sin(a);
+    case ExprOp::cos: return std::cos(a);
+    default: return std::nan("");
   }
 }
 
 /// @return a op b, NaN for division by zero and undefined powers.
 double apply_operator(ExprOp op, double a, double b) {
   switch (op) {
-    case ExprOp::add:
-      return a + b;
-    case ExprOp::sub:
-      return a - b;
-    case ExprOp::mul:
-      return a * b;
-    case ExprOp::div:
-      return b == 0.0 ? std::nan("") : a / b;
-    case ExprOp::pow:
-      return std::pow(a, b);  // NaN for a negative base and a fractional power
-    default:
-      return std::nan("");
+    case ExprOp::add: return a + b;
+    case ExprOp::sub: return a - b;
+    case ExprOp::mul: return a * b;
+    case ExprOp::div: return b == 0.0 ? std::nan("") : a / b;
+    case ExprOp::pow: return std::pow(a, b);  // NaN for a negative base and a fractional power
+    default: return std::nan("");
   }
 }
 
@@ -240,15 +226,9 @@ double SurfaceExpression::evaluate(double x, double z) const {
   std::size_t next_constant = 0;
   for (const ExprOp op : ops_) {
     switch (op) {
-      case ExprOp::constant:
-        stack[top++] = constants_[next_constant++];
-        break;
-      case ExprOp::var_x:
-        stack[top++] = x;
-        break;
-      case ExprOp::var_z:
-        stack[top++] = z;
-        break;
+      case ExprOp::constant: stack[top++] = constants_[next_constant++]; break;
+      case ExprOp::var_x: stack[top++] = x; break;
+      case ExprOp::var_z: stack[top++] = z; break;
       case ExprOp::add:
       case ExprOp::sub:
       case ExprOp::mul:
@@ -257,9 +237,7 @@ double SurfaceExpression::evaluate(double x, double z) const {
         --top;
         stack[top - 1] = apply_operator(op, stack[top - 1], stack[top]);
         break;
-      default:
-        stack[top - 1] = apply_function(op, stack[top - 1]);
-        break;
+      default: stack[top - 1] = apply_function(op, stack[top - 1]); break;
     }
   }
   const double result = top == 1 ? stack[0] : std::nan("");

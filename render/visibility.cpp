@@ -42,14 +42,15 @@ std::vector<detail::FlatTriangle> set_up(const Scene& scene, const VisibilityVie
   detail::BinnedTriangles bins;
   detail::run_geometry_pass(scene,
                             {.uniform_view_projection = glm::mat4(view.camera.view_projection),
-                             .width = view.width, .height = view.height,
-                             .tile_size = view.tile_size, .cull_back_faces = true},
+                             .width = view.width,
+                             .height = view.height,
+                             .tile_size = view.tile_size,
+                             .cull_back_faces = true},
                             bins);
   std::vector<detail::FlatTriangle> flat;
   for (const auto& chunk : bins.chunks)
     for (const ScreenTriangle& s : chunk) flat.push_back(flatten(s));
   return flat;  // chunk by chunk is the order the rasteriser draws in
-
 }
 
 }  // namespace

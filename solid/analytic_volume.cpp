@@ -19,11 +19,11 @@
 #include <numeric>
 #include <vector>
 
-#include "solid/detail/frames/buildable_plan.h"
 #include "geometry/exact_polygon_set.h"
+#include "solid/analytic_volume.h"
+#include "solid/detail/frames/buildable_plan.h"
 #include "solid/detail/frames/exact_wall.h"
 #include "solid/detail/frames/slab_frames.h"
-#include "solid/analytic_volume.h"
 
 namespace roomcad {
 namespace {
@@ -39,14 +39,16 @@ struct Box {
   std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
   void add(double x, double y, double z) {
     const std::array<double, 3> p{x, y, z};
-    for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    for (std::size_t k = 0; k < 3; ++k)
+      lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
   void add_xy(const Point& p, double z0, double z1) {
     add(CGAL::to_double(p.x()), CGAL::to_double(p.y()), z0);
     add(CGAL::to_double(p.x()), CGAL::to_double(p.y()), z1);
   }
   void add(const Box& b) {
-    for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], b.lo[k]), hi[k] = std::max(hi[k], b.hi[k]);
+    for (std::size_t k = 0; k < 3; ++k)
+      lo[k] = std::min(lo[k], b.lo[k]), hi[k] = std::max(hi[k], b.hi[k]);
   }
   // Widened so that the doubles' rounding never drops what touches.
   Box widened() const {
@@ -84,9 +86,9 @@ struct Prim {
   enum class Kind { prism, sloped, shaped, slab } kind = Kind::prism;
   FT zmin, zmax;  // present for z strictly between
   Box box;
-  std::vector<Face> faces;    // its faces that are not horizontal
-  std::vector<FT> heights;    // the heights of its corners
-  std::vector<Point> outline;  // prism, sloped: the footprint (convex, counter-clockwise)
+  std::vector<Face> faces;              // its faces that are not horizontal
+  std::vector<FT> heights;              // the heights of its corners
+  std::vector<Point> outline;           // prism, sloped: the footprint (convex, counter-clockwise)
   std::vector<PolygonWithHoles> parts;  // slab: its outline minus its holes
   // sloped: the top is where k (p - from) . e = (z - top) l2
   FT fx, fy, ex, ey, k, top, l2, top_min;
@@ -110,7 +112,8 @@ Point side_point(const Prim& p, int side, const FT& u) {
 }
 
 std::vector<Point> strip_quad(const Prim& p, const FT& ua, const FT& ub) {
-  return detail::convex_part({side_point(p, 0, ua), side_point(p, 0, ub), side_point(p, 1, ub), side_point(p, 1, ua)});
+  return detail::convex_part(
+      {side_point(p, 0, ua), side_point(p, 0, ub), side_point(p, 1, ub), side_point(p, 1, ua)});
 }
 
 void add_polygon(std::vector<Point> q, std::vector<Polygon>& out) {
@@ -141,9 +144,7 @@ bool moves(const Prim& p, const FT& m) {
 void add_section(const Prim& p, const FT& m, const FT& z, std::vector<Polygon>& polys,
                  std::vector<PolygonWithHoles>& with_holes) {
   switch (p.kind) {
-    case Prim::Kind::prism:
-      add_polygon(p.outline, polys);
-      return;
+    case Prim::Kind::prism: add_polygon(p.outline, polys); return;
     case Prim::Kind::slab:
       with_holes.insert(with_holes.end(), p.parts.begin(), p.parts.end());
       return;
@@ -151,7 +152,9 @@ void add_section(const Prim& p, const FT& m, const FT& z, std::vector<Polygon>& 
       if (z <= p.top_min) return add_polygon(p.outline, polys);
       // Keep g >= 0, g(q) = k (q - from) . e - (z - top) l2 (Sutherland-Hodgman).
       const FT c = (z - p.top) * p.l2;
-      auto g = [&](const Point& q) { return p.k * ((q.x() - p.fx) * p.ex + (q.y() - p.fy) * p.ey) - c; };
+      auto g = [&](const Point& q) {
+        return p.k * ((q.x() - p.fx) * p.ex + (q.y() - p.fy) * p.ey) - c;
+      };
       std::vector<Point> out;
       const std::size_t n = p.outline.size();
       for (std::size_t i = 0; i < n; ++i) {
@@ -159,7 +162,8 @@ void add_section(const Prim& p, const FT& m, const FT& z, std::vector<Polygon>& 
         const Point& b = p.outline[(i + 1) % n];
         const FT ga = g(a), gb = g(b);
         if (!CGAL::is_negative(ga)) out.push_back(a);
-        if ((CGAL::is_positive(ga) && CGAL::is_negative(gb)) || (CGAL::is_negative(ga) && CGAL::is_positive(gb))) {
+        if ((CGAL::is_positive(ga) && CGAL::is_negative(gb)) ||
+            (CGAL::is_negative(ga) && CGAL::is_positive(gb))) {
           const FT t = ga / (ga - gb);
           out.emplace_back(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
         }
@@ -176,7 +180,8 @@ void add_section(const Prim& p, const FT& m, const FT& z, std::vector<Polygon>& 
         const FT slope = (b[0] - a[0]) / (b[1] - a[1]);
         cuts.emplace_back(a[0] + slope * (tm - a[1]), a[0] + slope * (tz - a[1]));
       }
-      std::sort(cuts.begin(), cuts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      std::sort(cuts.begin(), cuts.end(),
+                [](const auto& x, const auto& y) { return x.first < y.first; });
       for (std::size_t i = 0; i + 1 < cuts.size(); i += 2) {
         const FT ua = p.u0 + cuts[i].second * p.width, ub = p.u0 + cuts[i + 1].second * p.width;
         if (ua < ub) add_polygon(strip_quad(p, ua, ub), polys);
@@ -199,7 +204,8 @@ FT area_of(const PolygonSet& set) {
   FT area = 0;
   for (const auto& p : set.polygons_with_holes()) {
     area += p.outer_boundary().area();
-    for (auto h = p.holes_begin(); h != p.holes_end(); ++h) area += h->area();  // holes are clockwise
+    for (auto h = p.holes_begin(); h != p.holes_end(); ++h)
+      area += h->area();  // holes are clockwise
   }
   return area;
 }
@@ -209,11 +215,12 @@ FT area_of(const PolygonSet& set) {
 enum class Mode { unite, cut, minus };
 
 // The area at z of the union of `solids` (with the union of `others` per `mode`).
-FT area_at(const std::vector<const Prim*>& solids, const std::vector<const Prim*>& others, Mode mode,
-           const FT& m, const FT& z) {
+FT area_at(const std::vector<const Prim*>& solids, const std::vector<const Prim*>& others,
+           Mode mode, const FT& m, const FT& z) {
   PolygonSet set = union_at(solids, m, z);
   if (mode == Mode::cut && !set.is_empty()) set.intersection(union_at(others, m, z));
-  if (mode == Mode::minus && !set.is_empty() && !others.empty()) set.difference(union_at(others, m, z));
+  if (mode == Mode::minus && !set.is_empty() && !others.empty())
+    set.difference(union_at(others, m, z));
   return area_of(set);
 }
 
@@ -228,9 +235,12 @@ void add_triple_event(const Face& p, const Face& q, const Face& r, std::vector<F
   const std::array<const Face*, 3> f{&p, &q, &r};
   std::array<std::array<double, 4>, 3> a{};
   for (std::size_t i = 0; i < 3; ++i)
-    a[i] = {CGAL::to_double(f[i]->a), CGAL::to_double(f[i]->b), CGAL::to_double(f[i]->c), CGAL::to_double(f[i]->d)};
-  auto d3 = [](const std::array<double, 3>& x, const std::array<double, 3>& y, const std::array<double, 3>& z) {
-    return x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0]) + x[2] * (y[0] * z[1] - y[1] * z[0]);
+    a[i] = {CGAL::to_double(f[i]->a), CGAL::to_double(f[i]->b), CGAL::to_double(f[i]->c),
+            CGAL::to_double(f[i]->d)};
+  auto d3 = [](const std::array<double, 3>& x, const std::array<double, 3>& y,
+               const std::array<double, 3>& z) {
+    return x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0]) +
+           x[2] * (y[0] * z[1] - y[1] * z[0]);
   };
   std::array<std::array<double, 3>, 3> n{};
   double scale = 1.0;
@@ -260,8 +270,8 @@ void add_triple_event(const Face& p, const Face& q, const Face& r, std::vector<F
 
 // The volume of the union of `solids` (with the union of `holes` per `mode`) between zlo and
 // zhi.
-FT group_volume(const std::vector<const Prim*>& solids, const std::vector<const Prim*>& holes, Mode mode,
-                const FT& zlo, const FT& zhi) {
+FT group_volume(const std::vector<const Prim*>& solids, const std::vector<const Prim*>& holes,
+                Mode mode, const FT& zlo, const FT& zhi) {
   std::vector<FT> events{zlo, zhi};
   std::vector<const Face*> faces;
   for (const auto* list : {&solids, &holes})
@@ -274,14 +284,16 @@ FT group_volume(const std::vector<const Prim*>& solids, const std::vector<const 
     if (!faces[i]->tilted) continue;
     std::vector<std::size_t> near;
     for (std::size_t j = 0; j < faces.size(); ++j)
-      if (j != i && !(faces[j]->tilted && j < i) && faces[i]->box.overlaps(faces[j]->box)) near.push_back(j);
+      if (j != i && !(faces[j]->tilted && j < i) && faces[i]->box.overlaps(faces[j]->box))
+        near.push_back(j);
     for (std::size_t x = 0; x < near.size(); ++x)
       for (std::size_t y = x + 1; y < near.size(); ++y)
         if (faces[near[x]]->box.overlaps(faces[near[y]]->box))
           add_triple_event(*faces[i], *faces[near[x]], *faces[near[y]], events);
   }
-  events.erase(std::remove_if(events.begin(), events.end(), [&](const FT& z) { return z < zlo || zhi < z; }),
-               events.end());
+  events.erase(
+      std::remove_if(events.begin(), events.end(), [&](const FT& z) { return z < zlo || zhi < z; }),
+      events.end());
   std::sort(events.begin(), events.end());
   events.erase(std::unique(events.begin(), events.end()), events.end());
   FT volume = 0;
@@ -299,12 +311,14 @@ FT group_volume(const std::vector<const Prim*>& solids, const std::vector<const 
         if (p->present(m)) h.push_back(p);
       if (h.empty() && mode == Mode::cut) continue;
     }
-    const bool moving = std::any_of(s.begin(), s.end(), [&](const Prim* p) { return moves(*p, m); }) ||
-                        std::any_of(h.begin(), h.end(), [&](const Prim* p) { return moves(*p, m); });
-    if (!moving)
-      volume += area_at(s, h, mode, m, m) * (b - a);
+    const bool moving =
+        std::any_of(s.begin(), s.end(), [&](const Prim* p) { return moves(*p, m); }) ||
+        std::any_of(h.begin(), h.end(), [&](const Prim* p) { return moves(*p, m); });
+    if (!moving) volume += area_at(s, h, mode, m, m) * (b - a);
     else
-      volume += (area_at(s, h, mode, m, a) + 4 * area_at(s, h, mode, m, m) + area_at(s, h, mode, m, b)) * (b - a) / 6;
+      volume +=
+          (area_at(s, h, mode, m, a) + 4 * area_at(s, h, mode, m, m) + area_at(s, h, mode, m, b)) *
+          (b - a) / 6;
   }
   return volume;
 }
@@ -318,7 +332,8 @@ Prim wall_prim(const detail::WallFrame& f) {
     p.zmax = f.top;
     p.heights = {p.zmin, p.zmax};
     for (std::size_t i = 0; i < p.outline.size(); ++i)
-      p.faces.push_back(vertical_face(p.outline[i], p.outline[(i + 1) % p.outline.size()], f.base, f.top));
+      p.faces.push_back(
+          vertical_face(p.outline[i], p.outline[(i + 1) % p.outline.size()], f.base, f.top));
   } else {
     p.kind = Prim::Kind::sloped;
     p.fx = f.from.x, p.fy = f.from.y, p.ex = FT(f.to.x) - f.from.x, p.ey = FT(f.to.y) - f.from.y;
@@ -335,9 +350,11 @@ Prim wall_prim(const detail::WallFrame& f) {
     if (first) p.zmax = p.top_min = p.zmin;
     const double zlo = CGAL::to_double(p.top_min), zhi = CGAL::to_double(p.zmax);
     for (std::size_t i = 0; i < p.outline.size(); ++i)
-      p.faces.push_back(vertical_face(p.outline[i], p.outline[(i + 1) % p.outline.size()], f.base, zhi));
+      p.faces.push_back(
+          vertical_face(p.outline[i], p.outline[(i + 1) % p.outline.size()], f.base, zhi));
     Face top;  // k (x - fx) ex + k (y - fy) ey - (z - top) l2 = 0
-    top.a = p.k * p.ex, top.b = p.k * p.ey, top.c = -p.l2, top.d = p.top * p.l2 - p.k * (p.fx * p.ex + p.fy * p.ey);
+    top.a = p.k * p.ex, top.b = p.k * p.ey, top.c = -p.l2,
+    top.d = p.top * p.l2 - p.k * (p.fx * p.ex + p.fy * p.ey);
     top.tilted = true;
     for (const Point& q : p.outline) top.box.add_xy(q, zlo, zhi);
     top.box = top.box.widened();
@@ -355,7 +372,8 @@ Prim rect_hole_prim(const detail::WallFrame& f, const detail::Hole& h) {
   p.zmin = h.z0, p.zmax = h.z1;
   p.heights = {p.zmin, p.zmax};
   for (std::size_t i = 0; i < p.outline.size(); ++i)
-    p.faces.push_back(vertical_face(p.outline[i], p.outline[(i + 1) % p.outline.size()], h.z0, h.z1));
+    p.faces.push_back(
+        vertical_face(p.outline[i], p.outline[(i + 1) % p.outline.size()], h.z0, h.z1));
   for (const Point& q : p.outline) p.box.add_xy(q, h.z0, h.z1);
   p.box = p.box.widened();
   return p;
@@ -465,7 +483,8 @@ double analytic_wall_volume(const Plan& input) {
     if (w.outline.size() >= 3 && w.zmin < w.zmax) solids.push_back(std::move(w));
     for (const detail::Hole& h : f.holes) {
       Prim p = h.shape.size() >= 3 ? shaped_hole_prim(f, h) : rect_hole_prim(f, h);
-      if (p.zmin < p.zmax && (p.kind == Prim::Kind::shaped || p.outline.size() >= 3)) holes.push_back(std::move(p));
+      if (p.zmin < p.zmax && (p.kind == Prim::Kind::shaped || p.outline.size() >= 3))
+        holes.push_back(std::move(p));
     }
   }
   for (const detail::SlabFrame& s : detail::make_slab_frames(plan, frames)) {
@@ -491,7 +510,8 @@ double analytic_wall_volume(const Plan& input) {
     if (p.kind != Prim::Kind::sloped) continue;
     std::vector<const Prim*> near;
     for (std::size_t j = 0; j < solids.size(); ++j)
-      if ((solids[j].kind != Prim::Kind::sloped || j < i) && solids[j].box.overlaps(p.box)) near.push_back(&solids[j]);
+      if ((solids[j].kind != Prim::Kind::sloped || j < i) && solids[j].box.overlaps(p.box))
+        near.push_back(&solids[j]);
     volume += group_volume({&p}, near, Mode::minus, p.zmin, p.zmax);
   }
   // Holes in clusters of overlapping boxes: each cluster's part of the solid apart.

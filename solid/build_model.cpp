@@ -7,17 +7,17 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include "solid/detail/frames/buildable_plan.h"
-#include "solid/detail/nef/cgal_booleans.h"
-#include "solid/detail/frames/clusters.h"
-#include "solid/detail/assembly/face_soup.h"
-#include "solid/detail/fast_path/fast_wall.h"
-#include "solid/detail/frames/fine_features.h"
-#include "solid/detail/assembly/floor_fixtures.h"
-#include "solid/detail/fast_path/fuse_seams.h"
-#include "solid/detail/general_path/general_solid.h"
-#include "solid/detail/frames/wall_frame.h"
 #include "geometry/joins.h"
+#include "solid/detail/assembly/face_soup.h"
+#include "solid/detail/assembly/floor_fixtures.h"
+#include "solid/detail/fast_path/fast_wall.h"
+#include "solid/detail/fast_path/fuse_seams.h"
+#include "solid/detail/frames/buildable_plan.h"
+#include "solid/detail/frames/clusters.h"
+#include "solid/detail/frames/fine_features.h"
+#include "solid/detail/frames/wall_frame.h"
+#include "solid/detail/general_path/general_solid.h"
+#include "solid/detail/nef/cgal_booleans.h"
 #include "solid/wall_check.h"
 
 namespace roomcad {
@@ -37,7 +37,8 @@ FaceSoup build_item(const Plan& plan, const Frames& frames, const detail::Work& 
                     const WorkItem& item, const BuildOptions& options) {
   const BooleanPath path = options.boolean;
   const int first_opening = detail::opening_object(plan, 0);
-  if (item.kind == WorkItem::Kind::hub) return detail::build_hub(work.hubs[item.hub], work.fast_frames);
+  if (item.kind == WorkItem::Kind::hub)
+    return detail::build_hub(work.hubs[item.hub], work.fast_frames);
   if (item.kind == WorkItem::Kind::fast_wall) {
     const WallFrame& f = work.fast_frames[item.walls.front()];
     return detail::build_fast_wall(f, static_cast<int>(f.wall), first_opening);
@@ -49,9 +50,11 @@ FaceSoup build_item(const Plan& plan, const Frames& frames, const detail::Work& 
   for (std::size_t i : item.slabs) slabs.push_back(&frames.slabs[i]);
   if (uses_nef(path)) {
     if (!slabs.empty())
-      throw PreconditionError(fmt::format("build_model: slab '{}' is not built by the Nef path (--boolean nef); "
-                                          "the default path builds slabs", plan.slabs[slabs.front()->slab].id),
-                              Code::not_buildable);
+      throw PreconditionError(
+          fmt::format("build_model: slab '{}' is not built by the Nef path (--boolean nef); "
+                      "the default path builds slabs",
+                      plan.slabs[slabs.front()->slab].id),
+          Code::not_buildable);
     return detail::build_cluster_cgal(walls, first_opening);
   }
   return detail::build_cluster_general(walls, slabs, first_opening, detail::slab_object(plan, 0),
@@ -87,7 +90,8 @@ void keep_parts(detail::Work& work, const Parts& parts) {
     if (!parts.walls) item.walls.clear();
   }
   std::erase_if(work.items, [&](const WorkItem& item) {
-    return item.kind == WorkItem::Kind::hub ? !parts.walls : item.walls.empty() && item.slabs.empty();
+    return item.kind == WorkItem::Kind::hub ? !parts.walls
+                                            : item.walls.empty() && item.slabs.empty();
   });
 }
 
@@ -108,7 +112,8 @@ void require_written_solid(const Model& model, const Plan& plan, const std::stri
 void count_paths(const std::vector<WorkItem>& items, BooleanPath path, BuildStats& stats) {
   std::size_t& cluster_walls = uses_nef(path) ? stats.nef_path_walls : stats.general_path_walls;
   for (const WorkItem& item : items)
-    (item.kind == WorkItem::Kind::cluster ? cluster_walls : stats.fast_path_walls) += item.walls.size();
+    (item.kind == WorkItem::Kind::cluster ? cluster_walls : stats.fast_path_walls) +=
+        item.walls.size();
 }
 
 }  // namespace
@@ -131,7 +136,8 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
   const detail::BuildablePlan buildable = detail::make_buildable(input);
   const Plan& plan = buildable.plan;
   const Joins joins = find_joins(plan);
-  const std::vector<WallFrame> frames = detail::make_wall_frames(plan, joins, buildable.through_mitre);
+  const std::vector<WallFrame> frames =
+      detail::make_wall_frames(plan, joins, buildable.through_mitre);
   BuildStats local;
   std::vector<FaceSoup> walls;
   if (options.parts.walls || options.parts.slabs) {
@@ -156,7 +162,8 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
   detail::require_closed(model.walls, model.objects);
   if (options.parts.walls)
     if (const auto fine = detail::fine_feature(input)) require_written_solid(model, input, *fine);
-  local.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  local.build_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats != nullptr) *stats = local;
   return model;
 }

@@ -8,16 +8,17 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "plan/plan.h"
 #include "mesh/parts.h"
 #include "mesh/solid_mesh.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 
 enum class BooleanPath {
   automatic,  ///< per wall: the exact fast path where no boolean is needed, else the general path
-  general,    ///< the exact general path (plane by plane, solid/detail/general_path/general_solid.h) for every wall
-  nef,        ///< CGAL's exact Nef polyhedra for every wall: the reference, to compare against
+  general,  ///< the exact general path (plane by plane, solid/detail/general_path/general_solid.h)
+            ///< for every wall
+  nef,      ///< CGAL's exact Nef polyhedra for every wall: the reference, to compare against
   fast_then_nef,  ///< the fast path where it applies, Nef polyhedra for the rest: the automatic
                   ///< build before the general path, kept for benchmarks
 };
@@ -32,9 +33,10 @@ struct BuildOptions {
   Parts parts;
   int threads = 0;  ///< 0: all cores; output is identical at any thread count
   /// The general path's planes whose polygons are rectangles along their axes, nearly all
-  /// (walls drawn along x and y), built on the grid of their lines (solid/detail/general_path/grid_faces.h);
-  /// false: every plane through the general 2D boolean (but for the faces no other polygon of
-  /// their plane meets: solid/detail/general_path/lone_faces.h), the reference for tests and benchmarks.
+  /// (walls drawn along x and y), built on the grid of their lines
+  /// (solid/detail/general_path/grid_faces.h); false: every plane through the general 2D boolean
+  /// (but for the faces no other polygon of their plane meets:
+  /// solid/detail/general_path/lone_faces.h), the reference for tests and benchmarks.
   bool grid_planes = true;
 };
 

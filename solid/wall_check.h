@@ -7,8 +7,8 @@
 #include <string>
 
 #include "mesh/mesh_check.h"
-#include "plan/plan.h"
 #include "mesh/solid_mesh.h"
+#include "plan/plan.h"
 
 namespace roomcad {
 

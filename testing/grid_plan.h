@@ -18,7 +18,8 @@ struct GridSpec {
   double room = 4.0;
   double thickness = 0.2;
   double height = 2.8;
-  bool entrance = false;  ///< a door to the outside in the first south wall (instead of its middle window)
+  bool entrance =
+      false;  ///< a door to the outside in the first south wall (instead of its middle window)
 };
 
 inline void add_grid_wall(Plan& plan, Point2 from, Point2 to, bool outer, const GridSpec& g) {
@@ -28,7 +29,8 @@ inline void add_grid_wall(Plan& plan, Point2 from, Point2 to, bool outer, const 
   auto add = [&](OpeningType type, double offset, double width, double sill, double height) {
     Opening& o = plan.openings.emplace_back();
     o.id = fmt::format("o{}", plan.openings.size() - 1);
-    o.type = type, o.wall = w.id, o.offset = offset, o.width = width, o.sill = sill, o.height = height;
+    o.type = type, o.wall = w.id, o.offset = offset, o.width = width, o.sill = sill,
+    o.height = height;
   };
   if (!outer) {
     add(OpeningType::door, 0.4 * g.room - 0.45, 0.9, 0.0, 2.1);
@@ -45,7 +47,8 @@ inline void add_grid_wall(Plan& plan, Point2 from, Point2 to, bool outer, const 
 inline Plan make_grid_plan(const GridSpec& g) {
   Plan plan;
   plan.site.origin = {-1.0, -1.0};
-  plan.site.cells = {static_cast<std::int64_t>(g.n * g.room) + 2, static_cast<std::int64_t>(g.n * g.room) + 2};
+  plan.site.cells = {static_cast<std::int64_t>(g.n * g.room) + 2,
+                     static_cast<std::int64_t>(g.n * g.room) + 2};
   plan.site.max_height = g.height + 1.0;
   for (int j = 0; j <= g.n; ++j)
     for (int i = 0; i < g.n; ++i) {

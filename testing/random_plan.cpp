@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <iterator>
 #include <limits>
-#include <cmath>
 #include <string>
 
 namespace roomcad::samples {
@@ -48,7 +48,8 @@ class Generator {
     for (std::size_t i = rng_.below(options_.max_walls + 1); i > 0; --i) p.walls.push_back(wall());
     for (std::size_t i = rng_.below(options_.max_openings + 1); i > 0; --i)
       p.openings.push_back(opening(p));
-    for (std::size_t i = rng_.below(options_.max_lights + 1); i > 0; --i) p.lights.push_back(light());
+    for (std::size_t i = rng_.below(options_.max_lights + 1); i > 0; --i)
+      p.lights.push_back(light());
     for (std::size_t i = rng_.below(options_.max_cameras + 1); i > 0; --i)
       p.cameras.push_back(camera());
     extras(p.extra);
@@ -62,14 +63,19 @@ class Generator {
       switch (rng_.below(8)) {
         case 0: return -0.0;
         case 1: return 0.0;
-        case 2: return std::numeric_limits<double>::denorm_min() * static_cast<double>(1 + rng_.below(1000));
-        case 3: return std::numeric_limits<double>::max() / static_cast<double>(1 + rng_.below(1000));
-        case 4: return 1e15 + static_cast<double>(rng_.below(1000));  // where integers stop being plain
+        case 2:
+          return std::numeric_limits<double>::denorm_min() *
+                 static_cast<double>(1 + rng_.below(1000));
+        case 3:
+          return std::numeric_limits<double>::max() / static_cast<double>(1 + rng_.below(1000));
+        case 4:
+          return 1e15 + static_cast<double>(rng_.below(1000));  // where integers stop being plain
         case 5: return std::ldexp(rng_.uniform(-1, 1), static_cast<int>(rng_.below(200)) - 100);
         case 6: return 1.0 / 3.0 * static_cast<double>(1 + rng_.below(9));
         default: {
           double x;
-          do x = std::bit_cast<double>(rng_.next()); while (!std::isfinite(x));
+          do x = std::bit_cast<double>(rng_.next());
+          while (!std::isfinite(x));
           return x;
         }
       }
@@ -89,8 +95,8 @@ class Generator {
   std::string id(std::string_view prefix) {
     std::string s = std::string(prefix) + std::to_string(counter_++);
     if (options_.awkward_strings && rng_.chance(25)) {
-      static const char* const kPieces[] = {"\"", "\\", "/", "~", "~1", "\n", "\t", "\x01", "\x1f",
-                                            "é", "日本", "😀", " ", "\x7f"};
+      static const char* const kPieces[] = {"\"",   "\\",   "/", "~",    "~1", "\n", "\t",
+                                            "\x01", "\x1f", "é", "日本", "😀",  " ",  "\x7f"};
       s += kPieces[rng_.below(std::size(kPieces))];
     }
     return s;
@@ -106,7 +112,8 @@ class Generator {
       case 4: return "\"s" + std::to_string(rng_.below(100)) + "\"";
       case 5: {
         std::string s = "[";
-        for (std::size_t i = rng_.below(4); i > 0; --i) s += (s.size() > 1 ? ", " : "") + json_value(depth + 1);
+        for (std::size_t i = rng_.below(4); i > 0; --i)
+          s += (s.size() > 1 ? ", " : "") + json_value(depth + 1);
         return s + "]";
       }
       default: {
@@ -143,7 +150,8 @@ class Generator {
     Opening o;
     o.id = id("o");
     o.type = rng_.chance(50) ? OpeningType::door : OpeningType::window;
-    o.wall = p.walls.empty() || rng_.chance(10) ? id("missing") : p.walls[rng_.below(p.walls.size())].id;
+    o.wall =
+        p.walls.empty() || rng_.chance(10) ? id("missing") : p.walls[rng_.below(p.walls.size())].id;
     o.offset = number(0.0, 10.0);
     o.width = number(0.5, 2.0);
     o.height = number(0.5, 2.5);

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A generated multi-storey home for benchmarks and tests (plan format version 2): `storeys`
 // levels, each the n x n grid of rooms of grid_plan.h on its own level, standing on a floor
-// slab that covers the grid to the outer walls' faces, with a stair well in its first room above the ground storey.
-// Storey k is level "L<k>" at elevation k x (height + floor); its walls stand on its floor
-// (base 0) and reach the underside of the next floor. n = 6, 6 storeys: 504 walls, 6 slabs.
+// slab that covers the grid to the outer walls' faces, with a stair well in its first room above
+// the ground storey. Storey k is level "L<k>" at elevation k x (height + floor); its walls stand on
+// its floor (base 0) and reach the underside of the next floor. n = 6, 6 storeys: 504 walls, 6
+// slabs.
 #pragma once
 
 #include <fmt/format.h>
@@ -44,9 +45,12 @@ inline Plan make_tower_plan(const TowerSpec& t) {
     Slab& floor = plan.slabs.emplace_back();
     floor.id = fmt::format("{}-floor", level);
     floor.level = level;
-    floor.outline = {{-face, -face}, {side + face, -face}, {side + face, side + face}, {-face, side + face}};
+    floor.outline = {
+        {-face, -face}, {side + face, -face}, {side + face, side + face}, {-face, side + face}};
     const double r = g.room;
-    if (k > 0) floor.holes = {{{0.15 * r, 0.15 * r}, {0.4 * r, 0.15 * r}, {0.4 * r, 0.8 * r}, {0.15 * r, 0.8 * r}}};
+    if (k > 0)
+      floor.holes = {
+          {{0.15 * r, 0.15 * r}, {0.4 * r, 0.15 * r}, {0.4 * r, 0.8 * r}, {0.15 * r, 0.8 * r}}};
     floor.top = 0.0;
     floor.thickness = t.floor;
   }

@@ -15,7 +15,8 @@ namespace {
 /// Quotes a command-line word when the shell would split or expand it.
 std::string shell_word(std::string_view word) {
   const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || std::string_view("-_./,:=#+").find(c) != std::string_view::npos;
+    return std::isalnum(static_cast<unsigned char>(c)) ||
+           std::string_view("-_./,:=#+").find(c) != std::string_view::npos;
   });
   if (plain) return std::string(word);
   std::string out = "'";
@@ -57,9 +58,7 @@ void apply_fix_edits(Plan& plan, const std::vector<FixEdit>& edits) {
       case FixEdit::Op::set:
         for (const auto& [key, value] : edit.fields) set_or_throw(plan, edit.id, key, value, "set");
         break;
-      case FixEdit::Op::add:
-        apply_add(plan, edit);
-        break;
+      case FixEdit::Op::add: apply_add(plan, edit); break;
       case FixEdit::Op::remove:
         remove_object(plan, edit.id, RemoveOptions{.cascade = edit.cascade});
         break;
@@ -85,7 +84,8 @@ std::string edit_command(const FixEdit& edit, std::string_view plan_file) {
       return fmt::format("roomcad add {} {} --id {}{}", plan, kind, shell_word(edit.id), options);
     }
     case FixEdit::Op::remove:
-      return fmt::format("roomcad rm {} {}{}", plan, shell_word(edit.id), edit.cascade ? " --cascade" : "");
+      return fmt::format("roomcad rm {} {}{}", plan, shell_word(edit.id),
+                         edit.cascade ? " --cascade" : "");
   }
   return {};
 }

@@ -6,8 +6,9 @@
 namespace roomcad {
 
 std::size_t Report::error_count() const {
-  return static_cast<std::size_t>(std::count_if(
-      items.begin(), items.end(), [](const Diagnostic& d) { return d.severity == Severity::error; }));
+  return static_cast<std::size_t>(
+      std::count_if(items.begin(), items.end(),
+                    [](const Diagnostic& d) { return d.severity == Severity::error; }));
 }
 
 std::size_t Report::warning_count() const { return items.size() - error_count(); }

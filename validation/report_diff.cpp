@@ -43,14 +43,17 @@ std::vector<std::string> item_ids(const Report& report) {
     std::sort(ids.begin(), ids.end());
     std::string id = std::string(to_string(d.code)) + ':';
     for (std::size_t i = 0; i < ids.size(); ++i) id += (i ? "+" : "") + ids[i];
-    if (ids.empty()) id += d.location && !d.location->pointer.empty() ? d.location->pointer : d.message;
+    if (ids.empty())
+      id += d.location && !d.location->pointer.empty() ? d.location->pointer : d.message;
     const int repeat = ++seen[id];
     out.push_back(repeat == 1 ? id : id + '#' + std::to_string(repeat));
   }
   return out;
 }
 
-std::string_view to_string(ItemStatus status) { return status == ItemStatus::added ? "new" : "unchanged"; }
+std::string_view to_string(ItemStatus status) {
+  return status == ItemStatus::added ? "new" : "unchanged";
+}
 
 ReportComparison compare_reports(const Report& baseline, const Report& current) {
   ReportComparison c;

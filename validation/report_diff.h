@@ -32,9 +32,9 @@ enum class ItemStatus : std::uint8_t { added, unchanged };
 [[nodiscard]] std::string_view to_string(ItemStatus status);
 
 struct ReportComparison {
-  std::vector<std::string> ids;       ///< item_ids of the current report
-  std::vector<ItemStatus> status;     ///< by item of the current report
-  Report fixed;                       ///< items of the baseline that are gone
+  std::vector<std::string> ids;    ///< item_ids of the current report
+  std::vector<ItemStatus> status;  ///< by item of the current report
+  Report fixed;                    ///< items of the baseline that are gone
   std::vector<std::string> fixed_ids;
 };
 

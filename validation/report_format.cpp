@@ -24,12 +24,9 @@ std::string json_point(const Point2& p) {
 
 std::string_view op_name(FixEdit::Op op) {
   switch (op) {
-    case FixEdit::Op::add:
-      return "add";
-    case FixEdit::Op::remove:
-      return "rm";
-    default:
-      return "set";
+    case FixEdit::Op::add: return "add";
+    case FixEdit::Op::remove: return "rm";
+    default: return "set";
   }
 }
 
@@ -44,7 +41,8 @@ std::string json_edits(const std::vector<FixEdit>& edits, const std::string& pla
     } else {
       out += ", \"fields\": {";
       for (std::size_t k = 0; k < e.fields.size(); ++k)
-        out += (k ? ", " : "") + json_string(e.fields[k].first) + ": " + json_string(e.fields[k].second);
+        out += (k ? ", " : "") + json_string(e.fields[k].first) + ": " +
+               json_string(e.fields[k].second);
       out += '}';
     }
     out += ", \"command\": " + json_string(edit_command(e, plan_file)) + '}';
@@ -61,7 +59,8 @@ struct ItemExtras {
 std::string json_item(const Diagnostic& d, const ItemExtras& extras, const std::string& plan_file) {
   std::string out = "{";
   if (extras.id) out += "\"id\": " + json_string(*extras.id) + ", ";
-  if (extras.status) out += "\"status\": " + json_string(std::string(to_string(*extras.status))) + ", ";
+  if (extras.status)
+    out += "\"status\": " + json_string(std::string(to_string(*extras.status))) + ", ";
   out += "\"code\": " + json_string(std::string(to_string(d.code))) + ", \"objects\": [";
   for (std::size_t i = 0; i < d.objects.size(); ++i)
     out += (i ? ", " : "") + json_string(d.objects[i]);
@@ -83,9 +82,10 @@ std::string json_item(const Diagnostic& d, const ItemExtras& extras, const std::
 }
 
 /// The items of one severity (or all, for the fixed list), one per line.
-std::string json_items(const Report& report, std::optional<Severity> severity, const ReportFormatOptions& o,
-                       const std::vector<std::string>* ids, const std::vector<ItemStatus>* status,
-                       const char* indent = "\n    ", const char* close = "\n  ]") {
+std::string json_items(const Report& report, std::optional<Severity> severity,
+                       const ReportFormatOptions& o, const std::vector<std::string>* ids,
+                       const std::vector<ItemStatus>* status, const char* indent = "\n    ",
+                       const char* close = "\n  ]") {
   std::string out;
   for (std::size_t i = 0; i < report.items.size(); ++i) {
     const Diagnostic& d = report.items[i];
@@ -120,7 +120,8 @@ std::string plural(std::size_t n, const char* word) {
 
 std::string format_report_json(const Report& report, const ReportFormatOptions& o) {
   const ReportComparison* c = o.comparison;
-  const std::vector<std::string> own_ids = o.ids && !c ? item_ids(report) : std::vector<std::string>{};
+  const std::vector<std::string> own_ids =
+      o.ids && !c ? item_ids(report) : std::vector<std::string>{};
   const std::vector<std::string>* ids = c ? &c->ids : o.ids ? &own_ids : nullptr;
   const std::vector<ItemStatus>* status = c ? &c->status : nullptr;
   std::string out = std::string("{\n  \"ok\": ") + (report.ok() ? "true" : "false") +
@@ -128,9 +129,11 @@ std::string format_report_json(const Report& report, const ReportFormatOptions& 
                     ",\n  \"warnings\": " + json_items(report, Severity::warning, o, ids, status);
   if (c) {
     const auto added = std::count(c->status.begin(), c->status.end(), ItemStatus::added);
-    out += ",\n  \"baseline\": {\"file\": " + json_string(o.baseline_file) + ", \"new\": " + std::to_string(added) +
-           ", \"unchanged\": " + std::to_string(c->status.size() - static_cast<std::size_t>(added)) +
-           ", \"fixed\": " + json_items(c->fixed, std::nullopt, o, &c->fixed_ids, nullptr, "\n      ", "\n    ]") + '}';
+    out += ",\n  \"baseline\": {\"file\": " + json_string(o.baseline_file) +
+           ", \"new\": " + std::to_string(added) + ", \"unchanged\": " +
+           std::to_string(c->status.size() - static_cast<std::size_t>(added)) + ", \"fixed\": " +
+           json_items(c->fixed, std::nullopt, o, &c->fixed_ids, nullptr, "\n      ", "\n    ]") +
+           '}';
   }
   return out + "\n}\n";
 }
@@ -149,8 +152,10 @@ std::string format_report_text(const Report& report, bool colour, const ReportFo
     for (std::size_t i = 0; i < d.objects.size(); ++i) out += (i ? ", " : " ") + d.objects[i];
     out += ": " + d.message + '\n';
     if (d.where) {
-      out += "  at: " + (d.where->max ? text_point(d.where->min) + " .. " + text_point(*d.where->max)
-                                      : text_point(d.where->min)) + " m\n";
+      out += "  at: " +
+             (d.where->max ? text_point(d.where->min) + " .. " + text_point(*d.where->max)
+                           : text_point(d.where->min)) +
+             " m\n";
     }
     if (!d.fix.empty()) out += "  fix: " + d.fix + '\n';
     for (const FixEdit& e : d.edits) out += "  edit: " + edit_command(e, o.plan_file) + '\n';
@@ -165,13 +170,15 @@ std::string format_report_text(const Report& report, bool colour, const ReportFo
 }
 
 std::string format_report_summary(const Report& report, const ReportFormatOptions& o) {
-  std::string out = report.items.empty()
-                        ? "no problems"
-                        : plural(report.error_count(), "error") + ", " + plural(report.warning_count(), "warning");
+  std::string out = report.items.empty() ? "no problems"
+                                         : plural(report.error_count(), "error") + ", " +
+                                               plural(report.warning_count(), "warning");
   if (const ReportComparison* c = o.comparison) {
-    const auto added = static_cast<std::size_t>(std::count(c->status.begin(), c->status.end(), ItemStatus::added));
+    const auto added =
+        static_cast<std::size_t>(std::count(c->status.begin(), c->status.end(), ItemStatus::added));
     out += "; against " + o.baseline_file + ": " + std::to_string(added) + " new, " +
-           std::to_string(c->status.size() - added) + " unchanged, " + std::to_string(c->fixed.items.size()) + " fixed";
+           std::to_string(c->status.size() - added) + " unchanged, " +
+           std::to_string(c->fixed.items.size()) + " fixed";
   }
   return out;
 }

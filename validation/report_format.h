@@ -26,7 +26,8 @@ struct ReportFormatOptions {
 /// `options.ids` each item also has `id`; with a comparison, `status` ("new" or
 /// "unchanged"), and the object ends with `"baseline": {"file", "new", "unchanged",
 /// "fixed": [items]}`. Ends with a newline.
-[[nodiscard]] std::string format_report_json(const Report& report, const ReportFormatOptions& options = {});
+[[nodiscard]] std::string format_report_json(const Report& report,
+                                             const ReportFormatOptions& options = {});
 
 /// @return one block per item, errors and warnings in report order:
 /// `error[code] a, b: message`, then indented `at: ...` (where), `fix: ...` and `edit: roomcad
@@ -38,6 +39,7 @@ struct ReportFormatOptions {
 
 /// @return "2 errors, 1 warning", or "no problems"; with a comparison, then "; against
 /// FILE: 1 new, 2 unchanged, 3 fixed".
-[[nodiscard]] std::string format_report_summary(const Report& report, const ReportFormatOptions& options = {});
+[[nodiscard]] std::string format_report_summary(const Report& report,
+                                                const ReportFormatOptions& options = {});
 
 }  // namespace roomcad

@@ -33,7 +33,8 @@ constexpr ThresholdKey kThresholdKeys[] = {
     {Code::window_sill_high, "max_sill", &RuleThresholds::window_max_sill},
 };
 
-constexpr std::string_view kTopLevelKeys[] = {"format", "version", "base", "rules", "accessible_rooms"};
+constexpr std::string_view kTopLevelKeys[] = {"format", "version", "base", "rules",
+                                              "accessible_rooms"};
 
 /// A failure while reading: the JSON pointer and what is wrong there.
 struct Problem {
@@ -42,7 +43,8 @@ struct Problem {
 };
 
 Error usage_error(const std::string& file, const Problem& p) {
-  return {Code::usage_error, fmt::format("{}: {}: {}", file, p.pointer.empty() ? "/" : p.pointer, p.what),
+  return {Code::usage_error,
+          fmt::format("{}: {}: {}", file, p.pointer.empty() ? "/" : p.pointer, p.what),
           Location{file, p.pointer, 0, 0}};
 }
 
@@ -70,8 +72,9 @@ std::vector<std::string_view> rule_names() {
 std::optional<Problem> read_threshold(const Json& value, const std::string& pointer, double& out) {
   if (!value.is_number() || !std::isfinite(value.get<double>()) || !(value.get<double>() > 0) ||
       value.get<double>() > 1e6)
-    return Problem{pointer, fmt::format("expected a positive number of metres (at most 1e6), found {}",
-                                        value_text(value))};
+    return Problem{pointer,
+                   fmt::format("expected a positive number of metres (at most 1e6), found {}",
+                               value_text(value))};
   out = value.get<double>();
   return std::nullopt;
 }
@@ -83,7 +86,8 @@ std::optional<Problem> read_rule_object(const Json& body, Code rule, const std::
   for (const auto& [key, value] : body.items()) {
     const std::string at = pointer + '/' + key;
     if (key == "enabled") {
-      if (!value.is_boolean()) return Problem{at, "expected true or false, found " + value_text(value)};
+      if (!value.is_boolean())
+        return Problem{at, "expected true or false, found " + value_text(value)};
       set.enabled[index] = value.get<bool>();
       continue;
     }
@@ -101,31 +105,37 @@ std::optional<Problem> read_rule_object(const Json& body, Code rule, const std::
       known.push_back(t.key);
       if (t.key == key) match = &t;
     }
-    if (!match) return Problem{at, unknown_name(fmt::format("setting of {}", to_string(rule)), key, known)};
+    if (!match)
+      return Problem{at, unknown_name(fmt::format("setting of {}", to_string(rule)), key, known)};
     if (auto p = read_threshold(value, at, set.thresholds.*(match->field))) return p;
   }
   return std::nullopt;
 }
 
 std::optional<Problem> read_rules(const Json& rules, RuleSet& set) {
-  if (!rules.is_object()) return Problem{"/rules", "expected an object of rules, found " + value_text(rules)};
+  if (!rules.is_object())
+    return Problem{"/rules", "expected an object of rules, found " + value_text(rules)};
   for (const auto& [name, body] : rules.items()) {
     const std::string pointer = "/rules/" + name;
     const std::optional<Code> code = parse_code(name);
-    if (!code || !rule_index(*code)) return Problem{pointer, unknown_name("rule", name, rule_names())};
+    if (!code || !rule_index(*code))
+      return Problem{pointer, unknown_name("rule", name, rule_names())};
     if (body.is_boolean()) {
       set.enabled[*rule_index(*code)] = body.get<bool>();
     } else if (body.is_object()) {
       if (auto p = read_rule_object(body, *code, pointer, set)) return p;
     } else {
-      return Problem{pointer, "expected true, false or an object of settings, found " + value_text(body)};
+      return Problem{pointer,
+                     "expected true, false or an object of settings, found " + value_text(body)};
     }
   }
   return std::nullopt;
 }
 
 std::optional<Problem> read_accessible_rooms(const Json& rooms, RuleSet& set) {
-  if (!rooms.is_array()) return Problem{"/accessible_rooms", "expected an array of points [x, y], found " + value_text(rooms)};
+  if (!rooms.is_array())
+    return Problem{"/accessible_rooms",
+                   "expected an array of points [x, y], found " + value_text(rooms)};
   std::vector<Point2> points;
   for (std::size_t i = 0; i < rooms.size(); ++i) {
     const Json& p = rooms[i];
@@ -141,8 +151,10 @@ std::optional<Problem> read_accessible_rooms(const Json& rooms, RuleSet& set) {
 
 std::optional<Problem> read_header(const Json& doc, RuleSet& set) {
   for (const auto& [key, value] : doc.items())
-    if (std::find(std::begin(kTopLevelKeys), std::end(kTopLevelKeys), key) == std::end(kTopLevelKeys))
-      return Problem{'/' + key, unknown_name("field", key, {std::begin(kTopLevelKeys), std::end(kTopLevelKeys)})};
+    if (std::find(std::begin(kTopLevelKeys), std::end(kTopLevelKeys), key) ==
+        std::end(kTopLevelKeys))
+      return Problem{'/' + key, unknown_name("field", key,
+                                             {std::begin(kTopLevelKeys), std::end(kTopLevelKeys)})};
   if (doc.contains("format") && doc["format"] != "roomcad-rules")
     return Problem{"/format", "expected \"roomcad-rules\", found " + value_text(doc["format"])};
   if (doc.contains("version") && doc["version"] != 1)
@@ -152,9 +164,10 @@ std::optional<Problem> read_header(const Json& doc, RuleSet& set) {
   const std::optional<RuleSet> builtin =
       base.is_string() ? builtin_rule_set(base.get<std::string>()) : std::nullopt;
   if (!builtin)
-    return Problem{"/base", base.is_string() ? unknown_name("rule set", base.get<std::string>(),
-                                                            builtin_rule_set_names())
-                                             : "expected a rule set name, found " + value_text(base)};
+    return Problem{"/base",
+                   base.is_string()
+                       ? unknown_name("rule set", base.get<std::string>(), builtin_rule_set_names())
+                       : "expected a rule set name, found " + value_text(base)};
   set.enabled = builtin->enabled;
   return std::nullopt;
 }
@@ -162,7 +175,8 @@ std::optional<Problem> read_header(const Json& doc, RuleSet& set) {
 /// @return "line L, column C" of a byte offset in text.
 std::string line_and_column(std::string_view text, std::size_t offset) {
   offset = std::min(offset, text.size());
-  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + offset, '\n'));
+  const std::size_t line =
+      1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + offset, '\n'));
   const std::size_t start = text.rfind('\n', offset == 0 ? 0 : offset - 1);
   const std::size_t column = offset - (start == std::string_view::npos ? 0 : start + 1) + 1;
   return fmt::format("{}:{}", line, column);
@@ -185,7 +199,9 @@ bool RuleSet::any_enabled() const {
   return std::any_of(enabled.begin(), enabled.end(), [](bool on) { return on; });
 }
 
-std::vector<std::string_view> builtin_rule_set_names() { return {"default", "accessibility", "all"}; }
+std::vector<std::string_view> builtin_rule_set_names() {
+  return {"default", "accessibility", "all"};
+}
 
 std::optional<RuleSet> builtin_rule_set(std::string_view name) {
   RuleSet set;
@@ -208,16 +224,19 @@ Result<RuleSet> parse_rule_set(std::string_view text, const std::string& file) {
     doc = Json::parse(text);
   } catch (const Json::parse_error& e) {
     return Error{Code::usage_error,
-                 fmt::format("{}:{}: not a rules file: invalid JSON", file, line_and_column(text, e.byte == 0 ? 0 : e.byte - 1)),
+                 fmt::format("{}:{}: not a rules file: invalid JSON", file,
+                             line_and_column(text, e.byte == 0 ? 0 : e.byte - 1)),
                  Location{file, "", 0, 0}};
   }
   if (!doc.is_object())
-    return usage_error(file, {"", "expected a JSON object with \"rules\", found " + value_text(doc)});
+    return usage_error(file,
+                       {"", "expected a JSON object with \"rules\", found " + value_text(doc)});
   RuleSet set;
   set.name = file;
   std::optional<Problem> problem = read_header(doc, set);
   if (!problem && doc.contains("rules")) problem = read_rules(doc["rules"], set);
-  if (!problem && doc.contains("accessible_rooms")) problem = read_accessible_rooms(doc["accessible_rooms"], set);
+  if (!problem && doc.contains("accessible_rooms"))
+    problem = read_accessible_rooms(doc["accessible_rooms"], set);
   if (problem) return usage_error(file, *problem);
   return set;
 }

@@ -30,9 +30,9 @@ inline constexpr std::array<Code, 10> kRuleCodes = {
 
 /// Thresholds, metres. The spec's defaults; the sill limits are roomcad's (docs/plan-format.md).
 struct RuleThresholds {
-  double clearance_width = 1.5;   ///< free rectangle in front of a door, along the wall
-  double clearance_depth = 1.5;   ///< ... and away from it, on the push side
-  double door_min_width = 0.80;   ///< a door's clear width (its `width`)
+  double clearance_width = 1.5;  ///< free rectangle in front of a door, along the wall
+  double clearance_depth = 1.5;  ///< ... and away from it, on the push side
+  double door_min_width = 0.80;  ///< a door's clear width (its `width`)
   double passage_min_width = 0.90;
   double turning_diameter = 1.5;
   double escape_max_distance = 30.0;

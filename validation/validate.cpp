@@ -82,8 +82,8 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   // Rooms are only meaningful on a plan whose walls are sound: with errors, say nothing more.
   if (options.room_warnings && !has_errors) detail::warn_about_rooms(found, report);
   if (rules)
-    detail::check_rules(resolved.plan, joins, resolved.usable, options.rules, rooms_for_rules ? &found : nullptr,
-                        report);
+    detail::check_rules(resolved.plan, joins, resolved.usable, options.rules,
+                        rooms_for_rules ? &found : nullptr, report);
   std::stable_partition(report.items.begin(), report.items.end(),
                         [](const Diagnostic& d) { return d.severity == Severity::error; });
   return report;

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "plan/plan.h"
 #include "geometry/rooms.h"  // find_rooms, once here
+#include "plan/plan.h"
 #include "validation/report.h"
 #include "validation/rule_set.h"
 

@@ -46,7 +46,8 @@ void draw_overlay(RgbImage& image, const OverlayText& text) {
   const std::vector<Line> lines = panel_lines(text, max_chars);
   int widest = 0;
   for (const Line& l : lines) widest = std::max(widest, text_width(l.text));
-  darken_rect(image, 0, 0, widest + 2 * kMargin, static_cast<int>(lines.size()) * line + 2 * kMargin);
+  darken_rect(image, 0, 0, widest + 2 * kMargin,
+              static_cast<int>(lines.size()) * line + 2 * kMargin);
   for (std::size_t i = 0; i < lines.size(); ++i)
     draw_text(image, kMargin, kMargin + static_cast<int>(i) * line, lines[i].text, lines[i].color);
   if (text.help.empty()) return;

@@ -11,11 +11,11 @@
 namespace roomcad {
 
 struct OverlayText {
-  std::vector<std::string> status;  ///< file, problems, camera (white)
-  std::string message;              ///< the last thing done or refused (yellow)
+  std::vector<std::string> status;     ///< file, problems, camera (white)
+  std::string message;                 ///< the last thing done or refused (yellow)
   std::vector<std::string> selection;  ///< the selected object's properties (light blue)
-  std::vector<std::string> errors;  ///< validation errors, one per line (red)
-  std::string help;                 ///< the bottom line
+  std::vector<std::string> errors;     ///< validation errors, one per line (red)
+  std::string help;                    ///< the bottom line
 };
 
 /// Most error lines shown; the rest are counted in one more line.

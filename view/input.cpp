@@ -45,8 +45,9 @@ std::string parse_pointer(std::string_view item, InputEvent& event) {
     if (!n) return fmt::format("'{}' is not a whole number", f[i]);
     v[i - 1] = *n;
   }
-  event.type = wheel ? InputEvent::Type::wheel
-               : f[0] == "click" ? InputEvent::Type::click : InputEvent::Type::drag;
+  event.type = wheel             ? InputEvent::Type::wheel
+               : f[0] == "click" ? InputEvent::Type::click
+                                 : InputEvent::Type::drag;
   event.right_button = f[0] == "pan";
   event.x = v[0];
   event.y = v[1];
@@ -82,7 +83,8 @@ std::string parse_wait(std::string_view item, InputEvent& event) {
 }  // namespace
 
 bool is_key_name(std::string_view name) {
-  if (name.size() == 1) return (name[0] >= 'a' && name[0] <= 'z') || (name[0] >= '0' && name[0] <= '9');
+  if (name.size() == 1)
+    return (name[0] >= 'a' && name[0] <= 'z') || (name[0] >= '0' && name[0] <= '9');
   return std::find(kNamedKeys.begin(), kNamedKeys.end(), name) != kNamedKeys.end();
 }
 
@@ -99,8 +101,8 @@ Result<std::vector<InputEvent>> parse_key_script(std::string_view script) {
                                 : pointer                 ? parse_pointer(item, event)
                                                           : parse_key(item, event);
     if (!problem.empty())
-      return Result<std::vector<InputEvent>>::failure(Code::usage_error,
-          fmt::format("--keys: input {} '{}': {}", index, item, problem));
+      return Result<std::vector<InputEvent>>::failure(
+          Code::usage_error, fmt::format("--keys: input {} '{}': {}", index, item, problem));
     events.push_back(std::move(event));
   }
   return events;

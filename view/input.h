@@ -19,11 +19,11 @@ struct InputEvent {
   /// saved it), the window running meanwhile.
   enum class Type { key, click, drag, wheel, wait_change };
   Type type = Type::key;
-  std::string key;     ///< Type::key: the key's name
-  bool ctrl = false;   ///< Type::key: Ctrl held
-  bool shift = false;  ///< Type::key: Shift held
-  int x = 0;           ///< click: pixel column; drag: pixels moved right; wheel: notches up
-  int y = 0;           ///< click: pixel row; drag: pixels moved down
+  std::string key;            ///< Type::key: the key's name
+  bool ctrl = false;          ///< Type::key: Ctrl held
+  bool shift = false;         ///< Type::key: Shift held
+  int x = 0;                  ///< click: pixel column; drag: pixels moved right; wheel: notches up
+  int y = 0;                  ///< click: pixel row; drag: pixels moved down
   bool right_button = false;  ///< drag: with the right button (pan) instead of the left (orbit)
   friend bool operator==(const InputEvent&, const InputEvent&) = default;
 };

@@ -15,16 +15,48 @@ namespace roomcad {
 /// What keys do. Viewer::apply dispatches by range, so camera actions stay between
 /// orbit_left and toggle_projection, display toggles between toggle_shadows and toggle_overlay.
 enum class Action {
-  orbit_left, orbit_right, orbit_up, orbit_down,           // about the target
-  turn_x, turn_x_back, turn_y, turn_y_back, turn_z, turn_z_back,  // about world axes
-  pan_left, pan_right, pan_up, pan_down, zoom_in, zoom_out,
-  view_top, view_front, view_side, view_iso, toggle_projection,
-  toggle_shadows, next_shading, toggle_grid, toggle_wireframe,
-  next_level, previous_level,  // show one level alone (plan format version 2), or all
+  orbit_left,
+  orbit_right,
+  orbit_up,
+  orbit_down,  // about the target
+  turn_x,
+  turn_x_back,
+  turn_y,
+  turn_y_back,
+  turn_z,
+  turn_z_back,  // about world axes
+  pan_left,
+  pan_right,
+  pan_up,
+  pan_down,
+  zoom_in,
+  zoom_out,
+  view_top,
+  view_front,
+  view_side,
+  view_iso,
+  toggle_projection,
+  toggle_shadows,
+  next_shading,
+  toggle_grid,
+  toggle_wireframe,
+  next_level,
+  previous_level,  // show one level alone (plan format version 2), or all
   toggle_overlay,
-  step_west, step_east, step_north, step_south,  // move the selection a cell, else pan
-  select_next, deselect, turn_selection, turn_selection_back, delete_selection,
-  save, undo, reload_file, keep_window_version, quit,
+  step_west,
+  step_east,
+  step_north,
+  step_south,  // move the selection a cell, else pan
+  select_next,
+  deselect,
+  turn_selection,
+  turn_selection_back,
+  delete_selection,
+  save,
+  undo,
+  reload_file,
+  keep_window_version,
+  quit,
 };
 
 /// One key of the table.

@@ -21,9 +21,9 @@
 #include <string>
 #include <unordered_map>
 
-#include "solid/build_model.h"
-#include "plan/plan.h"
 #include "mesh/solid_mesh.h"
+#include "plan/plan.h"
+#include "solid/build_model.h"
 
 namespace roomcad {
 
@@ -59,7 +59,7 @@ class ModelCache {
 
   /// The groups of the last build, by the id of their first wall (unique: wall_groups.h).
   std::unordered_map<std::string, std::shared_ptr<const Entry>> by_first_wall_;
-  std::optional<Site> floor_site_;       ///< the site floor_ was built for
+  std::optional<Site> floor_site_;  ///< the site floor_ was built for
   SolidMesh floor_;
   std::optional<BuildOptions> options_;  ///< the options of the cached builds
   ModelCacheStats stats_;

@@ -3,8 +3,8 @@
 
 #include <fmt/format.h>
 
-#include "plan/plan_objects.h"
 #include "plan/field_text.h"
+#include "plan/plan_objects.h"
 
 namespace roomcad {
 namespace {
@@ -16,7 +16,9 @@ std::vector<std::string> field_lines(const Object& object) {
   std::vector<std::string> lines;
   for (const Field<Object>& f : fields_of<Object>()) {
     if (f.name == "id" || !is_present(object, f)) continue;
-    const std::string_view unit = f.unit == Unit::metre ? " m" : f.unit == Unit::degree ? " deg" : "";
+    const std::string_view unit = f.unit == Unit::metre    ? " m"
+                                  : f.unit == Unit::degree ? " deg"
+                                                           : "";
     lines.push_back(fmt::format("{} {}{}", f.name, field_text(object, f), unit));
   }
   return lines;

@@ -16,8 +16,8 @@
 namespace roomcad {
 namespace {
 
-constexpr int kClickSlop = 3;   ///< pixels a press may move and still be a click
-constexpr Uint32 kPollMs = 100;  ///< how often the plan file is checked when idle
+constexpr int kClickSlop = 3;       ///< pixels a press may move and still be a click
+constexpr Uint32 kPollMs = 100;     ///< how often the plan file is checked when idle
 constexpr Uint32 kWaitPollMs = 10;  ///< how often a `wait:change` input checks the file
 
 struct SdlDeleter {
@@ -40,8 +40,11 @@ std::string key_name(SDL_Keycode k) {
     case SDLK_BACKSPACE: return "backspace";
     case SDLK_TAB: return "tab";
     case SDLK_ESCAPE: return "escape";
-    case SDLK_PLUS: case SDLK_EQUALS: case SDLK_KP_PLUS: return "plus";
-    case SDLK_MINUS: case SDLK_KP_MINUS: return "minus";
+    case SDLK_PLUS:
+    case SDLK_EQUALS:
+    case SDLK_KP_PLUS: return "plus";
+    case SDLK_MINUS:
+    case SDLK_KP_MINUS: return "minus";
     default: return "";
   }
 }
@@ -82,7 +85,8 @@ std::optional<InputEvent> translate(const SDL_Event& e, Pointer& p, bool& quit) 
     }
     case SDL_MOUSEMOTION:
       if (!p.left && !p.right) return std::nullopt;
-      if (std::abs(e.motion.x - p.press_x) + std::abs(e.motion.y - p.press_y) > kClickSlop) p.dragged = true;
+      if (std::abs(e.motion.x - p.press_x) + std::abs(e.motion.y - p.press_y) > kClickSlop)
+        p.dragged = true;
       if (!p.dragged) return std::nullopt;
       return pointer_event(InputEvent::Type::drag, e.motion.xrel, e.motion.yrel, p.right);
     case SDL_MOUSEWHEEL: return pointer_event(InputEvent::Type::wheel, e.wheel.y, 0);
@@ -104,10 +108,13 @@ bool present(SDL_Window* window, const RgbImage& frame) {
 Result<RgbImage> read_window(SDL_Window* window) {
   SDL_Surface* shown = SDL_GetWindowSurface(window);
   SurfacePtr rgb(shown ? SDL_ConvertSurfaceFormat(shown, SDL_PIXELFORMAT_RGB24, 0) : nullptr);
-  if (!rgb) return Result<RgbImage>::failure(Code::io_error, fmt::format("reading the window: {}", SDL_GetError()));
+  if (!rgb)
+    return Result<RgbImage>::failure(Code::io_error,
+                                     fmt::format("reading the window: {}", SDL_GetError()));
   RgbImage image(rgb->w, rgb->h);
   for (int y = 0; y < rgb->h; ++y) {
-    const auto* row = static_cast<const std::uint8_t*>(rgb->pixels) + static_cast<std::size_t>(y) * rgb->pitch;
+    const auto* row =
+        static_cast<const std::uint8_t*>(rgb->pixels) + static_cast<std::size_t>(y) * rgb->pitch;
     std::copy(row, row + static_cast<std::size_t>(rgb->w) * 3, image.at(0, y));
   }
   return image;
@@ -154,10 +161,12 @@ Status run_interactive(SDL_Window* window, Viewer& viewer, MessageLog& log) {
   Pointer pointer;
   for (bool quit = false; !quit;) {
     SDL_Event e;
-    for (bool got = SDL_WaitEventTimeout(&e, kPollMs) != 0; got && !quit; got = SDL_PollEvent(&e) != 0) {
+    for (bool got = SDL_WaitEventTimeout(&e, kPollMs) != 0; got && !quit;
+         got = SDL_PollEvent(&e) != 0) {
       if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_EXPOSED &&
           !present(window, viewer.frame()))
-        return Status::failure(Code::io_error, fmt::format("drawing the window: {}", SDL_GetError()));
+        return Status::failure(Code::io_error,
+                               fmt::format("drawing the window: {}", SDL_GetError()));
       if (const std::optional<InputEvent> input = translate(e, pointer, quit))
         quit = quit || !viewer.handle(*input);
       log.flush();
@@ -192,14 +201,19 @@ Status start_video() {
   const char* display = std::getenv("DISPLAY");
   const std::string where = fmt::format("DISPLAY='{}'", display ? display : "");
   if (SDL_Init(SDL_INIT_VIDEO) != 0)
-    return Status::failure(Code::io_error, fmt::format("cannot open a window ({}): {}; without a screen, run "
-                                       "under Xvfb (xvfb-run -a roomcad view ...)", where, SDL_GetError()));
+    return Status::failure(Code::io_error,
+                           fmt::format("cannot open a window ({}): {}; without a screen, run "
+                                       "under Xvfb (xvfb-run -a roomcad view ...)",
+                                       where, SDL_GetError()));
   const std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
   if ((driver == "offscreen" || driver == "dummy") && !std::getenv("SDL_VIDEODRIVER")) {
     SDL_Quit();
-    return Status::failure(Code::io_error, fmt::format(
-        "cannot open a window ({}): no screen to show it on; run under Xvfb (xvfb-run -a "
-        "roomcad view ...), or set SDL_VIDEODRIVER=offscreen for a --screenshot run", where));
+    return Status::failure(
+        Code::io_error,
+        fmt::format(
+            "cannot open a window ({}): no screen to show it on; run under Xvfb (xvfb-run -a "
+            "roomcad view ...), or set SDL_VIDEODRIVER=offscreen for a --screenshot run",
+            where));
   }
   return Status::success();
 }
@@ -213,7 +227,8 @@ Status run_window(Viewer& viewer, const WindowOptions& options) {
   WindowPtr window(SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
                                     size.width, size.height, SDL_WINDOW_SHOWN));
   Status status = window ? Status::success()
-                         : Status::failure(Code::io_error, fmt::format("cannot open a window: {}", SDL_GetError()));
+                         : Status::failure(Code::io_error,
+                                           fmt::format("cannot open a window: {}", SDL_GetError()));
   bool quit = false;
   MessageLog log(options, viewer);
   for (const InputEvent& input : options.script) {
@@ -223,7 +238,8 @@ Status run_window(Viewer& viewer, const WindowOptions& options) {
     log.flush();
   }
   if (status && quit && !options.screenshot.empty())
-    status = Status::failure(Code::usage_error, fmt::format("--keys quits ('q') before the screenshot {} is taken",
+    status = Status::failure(Code::usage_error,
+                             fmt::format("--keys quits ('q') before the screenshot {} is taken",
                                          options.screenshot.string()));
   else if (status && !quit)
     status = options.screenshot.empty() ? run_interactive(window.get(), viewer, log)

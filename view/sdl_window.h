@@ -17,8 +17,8 @@ struct WindowOptions {
   /// Applied in order before the first frame is shown; at a `wait:change` input the window
   /// runs (polling the file) until the session finds its file changed on disk.
   std::vector<InputEvent> script;
-  std::filesystem::path screenshot;    ///< set: show `frames` frames, save the window, close
-  int frames = 1;                      ///< frames shown before the screenshot, >= 1
+  std::filesystem::path screenshot;  ///< set: show `frames` frames, save the window, close
+  int frames = 1;                    ///< frames shown before the screenshot, >= 1
   /// Called with each message the session gives (what was done, refused, a conflict), once.
   std::function<void(const std::string&)> on_message;
 };

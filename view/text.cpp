@@ -9,7 +9,9 @@ namespace roomcad {
 
 int text_line_height() { return detail::kGlyphHeight; }
 
-int text_width(std::string_view text) { return static_cast<int>(text.size()) * detail::kGlyphWidth; }
+int text_width(std::string_view text) {
+  return static_cast<int>(text.size()) * detail::kGlyphWidth;
+}
 
 void draw_text(RgbImage& image, int x, int y, std::string_view text, TextColor color) {
   for (std::size_t i = 0; i < text.size(); ++i) {

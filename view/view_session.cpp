@@ -134,8 +134,10 @@ Status ViewSession::delete_selection() {
                   fmt::format("{} holds {}: press Delete again to delete them with it", id,
                               fmt::join(hosted, ", ")));
   }
-  return apply(fmt::format("deleted {}", hosted.empty() ? id : fmt::format("{} and {}", id, fmt::join(hosted, ", "))),
-               [&](Plan& p) { return remove_object(p, id, RemoveOptions{.cascade = confirmed}); });
+  return apply(
+      fmt::format("deleted {}",
+                  hosted.empty() ? id : fmt::format("{} and {}", id, fmt::join(hosted, ", "))),
+      [&](Plan& p) { return remove_object(p, id, RemoveOptions{.cascade = confirmed}); });
 }
 
 Status ViewSession::undo() {

@@ -156,8 +156,7 @@ Status ViewSession::reload_file() {
   Result<Plan> read = read_plan_text(text.value(), path_.string());
   if (!read)
     return refuse(read.code(), fmt::format("not reloaded: {} is not a valid plan ({}: {})",
-                                           path_.string(), to_string(read.code()),
-                                           read.message()));
+                                           path_.string(), to_string(read.code()), read.message()));
   const bool dropped = modified_;
   load(std::move(text).value(), std::move(read).value(),
        fmt::format("reloaded {}{}", path_.string(),

@@ -23,7 +23,8 @@ constexpr double kWheelZoom = 0.9;
 
 Box3 framing_bounds(const Scene& scene) {
   Box3 b = scene.bounds;
-  if (is_empty(b)) add_point(b, glm::dvec3(0.0));  // nothing to frame: look at the origin, as render does
+  if (is_empty(b))
+    add_point(b, glm::dvec3(0.0));  // nothing to frame: look at the origin, as render does
   return b;
 }
 
@@ -31,8 +32,9 @@ Box3 framing_bounds(const Scene& scene) {
 
 Viewer::Viewer(ViewSession session, const ViewerOptions& options)
     : session_(std::move(session)), viewer_options_(options), level_(options.level) {
-  options_ = RenderOptions{.width = options.width, .height = options.height, .threads = options.threads};
-  options_.grid.enabled = true;  // as `roomcad render --grid on`
+  options_ =
+      RenderOptions{.width = options.width, .height = options.height, .threads = options.threads};
+  options_.grid.enabled = true;    // as `roomcad render --grid on`
   options_.outputs.depth = false;  // the window picks by object id, never by depth
   rebuild_model();
   if (options.camera) camera_ = *options.camera;
@@ -48,7 +50,8 @@ void Viewer::rebuild_model() {
   options_.lights = plan.lights;
   options_.grid = GridLines{.enabled = options_.grid.enabled,
                             .origin = {plan.site.origin.x, plan.site.origin.y},
-                            .cell_size = plan.site.cell_size, .cells = plan.site.cells};
+                            .cell_size = plan.site.cell_size,
+                            .cells = plan.site.cells};
   try {
     BuildOptions build;
     build.threads = viewer_options_.threads;
@@ -76,9 +79,10 @@ bool Viewer::handle(const InputEvent& input) {
       camera_ = zoom_camera(camera_, std::pow(kWheelZoom, input.x));
       break;
     case InputEvent::Type::drag:
-      camera_ = input.right_button
-                    ? pan_camera(camera_, -input.x / double(options_.height), input.y / double(options_.height))
-                    : orbit_camera(camera_, -input.x * kDragDegreesPerPixel, input.y * kDragDegreesPerPixel);
+      camera_ = input.right_button ? pan_camera(camera_, -input.x / double(options_.height),
+                                                input.y / double(options_.height))
+                                   : orbit_camera(camera_, -input.x * kDragDegreesPerPixel,
+                                                  input.y * kDragDegreesPerPixel);
       break;
     case InputEvent::Type::wait_change: return true;  // the window waits (view/sdl_window.h)
     case InputEvent::Type::key: {
@@ -95,7 +99,7 @@ bool Viewer::handle(const InputEvent& input) {
 
 bool Viewer::poll_file() {
   const std::uint64_t messages = session_.message_count();
-  static_cast<void>(session_.reload_if_changed());  // what it found is a message
+  static_cast<void>(session_.reload_if_changed());         // what it found is a message
   if (session_.message_count() == messages) return false;  // every change found says so
   dirty_ = true;
   return true;
@@ -135,14 +139,16 @@ void Viewer::draw() {
   const bool rebuilt = built_revision_ != session_.revision();
   rebuild_model();
   const auto start = std::chrono::steady_clock::now();
-  build_ms_ = rebuilt ? std::chrono::duration<double, std::milli>(start - rebuild_start).count() : 0.0;
+  build_ms_ =
+      rebuilt ? std::chrono::duration<double, std::milli>(start - rebuild_start).count() : 0.0;
   highlight();
   options_.camera = camera_;
   render_scene(scene_, options_, buffers_);
   shown_ = buffers_.color;
   if (wireframe_) draw_wireframe(shown_, scene_, frame_camera(scene_, options_));
   // Measured before the overlay, which shows it (the text itself costs well under 1%).
-  frame_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  frame_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   // A conflict's choices are shown even with the overlay off: they must not go unseen.
   if (viewer_options_.overlay || session_.in_conflict()) draw_overlay(shown_, overlay_text());
 }

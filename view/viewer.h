@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "solid/build_model.h"
 #include "render/renderer.h"
 #include "render/scene.h"
+#include "solid/build_model.h"
 #include "view/frame_overlay.h"
 #include "view/input.h"
 #include "view/key_bindings.h"
@@ -25,7 +25,7 @@
 namespace roomcad {
 
 struct ViewerOptions {
-  int width = 1280;   ///< frame pixels, as RenderOptions
+  int width = 1280;  ///< frame pixels, as RenderOptions
   int height = 720;
   std::optional<Camera> camera{};     ///< nullopt: frame the model from `view`
   ViewPreset view = ViewPreset::iso;  ///< perspective, 50 degrees, as `roomcad render --view`
@@ -88,15 +88,15 @@ class Viewer {
   ViewerOptions viewer_options_;
   RenderOptions options_;
   Camera camera_;
-  ModelCache models_;                     ///< rebuilds only the wall groups an edit touched
+  ModelCache models_;  ///< rebuilds only the wall groups an edit touched
   Scene scene_;
-  std::vector<Color> base_colors_;        ///< scene_ colours before highlighting
-  std::vector<std::string> objects_;      ///< Model::objects of the model drawn
+  std::vector<Color> base_colors_;    ///< scene_ colours before highlighting
+  std::vector<std::string> objects_;  ///< Model::objects of the model drawn
   std::uint64_t built_revision_ = ~std::uint64_t{0};
-  std::string model_problem_;             ///< why the last rebuild failed, or ""
+  std::string model_problem_;  ///< why the last rebuild failed, or ""
   FrameBuffers buffers_;
-  RgbImage shown_;                        ///< the colour buffer with wireframe and overlay
-  std::string level_;                     ///< the level shown alone (plan_of_level), or "" for all
+  RgbImage shown_;     ///< the colour buffer with wireframe and overlay
+  std::string level_;  ///< the level shown alone (plan_of_level), or "" for all
   bool wireframe_ = false;
   bool dirty_ = true;
   double frame_ms_ = 0.0;

@@ -52,7 +52,8 @@ glm::dvec3 turn_axis(Action a) {
 
 void Viewer::apply(Action action) {
   if (action >= Action::orbit_left && action <= Action::toggle_projection) apply_camera(action);
-  else if (action >= Action::toggle_shadows && action <= Action::toggle_overlay) apply_display(action);
+  else if (action >= Action::toggle_shadows && action <= Action::toggle_overlay)
+    apply_display(action);
   else apply_edit(action);
 }
 
@@ -82,7 +83,8 @@ void Viewer::apply_camera(Action a) {
 void Viewer::apply_display(Action a) {
   switch (a) {
     case Action::toggle_shadows:
-      options_.shadows = options_.shadows == ShadowFilter::off ? ShadowFilter::pcf : ShadowFilter::off;
+      options_.shadows =
+          options_.shadows == ShadowFilter::off ? ShadowFilter::pcf : ShadowFilter::off;
       break;
     case Action::next_shading: options_.shading = next_mode(options_.shading); break;
     case Action::toggle_grid: options_.grid.enabled = !options_.grid.enabled; break;
@@ -146,21 +148,20 @@ void Viewer::step_level(int by) {
 OverlayText Viewer::overlay_text() const {
   OverlayText t;
   const ViewSession& s = session_;
-  t.status.push_back(fmt::format("{}{}  {}{}", s.path().filename().string(),
-                                 s.is_modified() ? " (modified)" : "",
-                                 format_report_summary(s.report()),
-                                 level_.empty() ? "" : fmt::format("  level {}", level_)));
-  t.status.push_back(fmt::format("{}  {} shading  shadows {}  frame {:.1f} ms{}",
-                                 to_string(camera_.projection), to_text(options_.shading),
-                                 options_.shadows == ShadowFilter::off ? "off" : "on", frame_ms_,
-                                 build_ms_ > 0.0 ? fmt::format(" (model rebuilt in {:.0f} ms)", build_ms_)
-                                                 : std::string()));
+  t.status.push_back(fmt::format(
+      "{}{}  {}{}", s.path().filename().string(), s.is_modified() ? " (modified)" : "",
+      format_report_summary(s.report()), level_.empty() ? "" : fmt::format("  level {}", level_)));
+  t.status.push_back(fmt::format(
+      "{}  {} shading  shadows {}  frame {:.1f} ms{}", to_string(camera_.projection),
+      to_text(options_.shading), options_.shadows == ShadowFilter::off ? "off" : "on", frame_ms_,
+      build_ms_ > 0.0 ? fmt::format(" (model rebuilt in {:.0f} ms)", build_ms_) : std::string()));
   if (!model_problem_.empty()) t.status.push_back(model_problem_);
   t.message = s.message();
   t.selection = s.selection_properties();
   for (const Diagnostic& d : s.report().items)
     if (d.severity == Severity::error)
-      t.errors.push_back(fmt::format("error[{}] {}: {}", to_string(d.code), fmt::join(d.objects, ", "), d.message));
+      t.errors.push_back(fmt::format("error[{}] {}: {}", to_string(d.code),
+                                     fmt::join(d.objects, ", "), d.message));
   t.help =
       "a/d/w/s orbit  x/y/z turn  shift+arrows pan  +/- zoom  1-4 views  p proj  h shadows  "
       "m shading  g grid  e wire  l level  o text  click select  arrows move  r turn  del delete  "

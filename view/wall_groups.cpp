@@ -16,8 +16,8 @@ namespace {
 /// True for a straight wall of positive finite length and thickness: one whose footprint
 /// (wall_footprint) is where its solid is.
 bool has_plain_footprint(const Wall& w) {
-  const bool finite = std::isfinite(w.from.x) && std::isfinite(w.from.y) &&
-                      std::isfinite(w.to.x) && std::isfinite(w.to.y);
+  const bool finite = std::isfinite(w.from.x) && std::isfinite(w.from.y) && std::isfinite(w.to.x) &&
+                      std::isfinite(w.to.y);
   const bool has_length = w.from.x != w.to.x || w.from.y != w.to.y;
   return !w.arc_extent && finite && has_length && std::isfinite(w.thickness) && w.thickness > 0;
 }

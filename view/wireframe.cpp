@@ -12,8 +12,8 @@ namespace {
 constexpr Rgb kWireColor{0x18, 0x28, 0x60};
 
 /// The pixel a point projects to, or nullopt when it is behind the near plane.
-std::optional<ScreenPoint> project(const glm::dmat4& view_projection, const glm::vec3& p,
-                                   int width, int height) {
+std::optional<ScreenPoint> project(const glm::dmat4& view_projection, const glm::vec3& p, int width,
+                                   int height) {
   const glm::dvec4 clip = view_projection * glm::dvec4(glm::dvec3(p), 1.0);
   if (!(clip.w > 1e-9)) return std::nullopt;
   const double x = clip.x / clip.w, y = clip.y / clip.w;

@@ -51,7 +51,8 @@ bool meet_only_at_ends(const Segments& segments) {
   std::vector<Box2> boxes(segments.size());
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const auto& [a, b] = segments[i];
-    boxes[i] = grown_segment_box(a.x, a.y, b.x, b.y, 0.0);  // outward by an ulp: more pairs, decided exactly
+    boxes[i] = grown_segment_box(a.x, a.y, b.x, b.y,
+                                 0.0);  // outward by an ulp: more pairs, decided exactly
     boxes[i].index = i;
   }
   for (const auto& [i, j] : find_meeting_boxes(boxes)) {
@@ -115,9 +116,10 @@ Face face_of(const FaceHandle& f) {
 /// their ends (kEndToEnd) go in as they are, without looking for crossings.
 template <class Traits, bool kEndToEnd>
 std::vector<Face> bounded_faces(const Segments& segments) {
-  using Curve = std::conditional_t<kEndToEnd, typename Traits::X_monotone_curve_2, typename Traits::Curve_2>;
-  using BaseCurve =
-      std::conditional_t<kEndToEnd, typename Traits::Base_x_monotone_curve_2, typename Traits::Base_curve_2>;
+  using Curve =
+      std::conditional_t<kEndToEnd, typename Traits::X_monotone_curve_2, typename Traits::Curve_2>;
+  using BaseCurve = std::conditional_t<kEndToEnd, typename Traits::Base_x_monotone_curve_2,
+                                       typename Traits::Base_curve_2>;
   using KernelPoint = typename Traits::Point_2;
   std::vector<Curve> curves;
   curves.reserve(segments.size());
@@ -128,8 +130,7 @@ std::vector<Face> bounded_faces(const Segments& segments) {
   CGAL::Arrangement_2<Traits> arrangement;
   if constexpr (kEndToEnd)
     CGAL::insert_non_intersecting_curves(arrangement, curves.begin(), curves.end());
-  else
-    CGAL::insert(arrangement, curves.begin(), curves.end());
+  else CGAL::insert(arrangement, curves.begin(), curves.end());
   std::vector<Face> faces;
   for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f)
     if (!f->is_unbounded()) faces.push_back(face_of(f));

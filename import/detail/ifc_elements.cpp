@@ -6,7 +6,6 @@
 #include <cmath>
 #include <optional>
 
-
 #include <fmt/format.h>
 
 namespace roomcad::ifc {
@@ -27,7 +26,8 @@ struct Extrusion {
 
 /// @return the prism as a vertical extrusion, or a sentence saying why it is not one.
 std::optional<Extrusion> vertical(const ImportState& s, const Prism& p, std::string& why) {
-  const double length = std::sqrt(p.sweep.x * p.sweep.x + p.sweep.y * p.sweep.y + p.sweep.z * p.sweep.z);
+  const double length =
+      std::sqrt(p.sweep.x * p.sweep.x + p.sweep.y * p.sweep.y + p.sweep.z * p.sweep.z);
   if (!(length > 0.0) || std::hypot(p.sweep.x, p.sweep.y) > kFlat * length) {
     why = "its body is not extruded vertically";
     return std::nullopt;
@@ -56,20 +56,23 @@ std::optional<Prism> single_body(ImportState& s, const step::Instance& e, std::s
   std::vector<std::string> problems{};
   std::vector<Prism> prisms = s.geometry.body(e, problems);
   if (prisms.empty()) {
-    s.warn(Code::import_skipped_element, e,
-           fmt::format("not imported: {}", problems.empty() ? "its body is empty" : problems.front()));
+    s.warn(
+        Code::import_skipped_element, e,
+        fmt::format("not imported: {}", problems.empty() ? "its body is empty" : problems.front()));
     return std::nullopt;
   }
   for (const std::string& p : problems) s.warn(Code::import_approximated, e, p);
   if (prisms.size() > 1)
     s.warn(Code::import_approximated, e,
-           fmt::format("its body has {} solids; the {} is imported as the first", prisms.size(), kind));
+           fmt::format("its body has {} solids; the {} is imported as the first", prisms.size(),
+                       kind));
   return std::move(prisms.front());
 }
 
 /// The sum of the layer thicknesses of the element's IfcMaterialLayerSetUsage, in metres.
-std::optional<double> layer_thickness(const ImportState& s, const std::unordered_map<std::uint32_t, std::uint32_t>& usage_of,
-                                      std::uint32_t element) {
+std::optional<double> layer_thickness(
+    const ImportState& s, const std::unordered_map<std::uint32_t, std::uint32_t>& usage_of,
+    std::uint32_t element) {
   const auto it = usage_of.find(element);
   if (it == usage_of.end()) return std::nullopt;
   const step::Instance* usage = s.file.find(it->second);
@@ -90,13 +93,15 @@ std::unordered_map<std::uint32_t, std::uint32_t> material_usages(const ImportSta
     if (e.type != "IFCRELASSOCIATESMATERIAL") continue;
     const Value& material = Geometry::param(e, 5);
     for (const Value& related : Geometry::param(e, 4).items)
-      if (related.kind == Value::Kind::ref && material.kind == Value::Kind::ref) out.emplace(related.id, material.id);
+      if (related.kind == Value::Kind::ref && material.kind == Value::Kind::ref)
+        out.emplace(related.id, material.id);
   }
   return out;
 }
 
 /// The wall's centre line direction: the axis, else the footprint's longest edge.
-Point2 wall_direction(const Extrusion& x, const std::optional<std::array<Vec, 2>>& axis, double k, Point2& anchor) {
+Point2 wall_direction(const Extrusion& x, const std::optional<std::array<Vec, 2>>& axis, double k,
+                      Point2& anchor) {
   if (axis) {
     anchor = {k * (*axis)[0].x, k * (*axis)[0].y};
     const Point2 d{k * ((*axis)[1].x - (*axis)[0].x), k * ((*axis)[1].y - (*axis)[0].y)};
@@ -107,13 +112,15 @@ Point2 wall_direction(const Extrusion& x, const std::optional<std::array<Vec, 2>
   for (std::size_t i = 0; i < x.outer.size(); ++i) {
     const Point2 a = x.outer[i];
     const Point2 b = x.outer[(i + 1) % x.outer.size()];
-    if (std::hypot(b.x - a.x, b.y - a.y) > longest) longest = std::hypot(b.x - a.x, b.y - a.y), best = {b.x - a.x, b.y - a.y};
+    if (std::hypot(b.x - a.x, b.y - a.y) > longest)
+      longest = std::hypot(b.x - a.x, b.y - a.y), best = {b.x - a.x, b.y - a.y};
   }
   anchor = x.outer.front();
   return best;
 }
 
-void import_wall(ImportState& s, const step::Instance& e, const std::unordered_map<std::uint32_t, std::uint32_t>& usages) {
+void import_wall(ImportState& s, const step::Instance& e,
+                 const std::unordered_map<std::uint32_t, std::uint32_t>& usages) {
   const std::optional<Prism> body = single_body(s, e, "wall");
   if (!body) return;
   std::string why{};
@@ -131,7 +138,9 @@ void import_wall(ImportState& s, const step::Instance& e, const std::unordered_m
     const double v = d.x * r.y - d.y * r.x;
     u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, v), v1 = std::max(v1, v);
   }
-  if (axis) u0 = 0.0, u1 = s.metres_per_unit * std::hypot((*axis)[1].x - (*axis)[0].x, (*axis)[1].y - (*axis)[0].y);
+  if (axis)
+    u0 = 0.0,
+    u1 = s.metres_per_unit * std::hypot((*axis)[1].x - (*axis)[0].x, (*axis)[1].y - (*axis)[0].y);
   const double vc = (v0 + v1) / 2;
   Wall w;
   w.from = {s.metres(anchor.x + u0 * d.x - vc * d.y), s.metres(anchor.y + u0 * d.y + vc * d.x)};
@@ -139,7 +148,8 @@ void import_wall(ImportState& s, const step::Instance& e, const std::unordered_m
   w.thickness = s.metres(v1 - v0);
   w.height = s.metres(x->depth);
   if (!(w.thickness > 0.0) || w.from == w.to)
-    return s.warn(Code::import_zero_length_wall, e, "not imported: its footprint has no length or thickness");
+    return s.warn(Code::import_zero_length_wall, e,
+                  "not imported: its footprint has no length or thickness");
   w.id = s.unique_id(Geometry::param(e, 2).text, "wall", e.id);
   const auto level = s.level_of_element.find(e.id);
   w.level = level == s.level_of_element.end() ? "" : level->second;
@@ -151,15 +161,20 @@ void import_wall(ImportState& s, const step::Instance& e, const std::unordered_m
     return v - v0 > 1e-6 && v1 - v > 1e-6;
   });
   if (inside > 0)
-    s.warn(Code::import_approximated, e,
-           fmt::format("its footprint has {} corners between its two sides (it is not a straight wall "
-                       "with cut ends); it is imported as the rectangle of its centre line and "
-                       "thickness", inside),
-           {w.id});
-  if (const auto layers = layer_thickness(s, usages, e.id); layers && std::abs(*layers - w.thickness) > 1e-3)
+    s.warn(
+        Code::import_approximated, e,
+        fmt::format("its footprint has {} corners between its two sides (it is not a straight wall "
+                    "with cut ends); it is imported as the rectangle of its centre line and "
+                    "thickness",
+                    inside),
+        {w.id});
+  if (const auto layers = layer_thickness(s, usages, e.id);
+      layers && std::abs(*layers - w.thickness) > 1e-3)
     s.warn(Code::import_approximated, e,
            fmt::format("its material layers add up to {} m but its body is {} m thick; the body's "
-                       "thickness is imported", *layers, w.thickness), {w.id});
+                       "thickness is imported",
+                       *layers, w.thickness),
+           {w.id});
   s.wall_of.emplace(e.id, s.plan.walls.size());
   s.plan.walls.push_back(std::move(w));
 }
@@ -171,7 +186,9 @@ struct Filling {
 
 /// Sets the opening's `shape` from a profile in the wall's plane that is not its rectangle.
 void set_shape(Opening& o, const Prism& p, double k, Point2 from, Point2 d, double base) {
-  if (p.rectangle || p.holes.size() || std::abs(p.sweep.z) > kFlat * std::hypot(p.sweep.x, p.sweep.y)) return;
+  if (p.rectangle || p.holes.size() ||
+      std::abs(p.sweep.z) > kFlat * std::hypot(p.sweep.x, p.sweep.y))
+    return;
   Polygon shape;
   for (const Vec& v : p.outer) {
     const double u = (k * v.x - from.x) * d.x + (k * v.y - from.y) * d.y;
@@ -184,7 +201,8 @@ void set_shape(Opening& o, const Prism& p, double k, Point2 from, Point2 d, doub
   o.shape = std::move(shape);
 }
 
-void import_opening(ImportState& s, const step::Instance& e, std::size_t wall_index, const Filling& fill) {
+void import_opening(ImportState& s, const step::Instance& e, std::size_t wall_index,
+                    const Filling& fill) {
   const std::optional<Prism> body = single_body(s, e, "opening");
   if (!body) return;
   const Wall& wall = s.plan.walls[wall_index];
@@ -196,30 +214,36 @@ void import_opening(ImportState& s, const step::Instance& e, std::size_t wall_in
   for (const Vec& v : body->outer) {
     for (const Vec& q : {v, Vec{v.x + body->sweep.x, v.y + body->sweep.y, v.z + body->sweep.z}}) {
       const double u = (k * q.x - wall.from.x) * d.x + (k * q.y - wall.from.y) * d.y;
-      u0 = std::min(u0, u), u1 = std::max(u1, u), z0 = std::min(z0, k * q.z), z1 = std::max(z1, k * q.z);
+      u0 = std::min(u0, u), u1 = std::max(u1, u), z0 = std::min(z0, k * q.z),
+      z1 = std::max(z1, k * q.z);
     }
   }
   const double c0 = std::max(u0, 0.0), c1 = std::min(u1, length);
   const double top = wall.height;
   const double s0 = std::max(z0 - base, 0.0), s1 = std::min(z1 - base, top);
   if (!(c1 - c0 > 1e-6) || !(s1 - s0 > 1e-6))
-    return s.warn(Code::import_skipped_opening, e, fmt::format("not imported: it does not cut wall '{}'", wall.id));
+    return s.warn(Code::import_skipped_opening, e,
+                  fmt::format("not imported: it does not cut wall '{}'", wall.id));
   Opening o;
   const step::Instance* named = fill.element ? fill.element : &e;
   o.id = s.unique_id(Geometry::param(*named, 2).text, "opening", named->id);
   o.wall = wall.id;
-  o.offset = s.metres(c0), o.width = s.metres(c1 - c0), o.sill = s.metres(s0), o.height = s.metres(s1 - s0);
+  o.offset = s.metres(c0), o.width = s.metres(c1 - c0), o.sill = s.metres(s0),
+  o.height = s.metres(s1 - s0);
   if (c0 - u0 > 1e-6 || u1 - c1 > 1e-6 || s0 - (z0 - base) > 1e-6 || (z1 - base) - s1 > 1e-6)
-    s.warn(Code::import_approximated, e, fmt::format("it reaches beyond wall '{}'; it is cut to the wall", wall.id), {o.id});
+    s.warn(Code::import_approximated, e,
+           fmt::format("it reaches beyond wall '{}'; it is cut to the wall", wall.id), {o.id});
   if (fill.element && fill.element->type.starts_with("IFCWINDOW")) {
     o.type = OpeningType::window;
   } else if (fill.element && fill.element->type.starts_with("IFCDOOR")) {
     o.type = OpeningType::door;
-    if (Geometry::param(*fill.element, 11).text.find("RIGHT") != std::string::npos) o.hinge = Hinge::right;
+    if (Geometry::param(*fill.element, 11).text.find("RIGHT") != std::string::npos)
+      o.hinge = Hinge::right;
   } else {
     o.type = o.sill > 0.0 ? OpeningType::window : OpeningType::door;
     s.warn(Code::import_approximated, e,
-           fmt::format("no door or window fills it; it is imported as a {}", to_string(o.type)), {o.id});
+           fmt::format("no door or window fills it; it is imported as a {}", to_string(o.type)),
+           {o.id});
   }
   if (fill.element) s.handled.insert(fill.element->id);
   set_shape(o, *body, k, wall.from, d, base);
@@ -228,7 +252,8 @@ void import_opening(ImportState& s, const step::Instance& e, std::size_t wall_in
 
 }  // namespace
 
-std::string ImportState::unique_id(std::string_view name, std::string_view prefix, std::uint32_t entity) {
+std::string ImportState::unique_id(std::string_view name, std::string_view prefix,
+                                   std::uint32_t entity) {
   std::string id(name);
   if (id.empty() || ids.contains(id)) id = fmt::format("{}-{}", prefix, entity);
   while (ids.contains(id)) id += "'";
@@ -244,7 +269,8 @@ void ImportState::warn(Code code, const step::Instance& entity, std::string_view
   d.severity = Severity::warning;
   d.code = code;
   d.objects = std::move(objects);
-  d.message = fmt::format("{}{}{}{}: {}", name_of(entity), name.empty() ? "" : " '", name, name.empty() ? "" : "'", what);
+  d.message = fmt::format("{}{}{}{}: {}", name_of(entity), name.empty() ? "" : " '", name,
+                          name.empty() ? "" : "'", what);
   warnings.add(std::move(d));
 }
 
@@ -253,7 +279,8 @@ double ImportState::metres(double value) const { return std::round(value * 1e6) 
 void import_walls(ImportState& s) {
   const auto usages = material_usages(s);
   for (const step::Instance& e : s.file.instances) {
-    if (e.type != "IFCWALL" && e.type != "IFCWALLSTANDARDCASE" && e.type != "IFCWALLELEMENTEDCASE") continue;
+    if (e.type != "IFCWALL" && e.type != "IFCWALLSTANDARDCASE" && e.type != "IFCWALLELEMENTEDCASE")
+      continue;
     ++s.walls;
     s.handled.insert(e.id);
     import_wall(s, e, usages);
@@ -275,7 +302,8 @@ void import_openings(ImportState& s) {
     const auto wall = s.wall_of.find(Geometry::param(rel, 4).id);
     if (wall == s.wall_of.end()) {
       s.warn(Code::import_skipped_opening, *opening,
-             fmt::format("not imported: the element it voids (#{}) is not an imported wall", Geometry::param(rel, 4).id));
+             fmt::format("not imported: the element it voids (#{}) is not an imported wall",
+                         Geometry::param(rel, 4).id));
       continue;
     }
     const auto fill = fills.find(opening->id);
@@ -285,7 +313,8 @@ void import_openings(ImportState& s) {
 
 void import_slabs(ImportState& s) {
   for (const step::Instance& e : s.file.instances) {
-    if (e.type != "IFCSLAB" && e.type != "IFCSLABSTANDARDCASE" && e.type != "IFCSLABELEMENTEDCASE") continue;
+    if (e.type != "IFCSLAB" && e.type != "IFCSLABSTANDARDCASE" && e.type != "IFCSLABELEMENTEDCASE")
+      continue;
     ++s.slabs;
     s.handled.insert(e.id);
     const std::optional<Prism> body = single_body(s, e, "slab");

@@ -20,21 +20,22 @@ namespace roomcad::ifc {
 
 /// What the steps share: the file, its geometry, and the plan so far.
 struct ImportState {
-  ImportState(const step::File& f) : file(f), geometry(f), metres_per_unit(geometry.metres_per_unit()) {}
+  ImportState(const step::File& f)
+      : file(f), geometry(f), metres_per_unit(geometry.metres_per_unit()) {}
 
   const step::File& file;
   Geometry geometry;
   double metres_per_unit = 1.0;
   Plan plan;
   Report warnings;
-  std::unordered_set<std::string> ids;                            ///< every id given so far
-  std::unordered_set<std::uint32_t> handled;                      ///< imported or warned about
+  std::unordered_set<std::string> ids;                              ///< every id given so far
+  std::unordered_set<std::uint32_t> handled;                        ///< imported or warned about
   std::unordered_map<std::uint32_t, std::string> level_of_element;  ///< element -> level id
-  std::unordered_map<std::string, double> elevation_of_level;     ///< level id -> metres
-  std::unordered_map<std::uint32_t, std::size_t> wall_of;         ///< IFC wall -> plan wall index
-  std::size_t walls = 0;     ///< IFC walls read
-  std::size_t openings = 0;  ///< IFC openings read
-  std::size_t slabs = 0;     ///< IFC slabs read
+  std::unordered_map<std::string, double> elevation_of_level;       ///< level id -> metres
+  std::unordered_map<std::uint32_t, std::size_t> wall_of;           ///< IFC wall -> plan wall index
+  std::size_t walls = 0;                                            ///< IFC walls read
+  std::size_t openings = 0;                                         ///< IFC openings read
+  std::size_t slabs = 0;                                            ///< IFC slabs read
 
   /// @return `name` if it is non-empty and unused, else `prefix-<instance number>`; marks it used.
   std::string unique_id(std::string_view name, std::string_view prefix, std::uint32_t entity);

@@ -14,7 +14,9 @@ using step::Value;
 Vec add(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 Vec scale(Vec a, double k) { return {a.x * k, a.y * k, a.z * k}; }
 double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Vec cross(Vec a, Vec b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 std::optional<Vec> unit(Vec a) {
   const double n = std::sqrt(dot(a, a));
   if (!(n > 0.0) || !std::isfinite(n)) return std::nullopt;
@@ -32,7 +34,8 @@ Transform frame(Vec origin, Vec z, Vec x) {
   return {{*xx, cross(zz, *xx), zz}, origin};
 }
 
-constexpr int kMaxNesting = 16;  ///< mapped items, clippings and placements nested deeper are refused
+constexpr int kMaxNesting =
+    16;  ///< mapped items, clippings and placements nested deeper are refused
 
 }  // namespace
 
@@ -43,7 +46,8 @@ Vec Transform::rotate(Vec v) const {
 }
 
 Transform Transform::after(const Transform& inner) const {
-  return {{rotate(inner.axes[0]), rotate(inner.axes[1]), rotate(inner.axes[2])}, apply(inner.origin)};
+  return {{rotate(inner.axes[0]), rotate(inner.axes[1]), rotate(inner.axes[2])},
+          apply(inner.origin)};
 }
 
 std::string name_of(const step::Instance& e) { return fmt::format("#{} {}", e.id, e.type); }
@@ -65,14 +69,20 @@ double Geometry::metres_per_unit() const {
       if (!unit || param(*unit, 1).text != "LENGTHUNIT") continue;
       if (unit->type == "IFCSIUNIT") {
         const std::string& prefix = param(*unit, 2).text;
-        return prefix == "MILLI" ? 1e-3 : prefix == "CENTI" ? 1e-2 : prefix == "DECI" ? 1e-1 : prefix == "KILO" ? 1e3 : 1.0;
+        return prefix == "MILLI"   ? 1e-3
+               : prefix == "CENTI" ? 1e-2
+               : prefix == "DECI"  ? 1e-1
+               : prefix == "KILO"  ? 1e3
+                                   : 1.0;
       }
       if (unit->type == "IFCCONVERSIONBASEDUNIT") {  // feet, inches: a factor times an SI unit
         if (const step::Instance* m = get(param(*unit, 3))) {
           const Value& factor = param(*m, 0);
-          const Value& number = factor.kind == Value::Kind::typed && !factor.items.empty() ? factor.items[0] : factor;
+          const Value& number =
+              factor.kind == Value::Kind::typed && !factor.items.empty() ? factor.items[0] : factor;
           double base = 1.0;
-          if (const step::Instance* si = get(param(*m, 1)); si && param(*si, 2).text == "MILLI") base = 1e-3;
+          if (const step::Instance* si = get(param(*m, 1)); si && param(*si, 2).text == "MILLI")
+            base = 1e-3;
           if (number.is_number() && number.number > 0.0) return number.number * base;
         }
       }
@@ -122,7 +132,8 @@ Transform Geometry::placement(const Value& object_placement) {
   return world;
 }
 
-const step::Instance* Geometry::representation(const step::Instance& product, const char* identifier) const {
+const step::Instance* Geometry::representation(const step::Instance& product,
+                                               const char* identifier) const {
   const step::Instance* shape = get(param(product, 6));
   if (!shape) return nullptr;
   for (const Value& r : param(*shape, 2).items) {
@@ -136,7 +147,8 @@ std::optional<std::array<Vec, 2>> Geometry::axis(const step::Instance& product) 
   const step::Instance* rep = representation(product, "Axis");
   if (!rep || param(*rep, 3).items.empty()) return std::nullopt;
   const step::Instance* line = get(param(*rep, 3).items[0]);
-  if (!line || line->type != "IFCPOLYLINE" || param(*line, 0).items.size() != 2) return std::nullopt;
+  if (!line || line->type != "IFCPOLYLINE" || param(*line, 0).items.size() != 2)
+    return std::nullopt;
   const auto a = point(param(*line, 0).items[0]);
   const auto b = point(param(*line, 0).items[1]);
   if (!a || !b) return std::nullopt;
@@ -144,7 +156,8 @@ std::optional<std::array<Vec, 2>> Geometry::axis(const step::Instance& product) 
   return std::array<Vec, 2>{world.apply(*a), world.apply(*b)};
 }
 
-std::vector<Prism> Geometry::body(const step::Instance& product, std::vector<std::string>& problems) {
+std::vector<Prism> Geometry::body(const step::Instance& product,
+                                  std::vector<std::string>& problems) {
   std::vector<Prism> out;
   const step::Instance* rep = representation(product, "Body");
   if (!rep) {
@@ -167,8 +180,8 @@ Transform Geometry::operator_3d(const step::Instance& op) const {
   return t;
 }
 
-void Geometry::add_item(const step::Instance& item, const Transform& to_world, std::vector<Prism>& out,
-                        std::vector<std::string>& problems, int depth) {
+void Geometry::add_item(const step::Instance& item, const Transform& to_world,
+                        std::vector<Prism>& out, std::vector<std::string>& problems, int depth) {
   if (depth > kMaxNesting) {
     problems.push_back(fmt::format("{} nests deeper than {}", name_of(item), kMaxNesting));
     return;
@@ -193,16 +206,22 @@ void Geometry::add_item(const step::Instance& item, const Transform& to_world, s
       problems.push_back(fmt::format("{} maps no representation", name_of(item)));
       return;
     }
-    const Transform t = to_world.after(operator_3d(*target)).after(axis_placement(param(*source, 0)));
+    const Transform t =
+        to_world.after(operator_3d(*target)).after(axis_placement(param(*source, 0)));
     for (const Value& v : param(*mapped, 3).items)
       if (const step::Instance* i = get(v)) add_item(*i, t, out, problems, depth + 1);
   } else if (item.type == "IFCBOOLEANCLIPPINGRESULT" || item.type == "IFCBOOLEANRESULT") {
-    problems.push_back(fmt::format("{} ({} of its body and another solid) is imported as its "
-                                   "first operand, unclipped", name_of(item), param(item, 0).text));
-    if (const step::Instance* first = get(param(item, 1))) add_item(*first, to_world, out, problems, depth + 1);
+    problems.push_back(
+        fmt::format("{} ({} of its body and another solid) is imported as its "
+                    "first operand, unclipped",
+                    name_of(item), param(item, 0).text));
+    if (const step::Instance* first = get(param(item, 1)))
+      add_item(*first, to_world, out, problems, depth + 1);
   } else {
-    problems.push_back(fmt::format("{} is not an extrusion (the importer reads IfcExtrudedAreaSolid, "
-                                   "mapped or clipped)", name_of(item)));
+    problems.push_back(
+        fmt::format("{} is not an extrusion (the importer reads IfcExtrudedAreaSolid, "
+                    "mapped or clipped)",
+                    name_of(item)));
   }
 }
 
@@ -231,7 +250,8 @@ std::optional<Prism> Geometry::profile(const step::Instance& p, const Transform&
   out.outer = std::move(*ring);
   for (const Value& h : param(p, 3).items) {
     const step::Instance* inner = get(h);
-    if (auto hole = inner ? curve(*inner, to_plane, problems) : std::nullopt) out.holes.push_back(std::move(*hole));
+    if (auto hole = inner ? curve(*inner, to_plane, problems) : std::nullopt)
+      out.holes.push_back(std::move(*hole));
   }
   return out;
 }
@@ -247,8 +267,9 @@ std::optional<std::vector<Vec>> Geometry::curve(const step::Instance& c, const T
     if (list) {
       for (const Value& v : param(*list, 0).items) {
         if (v.items.size() >= 2 && v.items[0].is_number() && v.items[1].is_number())
-          ring.push_back(to_plane.apply({v.items[0].number, v.items[1].number,
-                                         v.items.size() > 2 && v.items[2].is_number() ? v.items[2].number : 0.0}));
+          ring.push_back(to_plane.apply(
+              {v.items[0].number, v.items[1].number,
+               v.items.size() > 2 && v.items[2].is_number() ? v.items[2].number : 0.0}));
       }
     }
     if (param(c, 1).kind == Value::Kind::list)
@@ -274,12 +295,16 @@ std::optional<std::vector<Vec>> Geometry::curve(const step::Instance& c, const T
   // Closed curves repeat their first point (and composite segments share their ends).
   std::vector<Vec> clean;
   for (const Vec& v : ring) {
-    if (!clean.empty() && std::abs(v.x - clean.back().x) + std::abs(v.y - clean.back().y) + std::abs(v.z - clean.back().z) <= 1e-12)
+    if (!clean.empty() && std::abs(v.x - clean.back().x) + std::abs(v.y - clean.back().y) +
+                                  std::abs(v.z - clean.back().z) <=
+                              1e-12)
       continue;
     clean.push_back(v);
   }
-  while (clean.size() > 1 && std::abs(clean.front().x - clean.back().x) + std::abs(clean.front().y - clean.back().y) +
-                                     std::abs(clean.front().z - clean.back().z) <= 1e-12)
+  while (clean.size() > 1 && std::abs(clean.front().x - clean.back().x) +
+                                     std::abs(clean.front().y - clean.back().y) +
+                                     std::abs(clean.front().z - clean.back().z) <=
+                                 1e-12)
     clean.pop_back();
   if (clean.size() < 3) {
     problems.push_back(fmt::format("{} has fewer than 3 distinct points", name_of(c)));

@@ -22,7 +22,8 @@ struct Vec {
   double z = 0.0;
 };
 
-/// An affine map with orthonormal (or, in mapped items, scaled) axes: p -> origin + sum p_i axes[i].
+/// An affine map with orthonormal (or, in mapped items, scaled) axes: p -> origin + sum p_i
+/// axes[i].
 struct Transform {
   std::array<Vec, 3> axes{Vec{1, 0, 0}, Vec{0, 1, 0}, Vec{0, 0, 1}};
   Vec origin{};
@@ -59,7 +60,8 @@ class Geometry {
   /// @return the product's 'Body' as prisms in world coordinates; each item that is not an
   ///   extrusion of a supported profile adds a sentence to `problems` (a clipping adds one and
   ///   keeps its first operand).
-  [[nodiscard]] std::vector<Prism> body(const step::Instance& product, std::vector<std::string>& problems);
+  [[nodiscard]] std::vector<Prism> body(const step::Instance& product,
+                                        std::vector<std::string>& problems);
   /// @return the end points of the product's 'Axis' polyline in world coordinates, if it has one.
   [[nodiscard]] std::optional<std::array<Vec, 2>> axis(const step::Instance& product);
 
@@ -68,12 +70,14 @@ class Geometry {
   std::unordered_map<std::uint32_t, Transform> placements_;
   int depth_ = 0;  ///< guards placement cycles
 
-  [[nodiscard]] const step::Instance* representation(const step::Instance& product, const char* identifier) const;
+  [[nodiscard]] const step::Instance* representation(const step::Instance& product,
+                                                     const char* identifier) const;
   void add_item(const step::Instance& item, const Transform& to_world, std::vector<Prism>& out,
                 std::vector<std::string>& problems, int depth);
   [[nodiscard]] std::optional<Prism> profile(const step::Instance& p, const Transform& to_plane,
                                              std::vector<std::string>& problems) const;
-  [[nodiscard]] std::optional<std::vector<Vec>> curve(const step::Instance& c, const Transform& to_plane,
+  [[nodiscard]] std::optional<std::vector<Vec>> curve(const step::Instance& c,
+                                                      const Transform& to_plane,
                                                       std::vector<std::string>& problems) const;
   [[nodiscard]] std::optional<Vec> point(const step::Value& v) const;
   [[nodiscard]] std::optional<Vec> direction(const step::Value& v) const;

@@ -33,31 +33,36 @@ Result<std::string> read_home_xml_entry(const std::filesystem::path& path) {
   int code = 0;
   std::unique_ptr<zip_t, ArchiveCloser> archive(zip_open(file.c_str(), ZIP_RDONLY, &code));
   if (!archive)
-    return Result<std::string>::failure(Code::io_error,
+    return Result<std::string>::failure(
+        Code::io_error,
         fmt::format("{}: not a readable .sh3d (ZIP) archive: {}", file, describe_open_error(code)));
   const zip_int64_t index = zip_name_locate(archive.get(), "Home.xml", 0);
   if (index < 0)
-    return Result<std::string>::failure(Code::io_error,fmt::format(
-        "{}: the archive has no Home.xml entry (a file saved by Sweet Home 3D 5.3 or later has "
-        "one)", file));
+    return Result<std::string>::failure(
+        Code::io_error,
+        fmt::format(
+            "{}: the archive has no Home.xml entry (a file saved by Sweet Home 3D 5.3 or later has "
+            "one)",
+            file));
   zip_stat_t stat;
   zip_stat_init(&stat);
   std::unique_ptr<zip_file_t, EntryCloser> entry(zip_fopen_index(archive.get(), index, 0));
   if (zip_stat_index(archive.get(), index, 0, &stat) != 0 || !(stat.valid & ZIP_STAT_SIZE) ||
       !entry)
-    return Result<std::string>::failure(Code::io_error,
-        fmt::format("{}: cannot read its Home.xml entry: {}", file,
-                    zip_error_strerror(zip_get_error(archive.get()))));
+    return Result<std::string>::failure(
+        Code::io_error, fmt::format("{}: cannot read its Home.xml entry: {}", file,
+                                    zip_error_strerror(zip_get_error(archive.get()))));
   if (stat.size > kMaxHomeXmlBytes)
-    return Result<std::string>::failure(Code::too_large,
+    return Result<std::string>::failure(
+        Code::too_large,
         fmt::format("{}: its Home.xml entry is {} bytes; at most {} (256 MiB) are read", file,
                     stat.size, kMaxHomeXmlBytes));
   std::string text(stat.size, '\0');
   const zip_int64_t read = zip_fread(entry.get(), text.data(), stat.size);
   if (read < 0 || static_cast<zip_uint64_t>(read) != stat.size)
-    return Result<std::string>::failure(Code::io_error,
-        fmt::format("{}: its Home.xml entry is truncated or corrupt: {}", file,
-                    zip_error_strerror(zip_file_get_error(entry.get()))));
+    return Result<std::string>::failure(
+        Code::io_error, fmt::format("{}: its Home.xml entry is truncated or corrupt: {}", file,
+                                    zip_error_strerror(zip_file_get_error(entry.get()))));
   return text;
 }
 

@@ -20,8 +20,8 @@ class PathReader {
   explicit PathReader(std::string_view text) : text_(text) {}
 
   void skip() {
-    while (pos_ < text_.size() && (std::isspace(static_cast<unsigned char>(text_[pos_])) ||
-                                   text_[pos_] == ','))
+    while (pos_ < text_.size() &&
+           (std::isspace(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == ','))
       ++pos_;
   }
   [[nodiscard]] bool done() {
@@ -150,7 +150,8 @@ bool draw(char cmd, PathReader& r, Point2 scale, double tolerance, Polygon& out)
       if (p) out.push_back((*p)[0]);
       return p.has_value();
     }
-    case 'h': case 'v': {
+    case 'h':
+    case 'v': {
       const std::optional<double> d = r.number();
       if (!d) return false;
       const bool h = std::tolower(static_cast<unsigned char>(cmd)) == 'h';
@@ -165,7 +166,8 @@ bool draw(char cmd, PathReader& r, Point2 scale, double tolerance, Polygon& out)
       add_arc(at, *rx, *ry, *phi, *large, *sweep, (*q)[0], scale, tolerance, out);
       return true;
     }
-    case 'c': case 'q': {
+    case 'c':
+    case 'q': {
       const int n = std::tolower(static_cast<unsigned char>(cmd)) == 'c' ? 3 : 2;
       const auto p = read_points(r, n, rel, at);
       if (!p) return false;

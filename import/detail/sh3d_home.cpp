@@ -29,8 +29,9 @@ class AttributeReader {
     if (!a && required) fail(name, "is missing", "");
     const std::string_view value = a.value();
     if (const std::optional<std::size_t> at = first_ill_formed_utf8(value)) {
-      fail(name, fmt::format("is not UTF-8 (byte {} is 0x{:02X})", *at + 1,
-                             static_cast<unsigned char>(value[*at])),
+      fail(name,
+           fmt::format("is not UTF-8 (byte {} is 0x{:02X})", *at + 1,
+                       static_cast<unsigned char>(value[*at])),
            value);
       return {};
     }
@@ -195,16 +196,16 @@ std::string check_level_references(const Home& home, std::string_view file) {
   auto unknown = [&](const std::string& level) { return !level.empty() && !ids.contains(level); };
   for (const WallRecord& w : home.walls)
     if (unknown(w.level))
-      return fmt::format("{}: <wall id='{}'> attribute 'level' names no <level>: '{}'", file,
-                         w.id, w.level);
+      return fmt::format("{}: <wall id='{}'> attribute 'level' names no <level>: '{}'", file, w.id,
+                         w.level);
   for (const ItemRecord& i : home.items)
     if (unknown(i.level))
       return fmt::format("{}: <doorOrWindow id='{}'> attribute 'level' names no <level>: '{}'",
                          file, i.id, i.level);
   for (const RoomRecord& r : home.rooms)
     if (unknown(r.level))
-      return fmt::format("{}: <room id='{}'> attribute 'level' names no <level>: '{}'", file,
-                         r.id, r.level);
+      return fmt::format("{}: <room id='{}'> attribute 'level' names no <level>: '{}'", file, r.id,
+                         r.level);
   return {};
 }
 
@@ -214,13 +215,15 @@ Result<Home> parse_home_xml(std::string_view xml, std::string_view file) {
   pugi::xml_document doc;
   const pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size());
   if (!parsed)
-    return Result<Home>::failure(Code::parse_error, fmt::format("{}: malformed XML at byte {}: {}", file,
-                                             parsed.offset, parsed.description()));
+    return Result<Home>::failure(
+        Code::parse_error,
+        fmt::format("{}: malformed XML at byte {}: {}", file, parsed.offset, parsed.description()));
   const pugi::xml_node root = doc.document_element();
   if (std::string_view(root.name()) != "home")
-    return Result<Home>::failure(Code::parse_error, fmt::format(
-        "{}: not a Sweet Home 3D Home.xml: the root element is <{}>, not <home>", file,
-        printable_utf8(root.name())));
+    return Result<Home>::failure(
+        Code::parse_error,
+        fmt::format("{}: not a Sweet Home 3D Home.xml: the root element is <{}>, not <home>", file,
+                    printable_utf8(root.name())));
 
   Home home;
   std::string error;

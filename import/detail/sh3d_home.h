@@ -29,16 +29,16 @@ struct Level {
 /// A `<wall>`: a straight box, or a circular arc when `arc_extent` is set.
 struct WallRecord {
   std::string id;
-  std::string level;           ///< level id, empty for a home without levels
-  std::string wall_at_start;   ///< id of the wall joined at `start`, may be empty
+  std::string level;          ///< level id, empty for a home without levels
+  std::string wall_at_start;  ///< id of the wall joined at `start`, may be empty
   std::string wall_at_end;
   Point2 start;
   Point2 end;
   double thickness = 0.0;
   std::optional<double> height_cm;         ///< absent: the home's default wall height
   std::optional<double> height_at_end_cm;  ///< a sloped top when it differs from `height_cm`
-  std::optional<double> arc_extent;     ///< radians, positive bulges to the left of start->end
-  std::optional<Color> color;           ///< from leftSideColor (else rightSideColor)
+  std::optional<double> arc_extent;        ///< radians, positive bulges to the left of start->end
+  std::optional<Color> color;              ///< from leftSideColor (else rightSideColor)
 };
 
 /// A `<doorOrWindow>` (anywhere in the tree, groups included). `centre` is the footprint's
@@ -53,10 +53,10 @@ struct ItemRecord {
   double width = 0.0;
   double depth = 0.0;
   double height = 0.0;
-  double elevation = 0.0;  ///< bottom above the level's elevation
-  bool mirrored = false;       ///< the model is drawn mirrored (its hinge swaps sides)
-  bool has_sash = false;       ///< it has a `<sash>` (a leaf that opens toward its front)
-  bool sash_on_left = true;    ///< its first `<sash>` turns about the left half of its width
+  double elevation = 0.0;     ///< bottom above the level's elevation
+  bool mirrored = false;      ///< the model is drawn mirrored (its hinge swaps sides)
+  bool has_sash = false;      ///< it has a `<sash>` (a leaf that opens toward its front)
+  bool sash_on_left = true;   ///< its first `<sash>` turns about the left half of its width
   std::string cut_out_shape;  ///< SVG path in the unit square, empty if absent
   // The part of the footprint cut in the wall, as fractions of width and height (DTD defaults).
   double wall_width = 1.0;

@@ -70,7 +70,8 @@ bool is_parallel(const WallRecord& a, const WallRecord& b) {
 std::optional<std::pair<Point2, std::size_t>> t_join_of(const std::vector<WallRecord>& walls,
                                                         std::size_t i, Point2 far, Point2 end) {
   for (std::size_t j = 0; j < walls.size(); ++j)
-    if (j != i && (walls[j].start == end || walls[j].end == end) && !is_parallel(walls[i], walls[j]))
+    if (j != i && (walls[j].start == end || walls[j].end == end) &&
+        !is_parallel(walls[i], walls[j]))
       return std::nullopt;
   std::optional<std::pair<Point2, std::size_t>> best;
   double best_off = 0.0;

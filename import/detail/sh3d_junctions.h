@@ -25,10 +25,10 @@ void snap_close_ends(std::vector<WallRecord>& walls, double snap_distance);
 /// straight wall of its level (off its centre line, within half its thickness, or in the corner
 /// block past one of its ends) is moved along its own wall onto that wall's centre line; if
 /// that point is near the other wall's end (within half of either thickness), the end joins
-/// that end instead (an L corner or a junction of three walls). The moved stretch lies inside the other wall, so the
-/// union of the walls barely changes, and the junction becomes a T or a corner that the plan
-/// format joins. The nearest centre line wins.
-/// A moved end that lands within `snap_distance` of another wall's end takes that end.
+/// that end instead (an L corner or a junction of three walls). The moved stretch lies inside the
+/// other wall, so the union of the walls barely changes, and the junction becomes a T or a corner
+/// that the plan format joins. The nearest centre line wins. A moved end that lands within
+/// `snap_distance` of another wall's end takes that end.
 /// @param[out] warnings appended: one `import_t_junction` warning listing the walls moved.
 /// O(walls^2).
 void join_t_ends(std::vector<WallRecord>& walls, double snap_distance, Report& warnings);

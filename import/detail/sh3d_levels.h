@@ -29,10 +29,9 @@ struct PlacedLevel {
 /// (the ids of the home's other elements), else its Sweet Home 3D id. Its height is its own,
 /// else the home's wall height, else 250 cm. `z_shift_cm` is added to every elevation.
 /// O(levels log levels).
-[[nodiscard]] std::vector<PlacedLevel> place_levels(const Home& home,
-                                                    const std::vector<sh3d::Level>& levels,
-                                                    double z_shift_cm,
-                                                    const std::set<std::string, std::less<>>& taken);
+[[nodiscard]] std::vector<PlacedLevel> place_levels(
+    const Home& home, const std::vector<sh3d::Level>& levels, double z_shift_cm,
+    const std::set<std::string, std::less<>>& taken);
 
 /// @return the placed level of Sweet Home 3D level `source_id`, or nullptr (a home without
 /// levels, or `source_id` empty). O(levels).

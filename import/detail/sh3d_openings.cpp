@@ -31,8 +31,8 @@ struct Segment {
   std::size_t wall = 0;  ///< index into the placed walls
   Point2 from;
   Point2 to;
-  double start = 0.0;    ///< metres along the wall's polyline where it starts
-  double total = 0.0;    ///< the wall's polyline length
+  double start = 0.0;  ///< metres along the wall's polyline where it starts
+  double total = 0.0;  ///< the wall's polyline length
 };
 
 std::vector<Segment> segments_of(const std::vector<PlacedWall>& walls) {
@@ -107,9 +107,9 @@ bool contains_door(std::string text) {
 struct Cut {
   const PlacedWall& wall;
   const Fit& fit;
-  Interval z;                     ///< the item's wall part, absolute heights
-  double floor = 0.0;             ///< z of the item's level floor
-  const Polygon* outline;         ///< its cut-out in its unit square (v up), or nullptr
+  Interval z;              ///< the item's wall part, absolute heights
+  double floor = 0.0;      ///< z of the item's level floor
+  const Polygon* outline;  ///< its cut-out in its unit square (v up), or nullptr
 };
 
 /// The hole of the cut in the wall's (u, v) frame, clipped to `rect` and under the wall's top
@@ -147,9 +147,11 @@ Polygon unit_shape(const Polygon& hole, Interval u, Interval v) {
   while (shape.size() > 1 && shape.front() == shape.back()) shape.pop_back();
   if (signed_area(shape) < 0) std::ranges::reverse(shape);
   const Polygon whole{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  return shape.size() == 4 && std::ranges::all_of(shape, [&](Point2 p) {
-           return std::ranges::find(whole, p) != whole.end();
-         }) ? Polygon{} : shape;
+  return shape.size() == 4 &&
+                 std::ranges::all_of(
+                     shape, [&](Point2 p) { return std::ranges::find(whole, p) != whole.end(); })
+             ? Polygon{}
+             : shape;
 }
 
 /// The part of the cut-out that lies in the wall, or nullopt if it is thinner than
@@ -227,8 +229,8 @@ std::vector<Opening> cut_item(const ItemRecord& item, const std::string& id, con
 
 void warn_about_item(const ItemRecord& item, const std::string& id,
                      const std::vector<Opening>& pieces, bool shape_read, Report& warnings) {
-  const std::string what = fmt::format("{} '{}' ({})", to_string(classify_item(item)), id,
-                                       item.name);
+  const std::string what =
+      fmt::format("{} '{}' ({})", to_string(classify_item(item)), id, item.name);
   if (pieces.empty()) {
     warnings.add(import_warning(
         Code::import_skipped_opening, id,
@@ -246,10 +248,9 @@ void warn_about_item(const ItemRecord& item, const std::string& id,
   if (pieces.size() > 1) {
     std::vector<std::string> where;
     for (const Opening& o : pieces) where.push_back(fmt::format("'{}' in wall '{}'", o.id, o.wall));
-    warnings.add(import_warning(
-        Code::import_split_opening, id,
-        fmt::format("{} passes through {} walls; it is cut as {}", what, pieces.size(),
-                    fmt::join(where, ", "))));
+    warnings.add(import_warning(Code::import_split_opening, id,
+                                fmt::format("{} passes through {} walls; it is cut as {}", what,
+                                            pieces.size(), fmt::join(where, ", "))));
   }
 }
 
@@ -266,10 +267,10 @@ bool same_storey(const std::vector<PlacedLevel>& levels, const std::string& a,
 }
 
 std::optional<std::pair<std::size_t, Fit>> find_host(const ItemRecord& item,
-                                                   const std::vector<Segment>& segments,
-                                                   const std::vector<PlacedWall>& walls,
-                                                   const std::vector<PlacedLevel>& levels,
-                                                   const HostOptions& options) {
+                                                     const std::vector<Segment>& segments,
+                                                     const std::vector<PlacedWall>& walls,
+                                                     const std::vector<PlacedLevel>& levels,
+                                                     const HostOptions& options) {
   std::optional<std::pair<std::size_t, Fit>> best;
   std::pair<bool, double> best_score;  // (sticks out of the wall, distance): less is better
   for (const Segment& s : segments) {
@@ -303,8 +304,8 @@ std::vector<Opening> place_openings(const std::vector<ItemRecord>& items,
     std::optional<Polygon> outline;
     const bool shaped = !item.cut_out_shape.empty() && item.cut_out_shape != kRectangle;
     if (shaped)
-      outline = parse_cut_out(item.cut_out_shape, item.width, item.height,
-                              placement.chord_tolerance);
+      outline =
+          parse_cut_out(item.cut_out_shape, item.width, item.height, placement.chord_tolerance);
     Placement with_outline = placement;
     with_outline.outline = outline ? &*outline : nullptr;
     std::vector<Opening> pieces;

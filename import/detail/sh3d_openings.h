@@ -25,10 +25,10 @@ struct HostOptions {
 
 /// Where the openings' walls stand: what place_openings needs besides the walls.
 struct Placement {
-  const std::vector<PlacedLevel>& levels;  ///< the plan's levels (place_levels)
-  double z_shift_cm = 0.0;                 ///< the shift given to convert_walls
+  const std::vector<PlacedLevel>& levels;           ///< the plan's levels (place_levels)
+  double z_shift_cm = 0.0;                          ///< the shift given to convert_walls
   double chord_tolerance = kDefaultChordTolerance;  ///< metres, for curved cut-out shapes
-  const Polygon* outline = nullptr;        ///< (set per item) its cut-out shape, v up
+  const Polygon* outline = nullptr;                 ///< (set per item) its cut-out shape, v up
 };
 
 /// Converts items to openings. Each is given to a wall by geometry, as Sweet Home 3D itself

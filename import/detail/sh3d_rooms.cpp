@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
+#include "geometry/polygon_predicates.h"
 #include "import/detail/sh3d_cut_out.h"
 #include "import/detail/sh3d_walls.h"
-#include "geometry/polygon_predicates.h"
 #include "plan/signed_area.h"
 
 namespace roomcad::sh3d {
@@ -72,12 +72,13 @@ std::vector<Slab> make_slabs(const Home& home, const std::vector<RoomRecord>& ro
       warnings.add(import_warning(
           Code::import_skipped_element, id,
           outline.empty()
-              ? fmt::format("room '{}' ({}) encloses no area; it has no floor or ceiling slab",
-                            id, room.name)
+              ? fmt::format("room '{}' ({}) encloses no area; it has no floor or ceiling slab", id,
+                            room.name)
               : fmt::format("the outline of room '{}' ({}) crosses or runs back along itself "
                             "(as a slit drawn around a stair well does), which a slab's outline "
                             "may not; it has no floor or ceiling slab (redraw the well as a "
-                            "hole: roomcad set ... holes=...)", id, room.name)));
+                            "hole: roomcad set ... holes=...)",
+                            id, room.name)));
       continue;
     }
     const PlacedLevel* level = find_placed(levels, room.level);
@@ -100,7 +101,8 @@ std::vector<Slab> make_slabs(const Home& home, const std::vector<RoomRecord>& ro
       ceiling.id = id + "-ceiling";
       ceiling.top = level ? height + ft : elevation + height + ft;
       if (room.ceiling_color) ceiling.color = *room.ceiling_color;
-      ceilings.push_back({ceiling, {elevation + height, elevation + height + ft}, bounds_of(outline)});
+      ceilings.push_back(
+          {ceiling, {elevation + height, elevation + height + ft}, bounds_of(outline)});
     }
   }
   std::vector<Slab> slabs;

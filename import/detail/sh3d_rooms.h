@@ -18,7 +18,8 @@ inline constexpr double kDefaultFloorThicknessCm = 12.0;
 ///   its floor): the slab `<room id>` from the level's elevation down by its floor thickness,
 ///   the band Sweet Home 3D fills. The lowest level's floors lie on the ground, which Sweet
 ///   Home 3D draws with no thickness: they are not slabs;
-/// - with `ceilings`, a room's ceiling, if shown and no floor slab of a higher level could cover it (no such
+/// - with `ceilings`, a room's ceiling, if shown and no floor slab of a higher level could cover it
+/// (no such
 ///   floor's box meets the room's box in the band above the ceiling): the slab
 ///   `<room id>-ceiling` on the room's level from its height up by its floor thickness (12 cm
 ///   without levels), so that a top storey is closed as drawn.

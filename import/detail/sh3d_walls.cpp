@@ -17,7 +17,6 @@
 namespace roomcad::sh3d {
 namespace {
 
-
 /// The wall's height (centimetres) at its start: its own, else the home's default, else its
 /// level's, else 250 (Sweet Home 3D's default).
 double height_cm(const Home& home, const WallRecord& w) {
@@ -39,7 +38,8 @@ double wall_height(const WallRecord& w, double above_cm, double below_cm, Report
   warnings.add(import_warning(
       Code::import_sloped_wall, w.id,
       fmt::format("wall '{}' has a height of {} m at one end; a wall's height must be positive, "
-                  "so it is imported as 1 mm there", w.id, above_cm / 100)));
+                  "so it is imported as 1 mm there",
+                  w.id, above_cm / 100)));
   return on_dyadic_grid(1e-3);
 }
 
@@ -58,7 +58,7 @@ PlacedWall make_wall(const Home& home, const WallRecord& w, const std::vector<Pl
   const double below_cm = level ? level->floor_offset_cm : 0.0;
   if (level) {
     wall.level = level->level.id;
-    wall.base = 0.0 - z_of(below_cm);  // no -0
+    wall.base = 0.0 - z_of(below_cm);                    // no -0
     placed.base_z = level->level.elevation + wall.base;  // exact: both on the dyadic grid
   } else {
     wall.base = z_of(options.z_shift_cm);

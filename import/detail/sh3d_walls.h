@@ -42,13 +42,12 @@ struct PlacedWall {
 };
 
 /// @return a warning of `code` about the object `id` (io's own codes start with `import_`).
-[[nodiscard]] Diagnostic import_warning(Code code, const std::string& id,
-                                        std::string message);
+[[nodiscard]] Diagnostic import_warning(Code code, const std::string& id, std::string message);
 
 struct WallOptions {
   double chord_tolerance = kDefaultChordTolerance;  ///< the plan's, for arcs' polylines
-  double snap_distance = 1e-3;    ///< end points closer than this are made equal, metres
-  double z_shift_cm = 0.0;        ///< added to every elevation (raises a basement to z >= 0)
+  double snap_distance = 1e-3;  ///< end points closer than this are made equal, metres
+  double z_shift_cm = 0.0;      ///< added to every elevation (raises a basement to z >= 0)
 };
 
 /// Converts `walls` (a selection of `home.walls`, in file order) to plan walls, one per
@@ -57,8 +56,7 @@ struct WallOptions {
 /// (`arc_extent`, the sign turned: Sweet Home 3D's positive arcs turn clockwise once y points
 /// north). A wall of zero length is left out with an `import_zero_length_wall` warning.
 /// @return the placed walls, in file order. O(walls^2) (junctions) + O(chords).
-[[nodiscard]] std::vector<PlacedWall> convert_walls(const Home& home,
-                                                    std::vector<WallRecord> walls,
+[[nodiscard]] std::vector<PlacedWall> convert_walls(const Home& home, std::vector<WallRecord> walls,
                                                     const std::vector<PlacedLevel>& levels,
                                                     const WallOptions& options, Report& warnings);
 

@@ -41,7 +41,8 @@ std::optional<Point2> meet(Point2 p, Point2 d, Point2 q, Point2 e) {
 double distance_to_segment(Point2 p, Point2 a, Point2 b) {
   const Point2 d = minus(b, a);
   const double len2 = d.x * d.x + d.y * d.y;
-  const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2, 0.0, 1.0) : 0.0;
+  const double t =
+      len2 > 0.0 ? std::clamp(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2, 0.0, 1.0) : 0.0;
   return std::hypot(p.x - a.x - t * d.x, p.y - a.y - t * d.y);
 }
 
@@ -68,7 +69,7 @@ std::optional<std::size_t> t_host(const JoinedWalls& walls, std::size_t w, WallE
 
 }  // namespace
 
-int IfcShapeWriter::point(Point2 p) { return out.add("IFCCARTESIANPOINT", reals({p.x, p.y}) ); }
+int IfcShapeWriter::point(Point2 p) { return out.add("IFCCARTESIANPOINT", reals({p.x, p.y})); }
 
 int IfcShapeWriter::point(Point2 p, double z) {
   return out.add("IFCCARTESIANPOINT", reals({p.x, p.y, z}));
@@ -79,7 +80,8 @@ int IfcShapeWriter::placement(Point2 at, double z, std::array<double, 3> axis,
   const int location = point(at, z);
   const int a = out.add("IFCDIRECTION", reals({axis[0], axis[1], axis[2]}));
   const int x = out.add("IFCDIRECTION", reals({x_axis[0], x_axis[1], x_axis[2]}));
-  return out.add("IFCAXIS2PLACEMENT3D", step::ref(location) + ',' + step::ref(a) + ',' + step::ref(x));
+  return out.add("IFCAXIS2PLACEMENT3D",
+                 step::ref(location) + ',' + step::ref(a) + ',' + step::ref(x));
 }
 
 int IfcShapeWriter::closed_polyline(const std::vector<Point2>& ring) {
@@ -103,8 +105,8 @@ int IfcShapeWriter::extrusion(const std::vector<Point2>& outline,
     profile = out.add("IFCARBITRARYPROFILEDEFWITHVOIDS",
                       ".AREA.,$," + step::ref(outer) + ',' + refs(inner));
   }
-  std::string parameters = step::ref(profile) + ',' + (position ? step::ref(position) : "$") + ',' +
-                           step::ref(up) + ',';
+  std::string parameters =
+      step::ref(profile) + ',' + (position ? step::ref(position) : "$") + ',' + step::ref(up) + ',';
   step::append_real(parameters, depth);
   const int solid = out.add("IFCEXTRUDEDAREASOLID", parameters);
   style(solid, color);
@@ -126,18 +128,22 @@ int IfcShapeWriter::face_set(const std::vector<std::array<double, 3>>& points,
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const auto& t = triangles[i];
     indices += i ? ",(" : "(";
-    indices += std::to_string(t[0] + 1) + ',' + std::to_string(t[1] + 1) + ',' + std::to_string(t[2] + 1) + ')';
+    indices += std::to_string(t[0] + 1) + ',' + std::to_string(t[1] + 1) + ',' +
+               std::to_string(t[2] + 1) + ')';
   }
-  const int set = out.add("IFCTRIANGULATEDFACESET", step::ref(coordinates) + ",$,.T.," + indices + "),$");
+  const int set =
+      out.add("IFCTRIANGULATEDFACESET", step::ref(coordinates) + ",$,.T.," + indices + "),$");
   style(set, color);
   return set;
 }
 
-int IfcShapeWriter::product_shape(const std::string& type, const std::vector<int>& items, int axis) {
+int IfcShapeWriter::product_shape(const std::string& type, const std::vector<int>& items,
+                                  int axis) {
   std::vector<int> representations;
   if (axis >= 0) {
-    representations.push_back(out.add("IFCSHAPEREPRESENTATION", step::ref(axis_context) +
-                                                                    ",'Axis','Curve2D',(" + step::ref(axis) + ')'));
+    representations.push_back(
+        out.add("IFCSHAPEREPRESENTATION",
+                step::ref(axis_context) + ",'Axis','Curve2D',(" + step::ref(axis) + ')'));
   }
   representations.push_back(out.add(
       "IFCSHAPEREPRESENTATION", step::ref(body_context) + ",'Body','" + type + "'," + refs(items)));
@@ -186,11 +192,12 @@ std::array<Point2, 4> export_footprint(const JoinedWalls& walls, std::size_t w) 
     const Point2 far_end = e == WallEnd::from ? wall.to : wall.from;
     // The face of the host on the side where this wall's far end lies.
     const double side = cross(hd, minus(far_end, h.from)) > 0.0 ? 1.0 : -1.0;
-    const Point2 face{h.from.x - side * hd.y / hl * h.thickness / 2, h.from.y + side * hd.x / hl * h.thickness / 2};
+    const Point2 face{h.from.x - side * hd.y / hl * h.thickness / 2,
+                      h.from.y + side * hd.x / hl * h.thickness / 2};
     const Point2 d = minus(wall.to, wall.from);
     // Corners of this end: from-right (0), from-left (3); to-right (1), to-left (2).
-    for (const std::size_t k : e == WallEnd::from ? std::array<std::size_t, 2>{0, 3}
-                                                    : std::array<std::size_t, 2>{1, 2}) {
+    for (const std::size_t k :
+         e == WallEnd::from ? std::array<std::size_t, 2>{0, 3} : std::array<std::size_t, 2>{1, 2}) {
       if (const auto p = meet(f[k], d, face, hd)) f[k] = *p;
     }
   }
@@ -228,8 +235,9 @@ int wall_body(IfcShapeWriter& shapes, const Wall& wall, const std::array<Point2,
   return shapes.face_set(points, triangles, wall.color);
 }
 
-int chord_piece_void(IfcShapeWriter& shapes, const Wall& chord, const std::array<Point2, 4>& footprint,
-                     const Opening& piece, std::array<bool, 2> mitred) {
+int chord_piece_void(IfcShapeWriter& shapes, const Wall& chord,
+                     const std::array<Point2, 4>& footprint, const Opening& piece,
+                     std::array<bool, 2> mitred) {
   const Point2 d = minus(chord.to, chord.from);
   const double length = std::hypot(d.x, d.y);
   const Point2 along{d.x / length, d.y / length}, left{-along.y, along.x};
@@ -238,7 +246,8 @@ int chord_piece_void(IfcShapeWriter& shapes, const Wall& chord, const std::array
   auto square = [&](double u) {
     const Point2 c{chord.from.x + along.x * u, chord.from.y + along.y * u};
     const double t = chord.thickness;
-    return std::array<Point2, 2>{Point2{c.x - left.x * t, c.y - left.y * t}, Point2{c.x + left.x * t, c.y + left.y * t}};
+    return std::array<Point2, 2>{Point2{c.x - left.x * t, c.y - left.y * t},
+                                 Point2{c.x + left.x * t, c.y + left.y * t}};
   };
   auto on_mitre = [&](Point2 right, Point2 left_corner) {
     const Point2 half{(left_corner.x - right.x) / 2, (left_corner.y - right.y) / 2};
@@ -247,9 +256,11 @@ int chord_piece_void(IfcShapeWriter& shapes, const Wall& chord, const std::array
   };
   // Footprint corners: from-right 0, to-right 1, to-left 2, from-left 3.
   const auto start = mitred[0] ? on_mitre(footprint[0], footprint[3]) : square(piece.offset);
-  const auto end = mitred[1] ? on_mitre(footprint[1], footprint[2]) : square(piece.offset + piece.width);
+  const auto end =
+      mitred[1] ? on_mitre(footprint[1], footprint[2]) : square(piece.offset + piece.width);
   const int position = shapes.placement({0.0, 0.0}, piece.sill, {0.0, 0.0, 1.0}, {1.0, 0.0, 0.0});
-  return shapes.extrusion({start[0], end[0], end[1], start[1]}, {}, position, piece.height, chord.color);
+  return shapes.extrusion({start[0], end[0], end[1], start[1]}, {}, position, piece.height,
+                          chord.color);
 }
 
 }  // namespace roomcad::io_detail

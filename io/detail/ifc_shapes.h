@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "io/step_file.h"
 #include "geometry/joins.h"
+#include "io/step_file.h"
 #include "plan/plan.h"
 
 namespace roomcad::io_detail {
@@ -18,9 +18,9 @@ namespace roomcad::io_detail {
 /// The STEP writer with the instances every shape refers to, shared instead of repeated.
 struct IfcShapeWriter {
   step::Writer& out;
-  int body_context = 0;  ///< 'Body' sub-context (MODEL_VIEW)
-  int axis_context = 0;  ///< 'Axis' sub-context (GRAPH_VIEW)
-  int up = 0;            ///< IFCDIRECTION((0.,0.,1.))
+  int body_context = 0;                   ///< 'Body' sub-context (MODEL_VIEW)
+  int axis_context = 0;                   ///< 'Axis' sub-context (GRAPH_VIEW)
+  int up = 0;                             ///< IFCDIRECTION((0.,0.,1.))
   std::map<std::uint32_t, int> styles{};  ///< colour (0xrrggbb) -> its IFCSURFACESTYLE
 
   /// @return a new IFCCARTESIANPOINT of 2 (or 3) coordinates, metres.
@@ -83,7 +83,8 @@ int wall_body(IfcShapeWriter& shapes, const Wall& wall, const std::array<Point2,
 /// @param piece     the piece on it (offset and width along the chord, sill, height)
 /// @param mitred    per end (from, to): the piece runs on through the mitre there
 /// @return the IFCEXTRUDEDAREASOLID, in the wall's placement (z = 0 at its base). O(1).
-int chord_piece_void(IfcShapeWriter& shapes, const Wall& chord, const std::array<Point2, 4>& footprint,
-                     const Opening& piece, std::array<bool, 2> mitred);
+int chord_piece_void(IfcShapeWriter& shapes, const Wall& chord,
+                     const std::array<Point2, 4>& footprint, const Opening& piece,
+                     std::array<bool, 2> mitred);
 
 }  // namespace roomcad::io_detail

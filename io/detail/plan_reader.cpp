@@ -49,7 +49,9 @@ std::string expected_names() {
   std::string out;
   const std::size_t n = std::size(EnumValues<E>::all);
   for (std::size_t i = 0; i < n; ++i)
-    out += (i == 0 ? "\"" : i + 1 == n ? " or \"" : ", \"") +
+    out += (i == 0       ? "\""
+            : i + 1 == n ? " or \""
+                         : ", \"") +
            std::string(to_string(EnumValues<E>::all[i])) + '"';
   return out;
 }
@@ -88,7 +90,8 @@ class PlanReader {
 
   std::string pointer() const {
     std::string p;
-    for (const Token& t : path_) p = t.is_index ? pointer_child(p, t.index) : pointer_child(p, t.key);
+    for (const Token& t : path_)
+      p = t.is_index ? pointer_child(p, t.index) : pointer_child(p, t.key);
     return p;
   }
 
@@ -172,7 +175,8 @@ class PlanReader {
   /// Reads `version` and `units` first: they decide how every other field is read.
   void read_preamble(od::object& root) {
     od::value v;
-    if (find(root, "version", v) && v.type().value() == JsonType::number && v.get_double().value() == 2.0)
+    if (find(root, "version", v) && v.type().value() == JsonType::number &&
+        v.get_double().value() == 2.0)
       version_ = 2;
     if (find(root, "units", v) && v.type().value() == JsonType::string) {
       // Kept for read_units: simdjson unescapes a string into a buffer sized for each string
@@ -242,9 +246,9 @@ class PlanReader {
     const std::string s =
         units_ ? *std::exchange(units_, std::nullopt) : std::string(v.get_string().value());
     if (s != "m" && s != "cm" && s != "mm")
-      invalid(at, "unsupported units " + quote_for_message(s) + "; expected \"m\", \"cm\" or \"mm\"");
+      invalid(at,
+              "unsupported units " + quote_for_message(s) + "; expected \"m\", \"cm\" or \"mm\"");
   }
-
 
   // ---- objects, through the field tables ----
 
@@ -268,9 +272,10 @@ class PlanReader {
     if (i <= kMaxPlanObjects) return;
     out.clear();
     problems_.resize(problems_before);  // one problem for the array, not one per object
-    invalid(at, std::to_string(i) + " objects; a plan may hold at most " +
-                    std::to_string(kMaxPlanObjects) +
-                    " of each kind (levels, walls, openings, slabs, lights, cameras)",
+    invalid(at,
+            std::to_string(i) + " objects; a plan may hold at most " +
+                std::to_string(kMaxPlanObjects) +
+                " of each kind (levels, walls, openings, slabs, lights, cameras)",
             "split the plan into several files");
     flush({});
   }
@@ -303,9 +308,11 @@ class PlanReader {
               v1_only ? "is a version 2 field and this file is version 1" : "");
     }
     for (const Field<Object>& f : fields)
-      if (f.presence == Presence::required && !seen.has(static_cast<std::size_t>(&f - fields.data())))
-        report(Severity::error, Code::parse_error, at,
-               "missing required field \"" + std::string(f.name) + "\" (" + std::string(f.hint) + ")");
+      if (f.presence == Presence::required &&
+          !seen.has(static_cast<std::size_t>(&f - fields.data())))
+        report(
+            Severity::error, Code::parse_error, at,
+            "missing required field \"" + std::string(f.name) + "\" (" + std::string(f.hint) + ")");
     complete_defaults(object, seen);
     flush(object_id(object));
     return object;
@@ -313,7 +320,9 @@ class PlanReader {
 
   static std::string object_id(const Site&) { return {}; }
   template <class Object>
-  static std::string object_id(const Object& o) { return o.id; }
+  static std::string object_id(const Object& o) {
+    return o.id;
+  }
 
   /// Defaults that depend on another field: an opening's size and sill depend on its type.
   void complete_defaults(Opening& o, const SeenKeys& seen) {
@@ -326,7 +335,8 @@ class PlanReader {
     if (!seen.has(field_index("sill"))) o.sill = d.sill;
   }
   void complete_defaults(Wall& w, const SeenKeys& seen) {
-    const auto height = static_cast<std::size_t>(find_field<Wall>("height") - fields_of<Wall>().data());
+    const auto height =
+        static_cast<std::size_t>(find_field<Wall>("height") - fields_of<Wall>().data());
     if (!w.level.empty() && !seen.has(height)) walls_without_height_.push_back(wall_count_);
     ++wall_count_;
   }
@@ -382,7 +392,6 @@ class PlanReader {
     return true;
   }
 
-
   void read_value(od::value& v, double& out, bool length) { read_number(v, out, length); }
   void read_value(od::value& v, std::optional<double>& out, bool length) {
     double x = 0.0;
@@ -402,20 +411,23 @@ class PlanReader {
     const std::size_t at = offset_of(v);
     const std::string_view text = v.get_string().value();
     if (const auto c = parse_color(text)) out = *c;
-    else invalid(at, "expected a colour \"#rrggbb\" (6 hexadecimal digits), found " + quote_for_message(text));
+    else
+      invalid(at, "expected a colour \"#rrggbb\" (6 hexadecimal digits), found " +
+                      quote_for_message(text));
   }
   void read_value(od::value& v, std::string& out, bool) {
     if (v.type().value() != JsonType::string) return wrong_type(v, "a string id");
     out = std::string(v.get_string().value());
   }
   template <class E>
-    requires std::is_enum_v<E>
+  requires std::is_enum_v<E>
   void read_value(od::value& v, E& out, bool) {
     if (v.type().value() != JsonType::string) return wrong_type(v, expected_names<E>());
     const std::size_t at = offset_of(v);
     const std::string_view text = v.get_string().value();
     if (const auto e = parse_enum<E>(text)) out = *e;
-    else invalid(at, "unknown value " + quote_for_message(text) + "; expected " + expected_names<E>());
+    else
+      invalid(at, "unknown value " + quote_for_message(text) + "; expected " + expected_names<E>());
   }
   void read_value(od::value& v, std::array<std::int64_t, 2>& out, bool) {
     if (v.type().value() != JsonType::array)
@@ -483,7 +495,6 @@ class PlanReader {
     out = std::move(polygons);
   }
 
-
   const char* json_begin_;
   const std::size_t base_;  ///< offset of json_begin_ in the file (past a byte-order mark)
   std::vector<Token> path_;
@@ -491,7 +502,7 @@ class PlanReader {
   std::vector<Problem> problems_;  ///< all the others
   SeenKeys top_keys_;
   int version_ = 1;
-  double scale_ = 1.0;  ///< divisor from the file's units to metres
+  double scale_ = 1.0;                ///< divisor from the file's units to metres
   std::optional<std::string> units_;  ///< the first "units" string, until read_units takes it
   std::vector<std::size_t> walls_without_height_;
   std::size_t wall_count_ = 0;
@@ -543,8 +554,7 @@ Plan read_plan_document(std::string_view text, std::string_view file, Report& re
     place_problems(reader.take_problems(), text, file, report);
     return plan;
   } catch (const simdjson::simdjson_error&) {
-  } catch (const Malformed&) {
-  }
+  } catch (const Malformed&) {}
   report.add(malformed_json(text, file));
   return {};
 }

@@ -25,7 +25,6 @@ namespace roomcad::io_detail {
 /// so are version-2 fields in a version-1 file, which that version does not define). Lengths
 /// are converted to metres. Never throws on any text. O(n) in the text's length.
 /// @return the plan as read; meaningful only if no error was appended.
-[[nodiscard]] Plan read_plan_document(std::string_view text, std::string_view file,
-                                      Report& report);
+[[nodiscard]] Plan read_plan_document(std::string_view text, std::string_view file, Report& report);
 
 }  // namespace roomcad::io_detail

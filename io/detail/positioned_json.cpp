@@ -73,15 +73,15 @@ class PositionedBuilder {
     const std::size_t at = token_start();
     Frame& top = stack_.back();
     if (top.value->contains(k)) {
-      return fail(at, "duplicate key \"" + k + "\" in one object",
-                  pointer_child(top.pointer, k));
+      return fail(at, "duplicate key \"" + k + "\" in one object", pointer_child(top.pointer, k));
     }
     top.key = std::move(k);
     out_->key_offsets[pointer_child(top.pointer, top.key)] = at;
     return true;
   }
 
-  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) {
+  bool parse_error(std::size_t position, const std::string&,
+                   const nlohmann::detail::exception& ex) {
     if (ex.id == 406) {  // number overflow: an out_of_range reported through this callback
       const std::size_t at = token_start();
       const std::string number(text_.substr(at, *consumed_ - at));
@@ -92,8 +92,8 @@ class PositionedBuilder {
     }
     std::string message = ex.what();
     // "[json.exception.parse_error.101] parse error at line 1, column 6: syntax error ..."
-    if (const auto colon = message.find(": "); colon != std::string::npos &&
-                                               message.compare(0, 1, "[") == 0) {
+    if (const auto colon = message.find(": ");
+        colon != std::string::npos && message.compare(0, 1, "[") == 0) {
       message = message.substr(colon + 2);
     }
     out_->error = JsonSyntaxError{position > 0 ? position - 1 : 0, "", std::move(message), false};
@@ -161,8 +161,9 @@ class PositionedBuilder {
 
   bool open(Json container) {
     if (depth_ + stack_.size() >= kMaxJsonDepth) {
-      return fail(token_start(), "nesting deeper than " + std::to_string(kMaxJsonDepth) +
-                                     " arrays and objects", next_pointer());
+      return fail(token_start(),
+                  "nesting deeper than " + std::to_string(kMaxJsonDepth) + " arrays and objects",
+                  next_pointer());
     }
     auto [where, pointer] = place(std::move(container));
     stack_.push_back(Frame{where, std::move(pointer), {}});
@@ -195,9 +196,9 @@ PositionedJson parse_positioned_json(std::string_view text, std::size_t depth) {
   std::size_t consumed = 0;
   PositionedBuilder builder(text, &consumed, depth, &out);
   try {
-    const bool ok = Json::sax_parse(CountingIterator(text.data(), &consumed),
-                                    CountingIterator(text.data() + text.size(), &consumed),
-                                    &builder);
+    const bool ok =
+        Json::sax_parse(CountingIterator(text.data(), &consumed),
+                        CountingIterator(text.data() + text.size(), &consumed), &builder);
     if (!ok && !out.error) out.error = JsonSyntaxError{consumed, "", "not a JSON document", false};
   } catch (const std::exception& e) {  // allocation failure and the like: still no crash
     out.error = JsonSyntaxError{consumed, "", e.what(), false};

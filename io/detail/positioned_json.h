@@ -21,10 +21,10 @@ inline constexpr std::size_t kMaxJsonDepth = 256;
 
 /// Why a text is not a JSON document we accept.
 struct JsonSyntaxError {
-  std::size_t offset = 0;  ///< byte offset in the text where the problem was seen
-  std::string pointer;     ///< JSON pointer of the value concerned, when known
-  std::string message;     ///< what is wrong, without the position
-  bool not_finite = false; ///< a number too large for a double (invalid_value, not parse_error)
+  std::size_t offset = 0;   ///< byte offset in the text where the problem was seen
+  std::string pointer;      ///< JSON pointer of the value concerned, when known
+  std::string message;      ///< what is wrong, without the position
+  bool not_finite = false;  ///< a number too large for a double (invalid_value, not parse_error)
 };
 
 struct PositionedJson {
@@ -33,7 +33,8 @@ struct PositionedJson {
   std::unordered_map<std::string, std::size_t> value_offsets;
   /// Byte offset of the opening quote of each object key, by the JSON pointer of its value.
   std::unordered_map<std::string, std::size_t> key_offsets;
-  std::optional<JsonSyntaxError> error;  ///< set when the text is not accepted; root is then partial
+  std::optional<JsonSyntaxError>
+      error;  ///< set when the text is not accepted; root is then partial
 };
 
 /// Parses `text` (strict JSON, UTF-8; duplicate keys and nesting deeper than kMaxJsonDepth are

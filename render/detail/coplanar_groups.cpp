@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Triangles of one plane joined by shared edges: what Makarov & Safin call one face (the scene holds
-// the model's polygons as triangles), so a region seeing only that plane can stop early.
+// Triangles of one plane joined by shared edges: what Makarov & Safin call one face (the scene
+// holds the model's polygons as triangles), so a region seeing only that plane can stop early.
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -57,7 +57,8 @@ void group_coplanar(std::vector<FlatTriangle>& triangles) {
   std::iota(parent.begin(), parent.end(), 0u);
   for (std::size_t k = 0; k + 1 < edges.size(); ++k) {
     const EdgeRef &a = edges[k], &b = edges[k + 1];
-    const bool pair = a.key() == b.key() && (k + 2 == edges.size() || edges[k + 2].key() != a.key()) &&
+    const bool pair = a.key() == b.key() &&
+                      (k + 2 == edges.size() || edges[k + 2].key() != a.key()) &&
                       (k == 0 || edges[k - 1].key() != a.key());
     if (!pair || !is_same_plane(triangles[a.triangle], triangles[b.triangle])) continue;
     triangles[a.triangle].boundary[a.edge] = false;

@@ -34,8 +34,8 @@ bool segment_meets_triangle(const glm::dvec3& a, const glm::dvec3& b, const Tria
   return false;
 }
 
-bool is_crease(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r0,
-               const glm::dvec3& r1, bool same_facing) {
+bool is_crease(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r0, const glm::dvec3& r1,
+               bool same_facing) {
   const P3 a = to_point(p), b = to_point(q), c = to_point(r0), d = to_point(r1);
   if (CGAL::collinear(a, b, c) || CGAL::collinear(a, b, d)) return true;
   if (!same_facing) return true;
@@ -58,8 +58,8 @@ bool is_edge_on(const Triangle3& t, const glm::dvec3& eye, const glm::dvec3& for
   // Differences of doubles round, so the edge vectors are built in the lazy exact kernel.
   const auto e = [](const glm::dvec3& v) { return E::Point_3(v.x, v.y, v.z); };
   const E::Point_3 e0 = e(t[0]);
-  return CGAL::orientation(e(t[1]) - e0, e(t[2]) - e0, E::Vector_3(forward.x, forward.y, forward.z)) ==
-         CGAL::COPLANAR;
+  return CGAL::orientation(e(t[1]) - e0, e(t[2]) - e0,
+                           E::Vector_3(forward.x, forward.y, forward.z)) == CGAL::COPLANAR;
 }
 
 bool is_collinear(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r) {

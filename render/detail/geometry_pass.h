@@ -37,7 +37,7 @@ struct BinnedTriangles {
 /// Inputs of one geometry pass (the `uniform_` state of the vertex stage).
 struct GeometryPass {
   glm::mat4 uniform_view_projection{1.f};
-  int width = 0;   ///< pixels, <= 2^20
+  int width = 0;  ///< pixels, <= 2^20
   int height = 0;
   int tile_size = 64;
   bool cull_back_faces = true;  ///< one-sided scene triangles only; two-sided are never culled

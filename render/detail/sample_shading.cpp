@@ -32,8 +32,8 @@ void load_triangle(const ShadeUniforms& u, std::uint32_t id, TriangleVarying& v)
   // n . (eye - p) is the same at every point p of the triangle's plane, so one test per
   // triangle turns the back of a two-sided face towards the viewer.
   const glm::vec3 normal = scene.normals[tri];
-  const glm::vec3 to_eye = u.shading.orthographic ? -u.shading.forward
-                                                  : u.shading.eye - v.corners[0];
+  const glm::vec3 to_eye =
+      u.shading.orthographic ? -u.shading.forward : u.shading.eye - v.corners[0];
   const glm::vec3 facing = glm::dot(normal, to_eye) < 0.f ? -normal : normal;
   v.color = to_unit_rgb(scene.colors[tri]);
   v.is_floor = scene.kinds[tri] == FaceKind::floor;

@@ -11,7 +11,7 @@ namespace roomcad::detail {
 /// render_shadow_map into `map`, reusing its depth image and `bins`' memory.
 /// @param[out] map   replaced: the light's map at `resolution` (>= 1) texels per side
 /// @param[out] bins  scratch, contents replaced. O(triangles + texels).
-void render_shadow_map_into(const Scene& scene, const Light& light, int resolution,
-                            ShadowMap& map, BinnedTriangles& bins);
+void render_shadow_map_into(const Scene& scene, const Light& light, int resolution, ShadowMap& map,
+                            BinnedTriangles& bins);
 
 }  // namespace roomcad::detail

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Makarov & Safin's recursive split: contours as runs of the face seen, the depth order carried along
-// each splitting line from crossing to crossing.
+// Makarov & Safin's recursive split: contours as runs of the face seen, the depth order carried
+// along each splitting line from crossing to crossing.
 #include "render/detail/visibility_split.h"
 
 #include <algorithm>
@@ -27,7 +27,7 @@ using Side = std::vector<Run>;
 
 struct Region {
   double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;  ///< on sample centres
-  Side top, bottom, left, right;  ///< y = y0, y = y1 (along x); x = x0, x = x1 (along y)
+  Side top, bottom, left, right;          ///< y = y0, y = y1 (along x); x = x0, x = x1 (along y)
   std::vector<std::uint32_t> candidates;  ///< triangles whose box meets the region
 };
 
@@ -53,9 +53,9 @@ bool line_interval(const FlatTriangle& t, bool horizontal, double c, double& lo,
     // inside: orient * cross(b - a, q - a) >= -slack * |b - a|, with q = (t, c) or (c, t)
     const double ex = b.x - a.x, ey = b.y - a.y;
     const double slack = kCoverSlack * std::hypot(ex, ey);
-    const double k = orient * (horizontal ? -ey : ex);       // coefficient of t
-    const double m = orient * (horizontal ? ex * (c - a.y) + ey * a.x
-                                          : -ey * (c - a.x) - ex * a.y) + slack;
+    const double k = orient * (horizontal ? -ey : ex);  // coefficient of t
+    const double m =
+        orient * (horizontal ? ex * (c - a.y) + ey * a.x : -ey * (c - a.x) - ex * a.y) + slack;
     // inside when k * t + m >= 0 (m holds the terms without t)
     if (k == 0.0) {
       if (m < 0.0) return false;
@@ -100,8 +100,8 @@ std::int64_t mark_sample(const Context& cx, const std::vector<std::uint32_t>& co
 }
 
 /// Marks what the z-buffer shows at the sample centres k + 0.5 in [from, to) of a line.
-void mark_line_samples(const Context& cx, const std::vector<std::uint32_t>& active,
-                       bool horizontal, double across, double from, double to) {
+void mark_line_samples(const Context& cx, const std::vector<std::uint32_t>& active, bool horizontal,
+                       double across, double from, double to) {
   const int c = static_cast<int>(std::floor(across));
   for (int k = static_cast<int>(std::ceil(from - 0.5)); k + 0.5 < to; ++k) {
     if (horizontal) mark_sample(cx, active, k, c);
@@ -125,7 +125,8 @@ Side sweep(const Context& cx, const std::vector<std::uint32_t>& candidates, bool
   std::vector<std::uint32_t> active;
   for (const std::uint32_t i : candidates) {
     double lo = 0.0, hi = 0.0;
-    if (!line_interval(cx.triangles[i], horizontal, across, lo, hi) || hi < from || lo > to) continue;
+    if (!line_interval(cx.triangles[i], horizontal, across, lo, hi) || hi < from || lo > to)
+      continue;
     if (lo <= from) active.push_back(i);
     else events.push_back({lo, 1, i});
     if (hi < to) events.push_back({hi, 0, i});
@@ -230,7 +231,8 @@ bool meets_rectangle(const FlatTriangle& t, double x0, double y0, double x1, dou
     return false;
   }
   const Point2 &p0 = t.p[0], &p1 = t.p[1], &p2 = t.p[2];
-  const double orient = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x) > 0.0 ? 1.0 : -1.0;
+  const double orient =
+      (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x) > 0.0 ? 1.0 : -1.0;
   for (int i = 0; i < 3; ++i) {
     const Point2 a = t.p[i], e{t.p[(i + 1) % 3].x - a.x, t.p[(i + 1) % 3].y - a.y};
     // The rectangle's corner farthest inside this edge: if even it is outside, they are apart.
@@ -265,16 +267,44 @@ void split_in_two(const Context& cx, Region& r, bool vertical, double c) {
   Region a, b;  // the low and the high half
   if (vertical) {
     const Side line = sweep(cx, r.candidates, false, c, r.y0, r.y1);
-    a = {r.x0, r.y0, c, r.y1, clip_side(r.top, r.x0, c), clip_side(r.bottom, r.x0, c),
-         std::move(r.left), line, {}};
-    b = {c, r.y0, r.x1, r.y1, clip_side(r.top, c, r.x1), clip_side(r.bottom, c, r.x1), line,
-         std::move(r.right), {}};
+    a = {r.x0,
+         r.y0,
+         c,
+         r.y1,
+         clip_side(r.top, r.x0, c),
+         clip_side(r.bottom, r.x0, c),
+         std::move(r.left),
+         line,
+         {}};
+    b = {c,
+         r.y0,
+         r.x1,
+         r.y1,
+         clip_side(r.top, c, r.x1),
+         clip_side(r.bottom, c, r.x1),
+         line,
+         std::move(r.right),
+         {}};
   } else {
     const Side line = sweep(cx, r.candidates, true, c, r.x0, r.x1);
-    a = {r.x0, r.y0, r.x1, c, std::move(r.top), line, clip_side(r.left, r.y0, c),
-         clip_side(r.right, r.y0, c), {}};
-    b = {r.x0, c, r.x1, r.y1, line, std::move(r.bottom), clip_side(r.left, c, r.y1),
-         clip_side(r.right, c, r.y1), {}};
+    a = {r.x0,
+         r.y0,
+         r.x1,
+         c,
+         std::move(r.top),
+         line,
+         clip_side(r.left, r.y0, c),
+         clip_side(r.right, r.y0, c),
+         {}};
+    b = {r.x0,
+         c,
+         r.x1,
+         r.y1,
+         line,
+         std::move(r.bottom),
+         clip_side(r.left, c, r.y1),
+         clip_side(r.right, c, r.y1),
+         {}};
   }
   a.candidates = overlapping(cx, r.candidates, a.x0, a.y0, a.x1, a.y1);
   b.candidates = overlapping(cx, r.candidates, b.x0, b.y0, b.x1, b.y1);

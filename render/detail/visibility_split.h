@@ -23,7 +23,7 @@ struct FlatTriangle {
   std::array<Point2, 3> p{};
   glm::dvec3 depth{0.0};  ///< depth(x, y) = depth.x * x + depth.y * y + depth.z
   Box2 box = empty_box2();
-  std::uint32_t id = 0;  ///< scene triangle
+  std::uint32_t id = 0;     ///< scene triangle
   std::uint32_t group = 0;  ///< triangles joined by shared edges in one plane (group_coplanar)
   std::array<bool, 3> boundary{true, true, true};  ///< edge p[i] -> p[i + 1] is not shared
                                                    ///< with a triangle of its plane

@@ -81,19 +81,23 @@ TEST(BuildCommand, CoordinatesReadBackToTheSameDoubles) {
   Plan plan = two_rooms();
   for (Wall& w : plan.walls) w.from.x += 0.1, w.to.x += 0.1;  // decimals that are not exact
   const auto out = dir / "walls.off";
-  const auto r = run_roomcad({"build", write_plan(dir, plan), "--parts", "walls", "-o", out.string()});
+  const auto r =
+      run_roomcad({"build", write_plan(dir, plan), "--parts", "walls", "-o", out.string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto written = read_off_vertices(test::read_bytes(out));
   const Model model = build_model(read_plan_text(write_plan_text(plan), "x").value());
   ASSERT_EQ(written.size(), model.walls.n_vertices());
-  for (const auto v : model.walls.vertices()) EXPECT_EQ(written[std::size_t(v.idx())], model.walls.point(v));
+  for (const auto v : model.walls.vertices())
+    EXPECT_EQ(written[std::size_t(v.idx())], model.walls.point(v));
 }
 
 TEST(BuildCommand, SameBytesAtAnyThreadCount) {
   TempDir dir;
   const std::string plan = write_plan(dir, two_rooms());
-  ASSERT_EQ(run_roomcad({"build", plan, "--threads", "1", "-o", (dir / "a.ply").string()}).status, 0);
-  ASSERT_EQ(run_roomcad({"build", plan, "--threads", "2", "-o", (dir / "b.ply").string()}).status, 0);
+  ASSERT_EQ(run_roomcad({"build", plan, "--threads", "1", "-o", (dir / "a.ply").string()}).status,
+            0);
+  ASSERT_EQ(run_roomcad({"build", plan, "--threads", "2", "-o", (dir / "b.ply").string()}).status,
+            0);
   EXPECT_EQ(test::read_bytes(dir / "a.ply"), test::read_bytes(dir / "b.ply"));
 }
 
@@ -107,8 +111,8 @@ TEST(BuildCommand, NefPathWritesTheSameBytesEveryRun) {
   std::string first;
   for (int run = 0; run < 3; ++run) {
     const auto off = dir / "walls.off";
-    const auto r = run_roomcad({"build", plan, "--force", "--boolean", "nef", "--parts", "walls", "--threads", "1",
-                                "-o", off.string()});
+    const auto r = run_roomcad({"build", plan, "--force", "--boolean", "nef", "--parts", "walls",
+                                "--threads", "1", "-o", off.string()});
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string bytes = test::read_bytes(off);
     if (run == 0) first = bytes;
@@ -120,7 +124,8 @@ TEST(BuildCommand, NefPathWritesTheSameBytesEveryRun) {
 TEST(BuildCommand, WallsOnlyLeavesOutFloorAndFixtures) {
   TempDir dir;
   const std::string plan = write_plan(dir, two_rooms());
-  ASSERT_EQ(run_roomcad({"build", plan, "--parts", "walls", "-o", (dir / "w.obj").string()}).status, 0);
+  ASSERT_EQ(run_roomcad({"build", plan, "--parts", "walls", "-o", (dir / "w.obj").string()}).status,
+            0);
   const std::string mtl = test::read_bytes(dir / "w.mtl");
   EXPECT_EQ(mtl.find("c_c8c8c8"), std::string::npos) << "floor colour in " << mtl;
   EXPECT_EQ(mtl.find("c_8b5a2b"), std::string::npos) << "door colour in " << mtl;
@@ -134,14 +139,17 @@ TEST(BuildCommand, LevelBuildsOneStoreyWhereItStands) {
   plan.walls[4].level = "first";  // mid, with its door, up one storey
   const std::string path = write_plan(dir, plan);
   const auto off = dir / "first.off";
-  const auto r = run_roomcad({"build", path, "--force", "--level", "first", "--parts", "walls", "--check", "-o", off.string()});
+  const auto r = run_roomcad({"build", path, "--force", "--level", "first", "--parts", "walls",
+                              "--check", "-o", off.string()});
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("check: ok"), std::string::npos) << r.out;
   const auto vertices = read_off_vertices(test::read_bytes(off));
   ASSERT_FALSE(vertices.empty());
-  const auto lowest = std::min_element(vertices.begin(), vertices.end(), [](const auto& a, const auto& b) { return a[2] < b[2]; });
+  const auto lowest = std::min_element(vertices.begin(), vertices.end(),
+                                       [](const auto& a, const auto& b) { return a[2] < b[2]; });
   EXPECT_EQ((*lowest)[2], 3.0);
-  const auto unknown = run_roomcad({"build", path, "--level", "attic", "-o", (dir / "a.off").string()});
+  const auto unknown =
+      run_roomcad({"build", path, "--level", "attic", "-o", (dir / "a.off").string()});
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.err.find("--level 'attic'"), std::string::npos) << unknown.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "a.off"));

@@ -114,7 +114,8 @@ TEST(Cli, InfoExitStatuses) {
   EXPECT_EQ(bad.status, 1);
   EXPECT_EQ(bad.out, "");
   EXPECT_NE(bad.err.find("error[parse_error]"), std::string::npos) << bad.err;
-  EXPECT_NE(bad.err.find("bad.json:1:19: /walls/0/id: expected a string id, found 1"), std::string::npos)
+  EXPECT_NE(bad.err.find("bad.json:1:19: /walls/0/id: expected a string id, found 1"),
+            std::string::npos)
       << bad.err;
   EXPECT_EQ(bad.err.find('\033'), std::string::npos) << "no colour when stderr is not a terminal";
 
@@ -154,18 +155,24 @@ TEST(Cli, FmtRewritesInPlaceAndToAnotherFile) {
   EXPECT_NE(check.err.find("not in canonical form"), std::string::npos) << check.err;
   EXPECT_EQ(test::read_bytes(dir / "p.json"), messy) << "--check writes nothing";
 
-  const auto to_other = run_roomcad({"fmt", (dir / "p.json").string(), "-o", (dir / "q.json").string()});
+  const auto to_other =
+      run_roomcad({"fmt", (dir / "p.json").string(), "-o", (dir / "q.json").string()});
   EXPECT_EQ(to_other.status, 0) << to_other.err;
   EXPECT_EQ(test::read_bytes(dir / "p.json"), messy) << "-o leaves the input alone";
   const std::string canonical = test::read_bytes(dir / "q.json");
-  EXPECT_NE(canonical.find(R"({"id": "a", "from": [0, 0], "to": [4, 0], "thickness": 0.25, "height": 2.8, "base": 0, "color": "#abcdef"})"),
-            std::string::npos) << canonical;
+  EXPECT_NE(
+      canonical.find(
+          R"({"id": "a", "from": [0, 0], "to": [4, 0], "thickness": 0.25, "height": 2.8, "base": 0, "color": "#abcdef"})"),
+      std::string::npos)
+      << canonical;
   EXPECT_NE(canonical.find("  \"note\": \"kept\"\n}\n"), std::string::npos) << canonical;
   EXPECT_NE(to_other.err.find("warning[unknown_field]"), std::string::npos);
 
   EXPECT_EQ(run_roomcad({"fmt", (dir / "p.json").string()}).status, 0);
   EXPECT_EQ(test::read_bytes(dir / "p.json"), canonical);
-  EXPECT_EQ(run_roomcad({"fmt", "--check", (dir / "p.json").string(), (dir / "q.json").string()}).status, 0);
+  EXPECT_EQ(
+      run_roomcad({"fmt", "--check", (dir / "p.json").string(), (dir / "q.json").string()}).status,
+      0);
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path())) ++files;
   EXPECT_EQ(files, 2u) << "no temporary file left";
@@ -183,12 +190,16 @@ TEST(Cli, FmtLeavesBadPlansAlone) {
 
   EXPECT_EQ(run_roomcad({"fmt", (dir / "missing.json").string()}).status, 2);
   ASSERT_TRUE(test::write_bytes(dir / "ok.json", "{}"));
-  const auto unwritable = run_roomcad({"fmt", (dir / "ok.json").string(), "-o", (dir / "no" / "x.json").string()});
+  const auto unwritable =
+      run_roomcad({"fmt", (dir / "ok.json").string(), "-o", (dir / "no" / "x.json").string()});
   EXPECT_EQ(unwritable.status, 2);
   EXPECT_EQ(test::failure_code(unwritable), Code::io_error);
   EXPECT_NE(unwritable.err.find("cannot write"), std::string::npos) << unwritable.err;
   // The worst status over several files.
-  EXPECT_EQ(run_roomcad({"fmt", "--check", (dir / "bad.json").string(), (dir / "missing.json").string()}).status, 2);
+  EXPECT_EQ(
+      run_roomcad({"fmt", "--check", (dir / "bad.json").string(), (dir / "missing.json").string()})
+          .status,
+      2);
 }
 
 }  // namespace

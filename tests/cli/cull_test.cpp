@@ -26,9 +26,9 @@ TEST(Cull, NoCullingSwitchChangesAnyExamplePicture) {
     std::string reference;
     for (const auto& [cull, frustum] : switches) {
       const auto out = dir / (name + "-" + cull + "-" + frustum + ".png");
-      const auto r = run_roomcad({"render", plan.string(), "--width", "240", "--height", "160",
-                                  "--ssaa", "2", "--cull", cull, "--frustum-cull", frustum,
-                                  "--stats", "-o", out.string()});
+      const auto r =
+          run_roomcad({"render", plan.string(), "--width", "240", "--height", "160", "--ssaa", "2",
+                       "--cull", cull, "--frustum-cull", frustum, "--stats", "-o", out.string()});
       ASSERT_EQ(r.status, 0) << name << " --cull " << cull << ": " << r.err;
       if (std::string(cull) == "visibility") {
         EXPECT_EQ(r.err.find("\"culled_triangles\": 0,"), std::string::npos) << name << r.err;

@@ -95,8 +95,9 @@ TEST(DrawCommand, BadOptionsExitTwo) {
 TEST(DrawCommand, DrawsElevationsIsoAndCameraViews) {
   const TempDir dir;
   std::string text = kRoomPlan;
-  text.replace(text.rfind('}'), 1,
-               R"(, "cameras": [ { "id": "inside", "eye": [2, 2, 1.6], "target": [6, 4, 1.2] } ] })");
+  text.replace(
+      text.rfind('}'), 1,
+      R"(, "cameras": [ { "id": "inside", "eye": [2, 2, 1.6], "target": [6, 4, 1.2] } ] })");
   const std::string plan = (dir / "room.json").string();
   ASSERT_TRUE(write_bytes(plan, text));
   for (const char* view : {"north", "south", "east", "west", "iso", "camera:inside"}) {
@@ -112,8 +113,9 @@ TEST(DrawCommand, DrawsElevationsIsoAndCameraViews) {
   }
   // The south elevation looks at the door and the window: hidden lines dashed, or left out.
   ASSERT_EQ(draw({plan, "--view", "south", "-o", (dir / "dashed.svg").string()}).status, 0);
-  ASSERT_EQ(draw({plan, "--view", "south", "--hidden", "off", "-o", (dir / "off.svg").string()})
-                .status, 0);
+  ASSERT_EQ(
+      draw({plan, "--view", "south", "--hidden", "off", "-o", (dir / "off.svg").string()}).status,
+      0);
   const std::string dashed = read_bytes(dir / "dashed.svg"), off = read_bytes(dir / "off.svg");
   EXPECT_GT(lines_in(dashed, "<g id=\"hidden\""), 0u);
   EXPECT_EQ(lines_in(off, "<g id=\"hidden\""), 0u);

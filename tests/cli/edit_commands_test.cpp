@@ -13,9 +13,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "io/plan_lock.h"
+#include "support/plan_reading.h"
 #include "support/run_command.h"
 
 namespace roomcad {
@@ -69,11 +69,13 @@ class EditCommands : public ::testing::Test {
 
 TEST_F(EditCommands, AddsEachKindWithGeneratedIds) {
   const fs::path plan = room();
-  EXPECT_EQ(edit("add", plan, "wall --from 3,3 --to 5.5,3 --thickness 0.2 --color #112233").status, 0);
+  EXPECT_EQ(edit("add", plan, "wall --from 3,3 --to 5.5,3 --thickness 0.2 --color #112233").status,
+            0);
   EXPECT_EQ(edit("add", plan, "door --wall west --offset 2 --hinge right").status, 0);
   EXPECT_EQ(edit("add", plan, "window --id w9 --wall east --offset 2 --width 1.2").status, 0);
   EXPECT_EQ(edit("add", plan, "light --direction 0.3,0.2,-1 --ambient 0.4").status, 0);
-  const CommandResult r = edit("add", plan, "camera --eye 6,4,20 --target 6,4,0 --up 0,1,0 --projection orthographic");
+  const CommandResult r =
+      edit("add", plan, "camera --eye 6,4,20 --target 6,4,0 --up 0,1,0 --projection orthographic");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "+ camera-1\n");
   const Plan p = load(plan);
@@ -263,7 +265,8 @@ TEST_F(EditCommands, SetFieldsTypeCheckedAndValidated) {
   EXPECT_EQ(load(plan).openings[0].wall, "front");
   EXPECT_EQ(edit("set", plan, "site cells=14,9").status, 0);
   const std::string before = read_bytes(plan);
-  EXPECT_EQ(edit("set", plan, "front height=3").out, "nothing to change: '" + plan.string() + "' is left as it was\n");
+  EXPECT_EQ(edit("set", plan, "front height=3").out,
+            "nothing to change: '" + plan.string() + "' is left as it was\n");
   EXPECT_EQ(read_bytes(plan), before);
 }
 
@@ -278,7 +281,8 @@ TEST_F(EditCommands, BadArgumentsExitTwoWithAClearMessage) {
   expect_untouched(2, "rotate", plan, "south --deg ninety", "--deg wants a finite number");
   expect_untouched(2, "scale", plan, "south --factor 0", "positive");
   expect_untouched(2, "add", plan, "wall --from 1,1", "needs --to");
-  expect_untouched(2, "add", plan, "door --wall south --offset 1 --from 1,1", "--from does not apply to a door");
+  expect_untouched(2, "add", plan, "door --wall south --offset 1 --from 1,1",
+                   "--from does not apply to a door");
   expect_untouched(2, "add", plan, "door --wall nowhere --offset 1", "'nowhere'");
   expect_untouched(2, "add", plan, "wall --id entry --from 3,3 --to 4,3", "already used");
   expect_untouched(2, "set", plan, "south thickness", "not key=value");
@@ -306,14 +310,16 @@ TEST_F(EditCommands, EveryEditWaitsForThePlansLockThenGivesUpNamingTheHolder) {
       PlanLock::acquire(plan, std::chrono::milliseconds(0), "roomcad view");
   ASSERT_TRUE(held.ok()) << held.error();
   const std::vector<std::pair<std::string, std::string>> edits{
-      {"add", "light --direction 0,0,-1"}, {"rm", "win1"}, {"move", "south --by 0,0.1"},
-      {"rotate", "win1 --deg 0"}, {"scale", "--all --factor 2"}, {"set", "south height=2.5"}};
+      {"add", "light --direction 0,0,-1"}, {"rm", "win1"},
+      {"move", "south --by 0,0.1"},        {"rotate", "win1 --deg 0"},
+      {"scale", "--all --factor 2"},       {"set", "south height=2.5"}};
   for (const auto& [verb, rest] : edits) {
     const CommandResult r = edit(verb, plan, rest + " --wait 0.2");
     EXPECT_EQ(r.status, 2) << verb;
     EXPECT_EQ(test::failure_code(r), Code::lock_timeout) << verb << ": " << r.err;
     const std::string says = fmt::format(
-        "roomcad {}: error[lock_timeout]: {} is locked by another editor (pid {}, roomcad view), which did not "
+        "roomcad {}: error[lock_timeout]: {} is locked by another editor (pid {}, roomcad view), "
+        "which did not "
         "release it within 0.2 s; --wait SECONDS waits longer",
         verb, plan.string(), ::getpid());
     EXPECT_NE(r.err.find(says), std::string::npos) << r.err;

@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "testing/grid_plan.h"
 #include "support/plan_reading.h"
-#include "testing/random_plan.h"
 #include "support/run_command.h"
+#include "testing/grid_plan.h"
+#include "testing/random_plan.h"
 #include "validation/rule_cases.h"
 
 namespace roomcad {
@@ -33,7 +33,8 @@ std::map<Code, int> check_fixes(const Plan& plan, const RuleSet& rules, const Re
   for (const Diagnostic& d : report.items) {
     if (!rule_index(d.code)) continue;
     ++counts[d.code];
-    if (d.edits.empty() || checked[d.code] == per_code) continue;  // a fix in words only: nothing to apply
+    if (d.edits.empty() || checked[d.code] == per_code)
+      continue;  // a fix in words only: nothing to apply
     ++checked[d.code];
     RuleSet one = testing::only({d.code});
     one.thresholds = rules.thresholds;
@@ -46,7 +47,8 @@ std::map<Code, int> check_fixes(const Plan& plan, const RuleSet& rules, const Re
 
 std::vector<fs::path> bundled_plans() {
   std::vector<fs::path> out;
-  for (const fs::path& dir : {test::source_dir() / "examples", test::source_dir() / "examples" / "sweethome3d"})
+  for (const fs::path& dir :
+       {test::source_dir() / "examples", test::source_dir() / "examples" / "sweethome3d"})
     for (const auto& entry : fs::directory_iterator(dir))
       if (entry.path().extension() == ".json") out.push_back(entry.path());
   std::sort(out.begin(), out.end());
@@ -60,7 +62,8 @@ std::vector<fs::path> bundled_plans() {
 bool fixes_checked(const fs::path& plan) { return plan.stem() != "arif-putra-pertama-1"; }
 
 TEST(ExamplesRules, FixesOnTheBundledPlansClearTheirFindings) {
-  constexpr int kFixesPerCode = 8;  // per plan: every fix on the clean homes, a sample on messy ones
+  constexpr int kFixesPerCode =
+      8;  // per plan: every fix on the clean homes, a sample on messy ones
   const RuleSet all = *builtin_rule_set("all");
   std::size_t plans = 0, with_findings = 0;
   for (const fs::path& path : bundled_plans()) {
@@ -68,7 +71,8 @@ TEST(ExamplesRules, FixesOnTheBundledPlansClearTheirFindings) {
     const test::PlanReading read = test::read_plan_at(path);
     ASSERT_TRUE(read.plan.has_value());
     const Report report = check(*read.plan, all);
-    EXPECT_EQ(report.items, check(*read.plan, all).items);  // deterministic, whatever the threads did
+    EXPECT_EQ(report.items,
+              check(*read.plan, all).items);  // deterministic, whatever the threads did
     if (!fixes_checked(path)) continue;
     ++plans;
     if (!check_fixes(*read.plan, all, report, kFixesPerCode).empty()) ++with_findings;
@@ -111,7 +115,8 @@ TEST(ExamplesRules, BundledRulesFilesRunOnTheHouse) {
   for (const auto& entry : fs::directory_iterator(test::source_dir() / "examples" / "rules")) {
     if (entry.path().extension() != ".json") continue;
     ++files;
-    const auto r = test::run_roomcad({"validate", "--rules", entry.path().string(), house.string()});
+    const auto r =
+        test::run_roomcad({"validate", "--rules", entry.path().string(), house.string()});
     EXPECT_NE(r.status, 2) << entry.path() << r.err;  // read, and every accessible room found
     EXPECT_NE(r.out.find("warning"), std::string::npos) << r.out;
   }
@@ -120,7 +125,8 @@ TEST(ExamplesRules, BundledRulesFilesRunOnTheHouse) {
 
 TEST(ExamplesRules, CommandLineRulesAndBaselineOnABundledHome) {
   const fs::path home = test::source_dir() / "examples" / "sweethome3d" / "Studio.json";
-  const auto r = test::run_roomcad({"validate", "--rules", "all", "--baseline", home.string(), home.string()});
+  const auto r =
+      test::run_roomcad({"validate", "--rules", "all", "--baseline", home.string(), home.string()});
   EXPECT_NE(r.out.find("0 new"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(" 0 fixed"), std::string::npos) << r.out;
 }

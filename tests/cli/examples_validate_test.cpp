@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "support/plan_reading.h"
 #include "io/plan_json.h"
+#include "support/plan_reading.h"
 #include "support/run_command.h"
 #include "validation/validate.h"
 

@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "support/plan_reading.h"
-#include "io/plan_json.h"
 #include "import/sweethome3d_import.h"
+#include "io/plan_json.h"
 #include "io/plan_lock.h"
+#include "support/plan_reading.h"
 #include "support/run_command.h"
 
 namespace roomcad {

@@ -9,13 +9,13 @@
 
 #include "io/floor_plan_dxf.h"
 #include "io/plan_json.h"
-#include "plan/arc_chords.h"
 #include "mesh/mesh_check.h"
+#include "plan/arc_chords.h"
 #include "readers_support.h"
 #include "render/floor_plan.h"
+#include "solid/analytic_volume.h"
 #include "support/run_command.h"
 #include "validation/validate.h"
-#include "solid/analytic_volume.h"
 
 namespace roomcad {
 namespace {
@@ -31,14 +31,16 @@ Plan read_example(const std::filesystem::path& path) {
 }
 
 std::size_t count_openings(const Plan& plan, OpeningType type) {
-  return static_cast<std::size_t>(std::count_if(plan.openings.begin(), plan.openings.end(),
-                                                [type](const Opening& o) { return o.type == type; }));
+  return static_cast<std::size_t>(
+      std::count_if(plan.openings.begin(), plan.openings.end(),
+                    [type](const Opening& o) { return o.type == type; }));
 }
 
 // Exports the plan file `path` (holding `plan`) to IFC and checks it in web-ifc: its element
 // counts are the plan's, and web-ifc, cutting each opening from its wall (float32 vertices),
 // finds walls whose volumes add up to the plan's wall solid.
-void expect_web_ifc_agrees(const std::filesystem::path& path, const Plan& plan, const TempDir& dir) {
+void expect_web_ifc_agrees(const std::filesystem::path& path, const Plan& plan,
+                           const TempDir& dir) {
   const auto ifc = dir / (path.stem().string() + ".ifc");
   const auto built = run_roomcad({"build", path.string(), "-o", ifc.string()});
   ASSERT_EQ(built.status, 0) << built.err;
@@ -94,10 +96,19 @@ TEST(IndependentReaders, WebIfcCutsTheOpeningsOfAnArcWallAsTheBuildDoes) {
   const std::vector<Point2> chords = chord_polyline(plan.walls[1], chord_tolerance_of(plan.site));
   ASSERT_GT(chords.size(), 4u);
   const double corner = std::hypot(chords[1].x - chords[0].x, chords[1].y - chords[0].y);
-  plan.openings.push_back({.id = "bay", .type = OpeningType::window, .wall = "bow", .offset = 2.0, .width = 1.6,
-                           .height = 1.2, .sill = 0.9});
-  plan.openings.push_back({.id = "side", .type = OpeningType::door, .wall = "bow", .offset = corner - 0.9,
-                           .width = 0.9, .height = 2.1});
+  plan.openings.push_back({.id = "bay",
+                           .type = OpeningType::window,
+                           .wall = "bow",
+                           .offset = 2.0,
+                           .width = 1.6,
+                           .height = 1.2,
+                           .sill = 0.9});
+  plan.openings.push_back({.id = "side",
+                           .type = OpeningType::door,
+                           .wall = "bow",
+                           .offset = corner - 0.9,
+                           .width = 0.9,
+                           .height = 2.1});
   TempDir dir;
   const auto path = dir / "bow-room.json";
   ASSERT_TRUE(write_plan_file(plan, path).ok());
@@ -138,18 +149,22 @@ TEST(IndependentReaders, EzdxfReadsEveryExamplePlanWithItsLayersAndEntities) {
     EXPECT_TRUE(run->report["audit_errors"].empty()) << run->report["audit_errors"].dump(1);
     for (const char* layer : kDxfLayers)
       EXPECT_NE(std::find(run->report["layers"].begin(), run->report["layers"].end(), layer),
-                run->report["layers"].end()) << layer;
+                run->report["layers"].end())
+          << layer;
     // The same drawing as `draw --view plan` makes by default (1:50, cut at 1 m).
     const FloorPlanDrawing d = draw_floor_plan(plan, {});
     std::map<std::string, std::map<std::string, std::size_t>> expected;
     auto add = [&expected](const char* layer, const char* type, std::size_t n) {
       if (n) expected[layer][type] += n;
     };
-    add("WALLS_CUT", "LWPOLYLINE", d.cut_walls.size()), add("WALLS_CUT", "HATCH", d.cut_walls.size());
-    add("WALLS_BELOW", "LWPOLYLINE", d.walls_below.size()), add("WALLS_ABOVE", "LWPOLYLINE", d.walls_above.size());
+    add("WALLS_CUT", "LWPOLYLINE", d.cut_walls.size()),
+        add("WALLS_CUT", "HATCH", d.cut_walls.size());
+    add("WALLS_BELOW", "LWPOLYLINE", d.walls_below.size()),
+        add("WALLS_ABOVE", "LWPOLYLINE", d.walls_above.size());
     add("WINDOWS", "LINE", d.windows.size());
     add("DOORS", "LINE", d.door_leaves.size()), add("DOORS", "ARC", d.door_swings.size());
-    add("DIMENSIONS", "LINE", d.dimension_lines.size()), add("DIMENSIONS", "TEXT", d.dimension_texts.size());
+    add("DIMENSIONS", "LINE", d.dimension_lines.size()),
+        add("DIMENSIONS", "TEXT", d.dimension_texts.size());
     add("ROOMS", "LWPOLYLINE", d.rooms.size()), add("ROOMS", "TEXT", d.room_labels.size());
     EXPECT_EQ(run->report["entities"], nlohmann::json(expected));
     // True size in metres: the extent holds every wall end and lies within a few metres of them
@@ -157,8 +172,10 @@ TEST(IndependentReaders, EzdxfReadsEveryExamplePlanWithItsLayersAndEntities) {
     const auto& extent = run->report["extent"];
     for (const Wall& w : plan.walls) {
       for (const Point2 p : {w.from, w.to}) {
-        EXPECT_LE(extent[0][0].get<double>(), p.x); EXPECT_GE(extent[1][0].get<double>(), p.x);
-        EXPECT_LE(extent[0][1].get<double>(), p.y); EXPECT_GE(extent[1][1].get<double>(), p.y);
+        EXPECT_LE(extent[0][0].get<double>(), p.x);
+        EXPECT_GE(extent[1][0].get<double>(), p.x);
+        EXPECT_LE(extent[0][1].get<double>(), p.y);
+        EXPECT_GE(extent[1][1].get<double>(), p.y);
       }
     }
     const Site& s = plan.site;
@@ -181,7 +198,8 @@ TEST(IndependentReaders, RejectBrokenFiles) {
   EXPECT_EQ(gltf->status, 1);
   EXPECT_GT(gltf->report["errors"].get<int>(), 0);
   const auto dxf = dir / "bad.dxf";
-  ASSERT_TRUE(test::write_bytes(dxf, "  0\nSECTION\n  2\nENTITIES\n  0\nLINE\n 10\nnot a number\n"));
+  ASSERT_TRUE(
+      test::write_bytes(dxf, "  0\nSECTION\n  2\nENTITIES\n  0\nLINE\n 10\nnot a number\n"));
   const auto ezdxf = run_reader("dxf_check.py", dxf);
   ASSERT_TRUE(ezdxf);
   EXPECT_EQ(ezdxf->status, 1);

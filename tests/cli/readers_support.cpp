@@ -19,7 +19,9 @@ int shell(const std::string& command) {
 
 /// The Python with Debian's python3-ezdxf: /usr/bin/python3 (a python3 earlier on the PATH,
 /// such as pyenv's, does not see Debian's packages).
-std::string python() { return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3"; }
+std::string python() {
+  return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
 
 /// @return why the reader of `script` cannot run, or "" when it can.
 std::string missing_reader(const std::string& script) {
@@ -29,7 +31,8 @@ std::string missing_reader(const std::string& script) {
       return "ezdxf is not installed (Debian package python3-ezdxf)";
     return "";
   }
-  if (shell("command -v node >/dev/null 2>&1") != 0) return "node is not installed (Debian package nodejs)";
+  if (shell("command -v node >/dev/null 2>&1") != 0)
+    return "node is not installed (Debian package nodejs)";
   const char* package = script == "ifc_check.cjs" ? "web-ifc" : "gltf-validator";
   if (!std::filesystem::exists(readers / "node_modules" / package / "package.json"))
     return std::string(package) + " is not installed in tests/readers/node_modules";
@@ -46,16 +49,17 @@ std::optional<ReaderRun> run_reader(const std::string& script, const std::filesy
   }
   TempDir dir;
   const std::string interpreter = script.ends_with(".py") ? python() : "node";
-  const std::string command = interpreter + " '" + (source_dir() / "tests" / "readers" / script).string() +
-                              "' '" + file.string() + "' >'" + (dir / "out").string() + "' 2>'" +
-                              (dir / "err").string() + "'";
+  const std::string command =
+      interpreter + " '" + (source_dir() / "tests" / "readers" / script).string() + "' '" +
+      file.string() + "' >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
   ReaderRun run;
   run.status = shell(command);
   run.err = read_bytes(dir / "err");
   const std::string out = read_bytes(dir / "out");
   run.report = nlohmann::json::parse(out, nullptr, false);
   if (run.report.is_discarded() || !run.report.is_object()) {
-    ADD_FAILURE() << command << " printed no JSON report (exit " << run.status << "):\n" << out << run.err;
+    ADD_FAILURE() << command << " printed no JSON report (exit " << run.status << "):\n"
+                  << out << run.err;
     return std::nullopt;
   }
   return run;

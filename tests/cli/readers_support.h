@@ -13,9 +13,9 @@
 namespace roomcad::test {
 
 struct ReaderRun {
-  int status = -1;       ///< the reader's exit status: 0 accepted, 1 rejected
+  int status = -1;        ///< the reader's exit status: 0 accepted, 1 rejected
   nlohmann::json report;  ///< what it printed (one JSON object)
-  std::string err;       ///< what it printed on stderr
+  std::string err;        ///< what it printed on stderr
 };
 
 /// Runs tests/readers/<script> (`ifc_check.cjs`, `gltf_check.cjs`, `dxf_check.py`) on `file`.

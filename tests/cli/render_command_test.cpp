@@ -58,8 +58,9 @@ TEST(RenderCommand, SamePictureAtAnyThreadCount) {
   TempDir dir;
   const std::string plan = write_plan(dir, window_wall());
   for (const char* threads : {"1", "2"}) {
-    const auto r = run_roomcad({"render", plan, "-o", (dir / (std::string(threads) + ".png")).string(),
-                                "--width", "120", "--height", "90", "--ssaa", "2", "--threads", threads});
+    const auto r =
+        run_roomcad({"render", plan, "-o", (dir / (std::string(threads) + ".png")).string(),
+                     "--width", "120", "--height", "90", "--ssaa", "2", "--threads", threads});
     ASSERT_EQ(r.status, 0) << r.err;
   }
   EXPECT_EQ(test::read_bytes(dir / "1.png"), test::read_bytes(dir / "2.png"));
@@ -69,10 +70,10 @@ TEST(RenderCommand, FrontViewOfTheBuiltWallShowsBackgroundThroughTheWindow) {
   TempDir dir;
   const std::string plan = write_plan(dir, window_wall());
   const auto out = dir / "front.png";
-  const auto r = run_roomcad({"render", plan, "-o", out.string(), "--width", "200", "--height",
-                              "100", "--view", "front", "--projection", "orthographic", "--parts",
-                              "walls", "--shading", "unlit", "--shadows", "off", "--background",
-                              "#0000ff"});
+  const auto r = run_roomcad(
+      {"render",    plan,     "-o",        out.string(),   "--width",      "200",     "--height",
+       "100",       "--view", "front",     "--projection", "orthographic", "--parts", "walls",
+       "--shading", "unlit",  "--shadows", "off",          "--background", "#0000ff"});
   ASSERT_EQ(r.status, 0) << r.err;
   const Result<RgbImage> png = read_png(out);
   ASSERT_TRUE(png.ok());
@@ -89,12 +90,19 @@ TEST(RenderCommand, BadInputsNameFlagAndValueAndWriteNothing) {
   TempDir dir;
   const std::string plan = write_plan(dir, window_wall());
   const std::string out = (dir / "bad.png").string();
-  const std::vector<std::vector<std::string>> cases = {
-      {"--shading", "toon"},       {"--shadows", "soft"},   {"--ssaa", "3"},
-      {"--background", "red"},     {"--parts", "roof"},     {"--camera", "nope"},
-      {"--eye", "1,2,3"},          {"--eye", "1,2", "--target", "0,0,0"},
-      {"--view", "below"},         {"--width", "0"},        {"--projection", "fisheye"},
-      {"--grid", "maybe"},         {"--fov", "180"}};
+  const std::vector<std::vector<std::string>> cases = {{"--shading", "toon"},
+                                                       {"--shadows", "soft"},
+                                                       {"--ssaa", "3"},
+                                                       {"--background", "red"},
+                                                       {"--parts", "roof"},
+                                                       {"--camera", "nope"},
+                                                       {"--eye", "1,2,3"},
+                                                       {"--eye", "1,2", "--target", "0,0,0"},
+                                                       {"--view", "below"},
+                                                       {"--width", "0"},
+                                                       {"--projection", "fisheye"},
+                                                       {"--grid", "maybe"},
+                                                       {"--fov", "180"}};
   for (const auto& extra : cases) {
     std::vector<std::string> args{"render", plan, "-o", out};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -118,8 +126,8 @@ TEST(RenderCommand, PlanErrorsExitOneMissingFileExitsTwo) {
   EXPECT_EQ(missing.status, 2);
   EXPECT_EQ(test::failure_code(missing), Code::io_error);
   EXPECT_NE(missing.err.find("none.json"), std::string::npos) << missing.err;
-  const auto unwritable = run_roomcad({"render", write_plan(dir, window_wall()), "-o",
-                                       (dir / "no" / "dir.png").string()});
+  const auto unwritable = run_roomcad(
+      {"render", write_plan(dir, window_wall()), "-o", (dir / "no" / "dir.png").string()});
   EXPECT_EQ(unwritable.status, 2);
   EXPECT_EQ(test::failure_code(unwritable), Code::io_error);
   EXPECT_NE(unwritable.err.find("dir.png"), std::string::npos) << unwritable.err;

@@ -52,18 +52,21 @@ TEST(RulesCommand, DefaultRulesAreTheFormatsChecksAndAllAddsTheRules) {
   EXPECT_EQ(codes(j["warnings"]), (std::vector<std::string>{"door_too_narrow", "window_sill_low"}));
   EXPECT_EQ(j["warnings"][0]["id"], "door_too_narrow:d");
   // Widened about its middle: 5 cm to each side.
-  EXPECT_EQ(j["warnings"][0]["edits"][0]["command"], "roomcad set " + plan + " d offset=1.45 width=0.8");
+  EXPECT_EQ(j["warnings"][0]["edits"][0]["command"],
+            "roomcad set " + plan + " d offset=1.45 width=0.8");
 }
 
 TEST(RulesCommand, FixCommandsPrintedByValidateRemoveTheFindings) {
   TempDir dir;
   const std::string plan = write_file(dir, "p.json", kRoom);
-  const auto j = nlohmann::json::parse(run_roomcad({"validate", "--format", "json", "--rules", "all", plan}).out);
+  const auto j = nlohmann::json::parse(
+      run_roomcad({"validate", "--format", "json", "--rules", "all", plan}).out);
   for (const auto& finding : j["warnings"]) {
     for (const auto& edit : finding["edits"]) {
       ASSERT_EQ(edit["op"], "set");
       std::vector<std::string> args{"set", plan, edit["id"]};
-      for (const auto& [key, value] : edit["fields"].items()) args.push_back(key + "=" + value.get<std::string>());
+      for (const auto& [key, value] : edit["fields"].items())
+        args.push_back(key + "=" + value.get<std::string>());
       const auto run = run_roomcad(args);
       EXPECT_EQ(run.status, 0) << run.err;
     }
@@ -76,14 +79,17 @@ TEST(RulesCommand, FixCommandsPrintedByValidateRemoveTheFindings) {
 TEST(RulesCommand, RulesFileSetsThresholdsAndSeverities) {
   TempDir dir;
   const std::string plan = write_file(dir, "p.json", kRoom);
-  const std::string rules = write_file(dir, "r.json", R"({"rules": {"door_too_narrow": {"min_width": 0.7},
+  const std::string rules =
+      write_file(dir, "r.json", R"({"rules": {"door_too_narrow": {"min_width": 0.7},
       "window_sill_low": {"min_sill": 0.3, "severity": "error"}, "room_unreachable": {"severity": "error"}}})");
   const auto run = run_roomcad({"validate", "--format", "json", "--rules", rules, plan});
   EXPECT_EQ(run.status, 0) << run.out;  // 0.7 and 0.3 are at the thresholds; the room has a door
-  const std::string tight = write_file(dir, "t.json", R"({"rules": {"window_sill_low": {"severity": "error"}}})");
+  const std::string tight =
+      write_file(dir, "t.json", R"({"rules": {"window_sill_low": {"severity": "error"}}})");
   const auto failing = run_roomcad({"validate", "--format", "json", "--rules", tight, plan});
   EXPECT_EQ(failing.status, 1);
-  EXPECT_EQ(codes(nlohmann::json::parse(failing.out)["errors"]), std::vector<std::string>{"window_sill_low"});
+  EXPECT_EQ(codes(nlohmann::json::parse(failing.out)["errors"]),
+            std::vector<std::string>{"window_sill_low"});
 }
 
 TEST(RulesCommand, BadRulesAreExit2NamingFileFieldAndValue) {
@@ -91,17 +97,23 @@ TEST(RulesCommand, BadRulesAreExit2NamingFileFieldAndValue) {
   const std::string plan = write_file(dir, "p.json", kRoom);
   const auto unknown = run_roomcad({"validate", "--rules", "strict", plan});
   EXPECT_EQ(unknown.status, 2);
-  EXPECT_NE(unknown.err.find("--rules \"strict\": neither a rule set (default, accessibility, all) nor a rules file"),
-            std::string::npos) << unknown.err;
-  const std::string bad = write_file(dir, "bad.json", R"({"rules": {"door_too_narrow": {"min_width": 0}}})");
+  EXPECT_NE(
+      unknown.err.find(
+          "--rules \"strict\": neither a rule set (default, accessibility, all) nor a rules file"),
+      std::string::npos)
+      << unknown.err;
+  const std::string bad =
+      write_file(dir, "bad.json", R"({"rules": {"door_too_narrow": {"min_width": 0}}})");
   const auto run = run_roomcad({"validate", "--rules", bad, plan});
   EXPECT_EQ(run.status, 2);
-  EXPECT_NE(run.err.find(bad + ": /rules/door_too_narrow/min_width: expected a positive number"), std::string::npos)
+  EXPECT_NE(run.err.find(bad + ": /rules/door_too_narrow/min_width: expected a positive number"),
+            std::string::npos)
       << run.err;
   const std::string room = write_file(dir, "room.json", R"({"accessible_rooms": [[0.5, 0.5]]})");
   const auto outside = run_roomcad({"validate", "--rules", room, plan});
   EXPECT_EQ(outside.status, 2);
-  EXPECT_NE(outside.err.find("/accessible_rooms/0: the point [0.5, 0.5] lies in no room"), std::string::npos)
+  EXPECT_NE(outside.err.find("/accessible_rooms/0: the point [0.5, 0.5] lies in no room"),
+            std::string::npos)
       << outside.err;
 }
 
@@ -109,9 +121,11 @@ TEST(RulesCommand, BaselineReportsNewUnchangedAndFixed) {
   TempDir dir;
   const std::string old_plan = write_file(dir, "old.json", kRoom);
   const std::string new_plan = write_file(dir, "new.json", kRoom);
-  ASSERT_EQ(run_roomcad({"set", new_plan, "d", "width=0.9"}).status, 0);     // fixes door_too_narrow
-  ASSERT_EQ(run_roomcad({"set", new_plan, "win", "sill=1.5", "height=0.6"}).status, 0);  // low -> high
-  const auto run = run_roomcad({"validate", "--format", "json", "--rules", "all", "--baseline", old_plan, new_plan});
+  ASSERT_EQ(run_roomcad({"set", new_plan, "d", "width=0.9"}).status, 0);  // fixes door_too_narrow
+  ASSERT_EQ(run_roomcad({"set", new_plan, "win", "sill=1.5", "height=0.6"}).status,
+            0);  // low -> high
+  const auto run = run_roomcad(
+      {"validate", "--format", "json", "--rules", "all", "--baseline", old_plan, new_plan});
   ASSERT_EQ(run.status, 0) << run.err;
   const auto j = nlohmann::json::parse(run.out);
   ASSERT_EQ(j["warnings"].size(), 1u);
@@ -119,10 +133,14 @@ TEST(RulesCommand, BaselineReportsNewUnchangedAndFixed) {
   EXPECT_EQ(j["warnings"][0]["status"], "new");
   EXPECT_EQ(j["baseline"]["new"], 1);
   EXPECT_EQ(j["baseline"]["unchanged"], 0);
-  EXPECT_EQ(codes(j["baseline"]["fixed"]), (std::vector<std::string>{"door_too_narrow", "window_sill_low"}));
+  EXPECT_EQ(codes(j["baseline"]["fixed"]),
+            (std::vector<std::string>{"door_too_narrow", "window_sill_low"}));
   const auto text = run_roomcad({"validate", "--rules", "all", "--baseline", old_plan, new_plan});
-  EXPECT_NE(text.out.find("against " + old_plan + ": 1 new, 0 unchanged, 2 fixed"), std::string::npos) << text.out;
-  EXPECT_EQ(run_roomcad({"validate", "--baseline", (dir / "missing.json").string(), new_plan}).status, 2);
+  EXPECT_NE(text.out.find("against " + old_plan + ": 1 new, 0 unchanged, 2 fixed"),
+            std::string::npos)
+      << text.out;
+  EXPECT_EQ(
+      run_roomcad({"validate", "--baseline", (dir / "missing.json").string(), new_plan}).status, 2);
 }
 
 TEST(RulesCommand, DrawMarksFindingsInRedWithTheirCodes) {
@@ -132,8 +150,10 @@ TEST(RulesCommand, DrawMarksFindingsInRedWithTheirCodes) {
   const auto run = run_roomcad({"draw", plan, "--findings", "-o", svg});
   ASSERT_EQ(run.status, 0) << run.err;
   const std::string text = test::read_bytes(svg);
-  EXPECT_NE(text.find("<g id=\"findings\" class=\"findings\" stroke=\"#d00000\""), std::string::npos);
-  for (const char* code : {">door_too_narrow<", ">window_sill_low<"}) EXPECT_NE(text.find(code), std::string::npos) << code;
+  EXPECT_NE(text.find("<g id=\"findings\" class=\"findings\" stroke=\"#d00000\""),
+            std::string::npos);
+  for (const char* code : {">door_too_narrow<", ">window_sill_low<"})
+    EXPECT_NE(text.find(code), std::string::npos) << code;
   ASSERT_EQ(run_roomcad({"draw", plan, "--findings", "--rules", "default", "-o", svg}).status, 0);
   EXPECT_EQ(test::read_bytes(svg).find("id=\"findings\""), std::string::npos);  // nothing to mark
   ASSERT_EQ(run_roomcad({"draw", plan, "-o", svg}).status, 0);

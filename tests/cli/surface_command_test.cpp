@@ -97,7 +97,8 @@ TEST(SurfaceCommand, BadOptionsExitTwoAndWriteNothing) {
       {{"x", "--x", "1:-1", "--z", "-1:1", "-o", out}, "x range 1:-1 is empty"},
       {{"x", "--x", "-1:1", "--z", "-1:1", "--dx", "1e-7", "-o", out}, "samples"},
       {{"x", "--x", "-1:1", "--z", "-1:1", "--width", "5", "-o", out}, "--width"},
-      {{"x", "--x", "-1:1", "--z", "-1:1", "-o", (dir / "out.txt").string()}, ".svg or .png",
+      {{"x", "--x", "-1:1", "--z", "-1:1", "-o", (dir / "out.txt").string()},
+       ".svg or .png",
        Code::unsupported},
       {{"x", "--x", "-1:1", "--z", "-1:1"}, "--output is required"},
   };

@@ -28,7 +28,8 @@ TEST(Threads, BuildWritesTheSameBytesAtOneAndTwoThreads) {
     const std::string mtl = plan.stem().string() + ".mtl";
     for (const char* threads : {"1", "2"}) {
       const auto out = dir / threads / obj;
-      const auto r = run_roomcad({"build", plan.string(), "--threads", threads, "-o", out.string()});
+      const auto r =
+          run_roomcad({"build", plan.string(), "--threads", threads, "-o", out.string()});
       ASSERT_EQ(r.status, 0) << obj << " --threads " << threads << ": " << r.err;
     }
     const std::string one = test::read_bytes(dir / "1" / obj);

@@ -51,7 +51,8 @@ std::string write_plan(const TempDir& dir, const std::string& name, const std::s
 
 TEST(ValidateCommand, ValidPlanIsOkWithRoomWarningsOnly) {
   TempDir dir;
-  const auto r = run_roomcad({"validate", "--format", "json", write_plan(dir, "p.json", kTwoRooms)});
+  const auto r =
+      run_roomcad({"validate", "--format", "json", write_plan(dir, "p.json", kTwoRooms)});
   EXPECT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["ok"], true);
@@ -73,7 +74,8 @@ TEST(ValidateCommand, AllProblemsInOneRunAsSpecJson) {
     EXPECT_TRUE(e.contains("objects") && e["objects"].is_array());
     EXPECT_TRUE(e["message"].is_string() && !e["message"].get<std::string>().empty());
   }
-  EXPECT_EQ(codes, (std::vector<std::string>{"unknown_reference", "wall_overlap", "out_of_bounds"}));
+  EXPECT_EQ(codes,
+            (std::vector<std::string>{"unknown_reference", "wall_overlap", "out_of_bounds"}));
   EXPECT_TRUE(j["errors"][1]["where"].is_array());
   ASSERT_EQ(j["warnings"].size(), 1u);
   EXPECT_EQ(j["warnings"][0]["code"], "unknown_field");
@@ -98,7 +100,8 @@ TEST(ValidateCommand, UnreadableFileIsExit2AndBadJsonIsAParseError) {
   EXPECT_EQ(missing.status, 2);
   EXPECT_EQ(test::failure_code(missing), Code::io_error);
   EXPECT_NE(missing.err.find("none.json"), std::string::npos);
-  const auto bad = run_roomcad({"validate", "--format", "json", write_plan(dir, "bad.json", "{\"walls\": [")});
+  const auto bad =
+      run_roomcad({"validate", "--format", "json", write_plan(dir, "bad.json", "{\"walls\": [")});
   EXPECT_EQ(bad.status, 1);
   const auto j = nlohmann::json::parse(bad.out);
   EXPECT_EQ(j["errors"][0]["code"], "parse_error");
@@ -111,8 +114,10 @@ TEST(InfoCommand, ListsRoomsWithClearAreas) {
   const auto text = run_roomcad({"info", plan});
   EXPECT_EQ(text.status, 0) << text.err;
   EXPECT_NE(text.out.find("rooms     2"), std::string::npos) << text.out;
-  EXPECT_NE(text.out.find("room 1  14.44 m2 clear  walls m, n, s, w  doors d  windows win1, win2\n"),
-            std::string::npos) << text.out;
+  EXPECT_NE(
+      text.out.find("room 1  14.44 m2 clear  walls m, n, s, w  doors d  windows win1, win2\n"),
+      std::string::npos)
+      << text.out;
   const auto json = run_roomcad({"info", "--format", "json", plan});
   const auto j = nlohmann::json::parse(json.out);
   ASSERT_EQ(j["rooms"].size(), 2u);
@@ -126,10 +131,13 @@ TEST(InfoCommand, RoomsAreFoundLevelByLevel) {
   const std::string plan = (test::source_dir() / "examples/version2/two-storey.json").string();
   const auto text = run_roomcad({"info", plan});
   EXPECT_EQ(text.status, 0) << text.err;
-  EXPECT_NE(text.out.find("rooms     3\n    room 1 of level 'ground'  65.33 m2 clear  walls bow, hall, "
-                          "north, south, west  doors entry, hall_door"),
-            std::string::npos) << text.out;
-  EXPECT_NE(text.out.find("    room 2 of level 'first'  32.48 m2 clear"), std::string::npos) << text.out;
+  EXPECT_NE(
+      text.out.find("rooms     3\n    room 1 of level 'ground'  65.33 m2 clear  walls bow, hall, "
+                    "north, south, west  doors entry, hall_door"),
+      std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("    room 2 of level 'first'  32.48 m2 clear"), std::string::npos)
+      << text.out;
   const auto j = nlohmann::json::parse(run_roomcad({"info", "--format", "json", plan}).out);
   ASSERT_EQ(j["rooms"].size(), 3u);
   EXPECT_EQ(j["rooms"][0]["level"], "ground");

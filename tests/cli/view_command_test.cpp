@@ -13,9 +13,9 @@
 #include <thread>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include "io/image_io.h"
 #include "io/plan_json.h"
@@ -151,9 +151,11 @@ TEST_F(ViewCommand, ClickArrowAndSaveMoveAWallOneCell) {
     EXPECT_EQ(b.to, (Point2{a.to.x + dx, a.to.y})) << a.id;
   }
   const std::string click_moved = click_on(dir_, plan.string(), "east");
-  view_shot(dir_ / "b.png", {plan.string(), "--keys", fmt::format("1,{},left,ctrl+z,ctrl+s", click_moved)});
+  view_shot(dir_ / "b.png",
+            {plan.string(), "--keys", fmt::format("1,{},left,ctrl+z,ctrl+s", click_moved)});
   EXPECT_EQ(read_plan_file(plan).value(), moved);  // the undone move was not saved
-  view_shot(dir_ / "c.png", {plan.string(), "--keys", fmt::format("1,{},left,ctrl+s", click_moved)});
+  view_shot(dir_ / "c.png",
+            {plan.string(), "--keys", fmt::format("1,{},left,ctrl+s", click_moved)});
   EXPECT_EQ(read_plan_file(plan).value(), original);
 }
 
@@ -177,7 +179,9 @@ test::CommandResult view_while_another_edits(const TempDir& dir, const std::file
   EXPECT_EQ(window.status, 0) << window.err;
   // The change was seen while the window held unsaved edits, and the prompt named both keys.
   EXPECT_NE(window.err.find("changed on disk and the window has unsaved edits: Ctrl+R loads the "
-                            "file"), std::string::npos) << window.err;
+                            "file"),
+            std::string::npos)
+      << window.err;
   EXPECT_NE(window.err.find("Ctrl+K keeps the window's version"), std::string::npos) << window.err;
   return window;
 }
@@ -200,8 +204,11 @@ TEST_F(ViewCommand, AnotherEditDuringUnsavedEditsPromptsAndKeepSavesTheWindows) 
   // again, nothing written), then keeps the window's version: the plan as it was at first.
   const auto window = view_while_another_edits(
       dir_, plan, fmt::format("1,{},right,ctrl+s,left,wait:change,ctrl+s,ctrl+k", click));
-  EXPECT_NE(window.err.find("not saved: " + plan.string() + " changed on disk since the window "
-                            "read or saved it"), std::string::npos) << window.err;
+  EXPECT_NE(window.err.find("not saved: " + plan.string() +
+                            " changed on disk since the window "
+                            "read or saved it"),
+            std::string::npos)
+      << window.err;
   EXPECT_LT(window.err.find("not saved"), window.err.rfind("saved " + plan.string())) << window.err;
   EXPECT_EQ(read_plan_file(plan).value(), original);
 }
@@ -221,8 +228,8 @@ TEST_F(ViewCommand, AnotherEditDuringUnsavedEditsPromptsAndReloadTakesTheFiles) 
 }
 
 TEST_F(ViewCommand, BadInputsAreNamedWithExitStatus2) {
-  const auto keys = run_roomcad({"view", studio(), "--keys", "1,nokey", "--screenshot",
-                                 (dir_ / "x.png").string()});
+  const auto keys = run_roomcad(
+      {"view", studio(), "--keys", "1,nokey", "--screenshot", (dir_ / "x.png").string()});
   EXPECT_EQ(keys.status, 2);
   EXPECT_EQ(test::failure_code(keys), Code::usage_error);
   EXPECT_NE(keys.err.find("input 2 'nokey'"), std::string::npos) << keys.err;
@@ -238,8 +245,8 @@ TEST_F(ViewCommand, BadInputsAreNamedWithExitStatus2) {
   const auto missing = run_roomcad({"view", (dir_ / "missing.json").string()});
   EXPECT_EQ(missing.status, 2);
   EXPECT_EQ(test::failure_code(missing), Code::io_error);
-  const auto quits = run_roomcad({"view", studio(), "--keys", "1,q", "--screenshot",
-                                  (dir_ / "q.png").string()});
+  const auto quits =
+      run_roomcad({"view", studio(), "--keys", "1,q", "--screenshot", (dir_ / "q.png").string()});
   EXPECT_EQ(quits.status, 2);
   EXPECT_EQ(test::failure_code(quits), Code::usage_error);
   EXPECT_NE(quits.err.find("before the screenshot"), std::string::npos) << quits.err;

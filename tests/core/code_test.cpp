@@ -68,7 +68,8 @@ TEST(Code, NamesParseExactlyOrNotAtAll) {
 
 TEST(Code, FindingsAreThePlansAndFailuresAreTheCommands) {
   for (int i = 0; i < kCodes; ++i)
-    EXPECT_EQ(is_finding(code_at(i)), i < static_cast<int>(Code::usage_error)) << to_string(code_at(i));
+    EXPECT_EQ(is_finding(code_at(i)), i < static_cast<int>(Code::usage_error))
+        << to_string(code_at(i));
 }
 
 TEST(Code, EachFailureEndsACommandWithItsExitStatus) {

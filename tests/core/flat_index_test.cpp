@@ -36,7 +36,8 @@ TEST(FlatIndex, KeepsTheFirstIndexOfEachKeyThroughGrowth) {
 
 TEST(FlatIndex, KeysThatAllCollideAreStillToldApart) {
   FlatIndex<std::uint64_t, CollidingHash> index;
-  for (std::uint64_t key = 0; key < 100; ++key) EXPECT_TRUE(index.try_emplace(key * 3, std::uint32_t(key)).second);
+  for (std::uint64_t key = 0; key < 100; ++key)
+    EXPECT_TRUE(index.try_emplace(key * 3, std::uint32_t(key)).second);
   for (std::uint64_t key = 0; key < 100; ++key) {
     EXPECT_EQ(index.find(key * 3), std::uint32_t(key));
     EXPECT_EQ(index.find(key * 3 + 1), (FlatIndex<std::uint64_t, CollidingHash>::kNone));

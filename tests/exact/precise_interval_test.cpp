@@ -39,7 +39,8 @@ TEST(PreciseInterval, ComparisonsItCannotDecideThrow) {
   EXPECT_TRUE(PreciseInterval(0.5) == PreciseInterval(0.5));
   EXPECT_FALSE(third == PreciseInterval(0.5));
   EXPECT_THROW((void)(third * PreciseInterval(3) == PreciseInterval(1)), UndecidedComparison);
-  EXPECT_THROW((void)(PreciseInterval(1) / (third * PreciseInterval(3) - PreciseInterval(1))), UndecidedComparison);
+  EXPECT_THROW((void)(PreciseInterval(1) / (third * PreciseInterval(3) - PreciseInterval(1))),
+               UndecidedComparison);
   EXPECT_THROW((void)sqrt(PreciseInterval(-1)), UndecidedComparison);
 }
 
@@ -62,7 +63,7 @@ TEST(PreciseInterval, SumsOfDoublesAreExactSoTouchingIsDecided) {
 
 TEST(PreciseInterval, SignsAndProductsKeepTheNumberInside) {
   // Products of intervals of mixed signs take the extreme corners.
-  const PreciseInterval a = PreciseInterval(-2) / PreciseInterval(3);  // about -0.667
+  const PreciseInterval a = PreciseInterval(-2) / PreciseInterval(3);    // about -0.667
   const PreciseInterval b = -(PreciseInterval(5) / PreciseInterval(7));  // about -0.714
   EXPECT_EQ((a * b).nearest_double(), 10.0 / 21.0);  // IEEE division rounds correctly
   EXPECT_EQ((a - b).nearest_double(), 1.0 / 21.0);

@@ -17,7 +17,8 @@ using Segments = std::vector<std::pair<Point2, Point2>>;
 
 double area_of(const Face& face) {
   double twice = 0;
-  for (const FaceEdge& e : face.boundary) twice += e.source.x * e.target.y - e.source.y * e.target.x;
+  for (const FaceEdge& e : face.boundary)
+    twice += e.source.x * e.target.y - e.source.y * e.target.x;
   return twice / 2;
 }
 
@@ -43,8 +44,8 @@ void expect_edges_on_their_pieces(const std::vector<Face>& faces, const Segments
 
 /// A 4 x 4 square cut into four 2 x 2 rooms by a cross, drawn as whole lines that cross at
 /// (2, 2) and meet the sides inside them.
-const Segments kCrossing = {{{0, 0}, {4, 0}}, {{4, 0}, {4, 4}}, {{4, 4}, {0, 4}}, {{0, 4}, {0, 0}},
-                            {{0, 2}, {4, 2}}, {{2, 0}, {2, 4}}};
+const Segments kCrossing = {{{0, 0}, {4, 0}}, {{4, 0}, {4, 4}}, {{4, 4}, {0, 4}},
+                            {{0, 4}, {0, 0}}, {{0, 2}, {4, 2}}, {{2, 0}, {2, 4}}};
 
 /// The same rooms drawn as pieces that meet only at their ends.
 const Segments kEndToEnd = {{{0, 0}, {2, 0}}, {{2, 0}, {4, 0}}, {{4, 0}, {4, 2}}, {{4, 2}, {4, 4}},
@@ -63,16 +64,16 @@ TEST(Arrangement, PiecesEndToEndAndCrossingLinesGiveTheSameRooms) {
 
 TEST(Arrangement, AnEndInsideAnotherPieceIsAJunction) {
   // A T: the middle wall's end stands on the south side without a piece ending there.
-  const Segments t = {{{0, 0}, {4, 0}}, {{4, 0}, {4, 4}}, {{4, 4}, {0, 4}}, {{0, 4}, {0, 0}},
-                      {{2, 0}, {2, 4}}};
+  const Segments t = {
+      {{0, 0}, {4, 0}}, {{4, 0}, {4, 4}}, {{4, 4}, {0, 4}}, {{0, 4}, {0, 0}}, {{2, 0}, {2, 4}}};
   EXPECT_EQ(areas(find_bounded_faces(t)), (std::vector<double>{8, 8}));
 }
 
 TEST(Arrangement, PiecesDrawnTwiceOrOverlappingNameTheLowestPiece) {
   // The south side drawn twice (pieces 0 and 4), and overlapped along its first half by a
   // piece sharing its west end (piece 5).
-  const Segments twice = {{{0, 0}, {4, 0}}, {{4, 0}, {4, 4}}, {{4, 4}, {0, 4}}, {{0, 4}, {0, 0}},
-                          {{4, 0}, {0, 0}}, {{0, 0}, {2, 0}}};
+  const Segments twice = {{{0, 0}, {4, 0}}, {{4, 0}, {4, 4}}, {{4, 4}, {0, 4}},
+                          {{0, 4}, {0, 0}}, {{4, 0}, {0, 0}}, {{0, 0}, {2, 0}}};
   const std::vector<Face> faces = find_bounded_faces(twice);
   ASSERT_EQ(faces.size(), 1u);
   EXPECT_EQ(area_of(faces[0]), 16);
@@ -85,12 +86,14 @@ TEST(Arrangement, PiecesDrawnTwiceOrOverlappingNameTheLowestPiece) {
 
 TEST(Arrangement, ARoomInsideARoomIsAHoleOfIt) {
   // Two squares that do not meet: the inner one is a hole in the outer one's face.
-  const Segments nested = {{{0, 0}, {10, 0}}, {{10, 0}, {10, 10}}, {{10, 10}, {0, 10}}, {{0, 10}, {0, 0}},
-                           {{4, 4}, {6, 4}},  {{6, 4}, {6, 6}},    {{6, 6}, {4, 6}},    {{4, 6}, {4, 4}}};
+  const Segments nested = {{{0, 0}, {10, 0}}, {{10, 0}, {10, 10}}, {{10, 10}, {0, 10}},
+                           {{0, 10}, {0, 0}}, {{4, 4}, {6, 4}},    {{6, 4}, {6, 6}},
+                           {{6, 6}, {4, 6}},  {{4, 6}, {4, 4}}};
   const std::vector<Face> faces = find_bounded_faces(nested);
   ASSERT_EQ(faces.size(), 2u);
-  const auto outer = std::max_element(faces.begin(), faces.end(),
-                                      [](const Face& a, const Face& b) { return area_of(a) < area_of(b); });
+  const auto outer = std::max_element(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+    return area_of(a) < area_of(b);
+  });
   EXPECT_EQ(area_of(*outer), 100);
   EXPECT_EQ(outer->hole_area, 4);
   EXPECT_EQ(faces[outer == faces.begin() ? 1 : 0].hole_area, 0);
@@ -98,8 +101,8 @@ TEST(Arrangement, ARoomInsideARoomIsAHoleOfIt) {
 
 TEST(Arrangement, PiecesLeavingAnEndInOneDirectionOverlap) {
   // Pieces 0 and 4 share the end (0, 0) and run east along one line: not end to end.
-  const Segments overlap = {{{0, 0}, {4, 0}}, {{4, 0}, {4, 4}}, {{4, 4}, {0, 4}}, {{0, 4}, {0, 0}},
-                            {{0, 0}, {1, 0}}};
+  const Segments overlap = {
+      {{0, 0}, {4, 0}}, {{4, 0}, {4, 4}}, {{4, 4}, {0, 4}}, {{0, 4}, {0, 0}}, {{0, 0}, {1, 0}}};
   const std::vector<Face> faces = find_bounded_faces(overlap);
   ASSERT_EQ(areas(faces), (std::vector<double>{16}));
   expect_edges_on_their_pieces(faces, overlap);

@@ -24,8 +24,8 @@ std::vector<Box2> tagged(const std::vector<Bounds>& bounds) {
 
 Box2 box(const Bounds& b) { return {b[0], b[1], b[2], b[3], 0}; }
 
-/// @return the boxes k that `grid` visits for `query`, sorted; fails the test if one is visited twice.
-/// Fails the test where find, which any thread may call, disagrees with for_each_meeting.
+/// @return the boxes k that `grid` visits for `query`, sorted; fails the test if one is visited
+/// twice. Fails the test where find, which any thread may call, disagrees with for_each_meeting.
 std::vector<std::size_t> visited(BoxGrid& grid, const Bounds& query) {
   std::vector<std::size_t> found;
   grid.for_each_meeting(box(query), [&](std::size_t k) { found.push_back(k); });
@@ -59,14 +59,16 @@ TEST(BoxGrid, VisitsExactlyTheBoxesThatMeetTheQueryOnce) {
   boxes.push_back({NAN, 0.0, 1.0, 1.0});
   boxes.push_back({5.0, 5.0, 4.0, 6.0});  // low above high
   BoxGrid grid(tagged(boxes));
-  std::vector<Bounds> queries = {{2.0, 2.0, 2.0, 2.0}, {-1e300, -1e300, 1e300, 1e300}, {NAN, 0, 0, 0},
-                                 {100.0, 100.0, 101.0, 101.0}, {4.5, 5.5, 4.5, 5.5},
-                                 {3.9, 5.5, 5.1, 5.5}};  // meets the box whose low is above its high
+  std::vector<Bounds> queries = {
+      {2.0, 2.0, 2.0, 2.0}, {-1e300, -1e300, 1e300, 1e300},
+      {NAN, 0, 0, 0},       {100.0, 100.0, 101.0, 101.0},
+      {4.5, 5.5, 4.5, 5.5}, {3.9, 5.5, 5.1, 5.5}};  // meets the box whose low is above its high
   for (int k = 0; k < 300; ++k) {
     const double x = at(random), y = at(random);
     queries.push_back({x, y, x + size(random), y + size(random) / 10});
   }
-  for (const Bounds& q : queries) EXPECT_EQ(visited(grid, q), meeting(boxes, q)) << q[0] << " " << q[1];
+  for (const Bounds& q : queries)
+    EXPECT_EQ(visited(grid, q), meeting(boxes, q)) << q[0] << " " << q[1];
 }
 
 TEST(BoxGrid, BoxesDrawnOverOneAnotherAreAllFound) {
@@ -75,7 +77,8 @@ TEST(BoxGrid, BoxesDrawnOverOneAnotherAreAllFound) {
   std::vector<Bounds> boxes(3000, Bounds{0.0, 0.0, 10.0, 10.0});
   for (int k = 0; k < 10; ++k) boxes.push_back({k * 1.0, k * 1.0, k + 0.5, k + 0.5});
   BoxGrid grid(tagged(boxes));
-  for (const Bounds& q : {Bounds{3.6, 3.6, 3.7, 3.7}, Bounds{2.0, 2.0, 2.1, 2.1}, Bounds{20, 20, 21, 21}})
+  for (const Bounds& q :
+       {Bounds{3.6, 3.6, 3.7, 3.7}, Bounds{2.0, 2.0, 2.1, 2.1}, Bounds{20, 20, 21, 21}})
     EXPECT_EQ(visited(grid, q), meeting(boxes, q));
 }
 

@@ -8,9 +8,9 @@
 
 #include <random>
 
-#include "support/model_support.h"
 #include "geometry/exact_wall_lines.h"
 #include "geometry/joins.h"
+#include "support/model_support.h"
 
 namespace roomcad {
 namespace {

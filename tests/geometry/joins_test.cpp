@@ -19,7 +19,8 @@ Plan plan_of(std::vector<Wall> walls) {
 }
 
 TEST(Joins, LCornerIsMitredWithCornersOnTheBisector) {
-  const Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2)});
+  const Plan p =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::mitre);
@@ -41,7 +42,8 @@ TEST(Joins, LCornerIsMitredWithCornersOnTheBisector) {
 TEST(Joins, WallsOnTheStoreyAboveDoNotJoinOrBreakAMitre) {
   Wall above = make_wall("c", {0, 0}, {0, 3}, 0.2);
   above.base = 2.8;  // exactly on top of the ground floor's 2.8 m walls
-  const Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2), above});
+  const Plan p =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2), above});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::mitre) << "the wall above is not a third wall at the corner";
@@ -50,7 +52,8 @@ TEST(Joins, WallsOnTheStoreyAboveDoNotJoinOrBreakAMitre) {
 }
 
 TEST(Joins, MitreOfDifferentThicknessesPassesThroughSideLineCrossings) {
-  const Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 3}, {0, 0}, 0.4)});
+  const Plan p =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 3}, {0, 0}, 0.4)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   ASSERT_EQ(j.pairs[0].kind, JoinKind::mitre);
@@ -80,7 +83,8 @@ TEST(Joins, RotatedMitreCornersAreBitIdenticalForBothWalls) {
 }
 
 TEST(Joins, CollinearContinuationIsMitredWithSquareEnds) {
-  const Plan p = plan_of({make_wall("a", {0, 0}, {2, 0}, 0.2), make_wall("b", {2, 0}, {5, 0}, 0.2)});
+  const Plan p =
+      plan_of({make_wall("a", {0, 0}, {2, 0}, 0.2), make_wall("b", {2, 0}, {5, 0}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::mitre);
@@ -90,7 +94,8 @@ TEST(Joins, CollinearContinuationIsMitredWithSquareEnds) {
 }
 
 TEST(Joins, CollinearOverlapUnitesAndIsNotAMitre) {
-  const Plan p = plan_of({make_wall("a", {0, 0}, {3, 0}, 0.2), make_wall("b", {0, 0}, {2, 0}, 0.2)});
+  const Plan p =
+      plan_of({make_wall("a", {0, 0}, {3, 0}, 0.2), make_wall("b", {0, 0}, {2, 0}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::unite);
@@ -132,8 +137,9 @@ TEST(Joins, StraightRunToAnotherThicknessWithAKinkUnitesUnlessTheMitreIsNear) {
 TEST(Joins, HairpinOfWallsDrawnOverEachOtherStaysWithinItsWalls) {
   // Found by fuzz_build: two walls ending at one point, one doubling back along the other
   // with a tilt of 2e-16 rad; the mitre put a corner 7.7e18 m away.
-  const Plan p = plan_of({make_wall("a", {-1150000, -1150000}, {-1150000.0000000002, -1060000}, 20000),
-                          make_wall("b", {-1150000.0000000002, -1120000}, {-1150000.0000000002, -1060000}, 20000)});
+  const Plan p = plan_of(
+      {make_wall("a", {-1150000, -1150000}, {-1150000.0000000002, -1060000}, 20000),
+       make_wall("b", {-1150000.0000000002, -1120000}, {-1150000.0000000002, -1060000}, 20000)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 1u);
   EXPECT_EQ(j.pairs[0].kind, JoinKind::unite);
@@ -145,20 +151,23 @@ TEST(Joins, HairpinOfWallsDrawnOverEachOtherStaysWithinItsWalls) {
 }
 
 TEST(Joins, TAndXAndThreeWayMeetingsUnite) {
-  const Plan t = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, 0}, {2, 3}, 0.2)});
+  const Plan t =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, 0}, {2, 3}, 0.2)});
   const Joins jt = find_joins(t);
   ASSERT_EQ(jt.pairs.size(), 1u);
   EXPECT_EQ(jt.pairs[0].kind, JoinKind::unite);
   EXPECT_EQ(jt.pairs[0].point, (Point2{2, 0}));
 
-  const Plan x = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, -2}, {2, 3}, 0.2)});
+  const Plan x =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, -2}, {2, 3}, 0.2)});
   const Joins jx = find_joins(x);
   ASSERT_EQ(jx.pairs.size(), 1u);
   EXPECT_EQ(jx.pairs[0].kind, JoinKind::unite);
   EXPECT_EQ(jx.pairs[0].point, (Point2{2, 0}));
 
-  const Plan three = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2),
-                              make_wall("c", {0, 0}, {-2, -2}, 0.2)});
+  const Plan three =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 0}, {0, 3}, 0.2),
+               make_wall("c", {0, 0}, {-2, -2}, 0.2)});
   const Joins j3 = find_joins(three);
   ASSERT_EQ(j3.pairs.size(), 3u);
   for (const Join& join : j3.pairs) EXPECT_EQ(join.kind, JoinKind::unite);
@@ -170,21 +179,25 @@ TEST(Joins, TAndXAndThreeWayMeetingsUnite) {
 TEST(Joins, EndWithinToleranceJoinsAndBeyondDoesNot) {
   // The tolerance is 1e-6 m; at 2^20 m from the origin the gaps are still exact doubles.
   const double x0 = 1048576.0;
-  const Plan near = plan_of({make_wall("a", {x0, 0}, {x0 + 4, 0}, 0.2), make_wall("b", {x0 + 2, 0.5e-6}, {x0 + 2, 3}, 0.2)});
+  const Plan near = plan_of({make_wall("a", {x0, 0}, {x0 + 4, 0}, 0.2),
+                             make_wall("b", {x0 + 2, 0.5e-6}, {x0 + 2, 3}, 0.2)});
   EXPECT_TRUE(find_joins(near).are_joined(0, 1));
   // Exactly at the tolerance (2^-20 m, an exact double) still joins; one ulp more does not.
-  Plan edge = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, 0x1p-20}, {2, 3}, 0.2)});
+  Plan edge =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {2, 0x1p-20}, {2, 3}, 0.2)});
   edge.site.tolerance = 0x1p-20;
   EXPECT_TRUE(find_joins(edge).are_joined(1, 0));
   edge.walls[1].from.y = std::nextafter(0x1p-20, 1.0);
   EXPECT_FALSE(find_joins(edge).are_joined(1, 0));
-  const Plan far = plan_of({make_wall("a", {x0, 0}, {x0 + 4, 0}, 0.2), make_wall("b", {x0 + 2, 2e-6}, {x0 + 2, 3}, 0.2)});
+  const Plan far = plan_of({make_wall("a", {x0, 0}, {x0 + 4, 0}, 0.2),
+                            make_wall("b", {x0 + 2, 2e-6}, {x0 + 2, 3}, 0.2)});
   EXPECT_FALSE(find_joins(far).are_joined(0, 1));
   EXPECT_EQ(find_joins(far).find(0, 1), nullptr);
 }
 
 TEST(Joins, EndPointsWithinToleranceAreMitred) {
-  Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0.5e-6, 0.5e-6}, {0, 3}, 0.2)});
+  Plan p =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0.5e-6, 0.5e-6}, {0, 3}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_TRUE(j.are_joined(0, 1));
   EXPECT_EQ(j.find(1, 0)->kind, JoinKind::mitre);
@@ -194,8 +207,9 @@ TEST(Joins, EndPointsWithinToleranceAreMitred) {
 
 TEST(Joins, ChainOfEndsWithinToleranceUnitesAll) {
   // Ends at x = 0, 0.8e-6 and 1.6e-6: neighbours are within 1e-6, the outer two are not.
-  const Plan p = plan_of({make_wall("a", {0, 0}, {0, -3}, 0.2), make_wall("b", {0.8e-6, 0}, {3, 3}, 0.2),
-                          make_wall("c", {1.6e-6, 0}, {3, -3}, 0.2)});
+  const Plan p =
+      plan_of({make_wall("a", {0, 0}, {0, -3}, 0.2), make_wall("b", {0.8e-6, 0}, {3, 3}, 0.2),
+               make_wall("c", {1.6e-6, 0}, {3, -3}, 0.2)});
   const Joins j = find_joins(p);
   for (const Join& join : j.pairs) EXPECT_EQ(join.kind, JoinKind::unite);
   for (const auto& m : j.mitre) {
@@ -205,16 +219,18 @@ TEST(Joins, ChainOfEndsWithinToleranceUnitesAll) {
 }
 
 TEST(Joins, WallsApartAndDegenerateWallsJoinNothing) {
-  const Plan p = plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 1}, {4, 1}, 0.2),
-                          make_wall("z", {2, 0}, {2, 0}, 0.2), make_wall("n", {NAN, 0}, {2, 0}, 0.2)});
+  const Plan p =
+      plan_of({make_wall("a", {0, 0}, {4, 0}, 0.2), make_wall("b", {0, 1}, {4, 1}, 0.2),
+               make_wall("z", {2, 0}, {2, 0}, 0.2), make_wall("n", {NAN, 0}, {2, 0}, 0.2)});
   const Joins j = find_joins(p);
   EXPECT_TRUE(j.pairs.empty());
   EXPECT_EQ(j.mitre.size(), 4u);
 }
 
 TEST(Joins, ClosedRingOfFourWallsIsFourMitres) {
-  const Plan p = plan_of({make_wall("s", {0, 0}, {4, 0}, 0.2), make_wall("e", {4, 0}, {4, 3}, 0.2),
-                          make_wall("n", {4, 3}, {0, 3}, 0.2), make_wall("w", {0, 3}, {0, 0}, 0.2)});
+  const Plan p =
+      plan_of({make_wall("s", {0, 0}, {4, 0}, 0.2), make_wall("e", {4, 0}, {4, 3}, 0.2),
+               make_wall("n", {4, 3}, {0, 3}, 0.2), make_wall("w", {0, 3}, {0, 0}, 0.2)});
   const Joins j = find_joins(p);
   ASSERT_EQ(j.pairs.size(), 4u);
   for (const Join& join : j.pairs) EXPECT_EQ(join.kind, JoinKind::mitre);

@@ -14,7 +14,9 @@
 namespace roomcad {
 namespace {
 
-std::filesystem::path model(const char* name) { return test::source_dir() / "examples" / "ifc" / name; }
+std::filesystem::path model(const char* name) {
+  return test::source_dir() / "examples" / "ifc" / name;
+}
 
 struct Expected {
   const char* file;
@@ -23,8 +25,9 @@ struct Expected {
 
 // The three bundled models (examples/ifc): what is read, and every element accounted for.
 TEST(IfcImport, RealModelsImportWithEveryLeftOutElementNamed) {
-  for (const Expected& e : {Expected{"IfcOpenHouse_IFC4.ifc", 4, 4, 0, 1}, Expected{"duplex.ifc", 56, 36, 21, 4},
-                            Expected{"tested_sample_project.ifc", 3, 10, 2, 2}}) {
+  for (const Expected& e :
+       {Expected{"IfcOpenHouse_IFC4.ifc", 4, 4, 0, 1}, Expected{"duplex.ifc", 56, 36, 21, 4},
+        Expected{"tested_sample_project.ifc", 3, 10, 2, 2}}) {
     SCOPED_TRACE(e.file);
     const Result<IfcImport> r = import_ifc_file(model(e.file));
     ASSERT_TRUE(r.ok()) << r.error();
@@ -72,7 +75,8 @@ TEST(IfcImport, OpenHouseWallsAndOpeningsAreWhereTheModelHasThem) {
 Plan sample_plan() {
   Plan plan;
   plan.site.max_height = 9.0;
-  plan.levels = {{.id = "ground", .elevation = 0.0, .height = 3.0}, {.id = "first", .elevation = 3.0, .height = 2.6}};
+  plan.levels = {{.id = "ground", .elevation = 0.0, .height = 3.0},
+                 {.id = "first", .elevation = 3.0, .height = 2.6}};
   auto wall = [&](const char* id, Point2 a, Point2 b, const char* level, double t) {
     Wall& w = plan.walls.emplace_back();
     w.id = id, w.from = a, w.to = b, w.level = level, w.thickness = t;
@@ -83,14 +87,34 @@ Plan sample_plan() {
   wall("west", {1, 7}, {1, 1}, "ground", 0.25);
   wall("mid", {6, 1}, {6, 7}, "ground", 0.1);
   wall("skew", {2, 2}, {5, 6}, "first", 0.2);
-  plan.openings.push_back({.id = "entry", .type = OpeningType::door, .wall = "south", .offset = 1.5, .width = 0.9,
-                           .height = 2.1, .hinge = Hinge::right});
-  plan.openings.push_back({.id = "arch", .type = OpeningType::window, .wall = "north", .offset = 2, .width = 1.2,
-                           .height = 1.6, .sill = 0.8, .shape = {{0, 0}, {1, 0}, {1, 0.7}, {0.5, 1}, {0, 0.7}}});
-  plan.openings.push_back({.id = "slot", .type = OpeningType::window, .wall = "skew", .offset = 1, .width = 2,
-                           .height = 0.5, .sill = 1.5});
-  plan.slabs.push_back({.id = "floor1", .level = "first", .outline = {{1, 1}, {11, 1}, {11, 7}, {1, 7}},
-                        .holes = {{{2, 5}, {4, 5}, {4, 6}, {2, 6}}}, .top = 0.0, .thickness = 0.2});
+  plan.openings.push_back({.id = "entry",
+                           .type = OpeningType::door,
+                           .wall = "south",
+                           .offset = 1.5,
+                           .width = 0.9,
+                           .height = 2.1,
+                           .hinge = Hinge::right});
+  plan.openings.push_back({.id = "arch",
+                           .type = OpeningType::window,
+                           .wall = "north",
+                           .offset = 2,
+                           .width = 1.2,
+                           .height = 1.6,
+                           .sill = 0.8,
+                           .shape = {{0, 0}, {1, 0}, {1, 0.7}, {0.5, 1}, {0, 0.7}}});
+  plan.openings.push_back({.id = "slot",
+                           .type = OpeningType::window,
+                           .wall = "skew",
+                           .offset = 1,
+                           .width = 2,
+                           .height = 0.5,
+                           .sill = 1.5});
+  plan.slabs.push_back({.id = "floor1",
+                        .level = "first",
+                        .outline = {{1, 1}, {11, 1}, {11, 7}, {1, 7}},
+                        .holes = {{{2, 5}, {4, 5}, {4, 6}, {2, 6}}},
+                        .top = 0.0,
+                        .thickness = 0.2});
   return plan;
 }
 
@@ -133,8 +157,10 @@ void expect_round_trip(const Plan& original) {
     if (o.type == OpeningType::door) {
       EXPECT_EQ(o.hinge, p.hinge);
     }
-    EXPECT_NEAR(o.offset, p.offset, 1e-6); EXPECT_NEAR(o.width, p.width, 1e-6);
-    EXPECT_NEAR(o.sill, p.sill, 1e-6); EXPECT_NEAR(o.height, p.height, 1e-6);
+    EXPECT_NEAR(o.offset, p.offset, 1e-6);
+    EXPECT_NEAR(o.width, p.width, 1e-6);
+    EXPECT_NEAR(o.sill, p.sill, 1e-6);
+    EXPECT_NEAR(o.height, p.height, 1e-6);
     ASSERT_EQ(o.shape.size(), p.shape.size());
     for (std::size_t k = 0; k < o.shape.size(); ++k) expect_near(o.shape[k], p.shape[k]);
   }
@@ -150,7 +176,9 @@ void expect_round_trip(const Plan& original) {
   for (const Level& l : a.levels) EXPECT_NEAR(levels[l.id], l.elevation, 1e-6) << l.id;
 }
 
-TEST(IfcImport, ExportedPlanComesBackWithItsWallsOpeningsLevelsAndSlabs) { expect_round_trip(sample_plan()); }
+TEST(IfcImport, ExportedPlanComesBackWithItsWallsOpeningsLevelsAndSlabs) {
+  expect_round_trip(sample_plan());
+}
 
 TEST(IfcImport, EveryExamplePlanComesBackFromItsIfc) {
   for (const auto& path : test::example_plans()) {
@@ -170,7 +198,8 @@ TEST(IfcImport, UnreadableModelsAreErrorsNamingTheFile) {
   ASSERT_FALSE(schema.ok());
   EXPECT_EQ(schema.error().code, Code::unsupported);
   const std::string ifc4 = "ISO-10303-21;HEADER;FILE_SCHEMA(('IFC4'));ENDSEC;DATA;";
-  const Result<IfcImport> empty = import_ifc_text(ifc4 + "#1=IFCPROJECT('0123456789012345678901',$,'p',$,$,$,$,$,$);ENDSEC;", "x.ifc");
+  const Result<IfcImport> empty = import_ifc_text(
+      ifc4 + "#1=IFCPROJECT('0123456789012345678901',$,'p',$,$,$,$,$,$);ENDSEC;", "x.ifc");
   ASSERT_FALSE(empty.ok());
   EXPECT_EQ(empty.error().code, Code::parse_error);
   EXPECT_NE(empty.error().message.find("x.ifc: no wall"), std::string::npos);
@@ -186,14 +215,16 @@ TEST(IfcImport, AnElementItCannotReadIsAWarningNamingIt) {
   const std::size_t end = ifc.find("ENDSEC;", ifc.find("DATA;"));
   const std::size_t pos = ifc.find("=IFCLOCALPLACEMENT(", ifc.find("=IFCWALL(") - 400);
   const std::string placement = ifc.substr(ifc.rfind('#', pos), pos - ifc.rfind('#', pos));
-  ifc.insert(end, "#99999=IFCCURTAINWALL('0aaaaaaaaaaaaaaaaaaaaa',$,'glass',$,$," + placement + ",$,$,$);\n");
+  ifc.insert(end, "#99999=IFCCURTAINWALL('0aaaaaaaaaaaaaaaaaaaaa',$,'glass',$,$," + placement +
+                      ",$,$,$);\n");
   const Result<IfcImport> r = import_ifc_text(ifc, "x.ifc");
   ASSERT_TRUE(r.ok()) << r.error();
   // The curtain wall, and the two spaces of the ground floor (rooms come from the walls).
   ASSERT_EQ(r.value().warnings.items.size(), 3u);
   const Diagnostic& curtain = r.value().warnings.items.back();
   EXPECT_EQ(curtain.code, Code::import_skipped_element);
-  EXPECT_TRUE(curtain.message.starts_with("#99999 IFCCURTAINWALL 'glass': not imported")) << curtain.message;
+  EXPECT_TRUE(curtain.message.starts_with("#99999 IFCCURTAINWALL 'glass': not imported"))
+      << curtain.message;
   EXPECT_EQ(r.value().skipped, 3u);
 }
 

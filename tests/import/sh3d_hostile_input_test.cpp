@@ -38,7 +38,7 @@ TEST(HostileSh3d, Sh3dHomeWithTooManyWallItemPairsIsRefusedBeforeMatching) {
   const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "crowded.Home.xml");
   ASSERT_FALSE(imported.ok());
   EXPECT_NE(imported.message().find("crowded.Home.xml: 50000 <wall> and 20001 <doorOrWindow> and "
-                                  "<level> elements; at most 1000000000 pairs"),
+                                    "<level> elements; at most 1000000000 pairs"),
             std::string::npos)
       << imported.error();
 }
@@ -54,7 +54,7 @@ TEST(HostileSh3d, Sh3dHomeWithMoreWallsThanAPlanHoldsIsRefused) {
   const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "huge.Home.xml");
   ASSERT_FALSE(imported.ok());
   EXPECT_NE(imported.message().find("huge.Home.xml: 1000001 <wall> and 0 <doorOrWindow> elements; "
-                                  "a plan may hold at most 1000000 of each kind"),
+                                    "a plan may hold at most 1000000 of each kind"),
             std::string::npos)
       << imported.error();
 }
@@ -68,7 +68,7 @@ TEST(HostileSh3d, Sh3dHomeSpreadBeyondAnySiteIsRefused) {
   const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "far.Home.xml");
   ASSERT_FALSE(imported.ok());
   EXPECT_NE(imported.message().find("far.Home.xml: the walls span 3.5e+115 m, more than 1e+09 "
-                                  "cells of 1 m"),
+                                    "cells of 1 m"),
             std::string::npos)
       << imported.error();
   const auto found = test::source_dir() / "fuzz/corpus/sh3d_xml/crash-site-cells.Home.xml";
@@ -83,7 +83,8 @@ TEST(HostileSh3d, CutOutArcOfAHugeRadiusIsBoundedNotOverflowed) {
   // sanitized build stops on it). The fuzzer also wrote bytes 0xFF into a door's id, which no
   // XML may hold: the file is refused for them, and with them made ASCII its opening is
   // imported, its outline bounded.
-  const auto found = test::source_dir() / "fuzz/corpus/sh3d_xml/crash-cut-out-arc-radius-far-above-tolerance.Home.xml";
+  const auto found = test::source_dir() /
+                     "fuzz/corpus/sh3d_xml/crash-cut-out-arc-radius-far-above-tolerance.Home.xml";
   const Result<Sh3dImport> refused = import_sweethome3d_file(found);
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.code(), Code::parse_error);
@@ -103,20 +104,25 @@ TEST(HostileSh3d, CutOutArcOfAHugeRadiusIsBoundedNotOverflowed) {
 TEST(HostileSh3d, IllFormedUtf8InAnAttributeIsRefusedNamingIt) {
   // A plan is UTF-8: an ill-formed byte copied into an id would make the written plan
   // unreadable. Latin-1 that the XML declares as such is converted by the XML reader.
-  const std::string latin1_wall = "<wall id='K\xfc" "che' xStart='0' yStart='0' xEnd='400' yEnd='0' "
-                                  "thickness='10' height='250'/>";
+  const std::string latin1_wall =
+      "<wall id='K\xfc"
+      "che' xStart='0' yStart='0' xEnd='400' yEnd='0' "
+      "thickness='10' height='250'/>";
   const Result<Sh3dImport> refused =
       import_sweethome3d_text("<home>" + latin1_wall + "</home>", "k.Home.xml");
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.code(), Code::parse_error);
-  EXPECT_EQ(refused.message(), "k.Home.xml: <wall id='K\\xFCche'> attribute 'id' is not UTF-8 "
-                               "(byte 2 is 0xFC): 'K\\xFCche'");
+  EXPECT_EQ(refused.message(),
+            "k.Home.xml: <wall id='K\\xFCche'> attribute 'id' is not UTF-8 "
+            "(byte 2 is 0xFC): 'K\\xFCche'");
 
   const Result<Sh3dImport> declared = import_sweethome3d_text(
       "<?xml version='1.0' encoding='ISO-8859-1'?><home>" + latin1_wall + "</home>", "k.Home.xml");
   ASSERT_TRUE(declared.ok()) << declared.error();
   ASSERT_EQ(declared.value().plan.walls.size(), 1u);
-  EXPECT_EQ(declared.value().plan.walls[0].id, "K\xc3\xbc" "che");
+  EXPECT_EQ(declared.value().plan.walls[0].id,
+            "K\xc3\xbc"
+            "che");
 }
 
 TEST(HostileSh3d, Sh3dHomeWhoseWallsAllHaveZeroLengthIsRefused) {
@@ -129,8 +135,9 @@ TEST(HostileSh3d, Sh3dHomeWhoseWallsAllHaveZeroLengthIsRefused) {
   const Result<Sh3dImport> imported = import_sweethome3d_text(xml, "dots.Home.xml");
   ASSERT_FALSE(imported.ok());
   EXPECT_EQ(imported.code(), Code::invalid_value);
-  EXPECT_EQ(imported.message(), "dots.Home.xml: no wall to import: each of its 2 <wall> elements "
-                                "starts and ends at the same point");
+  EXPECT_EQ(imported.message(),
+            "dots.Home.xml: no wall to import: each of its 2 <wall> elements "
+            "starts and ends at the same point");
   const auto found = test::source_dir() / "fuzz/corpus/sh3d_archive/crash-zero-length-walls.sh3d";
   const Result<Sh3dImport> again = import_sweethome3d_file(found);
   ASSERT_FALSE(again.ok());

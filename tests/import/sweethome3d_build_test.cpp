@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 
 #include "import/sh3d_test_data.h"
-#include "solid/build_model.h"
 #include "mesh/mesh_check.h"
-#include "support/solid_tolerance.h"
 #include "solid/analytic_volume.h"
+#include "solid/build_model.h"
+#include "support/solid_tolerance.h"
 
 namespace roomcad {
 namespace {

@@ -16,11 +16,11 @@
 
 #include <gtest/gtest.h>
 
+#include "import/sh3d_test_data.h"
+#include "import/sweethome3d_import.h"
 #include "plan/arc_chords.h"
 #include "plan/plan_chords.h"
 #include "plan/plan_levels.h"
-#include "import/sweethome3d_import.h"
-#include "import/sh3d_test_data.h"
 
 namespace roomcad {
 namespace {
@@ -48,7 +48,8 @@ TEST(Sh3dImport, EveryWallIsOneWallSlopedAndCurvedAsDrawn) {
     const std::vector<Attributes> xml_walls = elements(read_text(home), "wall");
     const Sh3dImport imported = import_or_fail(home);
     EXPECT_EQ(imported.source_walls, xml_walls.size());
-    const std::set<std::string> left_out = objects_warned(imported.warnings, Code::import_zero_length_wall);
+    const std::set<std::string> left_out =
+        objects_warned(imported.warnings, Code::import_zero_length_wall);
     std::size_t expected = 0;
     for (const Attributes& w : xml_walls) {
       if (left_out.contains(w.at("id"))) {
@@ -85,8 +86,10 @@ TEST(Sh3dImport, EveryItemIsAnOpeningOrASkipWarningAndPiecesAreAnnounced) {
     SCOPED_TRACE(home.filename().string());
     const std::vector<Attributes> items = elements(read_text(home), "doorOrWindow");
     const Sh3dImport imported = import_or_fail(home);
-    const std::set<std::string> skipped = objects_warned(imported.warnings, Code::import_skipped_opening);
-    const std::set<std::string> split = objects_warned(imported.warnings, Code::import_split_opening);
+    const std::set<std::string> skipped =
+        objects_warned(imported.warnings, Code::import_skipped_opening);
+    const std::set<std::string> split =
+        objects_warned(imported.warnings, Code::import_split_opening);
     std::set<std::string> ids;
     for (const Opening& o : imported.plan.openings) ids.insert(o.id);
     std::size_t pieces = 0;
@@ -109,7 +112,8 @@ std::pair<double, double> project_on(const std::vector<Point2>& line, Point2 p) 
   for (std::size_t k = 1; k < line.size(); ++k) {
     const Point2 a = line[k - 1], b = line[k];
     const double L = std::hypot(b.x - a.x, b.y - a.y);
-    const double t = std::clamp(((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / L, 0.0, L);
+    const double t =
+        std::clamp(((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / L, 0.0, L);
     const double d = std::hypot(a.x + t * (b.x - a.x) / L - p.x, a.y + t * (b.y - a.y) / L - p.y);
     const double across = std::abs((p.x - a.x) * (b.y - a.y) - (p.y - a.y) * (b.x - a.x)) / L;
     const double along = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / L;
@@ -146,7 +150,8 @@ TEST(Sh3dImport, EveryOpeningLiesInsideItsWallAndOnTheItem) {
       }
       // The item's centre, read from the XML in centimetres with y down, lies in the wall's
       // footprint (grown by half the item's depth) and within the opening's span.
-      const Attributes& item = items.contains(o.id) ? items.at(o.id) : items.at(o.id.substr(0, o.id.rfind('-')));
+      const Attributes& item =
+          items.contains(o.id) ? items.at(o.id) : items.at(o.id.substr(0, o.id.rfind('-')));
       const Point2 centre{std::stod(item.at("x")) / 100, -std::stod(item.at("y")) / 100};
       const auto [v, u] = project_on(line, centre);
       EXPECT_LE(v, w->thickness / 2 + std::stod(item.at("depth")) / 200 + 0.01) << o.id;
@@ -185,8 +190,10 @@ TEST(Sh3dImport, OpeningsDrawnSideBySideTouchExactly) {
   // Two 55 cm windows of 3-BedroomHouseWithMezzanine 55 cm apart: they touch, in decimal.
   const Sh3dImport imported =
       import_or_fail(kData / "eteks-example-homes" / "3-BedroomHouseWithMezzanine.Home.xml");
-  const Opening* a = find_opening(imported.plan, "doorOrWindow-50a0446d-d92e-4921-a291-72465c1a66d5");
-  const Opening* b = find_opening(imported.plan, "doorOrWindow-232ada88-729b-4aef-ac5d-34e8649c34da");
+  const Opening* a =
+      find_opening(imported.plan, "doorOrWindow-50a0446d-d92e-4921-a291-72465c1a66d5");
+  const Opening* b =
+      find_opening(imported.plan, "doorOrWindow-232ada88-729b-4aef-ac5d-34e8649c34da");
   ASSERT_TRUE(a && b);
   EXPECT_EQ(a->wall, b->wall);
   EXPECT_EQ(a->offset + a->width, b->offset);
@@ -196,8 +203,8 @@ TEST(Sh3dImport, OpeningsDrawnSideBySideTouchExactly) {
     for (const Opening& p : plan.openings)
       for (const Opening& q : plan.openings) {
         if (&p == &q || p.wall != q.wall) continue;
-        const double overlap = std::min(p.offset + p.width, q.offset + q.width) -
-                               std::max(p.offset, q.offset);
+        const double overlap =
+            std::min(p.offset + p.width, q.offset + q.width) - std::max(p.offset, q.offset);
         EXPECT_TRUE(overlap <= 0 || overlap > 1e-6) << p.id << " " << q.id << " " << overlap;
       }
   }
@@ -245,7 +252,8 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   const fs::path home = kData / "eteks-example-homes" / "2-BedroomHouseWithBasement.Home.xml";
   const Sh3dImport imported = import_or_fail(home);
   // A 132 x 134 cm window 87 cm above the floor of the first floor (elevation 112 cm, slab 12).
-  const Opening* window = find_opening(imported.plan, "doorOrWindow-fdd41f02-dfe0-4d47-8e7f-6fad3d883ce4");
+  const Opening* window =
+      find_opening(imported.plan, "doorOrWindow-fdd41f02-dfe0-4d47-8e7f-6fad3d883ce4");
   ASSERT_NE(window, nullptr);
   EXPECT_EQ(window->type, OpeningType::window);
   EXPECT_NEAR(window->width, 1.32, 2e-6);  // edges on the 2^-20 m grid
@@ -259,7 +267,8 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   EXPECT_NEAR(host->base, -0.12, 1e-6);
   EXPECT_NEAR(base_z(imported.plan, *host), 1.12 - 0.12 + 1.5, 1e-9);
   // A door of the basement, the lowest level: its sill is the wall's base.
-  const Opening* door = find_opening(imported.plan, "doorOrWindow-a4cf284d-8a9a-4412-8654-36f2ddb6959f");
+  const Opening* door =
+      find_opening(imported.plan, "doorOrWindow-a4cf284d-8a9a-4412-8654-36f2ddb6959f");
   ASSERT_NE(door, nullptr);
   EXPECT_EQ(door->type, OpeningType::door);
   EXPECT_EQ(door->sill, 0.0);
@@ -269,8 +278,10 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   // Both doors hinge on the left of their model (sash xAxis 0.05) and face against their wall's
   // direction (angle pi); the second is mirrored. Seen from the wall, the first hinges at its
   // `to` end, the second at its `from` end.
-  const Opening* turned = find_opening(imported.plan, "doorOrWindow-cb59f9df-1827-4d5b-bf6b-68a3270f72ed");
-  const Opening* mirrored = find_opening(imported.plan, "doorOrWindow-791c3bc2-fb47-47ab-81c4-713ff1895434");
+  const Opening* turned =
+      find_opening(imported.plan, "doorOrWindow-cb59f9df-1827-4d5b-bf6b-68a3270f72ed");
+  const Opening* mirrored =
+      find_opening(imported.plan, "doorOrWindow-791c3bc2-fb47-47ab-81c4-713ff1895434");
   ASSERT_TRUE(turned && mirrored);
   EXPECT_EQ(turned->hinge, Hinge::right);
   EXPECT_EQ(mirrored->hinge, Hinge::left);
@@ -278,7 +289,8 @@ TEST(Sh3dImport, DoorAndWindowSizesAndSills) {
   // sash that faces along its wall the other way round (angle 0 on a wall drawn leftwards).
   EXPECT_EQ(turned->swing, Swing::in);
   EXPECT_EQ(mirrored->swing, Swing::in);
-  const Opening* along = find_opening(imported.plan, "doorOrWindow-dd84126e-0437-4e76-ba8b-f685211624ef");
+  const Opening* along =
+      find_opening(imported.plan, "doorOrWindow-dd84126e-0437-4e76-ba8b-f685211624ef");
   ASSERT_NE(along, nullptr);
   const Wall* along_host = find_wall(imported.plan, along->wall);
   EXPECT_EQ(along->wall, "wall35");  // drawn from x = 7.00 m to 6.00 m
@@ -350,11 +362,13 @@ TEST(Sh3dImport, PrefersTheWallThatHoldsTheWholeOpening) {
   // window; its centre line is nearer the window, but only wall27 holds the whole window.
   const Sh3dImport imported =
       import_or_fail(kData / "eteks-example-homes" / "2-BedroomApartment.Home.xml");
-  const Opening* window = find_opening(imported.plan, "doorOrWindow-04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf");
+  const Opening* window =
+      find_opening(imported.plan, "doorOrWindow-04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf");
   ASSERT_NE(window, nullptr);
   EXPECT_EQ(window->wall, "wall27");
   EXPECT_NEAR(window->width, 1.56, 2e-6);
-  const Opening* piece = find_opening(imported.plan, "doorOrWindow-04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf-2");
+  const Opening* piece =
+      find_opening(imported.plan, "doorOrWindow-04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf-2");
   ASSERT_NE(piece, nullptr);
   EXPECT_EQ(piece->wall, "wall2");
 }

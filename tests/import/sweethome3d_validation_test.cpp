@@ -33,17 +33,20 @@ std::set<Problem> real_problems_of_flat(const std::string& home) {
     return {// wall4 and wall5 are drawn along one line and overlap for 14 cm.
             {Code::wall_overlap, {"wall4", "wall5"}},
             // Two doors side by side in wall11 overlap by 6 mm.
-            {Code::opening_overlap, {item("f5d05573-b541-437d-ba8c-fd55146c8f41"),
-                                 item("f663a32a-f23d-4fbc-9ccb-44f9d73afc87")}}};
+            {Code::opening_overlap,
+             {item("f5d05573-b541-437d-ba8c-fd55146c8f41"),
+              item("f663a32a-f23d-4fbc-9ccb-44f9d73afc87")}}};
   if (home == "2-BedroomApartment")
-    return {// A thin slanted wall (wall2) is drawn inside the outer wall27, under a window.
-            {Code::wall_overlap, {"wall2", "wall27"}},
-            {Code::opening_blocked, {item("04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf"), "wall2", "wall27"}},
-            {Code::opening_blocked,
-             {item("04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf-2"), "wall2", "wall27"}},
-            // A door frame and a French window fill the same hole of wall22.
-            {Code::opening_overlap, {item("64b11339-e657-4ca1-9406-3c588ed826a8"),
-                                 item("757b71b6-7eef-462c-879b-f67dc36de6d5")}}};
+    return {
+        // A thin slanted wall (wall2) is drawn inside the outer wall27, under a window.
+        {Code::wall_overlap, {"wall2", "wall27"}},
+        {Code::opening_blocked, {item("04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf"), "wall2", "wall27"}},
+        {Code::opening_blocked,
+         {item("04bc5b8c-a3a1-4a67-9daf-d96bd088bbaf-2"), "wall2", "wall27"}},
+        // A door frame and a French window fill the same hole of wall22.
+        {Code::opening_overlap,
+         {item("64b11339-e657-4ca1-9406-3c588ed826a8"),
+          item("757b71b6-7eef-462c-879b-f67dc36de6d5")}}};
   if (home == "3-BedroomApartment")
     return {// A low wall (wall25) pokes 1 cm into the corner of wall21 and wall28.
             {Code::wall_overlap, {"wall21", "wall25"}},
@@ -53,42 +56,50 @@ std::set<Problem> real_problems_of_flat(const std::string& home) {
             {Code::wall_overlap, {"wall29", "wall39"}},
             {Code::wall_overlap, {"wall38", "wall39"}}};
   if (home == "ApartmentWithBowWindow")
-    return {// (wall36 starts and ends at the same point: the import leaves it out and says so.)
-            // wall18 is drawn back over wall13, along the same 2.4 m.
-            {Code::wall_overlap, {"wall13", "wall18"}},
-            // A thin wall (wall42) pokes 4 to 6 cm into the corner of wall8 and wall41.
-            {Code::wall_overlap, {"wall42", "wall8"}},
-            {Code::wall_overlap, {"wall41", "wall42"}},
-            // A window of wall8 is drawn 7 cm into the end of wall1.
-            {Code::opening_blocked, {item("7778267d-5a42-4a48-979a-7e90c6e93696"), "wall1", "wall8"}}};
+    return {
+        // (wall36 starts and ends at the same point: the import leaves it out and says so.)
+        // wall18 is drawn back over wall13, along the same 2.4 m.
+        {Code::wall_overlap, {"wall13", "wall18"}},
+        // A thin wall (wall42) pokes 4 to 6 cm into the corner of wall8 and wall41.
+        {Code::wall_overlap, {"wall42", "wall8"}},
+        {Code::wall_overlap, {"wall41", "wall42"}},
+        // A window of wall8 is drawn 7 cm into the end of wall1.
+        {Code::opening_blocked, {item("7778267d-5a42-4a48-979a-7e90c6e93696"), "wall1", "wall8"}}};
   return {};
 }
 
 /// The real problems of each house, found the same way.
 std::set<Problem> real_problems_of_house(const std::string& home) {
   if (home == "2-BedroomHouseWithBasement")
-    return {// Two 4 cm walls drawn end to end overlap for 2 cm, 2 mm apart side to side.
-            {Code::wall_overlap, {"wall18", "wall19"}},
-            // A door straddles the joint of wall4 and wall14, which meet at a 0.2 degree kink
-            // (each piece's hole is grazed by the other wall), and wall2 ends 1.7 mm into it.
-            {Code::opening_blocked, {item("eb07e089-7798-478a-922f-9309c8f437cf"), "wall14", "wall4"}},
-            {Code::opening_blocked,
-             {item("eb07e089-7798-478a-922f-9309c8f437cf-2"), "wall14", "wall4"}},
-            {Code::opening_blocked,
-             {item("eb07e089-7798-478a-922f-9309c8f437cf-2"), "wall2", "wall4"}},
-            // The basement's 4 cm walls wall17 and wall19 rise to 2.62 m, 12 cm above the first
-            // floor's base, into the mitred outer corners of the walls around them: wall1 and
-            // wall29 (ground) and wall5 and wall25 (first floor) at the west, wall0 and wall1,
-            // wall7 and wall27 at the east.
-            {Code::wall_overlap, {"wall1", "wall17"}}, {Code::wall_overlap, {"wall17", "wall29"}},
-            {Code::wall_overlap, {"wall17", "wall5"}}, {Code::wall_overlap, {"wall17", "wall25"}},
-            {Code::wall_overlap, {"wall0", "wall19"}}, {Code::wall_overlap, {"wall1", "wall19"}},
-            {Code::wall_overlap, {"wall19", "wall7"}}, {Code::wall_overlap, {"wall19", "wall27"}}};
+    return {
+        // Two 4 cm walls drawn end to end overlap for 2 cm, 2 mm apart side to side.
+        {Code::wall_overlap, {"wall18", "wall19"}},
+        // A door straddles the joint of wall4 and wall14, which meet at a 0.2 degree kink
+        // (each piece's hole is grazed by the other wall), and wall2 ends 1.7 mm into it.
+        {Code::opening_blocked, {item("eb07e089-7798-478a-922f-9309c8f437cf"), "wall14", "wall4"}},
+        {Code::opening_blocked,
+         {item("eb07e089-7798-478a-922f-9309c8f437cf-2"), "wall14", "wall4"}},
+        {Code::opening_blocked, {item("eb07e089-7798-478a-922f-9309c8f437cf-2"), "wall2", "wall4"}},
+        // The basement's 4 cm walls wall17 and wall19 rise to 2.62 m, 12 cm above the first
+        // floor's base, into the mitred outer corners of the walls around them: wall1 and
+        // wall29 (ground) and wall5 and wall25 (first floor) at the west, wall0 and wall1,
+        // wall7 and wall27 at the east.
+        {Code::wall_overlap, {"wall1", "wall17"}},
+        {Code::wall_overlap, {"wall17", "wall29"}},
+        {Code::wall_overlap, {"wall17", "wall5"}},
+        {Code::wall_overlap, {"wall17", "wall25"}},
+        {Code::wall_overlap, {"wall0", "wall19"}},
+        {Code::wall_overlap, {"wall1", "wall19"}},
+        {Code::wall_overlap, {"wall19", "wall7"}},
+        {Code::wall_overlap, {"wall19", "wall27"}}};
   if (home == "3-BedroomHouseWithAttic")
     return {// Walls drawn 1 to 14 mm into a neighbour, where no T or corner join applies.
-            {Code::wall_overlap, {"wall11", "wall30"}}, {Code::wall_overlap, {"wall16", "wall34"}},
-            {Code::wall_overlap, {"wall16", "wall35"}}, {Code::wall_overlap, {"wall16", "wall53"}},
-            {Code::wall_overlap, {"wall31", "wall45"}}, {Code::wall_overlap, {"wall35", "wall53"}},
+            {Code::wall_overlap, {"wall11", "wall30"}},
+            {Code::wall_overlap, {"wall16", "wall34"}},
+            {Code::wall_overlap, {"wall16", "wall35"}},
+            {Code::wall_overlap, {"wall16", "wall53"}},
+            {Code::wall_overlap, {"wall31", "wall45"}},
+            {Code::wall_overlap, {"wall35", "wall53"}},
             {Code::wall_overlap, {"wall47", "wall54"}},
             // The mitred corner of wall29 reaches 0.9 mm into the side of wall31.
             {Code::wall_overlap, {"wall29", "wall31"}}};
@@ -101,12 +112,14 @@ std::set<Problem> real_problems_of_house(const std::string& home) {
             // The mitred corner of wall43 reaches 0.3 mm into the thin wall57.
             {Code::wall_overlap, {"wall43", "wall57"}},
             // Two fixed windows of wall57 overlap by 16 cm.
-            {Code::opening_overlap, {item("b808eea4-6043-418c-8965-14935f4412bf"),
-                                 item("d7c1f1d3-d2ae-4a94-bdf8-7fccba0b117d")}}};
+            {Code::opening_overlap,
+             {item("b808eea4-6043-418c-8965-14935f4412bf"),
+              item("d7c1f1d3-d2ae-4a94-bdf8-7fccba0b117d")}}};
   if (home == "4-BedroomHouse")
-    return {// A door drawn into the corner where wall1 and wall33 meet wall2.
-            {Code::opening_blocked, {item("b2b2dd23-d20c-4009-91ea-cae050f3f8dd"), "wall1", "wall2"}},
-            {Code::opening_blocked, {item("b2b2dd23-d20c-4009-91ea-cae050f3f8dd"), "wall2", "wall33"}}};
+    return {
+        // A door drawn into the corner where wall1 and wall33 meet wall2.
+        {Code::opening_blocked, {item("b2b2dd23-d20c-4009-91ea-cae050f3f8dd"), "wall1", "wall2"}},
+        {Code::opening_blocked, {item("b2b2dd23-d20c-4009-91ea-cae050f3f8dd"), "wall2", "wall33"}}};
   return {};
 }
 
@@ -176,11 +189,11 @@ TEST(Sh3dValidation, OnlyTheHomesOwnProblemsAreErrors) {
     }
     const std::set<Problem> expected = real_problems(name);
     for (const Problem& p : errors)
-      EXPECT_TRUE(expected.contains(p)) << "unexpected " << p.code << " "
-                                        << ::testing::PrintToString(p.objects);
+      EXPECT_TRUE(expected.contains(p))
+          << "unexpected " << p.code << " " << ::testing::PrintToString(p.objects);
     for (const Problem& p : expected)
-      EXPECT_TRUE(errors.contains(p)) << "missing " << p.code << " "
-                                      << ::testing::PrintToString(p.objects);
+      EXPECT_TRUE(errors.contains(p))
+          << "missing " << p.code << " " << ::testing::PrintToString(p.objects);
   }
 }
 

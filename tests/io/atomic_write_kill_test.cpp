@@ -76,9 +76,8 @@ TEST(AtomicWrite, ASaveLeavesTemporaryFilesOfLiveWritersAndOtherFilesAlone) {
   ASSERT_TRUE(test::write_bytes(dir / ".plan.json.tmp-notapid", "someone else's"));
   ASSERT_TRUE(test::write_bytes(dir / ".other.json.tmp-1-abcdef", "another file's"));
   ASSERT_TRUE(write_file_atomically(dir / "plan.json", std::string_view("new\n")).ok());
-  EXPECT_EQ(leaves(dir.path()),
-            (std::vector<std::string>{".other.json.tmp-1-abcdef", live, ".plan.json.tmp-notapid",
-                                      "plan.json"}));
+  EXPECT_EQ(leaves(dir.path()), (std::vector<std::string>{".other.json.tmp-1-abcdef", live,
+                                                          ".plan.json.tmp-notapid", "plan.json"}));
 }
 
 }  // namespace

@@ -86,7 +86,8 @@ TEST(AtomicWrite, MissingDirectoryNamesThePathAndTheReason) {
   test::TempDir dir;
   const Status s = write_file_atomically(dir / "no" / "such" / "a.txt", std::string_view("x"));
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.message().find((dir / "no" / "such" / "a.txt").string()), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find((dir / "no" / "such" / "a.txt").string()), std::string::npos)
+      << s.message();
   EXPECT_NE(s.message().find("No such file or directory"), std::string::npos) << s.message();
   EXPECT_EQ(entries(dir.path()), 0u);
 }

@@ -6,12 +6,12 @@
 
 #include <gtest/gtest.h>
 
-#include "support/plan_reading.h"
 #include "io/detail/plan_reader.h"
 #include "io/detail/positioned_json.h"
 #include "io/image_io.h"
 #include "io/plan_json.h"
 #include "io/text_file.h"
+#include "support/plan_reading.h"
 #include "support/run_command.h"
 
 namespace roomcad {

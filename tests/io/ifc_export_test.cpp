@@ -5,13 +5,13 @@
 #include <regex>
 #include <set>
 
+#include "geometry/rooms.h"
 #include "io/detail/ifc_shapes.h"
 #include "io/ifc_export.h"
 #include "io/step_file.h"
-#include "plan/arc_chords.h"
 #include "mesh/mesh_check.h"
+#include "plan/arc_chords.h"
 #include "plan/plan_levels.h"
-#include "geometry/rooms.h"
 #include "solid/analytic_volume.h"
 
 namespace roomcad {
@@ -22,7 +22,8 @@ namespace {
 Plan two_storeys() {
   Plan plan;
   plan.site.max_height = 9.0;
-  plan.levels = {{.id = "ground", .elevation = 0.0, .height = 3.0}, {.id = "first", .elevation = 3.0, .height = 2.6}};
+  plan.levels = {{.id = "ground", .elevation = 0.0, .height = 3.0},
+                 {.id = "first", .elevation = 3.0, .height = 2.6}};
   auto wall = [&](const char* id, Point2 a, Point2 b, const char* level) {
     Wall& w = plan.walls.emplace_back();
     w.id = id, w.from = a, w.to = b, w.level = level;
@@ -33,15 +34,31 @@ Plan two_storeys() {
   wall("west", {1, 7}, {1, 1}, "ground");
   wall("mid", {6, 1}, {6, 7}, "ground");
   wall("upper", {1, 4}, {11, 4}, "first");
-  plan.openings.push_back({.id = "entry", .type = OpeningType::door, .wall = "south", .offset = 1.5, .width = 0.9, .height = 2.1});
-  plan.openings.push_back({.id = "win", .type = OpeningType::window, .wall = "north", .offset = 2, .width = 1.4, .height = 1.3, .sill = 0.9});
-  plan.slabs.push_back({.id = "floor1", .level = "first", .outline = {{1, 1}, {11, 1}, {11, 7}, {1, 7}}, .top = 0.0, .thickness = 0.2});
+  plan.openings.push_back({.id = "entry",
+                           .type = OpeningType::door,
+                           .wall = "south",
+                           .offset = 1.5,
+                           .width = 0.9,
+                           .height = 2.1});
+  plan.openings.push_back({.id = "win",
+                           .type = OpeningType::window,
+                           .wall = "north",
+                           .offset = 2,
+                           .width = 1.4,
+                           .height = 1.3,
+                           .sill = 0.9});
+  plan.slabs.push_back({.id = "floor1",
+                        .level = "first",
+                        .outline = {{1, 1}, {11, 1}, {11, 7}, {1, 7}},
+                        .top = 0.0,
+                        .thickness = 0.2});
   return plan;
 }
 
 std::size_t count(const std::string& text, const std::string& needle) {
   std::size_t n = 0;
-  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1))
+    ++n;
   return n;
 }
 
@@ -62,8 +79,10 @@ TEST(IfcExport, WritesTheSpatialTreeAndEveryObjectOnce) {
   EXPECT_EQ(count(t, "=IFCWINDOW("), 1u);
   EXPECT_EQ(count(t, "=IFCSLAB("), 1u);
   const Plan plan = two_storeys();
-  const std::size_t rooms = find_rooms(plan_of_level(plan, "ground")).size() + find_rooms(plan_of_level(plan, "first")).size();
-  EXPECT_EQ(find_rooms(plan_of_level(plan, "ground")).size(), 2u);  // the two rooms of the ground floor
+  const std::size_t rooms = find_rooms(plan_of_level(plan, "ground")).size() +
+                            find_rooms(plan_of_level(plan, "first")).size();
+  EXPECT_EQ(find_rooms(plan_of_level(plan, "ground")).size(),
+            2u);  // the two rooms of the ground floor
   EXPECT_EQ(count(t, "=IFCSPACE("), rooms);
   EXPECT_EQ(count(t, "=IFCSURFACESTYLE("), 3u);  // the walls', the slab's and the floor's (spaces)
   EXPECT_EQ(count(t, "=IFCSIUNIT(*,.LENGTHUNIT.,$,.METRE.)"), 1u);
@@ -76,7 +95,8 @@ TEST(IfcExport, WritesTheSpatialTreeAndEveryObjectOnce) {
   std::set<std::string> ids;
   std::size_t roots = 0;
   for (const step::Instance& e : parsed.value().instances) {
-    if (e.parameters.empty() || e.parameters[0].kind != step::Value::Kind::string || e.parameters[0].text.size() != 22)
+    if (e.parameters.empty() || e.parameters[0].kind != step::Value::Kind::string ||
+        e.parameters[0].text.size() != 22)
       continue;
     ++roots;
     ids.insert(e.parameters[0].text);
@@ -113,7 +133,8 @@ TEST(IfcExport, WallBodiesAddUpToTheUnitedSolid) {
   for (std::size_t i = 0; i < plan.walls.size(); ++i) {
     const auto f = io_detail::export_footprint(joined, i);
     double area = 0.0;
-    for (std::size_t k = 0; k < 4; ++k) area += f[k].x * f[(k + 1) % 4].y - f[(k + 1) % 4].x * f[k].y;
+    for (std::size_t k = 0; k < 4; ++k)
+      area += f[k].x * f[(k + 1) % 4].y - f[(k + 1) % 4].x * f[k].y;
     EXPECT_GT(area, 0.0) << plan.walls[i].id;  // counter-clockwise
     volume += area / 2 * plan.walls[i].height;
   }
@@ -144,7 +165,8 @@ TEST(IfcExport, ArcWallIsItsChordsWithItsOpeningCutChordByChord) {
   // The axis: a polyline through the chord corners; the body: one extrusion per chord.
   const std::regex axis("IFCSHAPEREPRESENTATION\\(#\\d+,'Axis','Curve2D',\\(#(\\d+)\\)\\)");
   std::size_t longest = 0;
-  for (auto it = std::sregex_iterator(t.begin(), t.end(), axis); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(t.begin(), t.end(), axis); it != std::sregex_iterator();
+       ++it) {
     const std::string line = "#" + (*it)[1].str() + "=IFCPOLYLINE((";
     const std::size_t at = t.find(line);
     ASSERT_NE(at, std::string::npos);
@@ -173,14 +195,20 @@ TEST(StepFile, RealsAndStringsAreWrittenAsTheStandardSays) {
   }
   EXPECT_EQ(out, "3. 0.25 0. 1.E-05 1.5E+20 -2. ");
   out.clear();
-  step::append_string(out, "it's a\\b K\xc3\xbc" "che \xf0\x9f\x8f\xa0");
+  step::append_string(out,
+                      "it's a\\b K\xc3\xbc"
+                      "che \xf0\x9f\x8f\xa0");
   EXPECT_EQ(out, "'it''s a\\\\b K\\X2\\00FC\\X0\\che \\X2\\D83CDFE0\\X0\\'");
-  const std::string file = "ISO-10303-21;HEADER;FILE_SCHEMA(('IFC4'));ENDSEC;DATA;#1=IFCLABEL(" + out +
-                           ");\n/* a comment */ #2=X((1.,-2.5E-3,+4),$,*,.T.,IFCLENGTHMEASURE(2.),#1);ENDSEC;END-ISO-10303-21;";
+  const std::string file =
+      "ISO-10303-21;HEADER;FILE_SCHEMA(('IFC4'));ENDSEC;DATA;#1=IFCLABEL(" + out +
+      ");\n/* a comment */ "
+      "#2=X((1.,-2.5E-3,+4),$,*,.T.,IFCLENGTHMEASURE(2.),#1);ENDSEC;END-ISO-10303-21;";
   const Result<step::File> parsed = step::parse(file, "f.ifc");
   ASSERT_TRUE(parsed.ok()) << parsed.error();
   EXPECT_EQ(parsed.value().schema, "IFC4");
-  EXPECT_EQ(parsed.value().find(1)->parameters[0].text, "it's a\\b K\xc3\xbc" "che \xf0\x9f\x8f\xa0");
+  EXPECT_EQ(parsed.value().find(1)->parameters[0].text,
+            "it's a\\b K\xc3\xbc"
+            "che \xf0\x9f\x8f\xa0");
   const auto& p = parsed.value().find(2)->parameters;
   ASSERT_EQ(p.size(), 6u);
   EXPECT_EQ(p[0].items[1].number, -2.5e-3);
@@ -195,27 +223,41 @@ TEST(StepFile, RealsAndStringsAreWrittenAsTheStandardSays) {
 TEST(StepFile, StringsAreAlwaysReadAsUtf8) {
   // STEP allows only ASCII between quotes; exporters write raw UTF-8 (kept), raw Latin-1 (read
   // as such) and unpaired UTF-16 surrogates (U+FFFD), and a plan must hold UTF-8 only.
-  const std::string file = "ISO-10303-21;HEADER;FILE_SCHEMA(('IFC2X3'));ENDSEC;DATA;"
-                           "#1=IFCLABEL('K\xc3\xbc" "che');#2=IFCLABEL('K\xfc" "che');"
-                           "#3=IFCLABEL('a\\X2\\D83C0041\\X0\\b');ENDSEC;END-ISO-10303-21;";
+  const std::string file =
+      "ISO-10303-21;HEADER;FILE_SCHEMA(('IFC2X3'));ENDSEC;DATA;"
+      "#1=IFCLABEL('K\xc3\xbc"
+      "che');#2=IFCLABEL('K\xfc"
+      "che');"
+      "#3=IFCLABEL('a\\X2\\D83C0041\\X0\\b');ENDSEC;END-ISO-10303-21;";
   const Result<step::File> parsed = step::parse(file, "names.ifc");
   ASSERT_TRUE(parsed.ok()) << parsed.error();
-  EXPECT_EQ(parsed.value().find(1)->parameters[0].text, "K\xc3\xbc" "che");
-  EXPECT_EQ(parsed.value().find(2)->parameters[0].text, "K\xc3\xbc" "che");
-  EXPECT_EQ(parsed.value().find(3)->parameters[0].text, "a\xef\xbf\xbd" "Ab");
+  EXPECT_EQ(parsed.value().find(1)->parameters[0].text,
+            "K\xc3\xbc"
+            "che");
+  EXPECT_EQ(parsed.value().find(2)->parameters[0].text,
+            "K\xc3\xbc"
+            "che");
+  EXPECT_EQ(parsed.value().find(3)->parameters[0].text,
+            "a\xef\xbf\xbd"
+            "Ab");
 }
 
 TEST(StepFile, MalformedTextIsAParseErrorNamingTheLine) {
   for (const char* text : {"not a step file", "ISO-10303-21;HEADER;ENDSEC;DATA;\n#1=A('open);",
                            "ISO-10303-21;HEADER;ENDSEC;DATA;\n#1=A(1);\n#1=B(2);ENDSEC;",
-                           "ISO-10303-21;HEADER;ENDSEC;DATA;\n\n#1=A(((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((1)))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))));ENDSEC;"}) {
+                           "ISO-10303-21;HEADER;ENDSEC;DATA;\n\n#1=A((((((((((((((((((((((((((((((("
+                           "((((((((((((((((((((((((((((((((((((1))))))))))))))))))))))))))))))))))"
+                           ")))))))))))))))))))))))))))))))))));ENDSEC;"}) {
     const Result<step::File> parsed = step::parse(text, "bad.ifc");
     ASSERT_FALSE(parsed.ok()) << text;
     EXPECT_EQ(parsed.error().code, Code::parse_error);
-    EXPECT_NE(parsed.error().message.find("bad.ifc: line "), std::string::npos) << parsed.error().message;
+    EXPECT_NE(parsed.error().message.find("bad.ifc: line "), std::string::npos)
+        << parsed.error().message;
   }
   EXPECT_NE(step::parse("ISO-10303-21;HEADER;ENDSEC;DATA;\n#1=A(1);\n#1=B(2);ENDSEC;", "bad.ifc")
-                .error().message.find("line 3: instance #1 is defined twice"), std::string::npos);
+                .error()
+                .message.find("line 3: instance #1 is defined twice"),
+            std::string::npos);
 }
 
 }  // namespace

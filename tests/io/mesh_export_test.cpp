@@ -25,7 +25,8 @@ using test::Point3;
 using test::ReadMesh;
 
 // The first vertex whose doubles differ, as text; "" when all are the same doubles.
-std::string first_vertex_difference(const std::vector<Point3>& read, const std::vector<Point3>& expected) {
+std::string first_vertex_difference(const std::vector<Point3>& read,
+                                    const std::vector<Point3>& expected) {
   for (std::size_t i = 0; i < std::min(read.size(), expected.size()); ++i)
     if (read[i] != expected[i]) {
       std::ostringstream out;
@@ -39,7 +40,8 @@ std::string first_vertex_difference(const std::vector<Point3>& read, const std::
 
 // The wall solid read back (its faces are those on its vertices, written first): as many faces
 // as the model's, closed, and enclosing the volume computed from the plan alone.
-void expect_wall_solid(const ReadMesh& read, const ExpectedMesh& e, const test::BuiltExample& example) {
+void expect_wall_solid(const ReadMesh& read, const ExpectedMesh& e,
+                       const test::BuiltExample& example) {
   std::vector<std::vector<std::size_t>> rings;
   for (const auto& face : read.faces)
     if (std::all_of(face.begin(), face.end(), [&](std::size_t v) { return v < e.wall_vertices; }))
@@ -48,11 +50,13 @@ void expect_wall_solid(const ReadMesh& read, const ExpectedMesh& e, const test::
   EXPECT_EQ(test::count_unpaired_edges(rings), 0u) << example.name;
   const double volume = test::enclosed_volume(test::wall_polygons(read, e.wall_vertices));
   EXPECT_GT(example.analytic_volume, 1.0) << example.name;
-  EXPECT_NEAR(volume, example.analytic_volume, 1e-9 * example.analytic_volume) << example.name << ", m^3";
+  EXPECT_NEAR(volume, example.analytic_volume, 1e-9 * example.analytic_volume)
+      << example.name << ", m^3";
 }
 
 // OFF and PLY keep the model's order: faces, corners and colours compare one by one.
-void expect_same_faces_in_order(const ReadMesh& read, const ExpectedMesh& e, const std::string& name) {
+void expect_same_faces_in_order(const ReadMesh& read, const ExpectedMesh& e,
+                                const std::string& name) {
   ASSERT_EQ(read.faces.size(), e.faces.size()) << name;
   std::size_t differing = 0, first = 0;
   for (std::size_t i = 0; i < e.faces.size(); ++i)
@@ -135,13 +139,16 @@ double float_rounding(const Model& model) {
 }
 
 FloatPoint rounded(const OpenMesh::Vec3d& p) {
-  return {static_cast<float>(p[0]) + 0.0f, static_cast<float>(p[1]) + 0.0f, static_cast<float>(p[2]) + 0.0f};
+  return {static_cast<float>(p[0]) + 0.0f, static_cast<float>(p[1]) + 0.0f,
+          static_cast<float>(p[2]) + 0.0f};
 }
 
 double area_of(const test::FloatTriangle3& t) {
   double u[3], v[3];
   for (int k = 0; k < 3; ++k) u[k] = double(t[1][k]) - t[0][k], v[k] = double(t[2][k]) - t[0][k];
-  return std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]) / 2;
+  return std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0]) /
+         2;
 }
 
 double model_area(const Model& model) {
@@ -177,9 +184,11 @@ void expect_stl_facets_of_the_model(const test::BuiltExample& example) {
   EXPECT_EQ(flat, 0u) << example.name;
   EXPECT_EQ(stray_corners, 0u) << example.name;
   EXPECT_EQ(stray_normals, 0u) << example.name;
-  EXPECT_GE(facets.size(), model.walls.n_faces() + model.floor.n_faces() + model.fixtures.n_faces());
+  EXPECT_GE(facets.size(),
+            model.walls.n_faces() + model.floor.n_faces() + model.fixtures.n_faces());
   // Moving each corner by at most d changes a triangle's area by at most its perimeter x d.
-  EXPECT_NEAR(area, model_area(model), perimeter * float_rounding(model)) << example.name << ", m^2";
+  EXPECT_NEAR(area, model_area(model), perimeter * float_rounding(model))
+      << example.name << ", m^2";
 }
 
 // The wall solid in STL, welded by coordinates as an STL reader does: every edge joins exactly
@@ -198,7 +207,8 @@ void expect_stl_wall_solid_closed(const test::BuiltExample& example) {
   double area = 0.0;
   for (const auto& [kind, a] : test::area_by_kind(model.walls)) area += a;
   const double tolerance = 1e-9 * example.analytic_volume + area * float_rounding(model);
-  EXPECT_NEAR(test::enclosed_volume(triangles), example.analytic_volume, tolerance) << example.name << ", m^3";
+  EXPECT_NEAR(test::enclosed_volume(triangles), example.analytic_volume, tolerance)
+      << example.name << ", m^3";
 }
 
 TEST(MeshExport, StlIsTheModelRoundedClosedAndNeverFlat) {

@@ -47,15 +47,19 @@ Number number_of(std::string_view word, const std::string& where) {
   return x;
 }
 
-std::string at_line(const char* file, std::size_t n) { return std::string(file) + " line " + std::to_string(n + 1); }
+std::string at_line(const char* file, std::size_t n) {
+  return std::string(file) + " line " + std::to_string(n + 1);
+}
 
-Point3 point_of(const std::vector<std::string_view>& w, std::size_t first, const std::string& where) {
+Point3 point_of(const std::vector<std::string_view>& w, std::size_t first,
+                const std::string& where) {
   return {number_of<double>(w[first], where), number_of<double>(w[first + 1], where),
           number_of<double>(w[first + 2], where)};
 }
 
 std::size_t index_of(long long i, std::size_t count, const std::string& where) {
-  if (i < 0 || std::size_t(i) >= count) fail(where + ": index " + std::to_string(i) + " out of range");
+  if (i < 0 || std::size_t(i) >= count)
+    fail(where + ": index " + std::to_string(i) + " out of range");
   return std::size_t(i);
 }
 
@@ -75,12 +79,14 @@ std::map<std::string, Rgb> read_mtl(const std::string& mtl) {
     if (w.empty() || w[0].front() == '#') continue;
     if (w[0] == "newmtl" && w.size() == 2) {
       current = std::string(w[1]);
-      if (!materials.emplace(current, Rgb{-1, -1, -1}).second) fail(where + ": material defined twice");
+      if (!materials.emplace(current, Rgb{-1, -1, -1}).second)
+        fail(where + ": material defined twice");
     } else if (w[0] == "Kd" && w.size() == 4 && !current.empty()) {
       for (std::size_t k = 0; k < 3; ++k) {
         const double scaled = number_of<double>(w[k + 1], where) * 255.0;
         const long c = std::lround(scaled);
-        if (std::abs(scaled - double(c)) > 1e-9 || c < 0 || c > 255) fail(where + ": Kd is not a byte / 255");
+        if (std::abs(scaled - double(c)) > 1e-9 || c < 0 || c > 255)
+          fail(where + ": Kd is not a byte / 255");
         materials[current][k] = int(c);
       }
     } else {
@@ -99,9 +105,12 @@ void read_obj_face(const std::vector<std::string_view>& w, const std::vector<Poi
   std::size_t normal = 0;
   for (std::size_t k = 1; k < w.size(); ++k) {
     const std::size_t slashes = w[k].find("//");
-    if (slashes == std::string_view::npos) fail(where + ": corner '" + std::string(w[k]) + "' is not v//vn");
-    corners.push_back(index_of(number_of<long long>(w[k].substr(0, slashes), where) - 1, m.vertices.size(), where));
-    const std::size_t n = index_of(number_of<long long>(w[k].substr(slashes + 2), where) - 1, normals.size(), where);
+    if (slashes == std::string_view::npos)
+      fail(where + ": corner '" + std::string(w[k]) + "' is not v//vn");
+    corners.push_back(index_of(number_of<long long>(w[k].substr(0, slashes), where) - 1,
+                               m.vertices.size(), where));
+    const std::size_t n =
+        index_of(number_of<long long>(w[k].substr(slashes + 2), where) - 1, normals.size(), where);
     if (k > 1 && n != normal) fail(where + ": the corners of one face name different normals");
     normal = n;
   }
@@ -131,7 +140,8 @@ ReadMesh read_obj(const std::string& obj, const std::string& mtl) {
       ++m.group_blocks[group];
     } else if (w[0] == "usemtl" && w.size() == 2) {
       const auto it = materials.find(std::string(w[1]));
-      if (it == materials.end()) fail(where + ": material " + std::string(w[1]) + " is not in the MTL");
+      if (it == materials.end())
+        fail(where + ": material " + std::string(w[1]) + " is not in the MTL");
       color = &it->second;
     } else if (w[0] == "f" && w.size() >= 4) {
       if (color == nullptr || group.empty()) fail(where + ": a face before any usemtl or g");
@@ -150,8 +160,10 @@ ReadMesh read_off(const std::string& text) {
   if (lines.size() < 2 || lines[0] != "OFF") fail("off: no OFF header");
   const auto counts = words_of(lines[1]);
   if (counts.size() != 3) fail("off line 2: not 'vertices faces edges'");
-  const auto nv = number_of<std::size_t>(counts[0], "off line 2"), nf = number_of<std::size_t>(counts[1], "off line 2");
-  if (lines.size() != 2 + nv + nf) fail("off: " + std::to_string(lines.size()) + " lines for the counts given");
+  const auto nv = number_of<std::size_t>(counts[0], "off line 2"),
+             nf = number_of<std::size_t>(counts[1], "off line 2");
+  if (lines.size() != 2 + nv + nf)
+    fail("off: " + std::to_string(lines.size()) + " lines for the counts given");
   ReadMesh m;
   for (std::size_t n = 2; n < 2 + nv; ++n) {
     const auto w = words_of(lines[n]);
@@ -164,8 +176,10 @@ ReadMesh read_off(const std::string& text) {
     const std::size_t k = w.empty() ? 0 : number_of<std::size_t>(w[0], where);
     if (k < 3 || w.size() != k + 4) fail(where + ": a face is not 'n v1..vn r g b'");
     std::vector<std::size_t>& face = m.faces.emplace_back();
-    for (std::size_t i = 1; i <= k; ++i) face.push_back(index_of(number_of<long long>(w[i], where), nv, where));
-    m.colors.push_back({channel_of(w[k + 1], where), channel_of(w[k + 2], where), channel_of(w[k + 3], where)});
+    for (std::size_t i = 1; i <= k; ++i)
+      face.push_back(index_of(number_of<long long>(w[i], where), nv, where));
+    m.colors.push_back(
+        {channel_of(w[k + 1], where), channel_of(w[k + 2], where), channel_of(w[k + 3], where)});
   }
   return m;
 }
@@ -185,8 +199,10 @@ struct PlyElement {
 };
 
 // The header's elements, in order; `body` is set to the first line after end_header.
-std::vector<PlyElement> read_ply_header(const std::vector<std::string_view>& lines, std::size_t& body) {
-  if (lines.size() < 2 || lines[0] != "ply" || lines[1] != "format ascii 1.0") fail("ply: not ASCII PLY 1.0");
+std::vector<PlyElement> read_ply_header(const std::vector<std::string_view>& lines,
+                                        std::size_t& body) {
+  if (lines.size() < 2 || lines[0] != "ply" || lines[1] != "format ascii 1.0")
+    fail("ply: not ASCII PLY 1.0");
   std::vector<PlyElement> elements;
   for (std::size_t n = 2; n < lines.size(); ++n) {
     const auto w = words_of(lines[n]);
@@ -200,7 +216,8 @@ std::vector<PlyElement> read_ply_header(const std::vector<std::string_view>& lin
       elements.push_back({std::string(w[1]), number_of<std::size_t>(w[2], where), {}});
     } else if (w.size() == 3 && w[0] == "property" && !elements.empty()) {
       elements.back().properties.push_back({std::string(w[1]), std::string(w[2]), false});
-    } else if (w.size() == 5 && w[0] == "property" && w[1] == "list" && w[2] == "uchar" && !elements.empty()) {
+    } else if (w.size() == 5 && w[0] == "property" && w[1] == "list" && w[2] == "uchar" &&
+               !elements.empty()) {
       elements.back().properties.push_back({std::string(w[3]), std::string(w[4]), true});
     } else {
       fail(where + ": unexpected '" + std::string(lines[n]) + "'");
@@ -211,7 +228,8 @@ std::vector<PlyElement> read_ply_header(const std::vector<std::string_view>& lin
 
 // One element line: every property's values by name (a scalar is a list of one).
 std::map<std::string, std::vector<double>> read_ply_values(const std::vector<std::string_view>& w,
-                                                           const PlyElement& e, const std::string& where) {
+                                                           const PlyElement& e,
+                                                           const std::string& where) {
   std::map<std::string, std::vector<double>> values;
   std::size_t k = 0;
   auto next = [&]() -> std::string_view {
@@ -219,10 +237,11 @@ std::map<std::string, std::vector<double>> read_ply_values(const std::vector<std
     return w[k++];
   };
   for (const PlyProperty& p : e.properties) {
-    const std::size_t count = p.is_list ? std::size_t(channel_of(next(), where)) : 1;  // list count: uchar
+    const std::size_t count =
+        p.is_list ? std::size_t(channel_of(next(), where)) : 1;  // list count: uchar
     for (std::size_t i = 0; i < count; ++i) {
       const std::string_view word = next();
-      values[p.name].push_back(p.type == "double" ? number_of<double>(word, where)
+      values[p.name].push_back(p.type == "double"  ? number_of<double>(word, where)
                                : p.type == "uchar" ? channel_of(word, where)
                                                    : double(number_of<int>(word, where)));
     }
@@ -248,8 +267,11 @@ ReadMesh read_ply(const std::string& text) {
   if (elements.size() != 2 || elements[0].name != "vertex" || elements[1].name != "face")
     fail("ply: elements are not vertex, face");
   require_types(elements[0], {{"x", "double"}, {"y", "double"}, {"z", "double"}});
-  require_types(elements[1], {{"vertex_indices", "int"}, {"red", "uchar"}, {"green", "uchar"}, {"blue", "uchar"}});
-  if (lines.size() != n + elements[0].count + elements[1].count) fail("ply: line count does not match the header");
+  require_types(
+      elements[1],
+      {{"vertex_indices", "int"}, {"red", "uchar"}, {"green", "uchar"}, {"blue", "uchar"}});
+  if (lines.size() != n + elements[0].count + elements[1].count)
+    fail("ply: line count does not match the header");
   ReadMesh m;
   for (std::size_t i = 0; i < elements[0].count; ++i, ++n) {
     auto v = read_ply_values(words_of(lines[n]), elements[0], at_line("ply", n));
@@ -259,7 +281,8 @@ ReadMesh read_ply(const std::string& text) {
     const std::string where = at_line("ply", n);
     auto v = read_ply_values(words_of(lines[n]), elements[1], where);
     std::vector<std::size_t>& face = m.faces.emplace_back();
-    for (const double x : v["vertex_indices"]) face.push_back(index_of((long long)x, m.vertices.size(), where));
+    for (const double x : v["vertex_indices"])
+      face.push_back(index_of((long long)x, m.vertices.size(), where));
     if (face.size() < 3) fail(where + ": a face of fewer than 3 corners");
     m.colors.push_back({int(v["red"].at(0)), int(v["green"].at(0)), int(v["blue"].at(0))});
   }
@@ -276,7 +299,8 @@ std::vector<StlFacet> read_stl(const std::string& bytes) {
   };
   const std::uint32_t count = u32(80);
   if (bytes.size() != 84 + 50 * std::size_t(count))
-    fail("stl: " + std::to_string(bytes.size()) + " bytes for " + std::to_string(count) + " facets");
+    fail("stl: " + std::to_string(bytes.size()) + " bytes for " + std::to_string(count) +
+         " facets");
   std::vector<StlFacet> facets(count);
   for (std::size_t i = 0; i < count; ++i) {
     const std::size_t at = 84 + 50 * i;
@@ -295,7 +319,7 @@ using boost::multiprecision::cpp_int;
 // x * 2^149: an integer for every finite float (the smallest subnormal is 2^-149).
 cpp_int scaled_to_integer(float x) {
   int e = 0;
-  const float m = std::frexp(std::abs(x), &e);  // |x| = m * 2^e, m in [0.5, 1)
+  const float m = std::frexp(std::abs(x), &e);       // |x| = m * 2^e, m in [0.5, 1)
   cpp_int r = static_cast<long>(std::ldexp(m, 24));  // exact: a float has 24 significant bits
   const int shift = e - 24 + 149;
   r = shift >= 0 ? cpp_int(r << shift) : cpp_int(r >> -shift);  // a subnormal's low bits are 0
@@ -313,7 +337,8 @@ bool is_flat(const FloatTriangle3& t) {
     d[1][k] = scaled_to_integer(t[2][k]) - origin;
   }
   for (std::size_t k = 0; k < 3; ++k)  // the cross product, component by component
-    if (d[0][(k + 1) % 3] * d[1][(k + 2) % 3] != d[0][(k + 2) % 3] * d[1][(k + 1) % 3]) return false;
+    if (d[0][(k + 1) % 3] * d[1][(k + 2) % 3] != d[0][(k + 2) % 3] * d[1][(k + 1) % 3])
+      return false;
   return true;
 }
 

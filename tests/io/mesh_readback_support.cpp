@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "io/plan_json.h"
-#include "solid/build_model.h"
 #include "mesh/mesh_check.h"
-#include "support/run_command.h"
 #include "solid/analytic_volume.h"
+#include "solid/build_model.h"
+#include "support/run_command.h"
 
 namespace roomcad::test {
 namespace {
@@ -17,7 +17,8 @@ namespace {
 std::vector<std::filesystem::path> example_plan_files() {
   std::vector<std::filesystem::path> plans = example_plans();
   std::vector<std::filesystem::path> homes;
-  for (const auto& e : std::filesystem::directory_iterator(source_dir() / "examples" / "sweethome3d"))
+  for (const auto& e :
+       std::filesystem::directory_iterator(source_dir() / "examples" / "sweethome3d"))
     if (e.path().extension() == ".json") homes.push_back(e.path());
   std::sort(homes.begin(), homes.end());
   plans.insert(plans.end(), homes.begin(), homes.end());
@@ -41,7 +42,9 @@ const std::vector<BuiltExample>& built_examples() {
   return built;
 }
 
-MeshParts all_parts(const Model& model) { return {{&model.walls, &model.floor, &model.fixtures}, &model.objects}; }
+MeshParts all_parts(const Model& model) {
+  return {{&model.walls, &model.floor, &model.fixtures}, &model.objects};
+}
 
 ExpectedMesh expected_mesh(const Model& model) {
   ExpectedMesh e;
@@ -67,7 +70,8 @@ ExpectedMesh expected_mesh(const Model& model) {
 std::vector<std::vector<Point3>> wall_polygons(const ReadMesh& read, std::size_t wall_vertices) {
   std::vector<std::vector<Point3>> polygons;
   for (const auto& face : read.faces) {
-    if (std::any_of(face.begin(), face.end(), [&](std::size_t v) { return v >= wall_vertices; })) continue;
+    if (std::any_of(face.begin(), face.end(), [&](std::size_t v) { return v >= wall_vertices; }))
+      continue;
     std::vector<Point3>& p = polygons.emplace_back();
     for (const std::size_t v : face) p.push_back(read.vertices[v]);
   }

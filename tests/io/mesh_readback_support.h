@@ -17,9 +17,9 @@
 namespace roomcad::test {
 
 struct BuiltExample {
-  std::string name;             ///< the plan file's stem
-  Model model;                  ///< walls, floor and fixtures
-  double analytic_volume = 0;   ///< of the wall solid, from the plan alone (cubic metres)
+  std::string name;            ///< the plan file's stem
+  Model model;                 ///< walls, floor and fixtures
+  double analytic_volume = 0;  ///< of the wall solid, from the plan alone (cubic metres)
 };
 
 /// examples/*.json then examples/sweethome3d/*.json, each built once for the whole test binary.
@@ -33,7 +33,7 @@ struct BuiltExample {
 struct ExpectedFace {
   std::vector<std::size_t> corners;  ///< 0-based numbers into the vertices of all parts
   Rgb color;
-  std::string group;                 ///< the object id, or "floor" for faces of no object
+  std::string group;  ///< the object id, or "floor" for faces of no object
   Point3 normal;
   auto operator<=>(const ExpectedFace&) const = default;
 };
@@ -48,7 +48,8 @@ struct ExpectedMesh {
 [[nodiscard]] ExpectedMesh expected_mesh(const Model& model);
 
 /// @return the polygons of `read` whose corners are all wall vertices, as points.
-[[nodiscard]] std::vector<std::vector<Point3>> wall_polygons(const ReadMesh& read, std::size_t wall_vertices);
+[[nodiscard]] std::vector<std::vector<Point3>> wall_polygons(const ReadMesh& read,
+                                                             std::size_t wall_vertices);
 
 /// Directed edges not matched by exactly one reverse edge, over polygons given as rings of
 /// vertex keys: 0 for a closed, consistently oriented surface where every edge joins two faces.

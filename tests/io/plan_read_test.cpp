@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "plan_test_support.h"
+#include "support/plan_reading.h"
 
 namespace roomcad {
 namespace {
@@ -167,7 +167,8 @@ TEST(PlanRead, ColoursInEitherCase) {
 }
 
 TEST(PlanRead, NumbersAreReadToTheNearestDouble) {
-  const Plan p = read_ok(R"({"walls": [{"id": "a", "from": [0.1, -0.3], "to": [1e-3, 12345678901234567890],
+  const Plan p =
+      read_ok(R"({"walls": [{"id": "a", "from": [0.1, -0.3], "to": [1e-3, 12345678901234567890],
     "thickness": 0.30000000000000004, "height": 2.7999999999999998, "base": -0}]})");
   const Wall& w = p.walls[0];
   EXPECT_EQ(w.from, (Point2{0.1, -0.3}));
@@ -220,8 +221,12 @@ TEST(PlanRead, CentimetresAndMillimetresBecomeMetres) {
     EXPECT_EQ(c.view_height, 1000 / scale);
   }
   // In cm, 280 cm is exactly the metre value written as 2.8.
-  EXPECT_EQ(read_ok(R"({"units": "cm", "walls": [{"id": "a", "from": [0, 0], "to": [1, 0], "height": 280}]})")
-                .walls[0].height, 2.8);
+  EXPECT_EQ(
+      read_ok(
+          R"({"units": "cm", "walls": [{"id": "a", "from": [0, 0], "to": [1, 0], "height": 280}]})")
+          .walls[0]
+          .height,
+      2.8);
 }
 
 TEST(PlanRead, DefaultsAreInMetresWhateverTheUnits) {
@@ -234,7 +239,8 @@ TEST(PlanRead, DefaultsAreInMetresWhateverTheUnits) {
 }
 
 TEST(PlanRead, UnitsMayComeAfterTheLengths) {
-  const Plan p = read_ok(R"({"walls": [{"id": "a", "from": [0, 0], "to": [500, 0]}], "units": "cm"})");
+  const Plan p =
+      read_ok(R"({"walls": [{"id": "a", "from": [0, 0], "to": [500, 0]}], "units": "cm"})");
   EXPECT_EQ(p.walls[0].to.x, 5.0);
 }
 

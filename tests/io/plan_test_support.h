@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "support/plan_reading.h"
 #include "io/plan_json.h"
+#include "support/plan_reading.h"
 
 namespace roomcad::test {
 
@@ -83,8 +83,8 @@ inline void expect_one_error(std::string_view text, const Expected& e) {
   SCOPED_TRACE(std::string(text));
   const PlanReading r = read_plan(text, "plan.json");
   EXPECT_FALSE(r.plan.has_value());
-  ASSERT_EQ(r.report.items.size(), 1u) << r.report.items[0].message << " / "
-                                       << r.report.items.back().message;
+  ASSERT_EQ(r.report.items.size(), 1u)
+      << r.report.items[0].message << " / " << r.report.items.back().message;
   const Diagnostic& d = r.report.items[0];
   EXPECT_EQ(d.severity, Severity::error);
   EXPECT_EQ(d.code, e.code) << d.message;

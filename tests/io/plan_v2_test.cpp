@@ -10,7 +10,8 @@ namespace roomcad {
 namespace {
 
 /// The example of the plan format's "Version 2" section, as written there.
-constexpr std::string_view kVersion2Example = R"({ "format": "roomcad-plan", "version": 2, "units": "m",
+constexpr std::string_view kVersion2Example =
+    R"({ "format": "roomcad-plan", "version": 2, "units": "m",
   "site": { "origin": [0, 0], "cells": [12, 8], "cell_size": 1.0, "max_height": 9.0,
             "chord_tolerance": 0.001 },
   "levels": [ { "id": "ground", "elevation": 0.0, "height": 2.8 },
@@ -68,7 +69,8 @@ TEST(PlanVersion2, WritesVersion2AndReadsBackTheSamePlan) {
 }
 
 TEST(PlanVersion2, APlanWithoutVersion2FieldsIsWrittenAsVersion1) {
-  const std::string text = R"({"version": 2, "walls": [{"id": "a", "from": [0, 0], "to": [1, 0]}]})";
+  const std::string text =
+      R"({"version": 2, "walls": [{"id": "a", "from": [0, 0], "to": [1, 0]}]})";
   const Result<Plan> plan = read_plan_text(text, "p.json");
   ASSERT_TRUE(plan.ok());
   const std::string written = write_plan_text(*plan);
@@ -81,7 +83,8 @@ TEST(PlanVersion2, AWallOfALevelWithoutAHeightTakesTheLevels) {
   const Result<Plan> plan = read_plan_text(R"({"version": 2,
     "walls": [{"id": "a", "level": "up", "from": [0, 0], "to": [1, 0]},
               {"id": "b", "level": "up", "from": [0, 1], "to": [1, 1], "height": 2}],
-    "levels": [{"id": "up", "elevation": 3, "height": 2.6}]})", "p.json");
+    "levels": [{"id": "up", "elevation": 3, "height": 2.6}]})",
+                                           "p.json");
   ASSERT_TRUE(plan.ok()) << plan.error();
   EXPECT_EQ(plan->walls[0].height, 2.6);
   EXPECT_EQ(plan->walls[1].height, 2.0);
@@ -103,7 +106,8 @@ TEST(PlanVersion2, Version2FieldsInAVersion1FileAreKeptUnusedWithAWarning) {
   }
   const std::string written = write_plan_text(*r.plan);
   EXPECT_NE(written.find("\"version\": 1"), std::string::npos);
-  EXPECT_NE(written.find("\"levels\": [{\"elevation\": 3, \"id\": \"up\"}]"), std::string::npos) << written;
+  EXPECT_NE(written.find("\"levels\": [{\"elevation\": 3, \"id\": \"up\"}]"), std::string::npos)
+      << written;
   EXPECT_NE(written.find("\"height_at_end\": 2"), std::string::npos) << written;
 }
 
@@ -115,11 +119,11 @@ TEST(PlanVersion2, WrongTypesAndMissingFieldsOfTheNewObjects) {
   EXPECT_FALSE(r.plan);
   std::vector<std::pair<Code, std::string>> found;
   for (const Diagnostic& d : r.report.items) found.emplace_back(d.code, d.location->pointer);
-  EXPECT_EQ(found, (std::vector<std::pair<Code, std::string>>{
-                       {Code::parse_error, "/levels/0"},
-                       {Code::parse_error, "/slabs/0/outline/1"},
-                       {Code::parse_error, "/slabs/0/holes"},
-                       {Code::parse_error, "/openings/0/shape"}}));
+  EXPECT_EQ(found,
+            (std::vector<std::pair<Code, std::string>>{{Code::parse_error, "/levels/0"},
+                                                       {Code::parse_error, "/slabs/0/outline/1"},
+                                                       {Code::parse_error, "/slabs/0/holes"},
+                                                       {Code::parse_error, "/openings/0/shape"}}));
 }
 
 }  // namespace

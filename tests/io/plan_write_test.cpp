@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "support/plan_reading.h"
 #include "io/plan_json.h"
 #include "plan_test_support.h"
-#include "testing/random_plan.h"
+#include "support/plan_reading.h"
 #include "support/run_command.h"
+#include "testing/random_plan.h"
 
 namespace roomcad {
 namespace {
@@ -28,18 +28,19 @@ TEST(PlanWrite, CanonicalTextIsReproducedByteForByte) {
 }
 
 TEST(PlanWrite, EmptyPlan) {
-  EXPECT_EQ(write_plan_text(Plan{}),
-            "{\n"
-            "  \"format\": \"roomcad-plan\",\n"
-            "  \"version\": 1,\n"
-            "  \"units\": \"m\",\n"
-            "  \"site\": {\"origin\": [0, 0], \"cells\": [12, 8], \"cell_size\": 1, \"max_height\": 6, "
-            "\"tolerance\": 1e-06, \"floor_color\": \"#c8c8c8\"},\n"
-            "  \"walls\": [],\n"
-            "  \"openings\": [],\n"
-            "  \"lights\": [],\n"
-            "  \"cameras\": []\n"
-            "}\n");
+  EXPECT_EQ(
+      write_plan_text(Plan{}),
+      "{\n"
+      "  \"format\": \"roomcad-plan\",\n"
+      "  \"version\": 1,\n"
+      "  \"units\": \"m\",\n"
+      "  \"site\": {\"origin\": [0, 0], \"cells\": [12, 8], \"cell_size\": 1, \"max_height\": 6, "
+      "\"tolerance\": 1e-06, \"floor_color\": \"#c8c8c8\"},\n"
+      "  \"walls\": [],\n"
+      "  \"openings\": [],\n"
+      "  \"lights\": [],\n"
+      "  \"cameras\": []\n"
+      "}\n");
 }
 
 std::string written_x(double x) {
@@ -103,9 +104,12 @@ TEST(PlanWrite, ExtrasAfterKnownKeysSortedAndKnownKeysNeverRepeated) {
   p.extra = {{"b", "{}"}, {"a", "\"x\""}, {"walls", "[]"}};
   const std::string text = write_plan_text(p);
   EXPECT_NE(text.find("\"floor_color\": \"#c8c8c8\", \"aa\": [true, null], \"zz\": 1}"),
-            std::string::npos) << text;
-  EXPECT_NE(text.find("  \"cameras\": [],\n  \"a\": \"x\",\n  \"b\": {}\n}\n"), std::string::npos) << text;
-  EXPECT_EQ(text.find("\"walls\": [],\n  \"openings\": [],\n  \"lights\": [],\n  \"cameras\": [],\n  \"walls\""),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("  \"cameras\": [],\n  \"a\": \"x\",\n  \"b\": {}\n}\n"), std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("\"walls\": [],\n  \"openings\": [],\n  \"lights\": [],\n  \"cameras\": "
+                      "[],\n  \"walls\""),
             std::string::npos);
   const test::PlanReading r = test::read_plan(text, "x.json");
   EXPECT_TRUE(r.report.ok()) << r.report.items[0].message;

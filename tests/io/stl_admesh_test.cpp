@@ -54,12 +54,14 @@ void expect_no_degenerate_facet(const test::BuiltExample& example, const test::T
 // flip), and the volume it computes is the plan's (admesh sums in float: 1e-5 relative).
 void expect_closed_wall_solid(const test::BuiltExample& example, const test::TempDir& dir) {
   const auto path = dir / (example.name + ".walls.stl");
-  ASSERT_TRUE(test::write_bytes(path, format_stl({{&example.model.walls}, &example.model.objects})));
+  ASSERT_TRUE(
+      test::write_bytes(path, format_stl({{&example.model.walls}, &example.model.objects})));
   const std::string report = admesh_report(path);
   SCOPED_TRACE(example.name + ", walls\n" + report);
   EXPECT_EQ(field(report, "Degenerate facets"), 0);
   EXPECT_EQ(field(report, "Total disconnected facets"), 0);
-  for (const char* repair : {"Edges fixed", "Facets removed", "Facets added", "Facets reversed", "Backwards edges"})
+  for (const char* repair :
+       {"Edges fixed", "Facets removed", "Facets added", "Facets reversed", "Backwards edges"})
     EXPECT_EQ(field(report, repair), 0) << repair;
   EXPECT_NEAR(field(report, "Volume"), example.analytic_volume, 1e-5 * example.analytic_volume);
 }

@@ -20,8 +20,9 @@ SolidMesh box_with_top_sliver(const V& m) {
   const auto a = add(0, 0, 1), b = add(1, 0, 1), c = add(1, 1, 1), d = add(0, 1, 1);
   const auto sliver = mesh.add_vertex(m);
   using Ring = std::vector<SolidMesh::VertexHandle>;
-  for (const Ring& face : {Ring{b0, b3, b2, b1}, Ring{b0, b1, b, a}, Ring{b1, b2, c, b}, Ring{b2, b3, d, c},
-                           Ring{b3, b0, a, d}, Ring{a, b, sliver}, Ring{a, sliver, b, c, d}})
+  for (const Ring& face :
+       {Ring{b0, b3, b2, b1}, Ring{b0, b1, b, a}, Ring{b1, b2, c, b}, Ring{b2, b3, d, c},
+        Ring{b3, b0, a, d}, Ring{a, b, sliver}, Ring{a, sliver, b, c, d}})
     mesh.add_face(face);
   mesh.request_face_normals();
   mesh.update_face_normals();
@@ -33,7 +34,8 @@ Key key_of(const OpenMesh::Vec3f& p) { return {p[0], p[1], p[2]}; }
 // What every float triangulation of a closed mesh must be: no flat triangle (exact test on the
 // floats: repeated corner or zero cross product, which is exact for these small coordinates),
 // every directed edge matched by exactly one reverse edge, and the enclosed volume.
-void expect_closed_without_flat_triangles(const std::vector<FloatTriangle>& triangles, double volume) {
+void expect_closed_without_flat_triangles(const std::vector<FloatTriangle>& triangles,
+                                          double volume) {
   std::map<std::array<Key, 2>, int> uses;
   double six_volume = 0.0;
   for (const FloatTriangle& t : triangles) {
@@ -65,7 +67,8 @@ TEST(FloatTriangulation, DropsASliverThatRoundsFlatAndSplitsTheEdgeAcross) {
   expect_closed_without_flat_triangles(triangles, 1.0);
   std::size_t front_at_m = 0;  // front-face triangles (y = 5, normal -y) with M as a corner
   for (const FloatTriangle& t : triangles)
-    for (const auto& c : t.corners) front_at_m += mesh.normal(t.face)[1] < -0.5 && c == OpenMesh::Vec3f(10.5f, 5.f, 1.f);
+    for (const auto& c : t.corners)
+      front_at_m += mesh.normal(t.face)[1] < -0.5 && c == OpenMesh::Vec3f(10.5f, 5.f, 1.f);
   EXPECT_EQ(front_at_m, 2u);
 }
 
@@ -96,7 +99,8 @@ TEST(FloatTriangulation, CutsOffASpikeWhereRoundingClosesPartOfASliver) {
   const auto b0 = add(10, 5, 0), b1 = add(11, 5, 0), b2 = add(11, 6, 0), b3 = add(10, 6, 0);
   const auto a = add(10, 5, 1), b = add(11, 5, 1), c = add(11, 6, 1), d = add(10, 6, 1);
   const auto p1 = add(10.5, 5, 1), p2 = add(10.5, 5.5, 1), p3 = add(10.5, 6, 1);
-  const auto q3 = add(10.5 - 2e-7, 6, 1), q2 = add(10.5 - 2e-7, 5.5, 1), q1 = add(10.5 - 8e-7, 5, 1);
+  const auto q3 = add(10.5 - 2e-7, 6, 1), q2 = add(10.5 - 2e-7, 5.5, 1),
+             q1 = add(10.5 - 8e-7, 5, 1);
   using Ring = std::vector<SolidMesh::VertexHandle>;
   for (const Ring& face : {Ring{b0, b3, b2, b1}, Ring{b0, b1, b, p1, q1, a}, Ring{b1, b2, c, b},
                            Ring{b2, b3, d, q3, p3, c}, Ring{b3, b0, a, d}, Ring{a, q1, q2, q3, d},

@@ -17,7 +17,8 @@ void add_box(SolidMesh& mesh, double dx, int skip = -1, bool flip = false, doubl
   for (int k = 0; k < 8; ++k)
     v[k] = mesh.add_vertex(
         V(dx + 2.0 * ((k & 1) != 0), dy + ((k & 2) ? 1 : 0), dz + ((k & 4) ? 1 : 0)));
-  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (int f = 0; f < 6; ++f) {
     if (f == skip) continue;
     std::vector<SolidMesh::VertexHandle> face;
@@ -61,8 +62,10 @@ TEST(MeshCheck, InsideOutBoxIsFlagged) {
 // A box [-1, 3] x [-1, 2] x [-1, 2] round the box of add_box: a shell with a void inside.
 void add_outer_box(SolidMesh& mesh) {
   std::array<SolidMesh::VertexHandle, 8> v;
-  for (int k = 0; k < 8; ++k) v[k] = mesh.add_vertex(V((k & 1) ? 3 : -1, (k & 2) ? 2 : -1, (k & 4) ? 2 : -1));
-  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int k = 0; k < 8; ++k)
+    v[k] = mesh.add_vertex(V((k & 1) ? 3 : -1, (k & 2) ? 2 : -1, (k & 4) ? 2 : -1));
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& f : faces) mesh.add_face({v[f[0]], v[f[1]], v[f[2]], v[f[3]]});
 }
 

@@ -66,7 +66,8 @@ TEST(TriangulateFace, TriangulatesVerticalFaceFarFromOrigin) {
 }
 
 TEST(TriangulateFace, ZeroAreaPolygonGivesNoTriangles) {
-  EXPECT_TRUE(triangulate_face(std::vector<V>{V(0, 0, 0), V(1, 0, 0), V(2, 0, 0)}, V(0, 0, 1)).empty());
+  EXPECT_TRUE(
+      triangulate_face(std::vector<V>{V(0, 0, 0), V(1, 0, 0), V(2, 0, 0)}, V(0, 0, 1)).empty());
   EXPECT_TRUE(triangulate_face(std::vector<V>{V(0, 0, 0), V(1, 0, 0)}, V(0, 0, 1)).empty());
 }
 

@@ -17,7 +17,8 @@ Plan one_wall() {
 
 TEST(PlanAdd, WallTakesItsFieldsAndAGeneratedId) {
   Plan plan = one_wall();
-  const EditSummary done = add_object(plan, "wall", "", {{"from", "1,5"}, {"to", "9,5"}, {"height", "3"}}).value();
+  const EditSummary done =
+      add_object(plan, "wall", "", {{"from", "1,5"}, {"to", "9,5"}, {"height", "3"}}).value();
   ASSERT_EQ(done.added, std::vector<std::string>{"wall-1"});
   ASSERT_EQ(plan.walls.size(), 2u);
   EXPECT_EQ(plan.walls[1].from, (Point2{1, 5}));
@@ -42,7 +43,8 @@ TEST(PlanAdd, UnknownKindFieldOrMissingFieldIsAUsageErrorAndChangesNothing) {
     return add_object(plan, kind, "", fields).code();  // never thrown
   };
   EXPECT_EQ(code_of("roof", {}), Code::usage_error);
-  EXPECT_EQ(code_of("wall", {{"from", "0,0"}, {"to", "1,0"}, {"colour", "#ffffff"}}), Code::usage_error);
+  EXPECT_EQ(code_of("wall", {{"from", "0,0"}, {"to", "1,0"}, {"colour", "#ffffff"}}),
+            Code::usage_error);
   EXPECT_EQ(code_of("wall", {{"from", "0,0"}}), Code::usage_error);  // no `to`
   EXPECT_EQ(code_of("wall", {{"from", "0,0"}, {"to", "far"}}), Code::usage_error);
   EXPECT_EQ(plan, before);

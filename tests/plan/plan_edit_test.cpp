@@ -184,7 +184,8 @@ TEST(PlanEdit, MoveAndScaleAllTakeTheSiteAlong) {
 
 TEST(PlanEdit, SetFieldIsTypeChecked) {
   Plan plan = sample_plan();
-  EXPECT_EQ(set_field(plan, "south", "thickness", "0.3")->changed, std::vector<std::string>{"south"});
+  EXPECT_EQ(set_field(plan, "south", "thickness", "0.3")->changed,
+            std::vector<std::string>{"south"});
   EXPECT_EQ(plan.walls[0].thickness, 0.3);
   ASSERT_TRUE(set_field(plan, "south", "color", "#102030").ok());
   EXPECT_EQ(plan.walls[0].color, (Color{0x10, 0x20, 0x30}));
@@ -208,19 +209,26 @@ Error refusal(Edit edit) {
 TEST(PlanEdit, SetFieldErrorsNameObjectKeyAndValue) {
   Plan plan = sample_plan();
   const Plan before = plan;
-  EXPECT_EQ(refusal([&] { return set_field(plan, "south", "colour", "#ffffff"); }),
-            Error(Code::usage_error, "set: wall 'south' has no field 'colour' (did you mean 'color'?)"));
-  EXPECT_EQ(refusal([&] { return set_field(plan, "south", "thickness", "thick"); }),
-            Error(Code::usage_error, "set: wall 'south' field 'thickness' wants metres, got 'thick'"));
-  EXPECT_EQ(refusal([&] { return set_field(plan, "entry", "swing", "sideways"); }),
-            Error(Code::usage_error, "set: door 'entry' field 'swing' wants in or out, got 'sideways'"));
-  EXPECT_NE(refusal([&] { return set_field(plan, "view", "zzzz", "1"); }).message.find("fields: id, projection"),
+  EXPECT_EQ(
+      refusal([&] { return set_field(plan, "south", "colour", "#ffffff"); }),
+      Error(Code::usage_error, "set: wall 'south' has no field 'colour' (did you mean 'color'?)"));
+  EXPECT_EQ(
+      refusal([&] { return set_field(plan, "south", "thickness", "thick"); }),
+      Error(Code::usage_error, "set: wall 'south' field 'thickness' wants metres, got 'thick'"));
+  EXPECT_EQ(
+      refusal([&] { return set_field(plan, "entry", "swing", "sideways"); }),
+      Error(Code::usage_error, "set: door 'entry' field 'swing' wants in or out, got 'sideways'"));
+  EXPECT_NE(refusal([&] {
+              return set_field(plan, "view", "zzzz", "1");
+            }).message.find("fields: id, projection"),
             std::string::npos);
   const Error nobody = refusal([&] { return set_field(plan, "nobody", "id", "x"); });
   EXPECT_EQ(nobody.code, Code::precondition);
   EXPECT_NE(nobody.message.find("no object has id 'nobody'"), std::string::npos);
-  EXPECT_EQ(refusal([&] { return set_field(plan, "south", "height", "nan"); }).code, Code::usage_error);
-  EXPECT_EQ(refusal([&] { return set_field(plan, "south", "from", "1,2,3"); }).code, Code::usage_error);
+  EXPECT_EQ(refusal([&] { return set_field(plan, "south", "height", "nan"); }).code,
+            Code::usage_error);
+  EXPECT_EQ(refusal([&] { return set_field(plan, "south", "from", "1,2,3"); }).code,
+            Code::usage_error);
   EXPECT_EQ(plan, before);
 }
 
@@ -234,8 +242,8 @@ TEST(PlanEdit, RenamingAWallRenamesItsOpeningsReferences) {
 
 TEST(PlanEdit, FieldNamesFollowTheFormat) {
   EXPECT_EQ(field_names("wall"),
-            (std::vector<std::string_view>{"id", "level", "from", "to", "thickness", "height", "base",
-                                           "height_at_end", "arc_extent", "color"}));
+            (std::vector<std::string_view>{"id", "level", "from", "to", "thickness", "height",
+                                           "base", "height_at_end", "arc_extent", "color"}));
   EXPECT_EQ(field_names("slab"), (std::vector<std::string_view>{"id", "level", "outline", "holes",
                                                                 "top", "thickness", "color"}));
   EXPECT_EQ(object_kind(sample_plan(), "win"), "window");

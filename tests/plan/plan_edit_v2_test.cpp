@@ -24,7 +24,8 @@ Plan storey_plan() {
   d.wall = "w";
   d.offset = 1;
   plan.openings.push_back(d);
-  plan.slabs.push_back(Slab{.id = "floor", .level = "up", .outline = {{0, 0}, {4, 0}, {4, 3}, {0, 3}}});
+  plan.slabs.push_back(
+      Slab{.id = "floor", .level = "up", .outline = {{0, 0}, {4, 0}, {4, 3}, {0, 3}}});
   return plan;
 }
 
@@ -46,8 +47,10 @@ TEST(PlanEditV2, Version2FieldsAreSetFromTextAndClearedByNone) {
   ASSERT_TRUE(set_field(plan, "floor", "holes", "1,1;2,1;2,2;1,2|3,1;3.5,1;3.5,2").ok());
   ASSERT_EQ(plan.slabs[0].holes.size(), 2u);
   EXPECT_EQ(plan.slabs[0].holes[1].size(), 3u);
-  EXPECT_EQ(code_of([&] { return set_field(plan, "w", "arc_extent", "round"); }), Code::usage_error);
-  EXPECT_EQ(code_of([&] { return set_field(plan, "floor", "outline", "1,1;2"); }), Code::usage_error);
+  EXPECT_EQ(code_of([&] { return set_field(plan, "w", "arc_extent", "round"); }),
+            Code::usage_error);
+  EXPECT_EQ(code_of([&] { return set_field(plan, "floor", "outline", "1,1;2"); }),
+            Code::usage_error);
   EXPECT_EQ(code_of([&] { return set_field(plan, "w", "from", "none"); }), Code::usage_error);
 }
 
@@ -66,7 +69,8 @@ TEST(PlanEditV2, ALevelWithObjectsIsRemovedOnlyWithCascade) {
   EXPECT_EQ(plan.levels.size(), 1u);
   const EditSummary s = remove_object(plan, "up", {.cascade = true});
   EXPECT_EQ(s.removed, (std::vector<std::string>{"up", "w", "d", "floor"}));
-  EXPECT_TRUE(plan.levels.empty() && plan.walls.empty() && plan.openings.empty() && plan.slabs.empty());
+  EXPECT_TRUE(plan.levels.empty() && plan.walls.empty() && plan.openings.empty() &&
+              plan.slabs.empty());
 }
 
 TEST(PlanEditV2, SlabsMoveTurnAndScaleLevelsHaveNoPosition) {

@@ -14,15 +14,16 @@ namespace {
 
 /// Bitwise equality: EXPECT_EQ on doubles would accept -0 == 0.
 void expect_same_bits(Point2 a, Point2 b) {
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.x), std::bit_cast<std::uint64_t>(b.x)) << a.x << " vs " << b.x;
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.y), std::bit_cast<std::uint64_t>(b.y)) << a.y << " vs " << b.y;
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.x), std::bit_cast<std::uint64_t>(b.x))
+      << a.x << " vs " << b.x;
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.y), std::bit_cast<std::uint64_t>(b.y))
+      << a.y << " vs " << b.y;
 }
 
 /// Decimal points of up to 15 significant digits, as plans are typed.
 std::vector<Point2> decimal_points() {
-  return {{0.1, 0.2},      {1.1, 2.3},    {-3.7, 0.35},        {12.345, -6.789},
-          {1e-3, 7.25e2},  {0.0, 1.0},    {123456.789, 0.001}, {2.675, 1.005},
-          {99.99, -0.07},  {1e10, 3e-5}};
+  return {{0.1, 0.2}, {1.1, 2.3},          {-3.7, 0.35},   {12.345, -6.789}, {1e-3, 7.25e2},
+          {0.0, 1.0}, {123456.789, 0.001}, {2.675, 1.005}, {99.99, -0.07},   {1e10, 3e-5}};
 }
 
 TEST(Transform2d, RowVectorTranslationSitsInTheBottomRow) {

@@ -76,8 +76,7 @@ TEST(Render, ATriangleCrossingTheNearPlaneIsDrawnClipped) {
   m.objects = {"floor"};
   test::add_floor(m.floor, {-500.0, -500.0}, {500.0, 500.0}, 0);
   const RenderOptions options{
-      .width = 120, .height = 90,
-      .camera = test::look_from({0.0, 0.0, 1.0}, {0.0, 10.0, 0.2})};
+      .width = 120, .height = 90, .camera = test::look_from({0.0, 0.0, 1.0}, {0.0, 10.0, 0.2})};
   FrameBuffers out;
   render_model(m, options, out);
   int floor_pixels = 0;
@@ -112,10 +111,13 @@ TEST(Render, OrthographicFrontViewShowsBackgroundThroughEveryWindow) {
   const WindowWall wall = make_window_wall();
   const Scene scene = flatten_model(wall.model);
   const double aspect = 2.0;
-  RenderOptions options{.width = 240, .height = 120, .shading = ShadingMode::unlit,
-                        .shadows = ShadowFilter::off, .background = {0, 0, 255}};
-  options.camera = frame_view(scene.bounds, ViewPreset::front, Projection::orthographic, 50.0,
-                              aspect);
+  RenderOptions options{.width = 240,
+                        .height = 120,
+                        .shading = ShadingMode::unlit,
+                        .shadows = ShadowFilter::off,
+                        .background = {0, 0, 255}};
+  options.camera =
+      frame_view(scene.bounds, ViewPreset::front, Projection::orthographic, 50.0, aspect);
   FrameBuffers out;
   render_scene(scene, options, out);
   const CameraMatrices cam = frame_camera(scene, options);

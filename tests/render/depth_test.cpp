@@ -14,15 +14,17 @@ int pixels_showing_far_square(double gap) {
   Model m;
   m.objects = {"far", "near"};
   auto square = [&](double y, int object) {
-    test::add_face(m.walls, {{-20.0, y, -20.0}, {20.0, y, -20.0}, {20.0, y, 20.0}, {-20.0, y, 20.0}},
-                   object, FaceKind::wall_face, test::kWallColor);
+    test::add_face(m.walls,
+                   {{-20.0, y, -20.0}, {20.0, y, -20.0}, {20.0, y, 20.0}, {-20.0, y, 20.0}}, object,
+                   FaceKind::wall_face, test::kWallColor);
   };
   square(1000.0 + gap, 0);  // faces -y, towards the eye: wound counter-clockwise from -y
   square(1000.0, 1);
-  const RenderOptions options{
-      .width = 64, .height = 64,
-      .camera = test::look_from({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 1.5),
-      .shading = ShadingMode::unlit, .shadows = ShadowFilter::off};
+  const RenderOptions options{.width = 64,
+                              .height = 64,
+                              .camera = test::look_from({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 1.5),
+                              .shading = ShadingMode::unlit,
+                              .shadows = ShadowFilter::off};
   FrameBuffers out;
   render_model(m, options, out);
   int far = 0, empty = 0;
@@ -42,11 +44,11 @@ TEST(Render, ReversedZResolvesOneCentimetreAtOneKilometre) {
 TEST(Render, DepthBufferHoldsViewDistanceInMetres) {
   Model m;
   m.objects = {"q"};
-  test::add_face(m.walls, {{-20.0, 50.0, -20.0}, {20.0, 50.0, -20.0}, {20.0, 50.0, 20.0},
-                           {-20.0, 50.0, 20.0}}, 0, FaceKind::wall_face, test::kWallColor);
+  test::add_face(
+      m.walls, {{-20.0, 50.0, -20.0}, {20.0, 50.0, -20.0}, {20.0, 50.0, 20.0}, {-20.0, 50.0, 20.0}},
+      0, FaceKind::wall_face, test::kWallColor);
   const RenderOptions options{
-      .width = 16, .height = 16,
-      .camera = test::look_from({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 20.0)};
+      .width = 16, .height = 16, .camera = test::look_from({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 20.0)};
   FrameBuffers out;
   render_model(m, options, out);
   for (float d : out.depth.values) EXPECT_NEAR(d, 50.0, 1e-3);

@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "fuzz/plan_bytes.h"
-#include "solid/build_model.h"
 #include "render/renderer.h"
+#include "solid/build_model.h"
 
 namespace roomcad {
 namespace {

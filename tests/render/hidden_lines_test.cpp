@@ -6,10 +6,10 @@
 #include <cmath>
 #include <vector>
 
-#include "solid/build_model.h"
 #include "render/detail/feature_edges.h"
 #include "render/line_drawing.h"
 #include "scene_support.h"
+#include "solid/build_model.h"
 
 namespace roomcad::test {
 namespace {
@@ -18,7 +18,8 @@ namespace {
 double distance_to(Point2 p, const Segment2& s) {
   const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
   const double len2 = dx * dx + dy * dy;
-  const double t = len2 > 0.0 ? std::clamp(((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  const double t =
+      len2 > 0.0 ? std::clamp(((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / len2, 0.0, 1.0) : 0.0;
   return std::hypot(p.x - s.a.x - t * dx, p.y - s.a.y - t * dy);
 }
 
@@ -93,9 +94,10 @@ TEST(HiddenLines, NoEdgeBetweenCoplanarFaces) {
   // A 2 x 1 floor of two coplanar tiles sharing an edge, and a fold along the same edge.
   SolidMesh mesh;
   std::vector<SolidMesh::VertexHandle> v;
-  for (const auto& p : {OpenMesh::Vec3d(0, 0, 0), OpenMesh::Vec3d(1, 0, 0), OpenMesh::Vec3d(1, 1, 0),
-                        OpenMesh::Vec3d(0, 1, 0), OpenMesh::Vec3d(2, 0, 0), OpenMesh::Vec3d(2, 1, 0),
-                        OpenMesh::Vec3d(2, 0, 0.5), OpenMesh::Vec3d(2, 1, 0.5)})
+  for (const auto& p :
+       {OpenMesh::Vec3d(0, 0, 0), OpenMesh::Vec3d(1, 0, 0), OpenMesh::Vec3d(1, 1, 0),
+        OpenMesh::Vec3d(0, 1, 0), OpenMesh::Vec3d(2, 0, 0), OpenMesh::Vec3d(2, 1, 0),
+        OpenMesh::Vec3d(2, 0, 0.5), OpenMesh::Vec3d(2, 1, 0.5)})
     v.push_back(mesh.add_vertex(p));
   mesh.add_face(v[0], v[1], v[2], v[3]);
   const auto second = mesh.add_face(v[1], v[4], v[5], v[2]);
@@ -205,8 +207,8 @@ TEST(HiddenLines, ElevationsAreOrthographicToScale) {
   // 4 m wide at 1:20 is 200 mm, plus 10 mm margins.
   EXPECT_NEAR(d.width, 220.0, 1e-9);
   EXPECT_FALSE(d.scale_bar_black.empty());
-  const LineDrawing off =
-      draw_line_view(model, *preset_line_view("south"), {.scale = 20.0, .hidden = HiddenLines::off}, "t");
+  const LineDrawing off = draw_line_view(model, *preset_line_view("south"),
+                                         {.scale = 20.0, .hidden = HiddenLines::off}, "t");
   EXPECT_TRUE(off.hidden.empty());
   EXPECT_EQ(off.visible.size(), d.visible.size());
 }

@@ -12,9 +12,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "solid/build_model.h"
 #include "render/renderer.h"
 #include "scene_support.h"
+#include "solid/build_model.h"
 #include "testing/plan_builders.h"
 
 namespace roomcad {
@@ -38,9 +38,9 @@ std::vector<Placement> placements(std::initializer_list<double> distances) {
 Plan wall_plan(const Placement& p) {
   const double a = p.degrees * std::numbers::pi / 180.0;
   Plan plan;
-  plan.walls.push_back(samples::make_wall(
-      "w", {p.from.x, p.from.y},
-      {p.from.x + 6.0 * std::cos(a), p.from.y + 6.0 * std::sin(a)}, 0.2));
+  plan.walls.push_back(
+      samples::make_wall("w", {p.from.x, p.from.y},
+                         {p.from.x + 6.0 * std::cos(a), p.from.y + 6.0 * std::sin(a)}, 0.2));
   plan.site.origin = {p.from.x - 10.0, p.from.y - 10.0};
   plan.site.cells = {20, 20};
   return plan;
@@ -58,12 +58,18 @@ Light sun_on_right_face(const Placement& p, double facing) {
 }
 
 /// Unlit frame of the wall's right-hand face, seen square on from 20 m (orthographic).
-RenderOptions face_view(const Placement& p, const Light& sun, ShadowFilter shadows, int resolution) {
+RenderOptions face_view(const Placement& p, const Light& sun, ShadowFilter shadows,
+                        int resolution) {
   const double a = p.degrees * std::numbers::pi / 180.0;
   const glm::dvec3 along(std::cos(a), std::sin(a), 0.0), normal(std::sin(a), -std::cos(a), 0.0);
   const glm::dvec3 centre = glm::dvec3(p.from, 1.25) + 3.0 * along;
-  RenderOptions o{.width = 96, .height = 96, .shading = ShadingMode::unlit, .shadows = shadows,
-                  .shadow_resolution = resolution, .lights = {sun}, .parts = {true, false, false}};
+  RenderOptions o{.width = 96,
+                  .height = 96,
+                  .shading = ShadingMode::unlit,
+                  .shadows = shadows,
+                  .shadow_resolution = resolution,
+                  .lights = {sun},
+                  .parts = {true, false, false}};
   o.camera = test::look_from(centre + 20.0 * normal, centre, 50.0, 3.0);
   return o;
 }
@@ -77,8 +83,8 @@ TEST(NumericalStress, SunlitWallFaceHasNoAcneTurned) {
       render_model(model, face_view(p, sun, ShadowFilter::off, 1024), unshadowed);
       for (const ShadowFilter filter : {ShadowFilter::hard, ShadowFilter::pcf})
         for (const int resolution : {1024, 4096}) {
-          SCOPED_TRACE(fmt::format("{} deg at ({}, {}), facing {}, {} shadows, {} texels", p.degrees,
-                                   p.from.x, p.from.y, facing,
+          SCOPED_TRACE(fmt::format("{} deg at ({}, {}), facing {}, {} shadows, {} texels",
+                                   p.degrees, p.from.x, p.from.y, facing,
                                    filter == ShadowFilter::hard ? "hard" : "pcf", resolution));
           FrameBuffers frame;
           render_model(model, face_view(p, sun, filter, resolution), frame);

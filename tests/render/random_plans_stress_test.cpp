@@ -16,15 +16,15 @@
 
 #include <gtest/gtest.h>
 
-#include "solid/build_model.h"
 #include "mesh/mesh_check.h"
-#include "solid/wall_check.h"
 #include "render/renderer.h"
 #include "scene_support.h"
+#include "solid/analytic_volume.h"
+#include "solid/build_model.h"
+#include "solid/wall_check.h"
 #include "support/stress_plans.h"
 #include "testing/random_plan.h"
 #include "validation/validate.h"
-#include "solid/analytic_volume.h"
 
 namespace roomcad {
 namespace {
@@ -33,7 +33,9 @@ namespace {
 /// fast build, checks and render take ~90 ms of CPU; all plans are built (~90 s for the default
 /// 1000), since failures are rare (finding S4: 11 seeds in 1000), and the CGAL path (Nef
 /// polyhedra, several times slower) on the first 1 in 25 of them (40 of 1000).
-std::uint64_t cgal_plan_count(std::uint64_t plans) { return std::max<std::uint64_t>(1, plans / 25); }
+std::uint64_t cgal_plan_count(std::uint64_t plans) {
+  return std::max<std::uint64_t>(1, plans / 25);
+}
 
 samples::RandomPlanOptions plain_options() {
   samples::RandomPlanOptions o;
@@ -126,15 +128,18 @@ double expect_valid_build(const Plan& plan, BooleanPath path, BuildStats& total)
   total.nef_path_walls += stats.nef_path_walls;
   const SolidCheck c = check_solid(model.walls);
   const char* name = path == BooleanPath::nef ? "nef" : "auto";
-  EXPECT_TRUE(c.is_valid()) << name << ": " << c.border_edges << " border edges, " << c.non_manifold_vertices
-                            << " non-manifold vertices, " << c.self_intersections
-                            << " self-intersections, " << c.degenerate_triangles << " degenerate";
+  EXPECT_TRUE(c.is_valid()) << name << ": " << c.border_edges << " border edges, "
+                            << c.non_manifold_vertices << " non-manifold vertices, "
+                            << c.self_intersections << " self-intersections, "
+                            << c.degenerate_triangles << " degenerate";
   const double analytic = analytic_wall_volume(plan);
   EXPECT_NEAR(c.volume, analytic, volume_tolerance(model.walls, analytic)) << name;
   if (path == BooleanPath::automatic) {
     FrameBuffers frame;
-    render_model(model, RenderOptions{.width = 64, .height = 48, .shadow_resolution = 256,
-                                      .lights = plan.lights}, frame);
+    render_model(
+        model,
+        RenderOptions{.width = 64, .height = 48, .shadow_resolution = 256, .lights = plan.lights},
+        frame);
     EXPECT_EQ(test::count_bad_depths(frame.depth), 0);
   }
   return c.volume;
@@ -160,10 +165,11 @@ TEST(RandomPlans, ValidPartsBuildClosedWithTheirVolumeOnBothPaths) {
   EXPECT_GT(fast.general_path_walls, plans);
   EXPECT_EQ(fast.nef_path_walls, 0u);
   EXPECT_GT(openings, plans / 2);
-  std::printf("random plans: %llu (%llu on the Nef path): %zu walls on the fast path, %zu "
-              "on the general path, %zu openings; Nef path: %zu walls\n",
-              static_cast<unsigned long long>(plans), static_cast<unsigned long long>(cgal_plans),
-              fast.fast_path_walls, fast.general_path_walls, openings, cgal.nef_path_walls);
+  std::printf(
+      "random plans: %llu (%llu on the Nef path): %zu walls on the fast path, %zu "
+      "on the general path, %zu openings; Nef path: %zu walls\n",
+      static_cast<unsigned long long>(plans), static_cast<unsigned long long>(cgal_plans),
+      fast.fast_path_walls, fast.general_path_walls, openings, cgal.nef_path_walls);
 }
 
 }  // namespace

@@ -23,8 +23,13 @@ ClipVertex ndc(float x, float y, float z = 0.5f, float w = 1.f) {
 /// Number of pixels a triangle covers in a fresh width x height buffer.
 std::vector<int> coverage(const ScreenTriangle& t, int width, int height) {
   std::vector<float> depth(static_cast<std::size_t>(width) * height, 0.f);
-  rasterize_triangle(t, RasterTarget{.x0 = 0, .y0 = 0, .x1 = width, .y1 = height,
-                                     .depth = depth.data(), .ids = nullptr, .id_value = 0});
+  rasterize_triangle(t, RasterTarget{.x0 = 0,
+                                     .y0 = 0,
+                                     .x1 = width,
+                                     .y1 = height,
+                                     .depth = depth.data(),
+                                     .ids = nullptr,
+                                     .id_value = 0});
   std::vector<int> covered(depth.size());
   for (std::size_t i = 0; i < depth.size(); ++i) covered[i] = depth[i] > 0.f ? 1 : 0;
   return covered;
@@ -116,8 +121,11 @@ TEST(Render, SteppedSpansOfHugeTrianglesMatchTheEdgeFunctions) {
         const int window_y = flip_y ? 936 : 0;  // next to the level edge, and far from it
         for (const int window_y2 : {window_y, 468}) {
           std::vector<float> depth(64 * 64, 0.f);
-          rasterize_triangle(t, RasterTarget{.x0 = window_x, .y0 = window_y2, .x1 = window_x + 64,
-                                             .y1 = window_y2 + 64, .depth = depth.data()});
+          rasterize_triangle(t, RasterTarget{.x0 = window_x,
+                                             .y0 = window_y2,
+                                             .x1 = window_x + 64,
+                                             .y1 = window_y2 + 64,
+                                             .depth = depth.data()});
           int wrong = 0;
           for (int y = 0; y < 64; ++y) {
             for (int x = 0; x < 64; ++x) {

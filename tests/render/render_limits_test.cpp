@@ -32,7 +32,8 @@ TEST(RenderLimits, RefusesTooManyPixelsSamplesTexelsOrThreads) {
             "width x height is 16385 x 1; each must be 1 to 16384");
   EXPECT_EQ(problem({.width = 8192, .height = 8192, .ssaa = 4}),
             "width x height x ssaa^2 is 8192 x 8192 x 16 = 1073741824 samples; at most 268435456");
-  EXPECT_EQ(problem({.shadow_resolution = 8193}), "shadow resolution is 8193; it must be 1 to 8192");
+  EXPECT_EQ(problem({.shadow_resolution = 8193}),
+            "shadow resolution is 8193; it must be 1 to 8192");
   EXPECT_EQ(problem({.threads = 257}), "threads is 257; it must be 0 (all cores) to 256");
 }
 

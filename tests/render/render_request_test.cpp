@@ -49,18 +49,16 @@ TEST(RenderRequest, AWrongFlagIsAUsageErrorNamingItAndItsValue) {
 }
 
 TEST(RenderRequest, TheFirstWrongFlagIsTheOneNamed) {
-  const Result<RenderOptions> options =
-      make_render_options(asking([](RenderRequest& r) {
-        r.projection = "fisheye", r.shading = "bogus";
-      }),
-                          room());
+  const Result<RenderOptions> options = make_render_options(
+      asking([](RenderRequest& r) { r.projection = "fisheye", r.shading = "bogus"; }), room());
   ASSERT_FALSE(options.ok());
   EXPECT_NE(options.message().find("--projection 'fisheye'"), std::string::npos)
       << options.message();
 }
 
 TEST(RenderRequest, ARangeTheFlagsCannotHoldFailsTheOptionsCheck) {
-  const Result<RenderOptions> options = make_render_options(asking([](RenderRequest& r) { r.width = 0; }), room());
+  const Result<RenderOptions> options =
+      make_render_options(asking([](RenderRequest& r) { r.width = 0; }), room());
   ASSERT_FALSE(options.ok());
   EXPECT_NE(options.message().find("render: "), std::string::npos) << options.message();
   EXPECT_NE(options.message().find(" 0 x 720"), std::string::npos) << options.message();

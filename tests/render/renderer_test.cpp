@@ -25,13 +25,15 @@ Model make_room() {
 
 /// Unlit, unshadowed: each pixel shows a face's plain colour (or a blend of them at edges).
 RenderOptions unlit_options(int width, int height) {
-  return RenderOptions{.width = width, .height = height, .shading = ShadingMode::unlit,
+  return RenderOptions{.width = width,
+                       .height = height,
+                       .shading = ShadingMode::unlit,
                        .shadows = ShadowFilter::off};
 }
 
 /// Background, floor, wall and leaf colours of make_room().
-const std::set<std::array<int, 3>> kPlainColours{{255, 255, 255}, {120, 180, 90}, {200, 60, 40},
-                                                 {90, 60, 30}};
+const std::set<std::array<int, 3>> kPlainColours{
+    {255, 255, 255}, {120, 180, 90}, {200, 60, 40}, {90, 60, 30}};
 
 std::array<int, 3> pixel(const RgbImage& image, std::size_t i) {
   return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
@@ -78,7 +80,8 @@ TEST(Render, UnlitDrawsPlainColoursAndLitModesDiffer) {
   RenderOptions options = unlit_options(160, 120);
   render_model(m, options, unlit);
   std::set<std::array<int, 3>> colours;
-  for (std::size_t i = 0; i < unlit.color.pixels.size(); i += 3) colours.insert(pixel(unlit.color, i));
+  for (std::size_t i = 0; i < unlit.color.pixels.size(); i += 3)
+    colours.insert(pixel(unlit.color, i));
   EXPECT_EQ(colours, kPlainColours);  // nothing else without shading, shadows or anti-aliasing
   // Seen along the sun's mirror direction over the floor, Phong shows a highlight inside the
   // floor's triangles that flat (per triangle) and Gouraud (per corner) shading do not.
@@ -120,7 +123,8 @@ TEST(Render, GridLinesDarkenTheFloorOnTileBoundaries) {
   options.view = ViewPreset::top;
   FrameBuffers plain, grid;
   render_model(m, options, plain);
-  options.grid = GridLines{.enabled = true, .origin = {0.0, 0.0}, .cell_size = 1.0, .cells = {8, 6}};
+  options.grid =
+      GridLines{.enabled = true, .origin = {0.0, 0.0}, .cell_size = 1.0, .cells = {8, 6}};
   render_model(m, options, grid);
   int darkened = 0, floor = 0;
   for (std::size_t i = 0; i < grid.color.pixels.size(); i += 3) {

@@ -61,8 +61,7 @@ void add_box(SolidMesh& mesh, const glm::dvec3& a, const glm::dvec3& b, int obje
   }
 }
 
-void add_floor(SolidMesh& mesh, const glm::dvec2& a, const glm::dvec2& b, int object,
-               Color color) {
+void add_floor(SolidMesh& mesh, const glm::dvec2& a, const glm::dvec2& b, int object, Color color) {
   add_face(mesh, {{a.x, a.y, 0.0}, {b.x, a.y, 0.0}, {b.x, b.y, 0.0}, {a.x, b.y, 0.0}}, object,
            FaceKind::floor, color);
 }
@@ -73,7 +72,8 @@ struct RayCaster::Tree {
   CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree;
 };
 
-RayCaster::RayCaster(const std::vector<const SolidMesh*>& meshes) : tree_(std::make_unique<Tree>()) {
+RayCaster::RayCaster(const std::vector<const SolidMesh*>& meshes)
+    : tree_(std::make_unique<Tree>()) {
   for (const SolidMesh* mesh : meshes) {
     OpenMesh::FPropHandleT<int> object_prop;
     const bool has_object = mesh->get_property_handle(object_prop, kObjectProperty);

@@ -33,9 +33,14 @@ struct ShadowCase {
 
 ShadowCase make_case(ShadowFilter filter) {
   ShadowCase c;
-  c.options = RenderOptions{.width = 200, .height = 200, .shading = ShadingMode::unlit,
-                            .shadows = filter, .shadow_resolution = 512, .lights = {c.light}};
-  c.options.camera = test::look_from({4.0, 4.0, 30.0}, {4.0, 4.0, 0.0}, 50.0, 20.0, {0.0, 1.0, 0.0});
+  c.options = RenderOptions{.width = 200,
+                            .height = 200,
+                            .shading = ShadingMode::unlit,
+                            .shadows = filter,
+                            .shadow_resolution = 512,
+                            .lights = {c.light}};
+  c.options.camera =
+      test::look_from({4.0, 4.0, 30.0}, {4.0, 4.0, 0.0}, 50.0, 20.0, {0.0, 1.0, 0.0});
   return c;
 }
 
@@ -100,7 +105,7 @@ TEST(Render, PcfMatchesHardShadowsAwayFromEdgesAndSoftensThem) {
     differ += a != b;
     in_between += b > dark + 1 && b < lit - 1;
   }
-  EXPECT_GT(in_between, 20);   // penumbra pixels exist
+  EXPECT_GT(in_between, 20);          // penumbra pixels exist
   EXPECT_LT(differ, 200 * 200 / 10);  // only near edges
 }
 

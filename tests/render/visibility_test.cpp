@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Makarov & Safin's visible-surface pre-pass: finds exactly the triangles the z-buffer shows (none dropped, none
-// extra), and culling with it leaves the picture unchanged.
+// Makarov & Safin's visible-surface pre-pass: finds exactly the triangles the z-buffer shows (none
+// dropped, none extra), and culling with it leaves the picture unchanged.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -10,12 +10,12 @@
 
 #include <tbb/task_arena.h>
 
-#include "testing/grid_plan.h"
-#include "solid/build_model.h"
 #include "render/detail/geometry_pass.h"
 #include "render/renderer.h"
 #include "render/visibility.h"
 #include "scene_support.h"
+#include "solid/build_model.h"
+#include "testing/grid_plan.h"
 
 namespace roomcad::test {
 namespace {
@@ -26,7 +26,9 @@ std::set<std::uint32_t> z_buffer_ids(const Scene& scene, const CameraMatrices& c
   detail::BinnedTriangles bins;
   detail::run_geometry_pass(scene,
                             {.uniform_view_projection = glm::mat4(cam.view_projection),
-                             .width = width, .height = height, .tile_size = tile_size,
+                             .width = width,
+                             .height = height,
+                             .tile_size = tile_size,
                              .cull_back_faces = true},
                             bins);
   std::set<std::uint32_t> ids;
@@ -48,9 +50,9 @@ std::set<std::uint32_t> z_buffer_ids(const Scene& scene, const CameraMatrices& c
 /// @return the number of triangles shown.
 std::size_t expect_equal(const Scene& scene, const Camera& camera, int width, int height,
                          int tile_size = 64) {
-  const CameraMatrices cam = rebase_camera(
-      make_camera_matrices(camera, scene.bounds, static_cast<double>(width) / height),
-      scene.origin);
+  const CameraMatrices cam =
+      rebase_camera(make_camera_matrices(camera, scene.bounds, static_cast<double>(width) / height),
+                    scene.origin);
   const std::set<std::uint32_t> shown = z_buffer_ids(scene, cam, width, height, tile_size);
   const VisibilityResult v = find_visible_faces(scene, {cam, width, height, tile_size});
   std::size_t missing = 0, extra = 0;

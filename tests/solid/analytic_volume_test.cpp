@@ -7,9 +7,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "support/model_support.h"
 #include "plan/signed_area.h"
 #include "solid/analytic_volume.h"
+#include "support/model_support.h"
 
 namespace roomcad {
 namespace {
@@ -89,7 +89,8 @@ TEST(AnalyticVolume, ATopCrossingAnotherWallsCornerInsideAnIntervalIsAnEvent) {
 TEST(AnalyticVolume, ATriangularOpeningRemovesItsPrism) {
   Plan plan = empty_plan();
   add_wall(plan, "w", {0, 0}, {4, 0});
-  add_opening(plan, "tri", OpeningType::window, "w", 1, 1.2, 1, 0.9).shape = {{0, 0}, {1, 0}, {0.5, 1}};
+  add_opening(plan, "tri", OpeningType::window, "w", 1, 1.2, 1, 0.9).shape = {
+      {0, 0}, {1, 0}, {0.5, 1}};
   // 4 x 0.2 x 2.5 = 2, minus the triangle 1.2 x 0.9 / 2 = 0.54 through 0.2: 0.108.
   expect_volume(plan, 2.0 - 0.108);
   expect_mesh_agrees(plan);
@@ -98,8 +99,8 @@ TEST(AnalyticVolume, ATriangularOpeningRemovesItsPrism) {
 TEST(AnalyticVolume, ANonConvexOpeningRemovesItsPrism) {
   Plan plan = empty_plan();
   add_wall(plan, "w", {0, 0}, {4, 0});
-  add_opening(plan, "l", OpeningType::window, "w", 1, 1, 0.5, 1.5).shape =
-      {{0, 0}, {1, 0}, {1, 0.4}, {0.4, 0.4}, {0.4, 1}, {0, 1}};
+  add_opening(plan, "l", OpeningType::window, "w", 1, 1, 0.5, 1.5).shape = {
+      {0, 0}, {1, 0}, {1, 0.4}, {0.4, 0.4}, {0.4, 1}, {0, 1}};
   // The L covers 1 - 0.6 x 0.6 = 0.64 of its 1 x 1.5 rectangle: 0.96 m^2, x 0.2 = 0.192.
   expect_volume(plan, 2.0 - 0.192);
   expect_mesh_agrees(plan);
@@ -128,7 +129,8 @@ TEST(AnalyticVolume, AnArchUnderASlopedTopCutsWhatIsThere) {
 
 TEST(AnalyticVolume, ASlabIsItsOutlineMinusItsHoles) {
   Plan plan = empty_plan();
-  add_slab(plan, "floor", {{0, 0}, {4, 0}, {4, 3}, {0, 3}}, 3.0, 0.2).holes = {{{1, 1}, {2, 1}, {2, 2}, {1, 2}}};
+  add_slab(plan, "floor", {{0, 0}, {4, 0}, {4, 3}, {0, 3}}, 3.0, 0.2).holes = {
+      {{1, 1}, {2, 1}, {2, 2}, {1, 2}}};
   // (4 x 3 - 1 x 1) x 0.2.
   expect_volume(plan, 11 * 0.2);
 }

@@ -9,8 +9,8 @@
 #include <tuple>
 #include <vector>
 
-#include "testing/grid_plan.h"
 #include "support/model_support.h"
+#include "testing/grid_plan.h"
 
 namespace roomcad {
 namespace {

@@ -45,14 +45,18 @@ PlaneId add_through(PlaneSet& set, double px, double py, double qx, double qy) {
 // The point where three planes meet (Cramer), in rationals.
 QPoint meet(const QPlane& p, const QPlane& q, const QPlane& r) {
   auto det3 = [](const Q& a, const Q& b, const Q& c, const Q& d, const Q& e, const Q& f, const Q& g,
-                 const Q& h, const Q& i) -> Q { return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g); };
+                 const Q& h, const Q& i) -> Q {
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
+  };
   const Q w = det3(p[0], p[1], p[2], q[0], q[1], q[2], r[0], r[1], r[2]);
   return {det3(-p[3], p[1], p[2], -q[3], q[1], q[2], -r[3], r[1], r[2]) / w,
           det3(p[0], -p[3], p[2], q[0], -q[3], q[2], r[0], -r[3], r[2]) / w,
           det3(p[0], p[1], -p[3], q[0], q[1], -q[3], r[0], r[1], -r[3]) / w};
 }
 
-int sign_at(const QPlane& p, const QPoint& x) { return sgn(Q(p[0] * x[0] + p[1] * x[1] + p[2] * x[2] + p[3])); }
+int sign_at(const QPlane& p, const QPoint& x) {
+  return sgn(Q(p[0] * x[0] + p[1] * x[1] + p[2] * x[2] + p[3]));
+}
 
 TEST(ExactPlanes, SideOfAThreePlanePointMatchesRationals) {
   std::mt19937_64 rng(7);
@@ -68,11 +72,13 @@ TEST(ExactPlanes, SideOfAThreePlanePointMatchesRationals) {
     const double z = coord(rng);
     const QPlane h{0, 0, 1, -Q(z)};
     const QPoint x = meet(p, q, h);
-    const PlaneId pi = add_through(set, c[0], c[1], c[2], c[3]), qi = add_through(set, c[4], c[5], c[6], c[7]);
+    const PlaneId pi = add_through(set, c[0], c[1], c[2], c[3]),
+                  qi = add_through(set, c[4], c[5], c[6], c[7]);
     const PlaneId hi = set.add_axis(2, z);
     const XPoint point = detail::make_point(set, pi, qi, hi);
     double r0 = coord(rng), r1 = coord(rng), r2 = coord(rng), r3 = coord(rng);
-    if (trial % 3 == 0) r0 = c[0], r1 = c[1], r2 = c[2], r3 = c[3];  // plane p itself, by another id
+    if (trial % 3 == 0)
+      r0 = c[0], r1 = c[1], r2 = c[2], r3 = c[3];  // plane p itself, by another id
     const QPlane t = through(r0, r1, r2, r3);
     const PlaneId ti = add_through(set, r0, r1, r2, r3);
     const int expected = sign_at(t, x);
@@ -108,10 +114,12 @@ TEST(ExactPlanes, RoundingIsToTheNearestDouble) {
   for (int trial = 0; trial < 200; ++trial) {
     double c[8];
     for (double& v : c) v = coord(rng);
-    const PlaneId pi = add_through(set, c[0], c[1], c[2], c[3]), qi = add_through(set, c[4], c[5], c[6], c[7]);
+    const PlaneId pi = add_through(set, c[0], c[1], c[2], c[3]),
+                  qi = add_through(set, c[4], c[5], c[6], c[7]);
     const double z = coord(rng);
     const XPoint point = detail::make_point(set, pi, qi, set.add_axis(2, z));
-    const QPoint x = meet(through(c[0], c[1], c[2], c[3]), through(c[4], c[5], c[6], c[7]), {0, 0, 1, -Q(z)});
+    const QPoint x =
+        meet(through(c[0], c[1], c[2], c[3]), through(c[4], c[5], c[6], c[7]), {0, 0, 1, -Q(z)});
     const auto rounded = detail::round_point(set, point);
     for (std::size_t k = 0; k < 3; ++k) {
       // No double lies strictly closer to the exact coordinate than the rounded one.
@@ -171,18 +179,20 @@ TEST(ExactPlanes, CornersOfAxisPlanesAtSumsRoundToTheNearestDoubleTiesToEven) {
   // power of two the ulp is half as large. Checked against the exact sum's nearest double,
   // ties to even, worked out in rationals.
   const double u = 0x1p-52;  // ulp of 1
-  const std::array<std::pair<double, double>, 8> sums{{{1.0, u / 2},             // tie: 1 is even
-                                                        {1.0 + u, u / 2},       // tie: up to even
-                                                        {1.0, -u / 4},          // tie below 2^0
-                                                        {1.0 + u, -u / 2},      // tie: down to even
-                                                        {4.1, 0x1p-53 * 0.3},   // not a tie
-                                                        {-3.9, -0x1p-52 * 0.7}, // not a tie, negative
-                                                        {2.0, -u / 2 * 0.99},   // just short of a tie
-                                                        {0.1, 1e-18}}};
+  const std::array<std::pair<double, double>, 8> sums{
+      {{1.0, u / 2},            // tie: 1 is even
+       {1.0 + u, u / 2},        // tie: up to even
+       {1.0, -u / 4},           // tie below 2^0
+       {1.0 + u, -u / 2},       // tie: down to even
+       {4.1, 0x1p-53 * 0.3},    // not a tie
+       {-3.9, -0x1p-52 * 0.7},  // not a tie, negative
+       {2.0, -u / 2 * 0.99},    // just short of a tie
+       {0.1, 1e-18}}};
   PlaneSet set;
   for (const auto& [hi, lo] : sums) {
-    const XPoint point = detail::make_point(set, add_axis_sum(set, 0, hi, lo), add_axis_sum(set, 1, -hi, -lo),
-                                            add_axis_sum(set, 2, hi, 0.0));
+    const XPoint point =
+        detail::make_point(set, add_axis_sum(set, 0, hi, lo), add_axis_sum(set, 1, -hi, -lo),
+                           add_axis_sum(set, 2, hi, 0.0));
     const auto rounded = detail::round_point(set, point);
     const std::array<Q, 3> exact{Q(Q(hi) + Q(lo)), Q(-(Q(hi) + Q(lo))), Q(hi)};
     for (std::size_t k = 0; k < 3; ++k)
@@ -236,7 +246,8 @@ TEST(ExactPlanes, EqualPlanesFromDifferentPointsAreGrouped) {
   EXPECT_EQ(groups[d].id, d);
   // b is the same plane exactly when both its points lie on the line, as rationals decide.
   const QPlane line = through(0.0, 0.1, 3.0, 0.4);
-  const bool on_line = sign_at(line, {1.0, 0.2, 0}) == 0 && sign_at(line, {2.0, 0.30000000000000004, 0}) == 0;
+  const bool on_line =
+      sign_at(line, {1.0, 0.2, 0}) == 0 && sign_at(line, {2.0, 0.30000000000000004, 0}) == 0;
   EXPECT_EQ(groups[b].id == a, on_line);
 }
 

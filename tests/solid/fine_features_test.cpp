@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "support/model_support.h"
 #include "solid/detail/frames/fine_features.h"
+#include "support/model_support.h"
 #include "testing/tower_plan.h"
 
 namespace roomcad {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "solid/detail/fast_path/fuse_seams.h"
-#include "testing/grid_plan.h"
 #include "support/model_support.h"
+#include "testing/grid_plan.h"
 
 namespace roomcad {
 namespace {
@@ -43,9 +43,17 @@ TEST(FuseSeams, SeamOfWallsOfTwoColoursKeepsItsVertex) {
 TEST(FuseSeams, SeamPointLeavesTheVertexNumbersOfGeneralFacesInStep) {
   using V = OpenMesh::Vec3d;
   detail::SoupFace below{{V(-1, -1, 0), V(1, -1, 0), V(1, 0, 0), V(0, 0, 0), V(-1, 0, 0)},
-                         FaceKind::wall_top, 0, {}, {}, {0, 1, 2, 3, 4}};
+                         FaceKind::wall_top,
+                         0,
+                         {},
+                         {},
+                         {0, 1, 2, 3, 4}};
   detail::SoupFace above{{V(-1, 0, 0), V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(-1, 1, 0)},
-                         FaceKind::wall_top, 0, {}, {}, {4, 3, 2, 5, 6}};
+                         FaceKind::wall_top,
+                         0,
+                         {},
+                         {},
+                         {4, 3, 2, 5, 6}};
   std::vector<detail::FaceSoup> soups{{below, above}};
   const std::vector<V> seam{V(0, 0, 0)};
   detail::fuse_seams(soups, seam);

@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "support/model_support.h"
 #include "solid/analytic_volume.h"
+#include "support/model_support.h"
 
 namespace roomcad {
 namespace {

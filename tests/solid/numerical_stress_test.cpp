@@ -81,10 +81,12 @@ TEST(NumericalStress, FlushOpeningsAxisAlignedFarAwayHaveTheirExactVolume) {
 TEST(NumericalStress, FlushOpeningsTurnedAndFarAwayAreClosedWithTheAnalyticVolume) {
   for (const double t : kThicknesses)
     for (const Placement& p : turned_placements()) {
-      SCOPED_TRACE(fmt::format("walls {} m thick, turned {} deg, moved ({}, {})", t, p.degrees, p.dx, p.dy));
+      SCOPED_TRACE(
+          fmt::format("walls {} m thick, turned {} deg, moved ({}, {})", t, p.degrees, p.dx, p.dy));
       // Flush with a far end is not exact once turned (the length is a square root).
       Plan plan = flush_openings_plan(t);
-      std::erase_if(plan.openings, [](const Opening& o) { return o.id == "corner" || o.id == "end-top"; });
+      std::erase_if(plan.openings,
+                    [](const Opening& o) { return o.id == "corner" || o.id == "end-top"; });
       test::expect_paths_agree(test::transformed(plan, p.degrees, p.dx, p.dy), 2);
     }
 }

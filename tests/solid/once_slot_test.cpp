@@ -36,7 +36,11 @@ TEST(OnceSlot, RacingThreadsAllGetTheOneValuePublished) {
     EXPECT_GE(made.load(), 1);
     // Made once, it is kept: no further call makes it again.
     const int before = made.load();
-    EXPECT_EQ(&slot.get([&] { ++made; return std::vector<int>{}; }), seen.front());
+    EXPECT_EQ(&slot.get([&] {
+      ++made;
+      return std::vector<int>{};
+    }),
+              seen.front());
     EXPECT_EQ(made.load(), before);
   }
 }

@@ -11,12 +11,12 @@
 #include <numbers>
 #include <set>
 
-#include "support/model_support.h"
 #include "plan/arc_chords.h"
 #include "plan/plan_chords.h"
 #include "plan/plan_levels.h"
-#include "testing/tower_plan.h"
 #include "solid/analytic_volume.h"
+#include "support/model_support.h"
+#include "testing/tower_plan.h"
 
 namespace roomcad {
 namespace {
@@ -58,7 +58,9 @@ TEST(PlanV2Build, TheCountIsTheSmallestWithinTheTolerance) {
       const double span = 6.0, theta = std::abs(extent) * std::numbers::pi / 180.0;
       const double radius = span / (2.0 * std::sin(theta / 2.0));
       const std::size_t n = chord_count(span, extent, tolerance);
-      auto sagitta = [&](std::size_t k) { return radius * (1.0 - std::cos(theta / (2.0 * double(k)))); };
+      auto sagitta = [&](std::size_t k) {
+        return radius * (1.0 - std::cos(theta / (2.0 * double(k))));
+      };
       if (n > kMaxChords) {  // 359 degrees within 1e-5 m: refused by chord_polyline
         EXPECT_GT(sagitta(kMaxChords), tolerance) << extent << " " << tolerance;
         continue;
@@ -78,7 +80,8 @@ TEST(PlanV2Build, ThePolylineRunsOnTheCircleFromFromToTo) {
   ASSERT_GT(line.size(), 3u);
   EXPECT_EQ(line.front(), w.from);
   EXPECT_EQ(line.back(), w.to);
-  // 60 degrees over a 6 m chord: radius 6, the centre to the left of from -> to (x = 11 - 6 cos 30).
+  // 60 degrees over a 6 m chord: radius 6, the centre to the left of from -> to (x = 11 - 6 cos
+  // 30).
   const Point2 centre{11.0 - 6.0 * std::cos(std::numbers::pi / 6.0), 4.0};
   for (const Point2& p : line) EXPECT_NEAR(std::hypot(p.x - centre.x, p.y - centre.y), 6.0, 1e-12);
   for (const Point2& p : line) EXPECT_GE(p.x, 11.0);  // away from the centre
@@ -138,12 +141,15 @@ TEST(PlanV2Build, AnOpeningAcrossChordsIsOneHoleThroughTheirMitres) {
 
 TEST(PlanV2Build, AShapedOpeningAcrossChordsIsRefusedNamingItNotCutApart) {
   Plan plan = bow_room();
-  add_opening(plan, "gable", OpeningType::window, "bow", 2.0, 2.0, 1.0, 1.0).shape = {{0, 0}, {1, 0}, {0.5, 1}};
-  test::expect_build_refused(plan, {}, Code::not_buildable, "opening 'gable' has a shape and spans corners");
+  add_opening(plan, "gable", OpeningType::window, "bow", 2.0, 2.0, 1.0, 1.0).shape = {
+      {0, 0}, {1, 0}, {0.5, 1}};
+  test::expect_build_refused(plan, {}, Code::not_buildable,
+                             "opening 'gable' has a shape and spans corners");
   // Within one chord (10 chords of 0.628 m) it is cut: a triangle of 0.4 x 0.5 through 0.2.
   plan.openings[0].offset = 0.1, plan.openings[0].width = 0.4, plan.openings[0].height = 0.5;
   const double bow = polyline_length(chord_polyline(plan.walls[1], 0.01));
-  test::expect_valid_walls(plan, BooleanPath::automatic, 2, 0.2 * (6 + bow + 6 + 6) * 2.5 - 0.2 * 0.1);
+  test::expect_valid_walls(plan, BooleanPath::automatic, 2,
+                           0.2 * (6 + bow + 6 + 6) * 2.5 - 0.2 * 0.1);
 }
 
 TEST(PlanV2Build, FacesNameThePlansWallsAndOpenings) {
@@ -162,7 +168,8 @@ TEST(PlanV2Build, FacesNameThePlansWallsAndOpenings) {
 TEST(PlanV2Build, SlopedTopsAndShapedOpeningsBuildClosedWithTheAnalyticVolume) {
   Plan plan = bow_room();
   plan.walls[0].height_at_end = 1.0;
-  add_opening(plan, "arch", OpeningType::window, "s", 1, 1, 1, 1).shape = {{0, 0}, {1, 0}, {0.5, 1}};
+  add_opening(plan, "arch", OpeningType::window, "s", 1, 1, 1, 1).shape = {
+      {0, 0}, {1, 0}, {0.5, 1}};
   const Model model = build_model(plan);
   const SolidCheck check = check_solid(model.walls);
   EXPECT_TRUE(check.is_closed());

@@ -2,8 +2,8 @@
 // has_no_faces (detail/plane_faces.h): the shortcut that skips a plane's 2D boolean must
 // never skip a plane with a face on it; and what PlaneBoolean leaves out. Rectangles on the
 // plane z = 0: a face with solid below it, and solid polygons above.
-#include "solid/detail/general_path/plane_contributions.h"
 #include "solid/detail/general_path/plane_faces.h"
+#include "solid/detail/general_path/plane_contributions.h"
 
 #include <gtest/gtest.h>
 
@@ -21,8 +21,8 @@ struct Plane {
     const PlaneRef left{set.add_axis(0, x0), -1}, bottom{set.add_axis(1, y0), -1};
     const PlaneRef right{set.add_axis(0, x1), 1}, top{set.add_axis(1, y1), 1};
     PlanePolygon p{{z, 1}, {left, bottom, right, top}, {}};
-    for (const auto& [a, b] : {std::pair{left, bottom}, std::pair{bottom, right}, std::pair{right, top},
-                               std::pair{top, left}})
+    for (const auto& [a, b] : {std::pair{left, bottom}, std::pair{bottom, right},
+                               std::pair{right, top}, std::pair{top, left}})
       p.vertices.push_back(make_point(set, z, a.id, b.id));
     return p;
   }

@@ -36,7 +36,8 @@ PlaneId add_through(PlaneSet& set, double px, double py, double qx, double qy) {
   return set.add(r);
 }
 
-PlaneId add_sloped(PlaneSet& set, double x0, double y0, double x1, double y1, double z, double rise) {
+PlaneId add_sloped(PlaneSet& set, double x0, double y0, double x1, double y1, double z,
+                   double rise) {
   PlaneRecipe r;
   r.kind = PlaneRecipe::Kind::sloped_top;
   r.v = {x0, y0, x1, y1, z, rise, 0.0};
@@ -52,13 +53,14 @@ struct Scene {
 // end at x = 4 mitred.
 Primitive sloped_mitred_wall(Scene& s) {
   PlaneSet& set = s.set;
-  return *make_convex(set, s.box,
-                {{set.add_axis(0, 0.0), -1},
-                 {add_through(set, 4.0, 0.0, 4.2, 0.2), 1},  // the mitre: x - y = 4, right outside
-                 {set.add_axis(1, 0.0), -1},
-                 {set.add_axis(1, 0.2), 1},
-                 {set.add_axis(2, 0.0), -1},
-                 {add_sloped(set, 0.0, 0.1, 4.0, 0.1, 2.5, 0.5), 1}});
+  return *make_convex(
+      set, s.box,
+      {{set.add_axis(0, 0.0), -1},
+       {add_through(set, 4.0, 0.0, 4.2, 0.2), 1},  // the mitre: x - y = 4, right outside
+       {set.add_axis(1, 0.0), -1},
+       {set.add_axis(1, 0.2), 1},
+       {set.add_axis(2, 0.0), -1},
+       {add_sloped(set, 0.0, 0.1, 4.0, 0.1, 2.5, 0.5), 1}});
 }
 
 TEST(PrimitiveSection, MatchesTheClippedSquareOnAxisObliqueAndSlopedPlanes) {
@@ -94,7 +96,8 @@ TEST(PrimitiveSection, APlaneThroughAVertexOrAnEdgeTakesTheClippingPath) {
   const Primitive wall = sloped_mitred_wall(s);
   // Through the corner (0, 0, 2.5) of the top, the mitre's edge x - y = 4 at z = 0, and the
   // face y = 0.2 itself (no section: nothing of positive area lies on it inside).
-  for (const PlaneRef h : {PlaneRef{s.set.add_axis(2, 2.5), 1}, PlaneRef{add_through(s.set, 4.0, 0.0, 4.2, 0.2), -1}}) {
+  for (const PlaneRef h : {PlaneRef{s.set.add_axis(2, 2.5), 1},
+                           PlaneRef{add_through(s.set, 4.0, 0.0, 4.2, 0.2), -1}}) {
     SCOPED_TRACE(h.id);
     EXPECT_FALSE(section_from_crossings(s.set, wall, h));
     const auto made = section_of(s.set, s.box, wall, h);
@@ -113,15 +116,21 @@ TEST(PrimitiveSection, RandomBoxesCutByRandomPlanesMatchTheClippedSquare) {
   int crossing = 0;
   for (int trial = 0; trial < 200; ++trial) {
     Scene s;
-    const double x = at(rng), y = at(rng), z = at(rng), dx = size(rng), dy = size(rng), dz = size(rng);
-    const Primitive box = *make_convex(
-        s.set, s.box,
-        {{s.set.add_axis(0, x), -1}, {s.set.add_axis(0, x + dx), 1}, {s.set.add_axis(1, y), -1},
-         {s.set.add_axis(1, y + dy), 1}, {s.set.add_axis(2, z), -1},
-         {add_sloped(s.set, x, y, x + dx, y + dy, z + dz, dz * at(rng) / 6.0), 1}});
-    const PlaneRef h = trial % 3 == 0   ? PlaneRef{s.set.add_axis(trial % 2, x + dx * size(rng) / 2.0), 1}
-                       : trial % 3 == 1 ? PlaneRef{add_through(s.set, at(rng), at(rng), at(rng), at(rng)), 1}
-                                        : PlaneRef{add_sloped(s.set, x, y, at(rng), at(rng), z + dz / 2, at(rng)), -1};
+    const double x = at(rng), y = at(rng), z = at(rng), dx = size(rng), dy = size(rng),
+                 dz = size(rng);
+    const Primitive box =
+        *make_convex(s.set, s.box,
+                     {{s.set.add_axis(0, x), -1},
+                      {s.set.add_axis(0, x + dx), 1},
+                      {s.set.add_axis(1, y), -1},
+                      {s.set.add_axis(1, y + dy), 1},
+                      {s.set.add_axis(2, z), -1},
+                      {add_sloped(s.set, x, y, x + dx, y + dy, z + dz, dz * at(rng) / 6.0), 1}});
+    const PlaneRef h =
+        trial % 3 == 0 ? PlaneRef{s.set.add_axis(trial % 2, x + dx * size(rng) / 2.0), 1}
+        : trial % 3 == 1
+            ? PlaneRef{add_through(s.set, at(rng), at(rng), at(rng), at(rng)), 1}
+            : PlaneRef{add_sloped(s.set, x, y, at(rng), at(rng), z + dz / 2, at(rng)), -1};
     const auto made = section_of(s.set, s.box, box, h);
     const auto reference = section_by_clipping(s.set, s.box, box, h);
     ASSERT_EQ(made.has_value(), reference.has_value()) << trial;

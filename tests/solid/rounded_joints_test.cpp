@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "support/model_support.h"
 #include "solid/detail/assembly/face_soup.h"
+#include "support/model_support.h"
 
 namespace roomcad {
 namespace {
@@ -52,9 +52,11 @@ TEST(RoundedJoints, TeeAtAJointWithAGrooveOneUlpWideBuildsAClosedSolid) {
 // (a needle face in doubles). Mitred to each other instead, the solid is closed and clean.
 TEST(RoundedJoints, HairlineWedgeBetweenSquareEndsIsMitredShut) {
   Plan plan = empty_plan();
-  add_thick_wall(plan, "wall2", {-0.013000000000000001, 0.020250525000000002}, {-0.01300018, -4.080249}, 0.26);
+  add_thick_wall(plan, "wall2", {-0.013000000000000001, 0.020250525000000002},
+                 {-0.01300018, -4.080249}, 0.26);
   add_thick_wall(plan, "wall24", {-0.01300018, -4.080249}, {3.287, -4.080249}, 0.26);
-  add_thick_wall(plan, "wall62", {-0.01300018, -4.080249}, {-0.013000000000000001, -9.818316}, 0.26);
+  add_thick_wall(plan, "wall62", {-0.01300018, -4.080249}, {-0.013000000000000001, -9.818316},
+                 0.26);
   for (Wall& w : plan.walls) w.base = 2.5, w.height = 2.619999885559082;
   plan.walls[2].height = 1.119999885559082;  // wall62 is lower
   expect_valid_walls(plan, BooleanPath::automatic, 0);
@@ -176,7 +178,9 @@ TEST(RoundedJoints, ASolidWithAFaceMissingIsRefusedNamingTheFacesBesideTheGap) {
                                 triangle(x, y, z, 1)};
   EXPECT_EQ(closedness_error(closed), "");
   const std::string what = closedness_error({closed.begin(), closed.end() - 1});
-  EXPECT_NE(what.find("not closed beside the faces of 'first', 'second': 3 edges"), std::string::npos) << what;
+  EXPECT_NE(what.find("not closed beside the faces of 'first', 'second': 3 edges"),
+            std::string::npos)
+      << what;
 }
 
 }  // namespace

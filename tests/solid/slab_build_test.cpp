@@ -8,8 +8,8 @@
 #include <set>
 #include <vector>
 
-#include "support/model_support.h"
 #include "solid/detail/frames/slab_frames.h"
+#include "support/model_support.h"
 
 namespace roomcad {
 namespace {
@@ -49,7 +49,8 @@ TEST(SlabBuild, FacesOfTheSlabNameItAfterTheWallsAndOpenings) {
   const FacePropertyHandles props = face_property_handles(model.walls);
   std::set<int> slab_objects;
   for (const auto f : model.walls.faces())
-    if (model.walls.property(props.kind, f) == FaceKind::slab) slab_objects.insert(model.walls.property(props.object, f));
+    if (model.walls.property(props.kind, f) == FaceKind::slab)
+      slab_objects.insert(model.walls.property(props.object, f));
   EXPECT_EQ(slab_objects, std::set<int>{4});
 }
 
@@ -68,7 +69,8 @@ TEST(SlabBuild, AFloorDrawnToTheWallsFacesIsLaidIntoThemNotLeftOnASliver) {
   s.outline = {{x0, 1.13}, {x1, 1.13}, {x1, 3.87}, {x0, 3.87}};
   s.top = 2.62, s.thickness = 0.12;
   plan.slabs.push_back(s);
-  expect_valid_walls(plan, BooleanPath::automatic, 0, 0.26 * 14 * 2.74 + (4 - 0.26) * (3 - 0.26) * 0.12);
+  expect_valid_walls(plan, BooleanPath::automatic, 0,
+                     0.26 * 14 * 2.74 + (4 - 0.26) * (3 - 0.26) * 0.12);
 }
 
 TEST(SlabBuild, AFloorBesideAWallStandingOnItsEdgeIsLaidUnderIt) {
@@ -86,7 +88,8 @@ TEST(SlabBuild, AFloorBesideAWallStandingOnItsEdgeIsLaidUnderIt) {
   s.top = 1.25, s.thickness = 0.127;
   plan.slabs.push_back(s);
   const double strip = 0.435 / 4 * 2 * 0.127;
-  expect_valid_walls(plan, BooleanPath::automatic, 0, 0.435 * 2 * 1 + (7 - 4.6175) * 2 * 0.127 + strip);
+  expect_valid_walls(plan, BooleanPath::automatic, 0,
+                     0.435 * 2 * 1 + (7 - 4.6175) * 2 * 0.127 + strip);
 }
 
 TEST(SlabBuild, AFloorAlongAWallEndAndAWallUnderItIsLaidWhole) {
@@ -167,7 +170,8 @@ TEST(SlabBuild, ARectilinearAreaIsCutIntoRectanglesOfItsOwnCoordinates) {
 }
 
 TEST(SlabBuild, TheNefPathRefusesSlabsByName) {
-  test::expect_build_refused(covered_room(), test::options_for(BooleanPath::nef), Code::not_buildable, "slab 'lid'");
+  test::expect_build_refused(covered_room(), test::options_for(BooleanPath::nef),
+                             Code::not_buildable, "slab 'lid'");
 }
 
 }  // namespace

@@ -40,9 +40,9 @@ TEST(SnapSoup, SnapClosesAGrooveOneUlpWide) {
   soup.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},   // 0-3 bottom
                  {0, 0, 1}, {h, 0, 1}, {h, 1, 1}, {0, 1, 1},   // 4-7 top, left half
                  {g, 0, 1}, {1, 0, 1}, {1, 1, 1}, {g, 1, 1}};  // 8-11 top, right half
-  soup.polygons = {{3, 2, 1, 0},          {4, 5, 6, 7},           {8, 9, 10, 11},
-                   {0, 1, 9, 8, 5, 4},    {2, 3, 7, 6, 11, 10},   {0, 4, 7, 3},
-                   {1, 2, 10, 9},         {5, 8, 11, 6}};  // the groove's floor, one ulp wide
+  soup.polygons = {{3, 2, 1, 0},       {4, 5, 6, 7},         {8, 9, 10, 11},
+                   {0, 1, 9, 8, 5, 4}, {2, 3, 7, 6, 11, 10}, {0, 4, 7, 3},
+                   {1, 2, 10, 9},      {5, 8, 11, 6}};  // the groove's floor, one ulp wide
   const IndexedSoup out = detail::snap_soup(soup, detail::snap_tolerance(soup.points));
   EXPECT_EQ(out.polygons.size(), 7u);  // the floor collapsed to an edge
   EXPECT_TRUE(is_closed(out.polygons));
@@ -51,7 +51,8 @@ TEST(SnapSoup, SnapClosesAGrooveOneUlpWide) {
 TEST(SnapSoup, SnapRemovesAFinOfTwoOppositeFaces) {
   IndexedSoup soup;
   soup.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1e-300, 0, 0}};
-  soup.polygons = {{0, 1, 2}, {3, 2, 1}};  // 3 snaps onto 0: the two faces are one another's reverse
+  soup.polygons = {{0, 1, 2},
+                   {3, 2, 1}};  // 3 snaps onto 0: the two faces are one another's reverse
   EXPECT_TRUE(detail::snap_soup(soup, 1e-200).polygons.empty());
   EXPECT_EQ(detail::snap_soup(soup, 0.0).polygons.size(), 2u);  // nothing within 0
 }
@@ -81,11 +82,12 @@ TEST(SnapSoup, SnapDropsSpikesAndRepeatedCorners) {
 // the corner, and the cube stays closed.
 TEST(SnapSoup, SnapCollapsesAFlatPolygonIntoItsNeighboursEdges) {
   IndexedSoup soup;
-  soup.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1},
-                 {0, 1, 1}, {0.5, 0, 0}, {0.5, 0, 1}, {0.5, 0, 0.5}};  // 8-10 on the split
-  soup.polygons = {{3, 2, 1, 8, 0}, {4, 9, 5, 6, 7}, {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5},
-                   {0, 8, 10, 9, 4}, {8, 1, 5, 9},  // the front's two faces
-                   {8, 9, 10}};                      // flat
+  soup.points = {
+      {0, 0, 0}, {1, 0, 0}, {1, 1, 0},   {0, 1, 0},   {0, 0, 1},    {1, 0, 1},
+      {1, 1, 1}, {0, 1, 1}, {0.5, 0, 0}, {0.5, 0, 1}, {0.5, 0, 0.5}};  // 8-10 on the split
+  soup.polygons = {{3, 2, 1, 8, 0}, {4, 9, 5, 6, 7},  {2, 3, 7, 6}, {0, 4, 7, 3},
+                   {1, 2, 6, 5},    {0, 8, 10, 9, 4}, {8, 1, 5, 9},  // the front's two faces
+                   {8, 9, 10}};                                      // flat
   soup.tags = {0, 1, 2, 3, 4, 5, 6, 7};
   ASSERT_TRUE(is_closed(soup.polygons));
   const IndexedSoup out = detail::snap_soup(soup, 0.0);

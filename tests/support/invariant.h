@@ -9,14 +9,14 @@
 #include "core/error.h"
 
 #ifdef NDEBUG
-#define EXPECT_INVARIANT_BROKEN(statement)                                               \
-  do {                                                                                    \
-    try {                                                                                 \
-      statement;                                                                          \
-      ADD_FAILURE() << "no invariant broken by: " #statement;                             \
-    } catch (const ::roomcad::PreconditionError& e) {                                     \
-      EXPECT_EQ(e.code(), ::roomcad::Code::internal) << e.what();                         \
-    }                                                                                     \
+#define EXPECT_INVARIANT_BROKEN(statement)                        \
+  do {                                                            \
+    try {                                                         \
+      statement;                                                  \
+      ADD_FAILURE() << "no invariant broken by: " #statement;     \
+    } catch (const ::roomcad::PreconditionError& e) {             \
+      EXPECT_EQ(e.code(), ::roomcad::Code::internal) << e.what(); \
+    }                                                             \
   } while (false)
 #else
 #define EXPECT_INVARIANT_BROKEN(statement) EXPECT_DEATH(statement, "internal error")

@@ -48,7 +48,8 @@ Plan transformed(const Plan& plan, double degrees, double dx, double dy) {
   return out;
 }
 
-void expect_build_refused(const Plan& plan, const BuildOptions& options, Code code, const std::string& names) {
+void expect_build_refused(const Plan& plan, const BuildOptions& options, Code code,
+                          const std::string& names) {
   try {
     (void)build_model(plan, options);
     ADD_FAILURE() << "built; expected a refusal naming " << names;
@@ -79,10 +80,13 @@ double area_tolerance(const SolidMesh& mesh, double area) {
 SolidCheck expect_valid_model(const Model& model, const Plan& plan, BooleanPath path, long genus,
                               double expected_volume) {
   const SolidCheck c = check_solid(model.walls);
-  const char* name = path == BooleanPath::nef ? "nef" : path == BooleanPath::general ? "general" : "auto";
+  const char* name = path == BooleanPath::nef       ? "nef"
+                     : path == BooleanPath::general ? "general"
+                                                    : "auto";
   EXPECT_TRUE(c.is_closed()) << name << ": " << c.border_edges << " border edges";
-  EXPECT_TRUE(c.is_manifold()) << name << ": " << c.non_manifold_vertices << " non-manifold vertices, "
-                               << c.rejected_triangles << " rejected triangles";
+  EXPECT_TRUE(c.is_manifold()) << name << ": " << c.non_manifold_vertices
+                               << " non-manifold vertices, " << c.rejected_triangles
+                               << " rejected triangles";
   EXPECT_EQ(c.self_intersections, 0u) << name;
   EXPECT_EQ(c.degenerate_triangles, 0u) << name;
   EXPECT_EQ(c.inward_components, 0u) << name;
@@ -97,13 +101,16 @@ SolidCheck expect_valid_model(const Model& model, const Plan& plan, BooleanPath 
 
 }  // namespace
 
-SolidCheck expect_valid_walls(const Plan& plan, BooleanPath path, long genus, double expected_volume) {
-  return expect_valid_model(build_model(plan, options_for(path)), plan, path, genus, expected_volume);
+SolidCheck expect_valid_walls(const Plan& plan, BooleanPath path, long genus,
+                              double expected_volume) {
+  return expect_valid_model(build_model(plan, options_for(path)), plan, path, genus,
+                            expected_volume);
 }
 
 void expect_paths_agree(const Plan& plan, long genus, double expected_volume) {
   const Model nef_model = build_model(plan, options_for(BooleanPath::nef));
-  const SolidCheck nef = expect_valid_model(nef_model, plan, BooleanPath::nef, genus, expected_volume);
+  const SolidCheck nef =
+      expect_valid_model(nef_model, plan, BooleanPath::nef, genus, expected_volume);
   const auto b = area_by_kind(nef_model.walls);
   // The general path also without its grid of planes of rectangles (every plane through the
   // general 2D boolean).
@@ -118,8 +125,10 @@ void expect_paths_agree(const Plan& plan, long genus, double expected_volume) {
     const SolidCheck c = expect_valid_model(model, plan, path, genus, expected_volume);
     EXPECT_NEAR(c.volume, nef.volume, 2 * volume_tolerance(nef_model.walls, nef.volume));
     const auto a = area_by_kind(model.walls);
-    for (const auto& [kind, area] : b) EXPECT_TRUE(a.count(kind)) << "only nef has " << to_string(kind);
-    for (const auto& [kind, area] : a) EXPECT_TRUE(b.count(kind)) << "only this path has " << to_string(kind) << " " << area;
+    for (const auto& [kind, area] : b)
+      EXPECT_TRUE(a.count(kind)) << "only nef has " << to_string(kind);
+    for (const auto& [kind, area] : a)
+      EXPECT_TRUE(b.count(kind)) << "only this path has " << to_string(kind) << " " << area;
     ASSERT_EQ(a.size(), b.size());
     for (const auto& [kind, area] : a) {
       ASSERT_TRUE(b.count(kind)) << to_string(kind);

@@ -5,9 +5,9 @@
 #include <map>
 #include <string>
 
-#include "solid/build_model.h"
 #include "mesh/mesh_check.h"
 #include "plan/plan.h"
+#include "solid/build_model.h"
 #include "solid/wall_check.h"
 #include "support/solid_tolerance.h"
 
@@ -30,7 +30,8 @@ Plan transformed(const Plan& plan, double degrees, double dx, double dy);
 
 /// Expects build_model(plan, options) to throw a PreconditionError with this code whose message
 /// holds `names` (the objects and reason it must name).
-void expect_build_refused(const Plan& plan, const BuildOptions& options, Code code, const std::string& names);
+void expect_build_refused(const Plan& plan, const BuildOptions& options, Code code,
+                          const std::string& names);
 
 /// Build options for one path and thread count.
 BuildOptions options_for(BooleanPath path, int threads = 0);

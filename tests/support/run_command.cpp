@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <string_view>
 #include <stdexcept>
+#include <string_view>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -32,7 +32,8 @@ std::string roomcad_exe() {
 }
 
 std::filesystem::path source_dir() {
-  if (const char* dir = std::getenv("ROOMCAD_SOURCE_DIR"); dir != nullptr && *dir != '\0') return dir;
+  if (const char* dir = std::getenv("ROOMCAD_SOURCE_DIR"); dir != nullptr && *dir != '\0')
+    return dir;
 #ifdef ROOMCAD_SOURCE_DIR
   return ROOMCAD_SOURCE_DIR;
 #else
@@ -58,7 +59,8 @@ CommandResult run_program(const std::string& program, const std::vector<std::str
   const auto err_path = dir / "stderr";
   std::string command = shell_quote(program);
   for (const std::string& a : args) command += ' ' + shell_quote(a);
-  command += " </dev/null >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string());
+  command +=
+      " </dev/null >" + shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string());
   const int raw = std::system(command.c_str());
   CommandResult result;
   result.status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -73,7 +73,8 @@ TEST(DoorSwing, NeighbouringDoorsHingedOnOnePointOnlyTouch) {
   // share only the line through it.
   Plan plan = room_with_door(make_door("a", "rs", 0.6, 0.9, Hinge::right));
   plan.openings.push_back(make_door("b", "rs", 1.5, 0.9, Hinge::left));
-  EXPECT_TRUE(findings(check(plan, only({Code::door_swing_blocked})), Code::door_swing_blocked).empty());
+  EXPECT_TRUE(
+      findings(check(plan, only({Code::door_swing_blocked})), Code::door_swing_blocked).empty());
 }
 
 TEST(DoorSwing, LeafOfADoorInAnotherStoreyIsNotInTheWay) {
@@ -82,7 +83,8 @@ TEST(DoorSwing, LeafOfADoorInAnotherStoreyIsNotInTheWay) {
   fin.base = 2.5;  // upstairs: above the 2.1 m leaf
   plan.site.max_height = 6;
   plan.walls.push_back(fin);
-  EXPECT_TRUE(findings(check(plan, only({Code::door_swing_blocked})), Code::door_swing_blocked).empty());
+  EXPECT_TRUE(
+      findings(check(plan, only({Code::door_swing_blocked})), Code::door_swing_blocked).empty());
 }
 
 /// The room's door swings in, so its push side is outside, where `fence` runs in front of it.
@@ -103,8 +105,13 @@ TEST(DoorClearance, WallInTheClearSpaceIsCaughtAndTheFixClearsIt) {
 
 TEST(DoorClearance, ClearSpaceEndingOnAWallFaceIsClear) {
   // The fence's face is at y = -1.7 + 0.1 = -1.6: 1.5 m from the wall face at y = -0.1.
-  EXPECT_TRUE(findings(check(door_facing_fence(-1.7), only({Code::door_clearance})), Code::door_clearance).empty());
-  EXPECT_EQ(findings(check(door_facing_fence(-1.699), only({Code::door_clearance})), Code::door_clearance).size(), 1u);
+  EXPECT_TRUE(
+      findings(check(door_facing_fence(-1.7), only({Code::door_clearance})), Code::door_clearance)
+          .empty());
+  EXPECT_EQ(
+      findings(check(door_facing_fence(-1.699), only({Code::door_clearance})), Code::door_clearance)
+          .size(),
+      1u);
 }
 
 TEST(DoorClearance, DepthAndWidthAreThresholds) {
@@ -118,7 +125,7 @@ TEST(DoorClearance, DepthAndWidthAreThresholds) {
 TEST(DoorClearance, OnlyDoorsOfAccessibleRoomsAreChecked) {
   RuleSet rules = only({Code::door_clearance});
   Plan plan = door_facing_fence(-1.0);
-  add_box(plan, "q", 4, 0, 8, 4);  // a second room east, with its own door to the outside
+  add_box(plan, "q", 4, 0, 8, 4);            // a second room east, with its own door to the outside
   plan.walls.erase(plan.walls.begin() + 8);  // its west wall: the first room's east wall
   plan.openings.push_back(make_door("e", "qs", 1.5));
   plan.walls.push_back(make_wall("fence2", {4, -1.0}, {8, -1.0}, 0.2));
@@ -140,15 +147,21 @@ TEST(DoorWidth, NarrowDoorIsCaughtAndWidened) {
 
 TEST(DoorWidth, DoorOfExactlyTheThresholdIsWideEnough) {
   const RuleSet rules = only({Code::door_too_narrow});
-  EXPECT_TRUE(findings(check(room_with_door(make_door("d", "rs", 1.5, 0.8)), rules), Code::door_too_narrow).empty());
-  EXPECT_EQ(findings(check(room_with_door(make_door("d", "rs", 1.5, 0.799)), rules), Code::door_too_narrow).size(), 1u);
+  EXPECT_TRUE(
+      findings(check(room_with_door(make_door("d", "rs", 1.5, 0.8)), rules), Code::door_too_narrow)
+          .empty());
+  EXPECT_EQ(findings(check(room_with_door(make_door("d", "rs", 1.5, 0.799)), rules),
+                     Code::door_too_narrow)
+                .size(),
+            1u);
 }
 
 TEST(DoorWidth, DoorWithNoRoomToWidenGetsAFixInWordsOnly) {
   // A 0.7 m wall filled by its 0.7 m door: a 0.8 m door does not fit in it.
   Plan plan = plan_with({make_wall("w", {0, 0}, {0.7, 0}, 0.2)});
   plan.openings.push_back(make_door("d", "w", 0.0, 0.7));
-  const std::vector<Diagnostic> found = findings(check(plan, only({Code::door_too_narrow})), Code::door_too_narrow);
+  const std::vector<Diagnostic> found =
+      findings(check(plan, only({Code::door_too_narrow})), Code::door_too_narrow);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_TRUE(found[0].edits.empty());
   EXPECT_FALSE(found[0].fix.empty());

@@ -15,7 +15,7 @@ TEST(Exactness, MicrometreOverlapAndGapAreToldApartInEveryFrame) {
   for (const MarginCase& c : margin_cases())
     for (const Frame& f : all_frames()) {
       SCOPED_TRACE(::testing::Message() << c.name << ", frame " << f.degrees << " deg + ("
-                                      << f.offset.x << ", " << f.offset.y << ")");
+                                        << f.offset.x << ", " << f.offset.y << ")");
       EXPECT_EQ(error_codes(validate(f.apply(c.build(1e-6)), no_rooms())), c.when_overlapping);
       EXPECT_EQ(error_codes(validate(f.apply(c.build(-1e-6)), no_rooms())), Codes{});
     }

@@ -23,13 +23,19 @@ struct MarginCase {
 /// @return the cases, each a few walls and openings. O(1).
 inline std::vector<MarginCase> margin_cases(double t = 0.25) {
   const double h = t / 2;
-  auto wall = [t](std::string id, Point2 from, Point2 to) { return make_wall(std::move(id), from, to, t); };
+  auto wall = [t](std::string id, Point2 from, Point2 to) {
+    return make_wall(std::move(id), from, to, t);
+  };
   return {
       {"parallel walls side by side",
-       [=](double e) { return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {0, 2 * h - e}, {4, 2 * h - e})}); },
+       [=](double e) {
+         return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {0, 2 * h - e}, {4, 2 * h - e})});
+       },
        {Code::wall_overlap}},
       {"wall end against the side of another, not joined",
-       [=](double e) { return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {2, h - e}, {2, 3})}); },
+       [=](double e) {
+         return plan_with({wall("a", {0, 0}, {4, 0}), wall("b", {2, h - e}, {2, 3})});
+       },
        {Code::wall_overlap}},
       {"window past the end of its wall",
        [=](double e) {

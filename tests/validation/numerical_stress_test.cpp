@@ -59,7 +59,8 @@ Plan flush_corner_plan(double e) {
   const double t = 0.2;
   const Point2 c[4] = {{0, 0}, {5, 0}, {5, 4}, {0, 4}};
   std::vector<Wall> walls;
-  for (int k = 0; k < 4; ++k) walls.push_back(make_wall(fmt::format("r{}", k), c[k], c[(k + 1) % 4], t));
+  for (int k = 0; k < 4; ++k)
+    walls.push_back(make_wall(fmt::format("r{}", k), c[k], c[(k + 1) % 4], t));
   walls.push_back(make_wall("free", {7, 0}, {10, 0}, t));
   const auto window = OpeningType::window;
   return plan_with(walls, {make_opening("door", OpeningType::door, "r0", 1.0, 0.9, 2.1, 0.0),
@@ -77,7 +78,8 @@ TEST(NumericalStress, WindowFlushWithAMitredCornerTurnedFarAwayIsDecided) {
   // coordinates as rounded, but it must come. 1e-7 m either side decides as expected.
   const Frame f{1e-9, {1e6, -1e6}};
   const Codes flush = error_codes(validate(f.apply(flush_corner_plan(0)), no_rooms()));
-  EXPECT_TRUE(flush.empty() || flush == Codes{Code::opening_blocked}) << ::testing::PrintToString(flush);
+  EXPECT_TRUE(flush.empty() || flush == Codes{Code::opening_blocked})
+      << ::testing::PrintToString(flush);
   EXPECT_EQ(error_codes(validate(f.apply(flush_corner_plan(kMargin)), no_rooms())),
             Codes{Code::opening_blocked});
   EXPECT_EQ(error_codes(validate(f.apply(flush_corner_plan(-kMargin)), no_rooms())), Codes{});
@@ -101,7 +103,8 @@ TEST(NumericalStress, SiteEdgeAndMaxHeightToATenthOfAMicrometre) {
                 Codes{Code::out_of_bounds});
       EXPECT_EQ(error_codes(validate(wall_at_site_edge(t, 0, kMargin, d), no_rooms())),
                 Codes{Code::out_of_bounds});
-      EXPECT_EQ(error_codes(validate(wall_at_site_edge(t, -kMargin, -kMargin, d), no_rooms())), Codes{});
+      EXPECT_EQ(error_codes(validate(wall_at_site_edge(t, -kMargin, -kMargin, d), no_rooms())),
+                Codes{});
     }
 }
 

@@ -23,7 +23,8 @@ TEST(WindowSill, LowSillIsCaughtAndRaised) {
   EXPECT_EQ(found[0].objects, (Ids{"win"}));
   const Plan fixed = expect_fix_clears(plan, rules, found[0]);
   EXPECT_EQ(fixed.openings[0].sill, 0.8);
-  EXPECT_LE(fixed.openings[0].sill + fixed.openings[0].height, 2.5);  // shortened to stay in the wall
+  EXPECT_LE(fixed.openings[0].sill + fixed.openings[0].height,
+            2.5);  // shortened to stay in the wall
 }
 
 TEST(WindowSill, HighSillIsCaughtAndLowered) {
@@ -91,7 +92,8 @@ TEST(Duplicates, NearCopiesAreNotCopies) {
   copy.id = "copy";
   copy.from.y = copy.to.y = 1e-3;  // a millimetre off: an overlap, not a copy
   plan.walls.push_back(copy);
-  EXPECT_TRUE(findings(check(plan, only({Code::duplicate_object})), Code::duplicate_object).empty());
+  EXPECT_TRUE(
+      findings(check(plan, only({Code::duplicate_object})), Code::duplicate_object).empty());
 }
 
 }  // namespace

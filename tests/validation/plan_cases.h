@@ -78,7 +78,8 @@ struct Frame {
       p.site.origin = map(p.site.origin);
     } else {
       const std::int64_t span = std::max(p.site.cells[0], p.site.cells[1]) * 2;
-      p.site.origin = {offset.x - span * p.site.cell_size / 2, offset.y - span * p.site.cell_size / 2};
+      p.site.origin = {offset.x - span * p.site.cell_size / 2,
+                       offset.y - span * p.site.cell_size / 2};
       p.site.cells = {span, span};
     }
     return p;
@@ -89,8 +90,8 @@ struct Frame {
 /// 30, 45 and 71.3 degrees (also moved 2^20 m).
 inline std::vector<Frame> all_frames() {
   const Point2 far{1048576.0, -1048576.0};
-  return {Frame{0, {0, 0}}, Frame{0, far}, Frame{30, far}, Frame{45, far}, Frame{71.3, far},
-          Frame{30, {0, 0}}};
+  return {Frame{0, {0, 0}}, Frame{0, far},    Frame{30, far},
+          Frame{45, far},   Frame{71.3, far}, Frame{30, {0, 0}}};
 }
 
 }  // namespace roomcad::testing

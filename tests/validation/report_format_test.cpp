@@ -35,25 +35,31 @@ Report sample_report() {
 }
 
 TEST(ReportFormat, JsonHasTheSpecsShape) {
-  EXPECT_EQ(format_report_json(sample_report()),
-            "{\n"
-            "  \"ok\": false,\n"
-            "  \"errors\": [\n"
-            "    {\"code\": \"wall_overlap\", \"objects\": [\"a\", \"b\"], \"message\": \"walls \\\"a\\\" and "
-            "\\\"b\\\" overlap\", \"where\": [[1.0, 2.5], [3.0, 4.0]], \"fix\": \"move wall \\\"b\\\" 0.1 m east\"},\n"
-            "    {\"code\": \"parse_error\", \"objects\": [], \"message\": \"plan.json:3:7: /walls/0/thickness: "
-            "expected a number, found \\\"x\\\"\", \"file\": \"plan.json\", \"line\": 3, \"column\": 7, "
-            "\"pointer\": \"/walls/0/thickness\"}\n"
-            "  ],\n"
-            "  \"warnings\": [\n"
-            "    {\"code\": \"door_above_floor\", \"objects\": [\"d\\\"1\"], \"message\": \"door \\\"d1\\\" starts "
-            "0.2 m above the floor\", \"where\": [0.1, -0.0]}\n"
-            "  ]\n"
-            "}\n");
+  EXPECT_EQ(
+      format_report_json(sample_report()),
+      "{\n"
+      "  \"ok\": false,\n"
+      "  \"errors\": [\n"
+      "    {\"code\": \"wall_overlap\", \"objects\": [\"a\", \"b\"], \"message\": \"walls "
+      "\\\"a\\\" and "
+      "\\\"b\\\" overlap\", \"where\": [[1.0, 2.5], [3.0, 4.0]], \"fix\": \"move wall \\\"b\\\" "
+      "0.1 m east\"},\n"
+      "    {\"code\": \"parse_error\", \"objects\": [], \"message\": \"plan.json:3:7: "
+      "/walls/0/thickness: "
+      "expected a number, found \\\"x\\\"\", \"file\": \"plan.json\", \"line\": 3, \"column\": 7, "
+      "\"pointer\": \"/walls/0/thickness\"}\n"
+      "  ],\n"
+      "  \"warnings\": [\n"
+      "    {\"code\": \"door_above_floor\", \"objects\": [\"d\\\"1\"], \"message\": \"door "
+      "\\\"d1\\\" starts "
+      "0.2 m above the floor\", \"where\": [0.1, -0.0]}\n"
+      "  ]\n"
+      "}\n");
 }
 
 TEST(ReportFormat, EmptyReportIsOk) {
-  EXPECT_EQ(format_report_json(Report{}), "{\n  \"ok\": true,\n  \"errors\": [],\n  \"warnings\": []\n}\n");
+  EXPECT_EQ(format_report_json(Report{}),
+            "{\n  \"ok\": true,\n  \"errors\": [],\n  \"warnings\": []\n}\n");
   EXPECT_EQ(format_report_text(Report{}, true), "");
   EXPECT_EQ(format_report_summary(Report{}), "no problems");
 }
@@ -70,13 +76,14 @@ TEST(ReportFormat, WarningsAloneAreOk) {
 }
 
 TEST(ReportFormat, TextWithoutColour) {
-  EXPECT_EQ(format_report_text(sample_report(), false),
-            "error[wall_overlap] a, b: walls \"a\" and \"b\" overlap\n"
-            "  at: (1, 2.5) .. (3, 4) m\n"
-            "  fix: move wall \"b\" 0.1 m east\n"
-            "error[parse_error]: plan.json:3:7: /walls/0/thickness: expected a number, found \"x\"\n"
-            "warning[door_above_floor] d\"1: door \"d1\" starts 0.2 m above the floor\n"
-            "  at: (0.1, 0) m\n");
+  EXPECT_EQ(
+      format_report_text(sample_report(), false),
+      "error[wall_overlap] a, b: walls \"a\" and \"b\" overlap\n"
+      "  at: (1, 2.5) .. (3, 4) m\n"
+      "  fix: move wall \"b\" 0.1 m east\n"
+      "error[parse_error]: plan.json:3:7: /walls/0/thickness: expected a number, found \"x\"\n"
+      "warning[door_above_floor] d\"1: door \"d1\" starts 0.2 m above the floor\n"
+      "  at: (0.1, 0) m\n");
   EXPECT_EQ(format_report_summary(sample_report()), "2 errors, 1 warning");
 }
 
@@ -138,10 +145,13 @@ TEST(ReportFormat, FixEditsArePrintedAsCommandsInTextAndJson) {
             "  edit: roomcad set 'my plan.json' d1 swing=out offset=1.25\n"
             "  edit: roomcad rm 'my plan.json' 'w 2' --cascade\n");
   const std::string json = format_report_json(finding_with_edits(), o);
-  EXPECT_NE(json.find("\"edits\": [{\"op\": \"set\", \"id\": \"d1\", \"fields\": {\"swing\": \"out\", \"offset\": "
-                      "\"1.25\"}, \"command\": \"roomcad set 'my plan.json' d1 swing=out offset=1.25\"}, {\"op\": \"rm\", "
+  EXPECT_NE(json.find("\"edits\": [{\"op\": \"set\", \"id\": \"d1\", \"fields\": {\"swing\": "
+                      "\"out\", \"offset\": "
+                      "\"1.25\"}, \"command\": \"roomcad set 'my plan.json' d1 swing=out "
+                      "offset=1.25\"}, {\"op\": \"rm\", "
                       "\"id\": \"w 2\", \"cascade\": true, "),
-            std::string::npos) << json;
+            std::string::npos)
+      << json;
 }
 
 TEST(ReportFormat, BaselineComparisonMarksItemsAndListsTheFixed) {
@@ -153,14 +163,20 @@ TEST(ReportFormat, BaselineComparisonMarksItemsAndListsTheFixed) {
   o.baseline_file = "old.json";
   const std::string text = format_report_text(current, false, o);
   EXPECT_EQ(text.rfind("new warning[door_swing_blocked]", 0), 0u) << text;
-  EXPECT_NE(text.find("fixed since old.json:\nfixed error[wall_overlap] a, b:"), std::string::npos) << text;
-  EXPECT_EQ(format_report_summary(current, o), "0 errors, 1 warning; against old.json: 1 new, 0 unchanged, 3 fixed");
+  EXPECT_NE(text.find("fixed since old.json:\nfixed error[wall_overlap] a, b:"), std::string::npos)
+      << text;
+  EXPECT_EQ(format_report_summary(current, o),
+            "0 errors, 1 warning; against old.json: 1 new, 0 unchanged, 3 fixed");
   const std::string json = format_report_json(current, o);
-  EXPECT_NE(json.find("{\"id\": \"door_swing_blocked:d1+w 2\", \"status\": \"new\", \"code\""), std::string::npos)
+  EXPECT_NE(json.find("{\"id\": \"door_swing_blocked:d1+w 2\", \"status\": \"new\", \"code\""),
+            std::string::npos)
       << json;
-  EXPECT_NE(json.find("\"baseline\": {\"file\": \"old.json\", \"new\": 1, \"unchanged\": 0, \"fixed\": [\n"
-                      "      {\"id\": \"wall_overlap:a+b\", \"code\": \"wall_overlap\""),
-            std::string::npos) << json;
+  EXPECT_NE(
+      json.find(
+          "\"baseline\": {\"file\": \"old.json\", \"new\": 1, \"unchanged\": 0, \"fixed\": [\n"
+          "      {\"id\": \"wall_overlap:a+b\", \"code\": \"wall_overlap\""),
+      std::string::npos)
+      << json;
 }
 
 }  // namespace

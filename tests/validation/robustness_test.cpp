@@ -12,9 +12,10 @@ namespace roomcad {
 namespace {
 
 const std::set<Code> kCodes = {
-    Code::invalid_value,   Code::duplicate_id,        Code::unknown_reference,   Code::wall_overlap,
-    Code::opening_outside_wall, Code::opening_overlap, Code::opening_blocked,    Code::out_of_bounds,
-    Code::unknown_field,   Code::door_above_floor,    Code::room_without_door,   Code::room_without_window};
+    Code::invalid_value,    Code::duplicate_id,         Code::unknown_reference,
+    Code::wall_overlap,     Code::opening_outside_wall, Code::opening_overlap,
+    Code::opening_blocked,  Code::out_of_bounds,        Code::unknown_field,
+    Code::door_above_floor, Code::room_without_door,    Code::room_without_window};
 
 TEST(Robustness, RandomPlansAreReportedNotCrashedOn) {
   for (std::uint64_t seed = 1; seed <= 300; ++seed) {

@@ -33,14 +33,16 @@ TEST(Passage, GapBelowTheWidthOnTheOnlyWayIsCaughtAndTheFixWidensIt) {
 TEST(Passage, GapOfExactlyTheWidthIsWideEnough) {
   const RuleSet rules = only({Code::passage_too_narrow});
   EXPECT_TRUE(findings(check(room_with_partition(1.0), rules), Code::passage_too_narrow).empty());
-  EXPECT_EQ(findings(check(room_with_partition(0.999), rules), Code::passage_too_narrow).size(), 1u);
+  EXPECT_EQ(findings(check(room_with_partition(0.999), rules), Code::passage_too_narrow).size(),
+            1u);
 }
 
 TEST(Passage, NarrowPlaceOffTheWayIsNotAPassage) {
   // A niche 0.5 m wide in a corner: narrow, but no way between the doors runs through it.
   Plan plan = room_with_partition(3.0);  // the gap under the partition is 2.8 m
   plan.walls.push_back(make_wall("niche", {5.5, 4}, {5.5, 3}, 0.2));
-  EXPECT_TRUE(findings(check(plan, only({Code::passage_too_narrow})), Code::passage_too_narrow).empty());
+  EXPECT_TRUE(
+      findings(check(plan, only({Code::passage_too_narrow})), Code::passage_too_narrow).empty());
 }
 
 TEST(Passage, ThresholdIsTheRuleSets) {
@@ -69,14 +71,16 @@ TEST(TurningCircle, SmallRoomIsCaughtAndTheFixMovesAWallOut) {
 
 TEST(TurningCircle, RoomExactlyTheDiameterAcrossHoldsTheCircle) {
   const RuleSet rules = only({Code::no_turning_circle});
-  EXPECT_TRUE(findings(check(square_room(1.7), rules), Code::no_turning_circle).empty());  // 1.5 m clear
+  EXPECT_TRUE(
+      findings(check(square_room(1.7), rules), Code::no_turning_circle).empty());  // 1.5 m clear
   EXPECT_EQ(findings(check(square_room(1.699), rules), Code::no_turning_circle).size(), 1u);
 }
 
 TEST(TurningCircle, RoomsWithoutDoorsAndRoomsNotNamedAccessibleAreLeftAlone) {
   Plan plan = square_room(1.6);
   plan.openings.clear();
-  EXPECT_TRUE(findings(check(plan, only({Code::no_turning_circle})), Code::no_turning_circle).empty());
+  EXPECT_TRUE(
+      findings(check(plan, only({Code::no_turning_circle})), Code::no_turning_circle).empty());
   RuleSet rules = only({Code::no_turning_circle});
   rules.accessible_rooms = std::vector<Point2>{{50, 50}};  // in no room
   EXPECT_TRUE(findings(check(square_room(1.6), rules), Code::no_turning_circle).empty());
@@ -107,7 +111,8 @@ TEST(Reachability, RoomWithoutAWayInIsCaughtAndTheFixAddsADoor) {
 TEST(Reachability, RoomsReachedThroughOtherRoomsAreReachable) {
   Plan plan = two_rooms();
   plan.openings.push_back(make_door("between", "re", 1.5));
-  EXPECT_TRUE(findings(check(plan, only({Code::room_unreachable})), Code::room_unreachable).empty());
+  EXPECT_TRUE(
+      findings(check(plan, only({Code::room_unreachable})), Code::room_unreachable).empty());
 }
 
 TEST(Reachability, GapsBetweenWallsAreNotRooms) {
@@ -118,15 +123,18 @@ TEST(Reachability, GapsBetweenWallsAreNotRooms) {
   plan.walls.push_back(make_wall("gw", {5, 0}, {5, -0.35}, 0.2));
   plan.walls.push_back(make_wall("ge", {7, 0}, {7, -0.35}, 0.2));
   ASSERT_EQ(find_rooms(plan).size(), 3u);
-  EXPECT_TRUE(findings(check(plan, only({Code::room_unreachable})), Code::room_unreachable).empty());
+  EXPECT_TRUE(
+      findings(check(plan, only({Code::room_unreachable})), Code::room_unreachable).empty());
 }
 
 TEST(Reachability, RoomsJoinedOnlyToEachOtherAreEachCaughtWithTheirDoors) {
   Plan plan = two_rooms();
   plan.openings.front().wall = "re";  // the west room's door now leads east, not out
-  const std::vector<Diagnostic> found = findings(check(plan, only({Code::room_unreachable})), Code::room_unreachable);
+  const std::vector<Diagnostic> found =
+      findings(check(plan, only({Code::room_unreachable})), Code::room_unreachable);
   ASSERT_EQ(found.size(), 2u);
-  for (const Diagnostic& d : found) EXPECT_NE(d.message.find("joined by doors d"), std::string::npos) << d.message;
+  for (const Diagnostic& d : found)
+    EXPECT_NE(d.message.find("joined by doors d"), std::string::npos) << d.message;
 }
 
 /// A corridor room `length` x 3 m with one door to the outside, in its west wall.

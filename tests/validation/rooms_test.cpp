@@ -60,10 +60,11 @@ TEST(Rooms, OpenPlansHaveNoRoomsAndRoomsInsideRoomsAreSubtracted) {
   open.walls.erase(open.walls.begin() + 1);  // no east wall: only the west room is closed
   EXPECT_EQ(find_rooms(open).size(), 1u);
 
-  Plan nested = plan_with({make_wall("s", {0, 0}, {10, 0}, 0.2), make_wall("e", {10, 0}, {10, 10}, 0.2),
-                           make_wall("n", {10, 10}, {0, 10}, 0.2), make_wall("w", {0, 10}, {0, 0}, 0.2),
-                           make_wall("is", {4, 4}, {6, 4}, 0.2), make_wall("ie", {6, 4}, {6, 6}, 0.2),
-                           make_wall("in", {6, 6}, {4, 6}, 0.2), make_wall("iw", {4, 6}, {4, 4}, 0.2)});
+  Plan nested =
+      plan_with({make_wall("s", {0, 0}, {10, 0}, 0.2), make_wall("e", {10, 0}, {10, 10}, 0.2),
+                 make_wall("n", {10, 10}, {0, 10}, 0.2), make_wall("w", {0, 10}, {0, 0}, 0.2),
+                 make_wall("is", {4, 4}, {6, 4}, 0.2), make_wall("ie", {6, 4}, {6, 6}, 0.2),
+                 make_wall("in", {6, 6}, {4, 6}, 0.2), make_wall("iw", {4, 6}, {4, 4}, 0.2)});
   const std::vector<Room> rooms = find_rooms(nested);
   ASSERT_EQ(rooms.size(), 2u);
   EXPECT_NEAR(rooms[0].area, 9.8 * 9.8 - 2 * 2, 1e-9);  // centre-line area of the inner room
@@ -72,16 +73,18 @@ TEST(Rooms, OpenPlansHaveNoRoomsAndRoomsInsideRoomsAreSubtracted) {
 
 TEST(Rooms, CrossingWallsAndToleranceJoinsUseTheExactArrangement) {
   // Two walls crossing in an X inside a square (the crossing is no wall end): four rooms.
-  Plan cross = plan_with({make_wall("s", {0, 0}, {8, 0}, 0.2), make_wall("e", {8, 0}, {8, 8}, 0.2),
-                          make_wall("n", {8, 8}, {0, 8}, 0.2), make_wall("w", {0, 8}, {0, 0}, 0.2),
-                          make_wall("h", {0, 4}, {8, 4}, 0.2), make_wall("v", {4, 0}, {4, 8}, 0.2)});
+  Plan cross =
+      plan_with({make_wall("s", {0, 0}, {8, 0}, 0.2), make_wall("e", {8, 0}, {8, 8}, 0.2),
+                 make_wall("n", {8, 8}, {0, 8}, 0.2), make_wall("w", {0, 8}, {0, 0}, 0.2),
+                 make_wall("h", {0, 4}, {8, 4}, 0.2), make_wall("v", {4, 0}, {4, 8}, 0.2)});
   std::vector<Room> rooms = find_rooms(cross);
   ASSERT_EQ(rooms.size(), 4u);
   for (const Room& r : rooms) EXPECT_NEAR(r.area, 3.8 * 3.8, 1e-9);
   EXPECT_EQ(rooms[0].walls, (Ids{"h", "s", "v", "w"}));
   // A corner whose ends are 0.5 um apart (within the tolerance) still closes its room.
-  Plan gap = plan_with({make_wall("s", {0, 0}, {4, 0}, 0.2), make_wall("e", {4, 0}, {4, 4}, 0.2),
-                        make_wall("n", {4, 4}, {0, 4}, 0.2), make_wall("w", {0, 4}, {0, 0.5e-6}, 0.2)});
+  Plan gap =
+      plan_with({make_wall("s", {0, 0}, {4, 0}, 0.2), make_wall("e", {4, 0}, {4, 4}, 0.2),
+                 make_wall("n", {4, 4}, {0, 4}, 0.2), make_wall("w", {0, 4}, {0, 0.5e-6}, 0.2)});
   rooms = find_rooms(gap);
   ASSERT_EQ(rooms.size(), 1u);
   EXPECT_NEAR(rooms[0].area, 3.8 * 3.8, 1e-5);
@@ -91,14 +94,16 @@ TEST(Rooms, TwoBoundaryVerticesThatRoundToOneDoubleLeaveAFiniteOutline) {
   // From 4-BedroomHouse: "e2" starts at the double nearest to where the sloping north wall
   // crosses x = 13.455; the exact crossing and that double are two vertices of the room's
   // boundary, and the edge between them has no length in doubles.
-  const Plan plan = plan_with({make_wall("n", {11.252909, 0.054999795}, {13.588015, 0.055}, 0.26),
-                               make_wall("e1", {13.455, 0.055}, {13.455, -4.661}, 0.26),
-                               make_wall("e2", {13.455, 0.054999988322553664}, {13.455, -4.661}, 0.26),
-                               make_wall("s", {13.455, -4.661}, {11.252909, -4.661}, 0.26),
-                               make_wall("w", {11.252909, -4.661}, {11.252909, 0.054999795}, 0.26)});
+  const Plan plan =
+      plan_with({make_wall("n", {11.252909, 0.054999795}, {13.588015, 0.055}, 0.26),
+                 make_wall("e1", {13.455, 0.055}, {13.455, -4.661}, 0.26),
+                 make_wall("e2", {13.455, 0.054999988322553664}, {13.455, -4.661}, 0.26),
+                 make_wall("s", {13.455, -4.661}, {11.252909, -4.661}, 0.26),
+                 make_wall("w", {11.252909, -4.661}, {11.252909, 0.054999795}, 0.26)});
   const std::vector<Room> rooms = find_rooms(plan);
   ASSERT_EQ(rooms.size(), 1u);
-  for (const Point2& c : rooms[0].outline) EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y)) << c.x << ", " << c.y;
+  for (const Point2& c : rooms[0].outline)
+    EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y)) << c.x << ", " << c.y;
   EXPECT_NEAR(rooms[0].area, (13.455 - 11.252909 - 0.26) * (0.055 + 4.661 - 0.26), 1e-6);
 }
 
@@ -107,9 +112,10 @@ TEST(Rooms, SidesNearlyInLineMeetByAStepNotAKilometreAway) {
   // thousandth of a degree: their inner faces, 5 cm apart and nearly parallel, would meet
   // 3 km away (how walls drawn over each other gave rooms of 400,000 m2). They meet by a
   // step, and the clear floor stays inside the walls.
-  const Plan plan = plan_with({make_wall("s1", {0, 0}, {2, 0}, 0.2), make_wall("s2", {2, 0}, {4, 0.00004}, 0.1),
-                               make_wall("e", {4, 0.00004}, {4, 3}, 0.2), make_wall("n", {4, 3}, {0, 3}, 0.2),
-                               make_wall("w", {0, 3}, {0, 0}, 0.2)});
+  const Plan plan =
+      plan_with({make_wall("s1", {0, 0}, {2, 0}, 0.2), make_wall("s2", {2, 0}, {4, 0.00004}, 0.1),
+                 make_wall("e", {4, 0.00004}, {4, 3}, 0.2), make_wall("n", {4, 3}, {0, 3}, 0.2),
+                 make_wall("w", {0, 3}, {0, 0}, 0.2)});
   const std::vector<Room> rooms = find_rooms(plan);
   ASSERT_EQ(rooms.size(), 1u);
   for (const Point2& c : rooms[0].outline) {
@@ -118,18 +124,21 @@ TEST(Rooms, SidesNearlyInLineMeetByAStepNotAKilometreAway) {
     EXPECT_GE(c.y, 0.05 - 1e-9);
     EXPECT_LE(c.y, 2.9 + 1e-9);
   }
-  EXPECT_NEAR(rooms[0].area, 1.9 * 2.8 + 1.9 * 2.85, 1e-3);  // west half 10 cm off the centre line, east 5
+  EXPECT_NEAR(rooms[0].area, 1.9 * 2.8 + 1.9 * 2.85,
+              1e-3);  // west half 10 cm off the centre line, east 5
 }
 
 TEST(Rooms, ASliverBetweenWallsAHairApartHasNoClearFloor) {
   // Two walls 15 cm thick drawn 1 um apart and slightly askew (arif-home): the sliver between
   // their centre lines is a closed region thinner than its walls.
-  const Plan plan = plan_with({make_wall("a", {0, 0}, {5, 0}, 0.15), make_wall("b", {0, 0}, {5, 0.000001}, 0.15),
-                               make_wall("c", {5, 0}, {5, 0.000001}, 0.15)});
+  const Plan plan =
+      plan_with({make_wall("a", {0, 0}, {5, 0}, 0.15), make_wall("b", {0, 0}, {5, 0.000001}, 0.15),
+                 make_wall("c", {5, 0}, {5, 0.000001}, 0.15)});
   const std::vector<Room> rooms = find_rooms(plan);
   for (const Room& r : rooms) {
     EXPECT_LT(r.area, 0.01);
-    for (const Point2& c : r.outline) EXPECT_LT(std::hypot(c.x - 2.5, c.y), 3.0) << c.x << ", " << c.y;
+    for (const Point2& c : r.outline)
+      EXPECT_LT(std::hypot(c.x - 2.5, c.y), 3.0) << c.x << ", " << c.y;
   }
 }
 
@@ -139,7 +148,8 @@ TEST(Openings, OutsideWallMessageSaysHowFarAndHowToFix) {
   const Report r = validate(p, no_rooms());
   ASSERT_EQ(error_codes(r), Codes{Code::opening_outside_wall});
   EXPECT_NE(r.items[0].message.find("window 'w2' ends 0.15 m past the end of wall 's'"),
-            std::string::npos) << r.items[0].message;
+            std::string::npos)
+      << r.items[0].message;
   EXPECT_EQ(r.items[0].fix, "move it 0.15 m toward the start, or make it 1.05 m wide");
 }
 
@@ -149,7 +159,8 @@ TEST(Openings, BlockedDoorFixOffersClearOffsets) {
   const Report r = validate(p, no_rooms());
   ASSERT_EQ(error_codes(r), Codes{Code::opening_blocked});
   EXPECT_EQ(r.items[0].objects, (Ids{"d", "a", "b"}));
-  EXPECT_EQ(r.items[0].fix, "move d along a clear of b: offset 0.97 (before it) or offset 2.13 (after it)");
+  EXPECT_EQ(r.items[0].fix,
+            "move d along a clear of b: offset 0.97 (before it) or offset 2.13 (after it)");
 }
 
 TEST(Openings, OverlapAndNoOverlapAcrossDifferentHeights) {

@@ -50,7 +50,8 @@ inline std::string identity(const Diagnostic& d) {
 inline bool still_there(const Report& report, const Diagnostic& d) {
   const std::vector<std::string> ids = item_ids(report);
   const std::string id = identity(d);
-  return std::any_of(ids.begin(), ids.end(), [&](const std::string& x) { return x.substr(0, x.find('#')) == id; });
+  return std::any_of(ids.begin(), ids.end(),
+                     [&](const std::string& x) { return x.substr(0, x.find('#')) == id; });
 }
 
 /// Applies the finding's edits to a copy of the plan and checks the fix: the finding is gone
@@ -60,20 +61,23 @@ inline bool still_there(const Report& report, const Diagnostic& d) {
 inline Plan expect_fix_clears(const Plan& plan, const RuleSet& rules, const Diagnostic& finding,
                               const Report* before = nullptr) {
   Plan fixed = plan;
-  EXPECT_FALSE(finding.edits.empty()) << "no edits for: " << finding.message << " (fix: " << finding.fix << ")";
+  EXPECT_FALSE(finding.edits.empty())
+      << "no edits for: " << finding.message << " (fix: " << finding.fix << ")";
   EXPECT_NO_THROW(apply_fix_edits(fixed, finding.edits)) << finding.fix;
   const Report after = check(fixed, rules);
-  EXPECT_FALSE(still_there(after, finding)) << "still there after '" << finding.fix << "': " << finding.message;
+  EXPECT_FALSE(still_there(after, finding))
+      << "still there after '" << finding.fix << "': " << finding.message;
   const Report fresh = introduced_errors(before ? *before : check(plan, rules), after);
-  EXPECT_TRUE(fresh.items.empty()) << "the fix '" << finding.fix << "' brought " << to_string(fresh.items.front().code)
-                                   << ": " << fresh.items.front().message;
+  EXPECT_TRUE(fresh.items.empty())
+      << "the fix '" << finding.fix << "' brought " << to_string(fresh.items.front().code) << ": "
+      << fresh.items.front().message;
   return fixed;
 }
 
 /// Four walls on the rectangle [x0, x1] x [y0, y1] (centre lines), counter-clockwise from the
 /// south wall: ids prefix + "s", "e", "n", "w".
-inline void add_box(Plan& plan, const std::string& prefix, double x0, double y0, double x1, double y1,
-                    double thickness = 0.2) {
+inline void add_box(Plan& plan, const std::string& prefix, double x0, double y0, double x1,
+                    double y1, double thickness = 0.2) {
   plan.walls.push_back(make_wall(prefix + "s", {x0, y0}, {x1, y0}, thickness));
   plan.walls.push_back(make_wall(prefix + "e", {x1, y0}, {x1, y1}, thickness));
   plan.walls.push_back(make_wall(prefix + "n", {x1, y1}, {x0, y1}, thickness));
@@ -83,7 +87,8 @@ inline void add_box(Plan& plan, const std::string& prefix, double x0, double y0,
 /// A door of `wall` at `offset`, `width` wide, with its leaf as given.
 inline Opening make_door(std::string id, std::string wall, double offset, double width = 0.9,
                          Hinge hinge = Hinge::left, Swing swing = Swing::in) {
-  Opening o = make_opening(std::move(id), OpeningType::door, std::move(wall), offset, width, 2.1, 0.0);
+  Opening o =
+      make_opening(std::move(id), OpeningType::door, std::move(wall), offset, width, 2.1, 0.0);
   o.hinge = hinge;
   o.swing = swing;
   return o;

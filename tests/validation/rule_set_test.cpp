@@ -44,7 +44,8 @@ TEST(RuleSetFile, EnablesRulesSetsThresholdsSeveritiesAndRooms) {
       "escape_too_far": true
     },
     "accessible_rooms": [[2, 3], [7.5, 1]]
-  })", "r.json");
+  })",
+                                           "r.json");
   ASSERT_TRUE(r) << r.error().message;
   const RuleSet& s = r.value();
   EXPECT_TRUE(s.is_enabled(Code::door_clearance));
@@ -69,13 +70,21 @@ TEST(RuleSetFile, EveryBadFileIsAUsageErrorNamingTheField) {
       {R"({"rulez": {}})", "/rulez: unknown field \"rulez\" (did you mean \"rules\"?)"},
       {R"({"format": "roomcad-plan"})", "/format: expected \"roomcad-rules\""},
       {R"({"base": "most"})", "/base: unknown rule set \"most\""},
-      {R"({"rules": {"door_swing_blokced": true}})", "/rules/door_swing_blokced: unknown rule \"door_swing_blokced\" (did you mean \"door_swing_blocked\"?)"},
-      {R"({"rules": {"wall_overlap": true}})", "/rules/wall_overlap: unknown rule \"wall_overlap\" (known: door_swing_blocked, "},
-      {R"({"rules": {"door_too_narrow": {"min_width": -1}}})", "/rules/door_too_narrow/min_width: expected a positive number"},
-      {R"({"rules": {"door_too_narrow": {"min_width": "0.8"}}})", "/rules/door_too_narrow/min_width: expected a positive number"},
-      {R"({"rules": {"door_too_narrow": {"depth": 1}}})", "/rules/door_too_narrow/depth: unknown setting of door_too_narrow"},
-      {R"({"rules": {"door_clearance": {"severity": "fatal"}}})", "/rules/door_clearance/severity: expected \"warning\" or \"error\""},
-      {R"({"rules": {"door_clearance": 1}})", "/rules/door_clearance: expected true, false or an object"},
+      {R"({"rules": {"door_swing_blokced": true}})",
+       "/rules/door_swing_blokced: unknown rule \"door_swing_blokced\" (did you mean "
+       "\"door_swing_blocked\"?)"},
+      {R"({"rules": {"wall_overlap": true}})",
+       "/rules/wall_overlap: unknown rule \"wall_overlap\" (known: door_swing_blocked, "},
+      {R"({"rules": {"door_too_narrow": {"min_width": -1}}})",
+       "/rules/door_too_narrow/min_width: expected a positive number"},
+      {R"({"rules": {"door_too_narrow": {"min_width": "0.8"}}})",
+       "/rules/door_too_narrow/min_width: expected a positive number"},
+      {R"({"rules": {"door_too_narrow": {"depth": 1}}})",
+       "/rules/door_too_narrow/depth: unknown setting of door_too_narrow"},
+      {R"({"rules": {"door_clearance": {"severity": "fatal"}}})",
+       "/rules/door_clearance/severity: expected \"warning\" or \"error\""},
+      {R"({"rules": {"door_clearance": 1}})",
+       "/rules/door_clearance: expected true, false or an object"},
       {R"({"accessible_rooms": [[1, 2], [3]]})", "/accessible_rooms/1: expected a point [x, y]"},
   };
   for (const auto& [text, expected] : cases) {
@@ -101,7 +110,8 @@ TEST(RuleSetFile, AccessibleRoomOutsideEveryRoomIsRefused) {
   ASSERT_FALSE(s);
   EXPECT_EQ(s.error().code, Code::usage_error);
   EXPECT_NE(s.error().message.find("r.json: /accessible_rooms/1: the point [9, 9] lies in no room"),
-            std::string::npos) << s.error().message;
+            std::string::npos)
+      << s.error().message;
 }
 
 }  // namespace

@@ -56,12 +56,26 @@ TEST(Values, EachBadNumberIsOneInvalidValueAndSilencesGeometry) {
       {"negative max height", [](Plan& p) { p.site.max_height = -6; }},
       {"zero tolerance", [](Plan& p) { p.site.tolerance = 0; }},
       {"NaN origin", [&](Plan& p) { p.site.origin.y = nan; }},
-      {"ambient above 1", [](Plan& p) { p.lights.push_back(light("l")); p.lights[0].ambient = 1.5; }},
+      {"ambient above 1",
+       [](Plan& p) {
+         p.lights.push_back(light("l"));
+         p.lights[0].ambient = 1.5;
+       }},
       {"zero light direction",
-       [](Plan& p) { p.lights.push_back(light("l")); p.lights[0].direction = {0, 0, 0}; }},
+       [](Plan& p) {
+         p.lights.push_back(light("l"));
+         p.lights[0].direction = {0, 0, 0};
+       }},
       {"camera eye at target",
-       [](Plan& p) { p.cameras.push_back(camera("c")); p.cameras[0].target = p.cameras[0].eye; }},
-      {"zero fov", [](Plan& p) { p.cameras.push_back(camera("c")); p.cameras[0].fov_deg = 0; }},
+       [](Plan& p) {
+         p.cameras.push_back(camera("c"));
+         p.cameras[0].target = p.cameras[0].eye;
+       }},
+      {"zero fov",
+       [](Plan& p) {
+         p.cameras.push_back(camera("c"));
+         p.cameras[0].fov_deg = 0;
+       }},
       {"NaN view height",
        [&](Plan& p) {
          p.cameras.push_back(camera("c"));
@@ -94,12 +108,13 @@ TEST(Values, MessageNamesObjectFieldAndValue) {
 
 TEST(Values, DuplicateIdsAcrossAllKindsOfObject) {
   Plan p = good_plan();
-  p.openings[0].id = "b";  // same as a wall
+  p.openings[0].id = "b";            // same as a wall
   p.cameras.push_back(camera("a"));  // same as the other wall
   const Report r = validate(p, no_rooms());
   EXPECT_EQ(error_codes(r), (Codes{Code::duplicate_id, Code::duplicate_id}));
   EXPECT_EQ(r.items[0].objects, Ids{"a"});
-  EXPECT_NE(r.items[0].message.find("walls[0], cameras[0]"), std::string::npos) << r.items[0].message;
+  EXPECT_NE(r.items[0].message.find("walls[0], cameras[0]"), std::string::npos)
+      << r.items[0].message;
 }
 
 TEST(Values, UnknownReferenceIsReportedAndNotCheckedFurther) {
@@ -121,13 +136,14 @@ TEST(Values, OpeningOnABadWallIsNotCheckedFurther) {
 TEST(Values, AllProblemsComeInOneRun) {
   Plan p = good_plan();
   p.walls[0].thickness = 0;
-  p.openings.push_back(make_opening("x", OpeningType::window, "b", 2.5, 1, 1, 0.9));  // past b's end
+  p.openings.push_back(
+      make_opening("x", OpeningType::window, "b", 2.5, 1, 1, 0.9));  // past b's end
   p.walls.push_back(make_wall("c", {1, 1}, {3, 1}));
   p.walls.push_back(make_wall("c2", {1, 1.1}, {3, 1.1}));  // overlaps c
-  p.lights.push_back(light("x"));                         // duplicate of the window
+  p.lights.push_back(light("x"));                          // duplicate of the window
   const Report r = validate(p, no_rooms());
-  EXPECT_EQ(error_codes(r),
-            (Codes{Code::invalid_value, Code::duplicate_id, Code::wall_overlap, Code::opening_outside_wall}));
+  EXPECT_EQ(error_codes(r), (Codes{Code::invalid_value, Code::duplicate_id, Code::wall_overlap,
+                                   Code::opening_outside_wall}));
 }
 
 TEST(Values, WarningsForUnknownFieldsAndRaisedDoors) {

@@ -13,7 +13,8 @@ Plan storey() {
   Plan p = plan_with({make_wall("a", {0, 0}, {4, 0})});
   p.levels.push_back(Level{.id = "up", .elevation = 3.0, .height = 2.6});
   p.walls[0].level = "up";
-  p.slabs.push_back(Slab{.id = "floor", .level = "up", .outline = {{0, 0}, {4, 0}, {4, 3}, {0, 3}}});
+  p.slabs.push_back(
+      Slab{.id = "floor", .level = "up", .outline = {{0, 0}, {4, 0}, {4, 3}, {0, 3}}});
   return p;
 }
 
@@ -22,12 +23,16 @@ TEST(ValuesVersion2, EachBadNewValueIsOneInvalidValue) {
       {"zero arc extent", [](Plan& p) { p.walls[0].arc_extent = 0.0; }},
       {"full turn", [](Plan& p) { p.walls[0].arc_extent = -360.0; }},
       {"negative height at end", [](Plan& p) { p.walls[0].height_at_end = -1.0; }},
-      {"two-corner shape", [](Plan& p) {
+      {"two-corner shape",
+       [](Plan& p) {
          p.openings.push_back(make_opening("o", OpeningType::window, "a", 1, 1, 1, 1));
          p.openings[0].shape = {{0, 0}, {1, 1}};
        }},
       {"slab of two corners", [](Plan& p) { p.slabs[0].outline.resize(2); }},
-      {"hole with a NaN", [](Plan& p) { p.slabs[0].holes = {{{1, 1}, {2, 1}, {2, NAN}}}; }},
+      {"hole with a NaN",
+       [](Plan& p) {
+         p.slabs[0].holes = {{{1, 1}, {2, 1}, {2, NAN}}};
+       }},
       {"zero slab thickness", [](Plan& p) { p.slabs[0].thickness = 0; }},
       {"zero level height", [](Plan& p) { p.levels[0].height = 0; }},
       {"NaN elevation", [](Plan& p) { p.levels[0].elevation = NAN; }},

@@ -25,8 +25,11 @@ Wall on(std::string level, Wall w) {
 
 Slab slab(std::string id, std::string level, Polygon outline, double top = 0,
           double thickness = 0.2) {
-  return Slab{.id = std::move(id), .level = std::move(level), .outline = std::move(outline),
-              .top = top, .thickness = thickness};
+  return Slab{.id = std::move(id),
+              .level = std::move(level),
+              .outline = std::move(outline),
+              .top = top,
+              .thickness = thickness};
 }
 
 Polygon square(double x0, double y0, double x1, double y1) {
@@ -71,7 +74,7 @@ TEST(Version2Checks, ShapedOpeningsOverlapByTheirOutlinesNotTheirRectangles) {
   // Two triangles in overlapping rectangles, apart along the diagonal: no overlap.
   p.openings = {make_opening("t1", OpeningType::window, "a", 1, 1, 1, 1),
                 make_opening("t2", OpeningType::window, "a", 1.5, 1, 1, 1)};
-  p.openings[0].shape = {{0, 0}, {1, 0}, {0, 1}};  // lower left half
+  p.openings[0].shape = {{0, 0}, {1, 0}, {0, 1}};      // lower left half
   p.openings[1].shape = {{0.5, 1}, {0, 1}, {0, 0.5}};  // the corner at its top left
   EXPECT_TRUE(validate(p, no_rooms()).ok());
   // They touch along x + y = 1.5 when the second's corner grows to the diagonal: still none.
@@ -109,7 +112,8 @@ TEST(Version2Checks, SlabsOverlapWhenTheirAreasAndBandsDo) {
   p.slabs[1].top = 0.2;
   EXPECT_TRUE(validate(p, no_rooms()).ok());
   // A landing inside the stair well of the other: no overlap; grown past the well's edge: one.
-  p.slabs = {slab("floor", "first", square(0, 0, 8, 8)), slab("landing", "first", square(2, 2, 3, 3))};
+  p.slabs = {slab("floor", "first", square(0, 0, 8, 8)),
+             slab("landing", "first", square(2, 2, 3, 3))};
   p.slabs[0].holes = {square(2, 2, 4, 4)};
   EXPECT_TRUE(validate(p, no_rooms()).ok());
   p.slabs[1].outline = square(2, 2, 4.001, 3);

@@ -24,7 +24,8 @@ TEST(Walls, JoinedWallsDoNotOverlapInEveryFrame) {
                                make_wall("c", {0, 0}, {-2, -2})})},
       {"T within tolerance",
        plan_with({make_wall("a", {0, 0}, {4, 0}), make_wall("b", {2, 0.5e-6}, {2, 3})})},
-      {"straight continuation", plan_with({make_wall("a", {0, 0}, {2, 0}), make_wall("b", {2, 0}, {5, 0})})},
+      {"straight continuation",
+       plan_with({make_wall("a", {0, 0}, {2, 0}), make_wall("b", {2, 0}, {5, 0})})},
   };
   for (const auto& [name, plan] : joined)
     for (const Frame& f : all_frames()) {
@@ -59,7 +60,8 @@ TEST(Walls, StoreysStackedOnOneCentreLineDoNotOverlap) {
   EXPECT_FALSE(find_joins(p).are_joined(0, 1));
   EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});
   upper.base = lower.height - 0.1;  // 0.1 m of the two storeys' walls now share a volume
-  EXPECT_EQ(error_codes(validate(plan_with({lower, upper}), no_rooms())), Codes{Code::wall_overlap});
+  EXPECT_EQ(error_codes(validate(plan_with({lower, upper}), no_rooms())),
+            Codes{Code::wall_overlap});
 }
 
 TEST(Walls, OverlapMessageGivesTheDepthAndAFix) {
@@ -120,7 +122,8 @@ TEST(Bounds, MitredCornerCountsAndHeightIsExact) {
   p.site.origin = {0.875, 0.875};
   EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{});
   p.site.origin = {0.875 + 1e-6, 0};
-  EXPECT_EQ(error_codes(validate(p, no_rooms())), (Codes{Code::out_of_bounds, Code::out_of_bounds}));
+  EXPECT_EQ(error_codes(validate(p, no_rooms())),
+            (Codes{Code::out_of_bounds, Code::out_of_bounds}));
 
   Plan tall = on_site(make_wall("a", {1, 1}, {4, 1}));
   tall.walls[0].base = 0.1;
@@ -140,7 +143,8 @@ TEST(Walls, OnLevelsStandingOnOneAnotherNeitherJoinNorOverlap) {
   // IFC models (duplex.ifc) and storeys drawn one over the other have them; the upper wall's
   // window at the foot of the upper wall. Judged with the levels resolved, they only touch.
   Plan p = plan_with({make_wall("foundation", {1, 1}, {9, 1}), make_wall("wall", {1, 1}, {9, 1})});
-  p.levels = {{.id = "base", .elevation = 0.0, .height = 1.25}, {.id = "ground", .elevation = 1.25, .height = 2.8}};
+  p.levels = {{.id = "base", .elevation = 0.0, .height = 1.25},
+              {.id = "ground", .elevation = 1.25, .height = 2.8}};
   p.walls[0].level = "base", p.walls[0].height = 1.25;
   p.walls[1].level = "ground", p.walls[1].height = 2.8;
   p.site.max_height = 6.0;

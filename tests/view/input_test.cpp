@@ -9,7 +9,8 @@ namespace roomcad {
 namespace {
 
 TEST(KeyScript, ParsesKeysModifiersAndPointerInputs) {
-  const auto events = parse_key_script("1,ctrl+s,shift+x,ctrl+shift+z,click:640:360,drag:-40:5,pan:3:4,wheel:-2");
+  const auto events =
+      parse_key_script("1,ctrl+s,shift+x,ctrl+shift+z,click:640:360,drag:-40:5,pan:3:4,wheel:-2");
   ASSERT_TRUE(events.ok()) << events.error();
   const std::vector<InputEvent>& e = events.value();
   ASSERT_EQ(e.size(), 8u);

@@ -139,7 +139,7 @@ TEST_F(ViewSessionConflict, KeepSavesTheWindowsVersionOverTheFile) {
   EXPECT_EQ(on_disk(), our_plan());
   EXPECT_FALSE(s.in_conflict());
   EXPECT_FALSE(s.is_modified());
-  EXPECT_FALSE(test::reloaded(s));    // its own save is no change
+  EXPECT_FALSE(test::reloaded(s));        // its own save is no change
   EXPECT_FALSE(s.keep_window_version());  // no conflict: nothing to keep
   EXPECT_NE(s.message().find("nothing to keep"), std::string::npos) << s.message();
 }

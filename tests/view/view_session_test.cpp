@@ -31,7 +31,9 @@ Plan corner_plan() {
 struct SessionFile {
   test::TempDir dir;
   std::filesystem::path path = dir / "plan.json";
-  explicit SessionFile(const Plan& plan) { EXPECT_TRUE(test::write_bytes(path, write_plan_text(plan))); }
+  explicit SessionFile(const Plan& plan) {
+    EXPECT_TRUE(test::write_bytes(path, write_plan_text(plan)));
+  }
   ViewSession open() const {
     Result<ViewSession> s = ViewSession::open(path);
     EXPECT_TRUE(s.ok()) << s.error();
@@ -102,7 +104,8 @@ TEST(ViewSession, SavesOnlyAValidPlanAndMarksErrors) {
   ViewSession s = file.open();
   const std::string before = test::read_bytes(file.path);
   s.select("b");
-  ASSERT_TRUE(s.move_selection(-20, 0));  // onto wall a's far end and past: overlaps or leaves the site
+  ASSERT_TRUE(
+      s.move_selection(-20, 0));  // onto wall a's far end and past: overlaps or leaves the site
   ASSERT_FALSE(s.report().ok());
   EXPECT_NE(s.message().find("introduces"), std::string::npos) << s.message();
   EXPECT_FALSE(s.error_objects().empty());

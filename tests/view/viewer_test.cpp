@@ -28,8 +28,10 @@ Viewer open_viewer(const std::filesystem::path& path, bool overlay = false) {
 RgbImage rendered(const std::filesystem::path& path, RenderOptions o) {
   const Plan plan = read_plan_file(path).value();
   o.width = kWidth, o.height = kHeight, o.lights = plan.lights;
-  o.grid = GridLines{.enabled = true, .origin = {plan.site.origin.x, plan.site.origin.y},
-                     .cell_size = plan.site.cell_size, .cells = plan.site.cells};
+  o.grid = GridLines{.enabled = true,
+                     .origin = {plan.site.origin.x, plan.site.origin.y},
+                     .cell_size = plan.site.cell_size,
+                     .cells = plan.site.cells};
   FrameBuffers out;
   render_model(build_model(plan), o, out);
   return out.color;
@@ -89,7 +91,8 @@ TEST(Viewer, ClickSelectsWhatThePixelShowsAndTintsIt) {
   int x = -1, y = -1;
   for (int py = 0; py < kHeight && x < 0; ++py)
     for (int px = 0; px < kWidth && x < 0; ++px)
-      if (ids.objects.at(px, py) >= 0 && model.objects[ids.objects.at(px, py)] == "east") x = px, y = py;
+      if (ids.objects.at(px, py) >= 0 && model.objects[ids.objects.at(px, py)] == "east")
+        x = px, y = py;
   ASSERT_GE(x, 0) << "the east wall is in the top view";
   InputEvent click;
   click.type = InputEvent::Type::click, click.x = x, click.y = y;
@@ -196,8 +199,9 @@ TEST(Viewer, LevelKeyShowsEachLevelAloneThenAll) {
   // Starting on a level (`roomcad view --level first`) shows it alone, framed.
   Result<ViewSession> s = ViewSession::open(path);
   ASSERT_TRUE(s.ok());
-  Viewer started(std::move(s).value(),
-                 ViewerOptions{.width = kWidth, .height = kHeight, .overlay = false, .level = "first"});
+  Viewer started(
+      std::move(s).value(),
+      ViewerOptions{.width = kWidth, .height = kHeight, .overlay = false, .level = "first"});
   EXPECT_NE(started.frame().pixels, all);
   started.handle(key("l"));  // after the last level: all of them
   EXPECT_NE(started.frame().pixels, first);
@@ -217,7 +221,7 @@ TEST(Viewer, AConflictIsShownEvenWithTheOverlayOff) {
   ASSERT_TRUE(write_plan_file(plan, path).ok());  // another editor saves
   EXPECT_TRUE(v.poll_file());
   ASSERT_TRUE(v.session().in_conflict());
-  EXPECT_NE(v.frame().pixels, edited);  // the same model, with the conflict's text on it
+  EXPECT_NE(v.frame().pixels, edited);    // the same model, with the conflict's text on it
   EXPECT_TRUE(v.handle(key("k", true)));  // Ctrl+K: keep the window's version
   EXPECT_FALSE(v.session().in_conflict());
   EXPECT_EQ(v.frame().pixels, edited);

@@ -16,10 +16,10 @@ namespace roomcad::detail {
 /// Which objects passed the value and reference checks. Geometry checks look only at these,
 /// so one mistake gives one error.
 struct Usable {
-  bool site = false;                            ///< origin, cells, cell_size, max_height finite/positive
-  std::vector<bool> walls;                      ///< by index into Plan::walls
-  std::vector<std::optional<std::size_t>> host; ///< by opening: its host wall, if both are usable
-  std::vector<bool> slabs;                      ///< by index into Plan::slabs
+  bool site = false;        ///< origin, cells, cell_size, max_height finite/positive
+  std::vector<bool> walls;  ///< by index into Plan::walls
+  std::vector<std::optional<std::size_t>> host;  ///< by opening: its host wall, if both are usable
+  std::vector<bool> slabs;                       ///< by index into Plan::slabs
 };
 
 /// invalid_value for every number, size and direction of the plan (no geometry).

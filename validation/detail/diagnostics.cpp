@@ -36,9 +36,8 @@ Where box_where(double min_x, double min_y, double max_x, double max_y) {
   return Where{{min_x, min_y}, Point2{max_x, max_y}};
 }
 
-Diagnostic make_diagnostic(Severity severity, Code code,
-                           std::vector<std::string> objects, std::string message, std::string fix,
-                           std::optional<Where> where) {
+Diagnostic make_diagnostic(Severity severity, Code code, std::vector<std::string> objects,
+                           std::string message, std::string fix, std::optional<Where> where) {
   Diagnostic d;
   d.severity = severity;
   d.code = code;

@@ -35,8 +35,8 @@ template <class Object>
 void check_level_references(const Plan& plan, const std::vector<Object>& objects,
                             std::string_view kind, Report& report) {
   for (const Object& o : objects) {
-    if (o.level.empty() ||
-        std::any_of(plan.levels.begin(), plan.levels.end(), [&](const Level& l) { return l.id == o.level; }))
+    if (o.level.empty() || std::any_of(plan.levels.begin(), plan.levels.end(),
+                                       [&](const Level& l) { return l.id == o.level; }))
       continue;
     report.add(make_diagnostic(
         Severity::error, Code::unknown_reference, {o.id},
@@ -98,10 +98,9 @@ void check_ids(const Plan& plan, Usable& usable, Report& report) {
       report.add(make_diagnostic(
           Severity::error, Code::unknown_reference, {o.id},
           fmt::format("{} names wall '{}', which is not in the plan.", name_of(o), o.wall),
-          plan.walls.empty()
-              ? std::string("add the wall it belongs to, or delete the opening")
-              : fmt::format("set its wall to the id of an existing wall, e.g. '{}'",
-                            plan.walls.front().id)));
+          plan.walls.empty() ? std::string("add the wall it belongs to, or delete the opening")
+                             : fmt::format("set its wall to the id of an existing wall, e.g. '{}'",
+                                           plan.walls.front().id)));
       continue;
     }
     if (usable.host[i] && usable.walls[found]) usable.host[i] = found;

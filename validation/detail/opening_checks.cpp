@@ -11,11 +11,11 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "validation/detail/checks.h"
-#include "validation/detail/diagnostics.h"
+#include "geometry/polygon_predicates.h"
 #include "plan/arc_chords.h"
 #include "plan/plan_chords.h"
-#include "geometry/polygon_predicates.h"
+#include "validation/detail/checks.h"
+#include "validation/detail/diagnostics.h"
 #include "validation/detail/resolved_plan.h"
 #include "validation/detail/shapes.h"
 
@@ -142,13 +142,13 @@ std::vector<Misfit> find_misfits(const Host& h, const Opening& o) {
   }
   if (!top_in) {
     const double over = height_over_top(h, o);
-    const std::string top = w.height_at_end
-        ? fmt::format("{} to {} high, sloped", metres(w.height), metres(*w.height_at_end))
-        : fmt::format("{} high", metres(w.height));
-    out.push_back({fmt::format("reaches {} above the top of {} ({})", metres(over),
-                               name_of(w), top),
-                   fmt::format("make it {} high or lower its sill by that much",
-                               metres_at_most(o.height - over))});
+    const std::string top = w.height_at_end ? fmt::format("{} to {} high, sloped", metres(w.height),
+                                                          metres(*w.height_at_end))
+                                            : fmt::format("{} high", metres(w.height));
+    out.push_back(
+        {fmt::format("reaches {} above the top of {} ({})", metres(over), name_of(w), top),
+         fmt::format("make it {} high or lower its sill by that much",
+                     metres_at_most(o.height - over))});
   }
   return out;
 }
@@ -170,22 +170,24 @@ bool openings_overlap(const Opening& a, const Opening& b) {
   if (!a.shape.empty() || !b.shape.empty()) return outlines_overlap(a, b);
   return exact::decide([&](auto tag) {
     using NT = decltype(tag);
-    return static_cast<bool>(spans_overlap(NT(a.offset), NT(a.offset) + NT(a.width),
-                                           NT(b.offset), NT(b.offset) + NT(b.width))) &&
+    return static_cast<bool>(spans_overlap(NT(a.offset), NT(a.offset) + NT(a.width), NT(b.offset),
+                                           NT(b.offset) + NT(b.width))) &&
            static_cast<bool>(spans_overlap(NT(a.sill), NT(a.sill) + NT(a.height), NT(b.sill),
                                            NT(b.sill) + NT(b.height)));
   });
 }
 
 void report_opening_overlap(const Wall& w, const Opening& a, const Opening& b, Report& report) {
-  const double shared = std::min(a.offset + a.width, b.offset + b.width) - std::max(a.offset, b.offset);
+  const double shared =
+      std::min(a.offset + a.width, b.offset + b.width) - std::max(a.offset, b.offset);
   report.add(make_diagnostic(
       Severity::error, Code::opening_overlap, {a.id, b.id},
       fmt::format("{} and {} in {} overlap over {} along the wall.", name_of(a), name_of(b),
                   name_of(w), metres(shared)),
-      fmt::format("move {} {} toward the end of the wall (offset {:.2f}), or narrow {} by that much",
-                  b.id, metres_at_least(a.offset + a.width - b.offset),
-                  std::ceil((a.offset + a.width) * 100 - 1e-7) / 100, a.id),
+      fmt::format(
+          "move {} {} toward the end of the wall (offset {:.2f}), or narrow {} by that much", b.id,
+          metres_at_least(a.offset + a.width - b.offset),
+          std::ceil((a.offset + a.width) * 100 - 1e-7) / 100, a.id),
       opening_where(w, b)));
 }
 
@@ -203,11 +205,13 @@ void check_overlapping_openings(const Plan& plan, const Usable& usable, Report& 
   for (std::size_t i = 0; i < order.size(); ++i) {
     const Opening& a = plan.openings[order[i]];
     const double end = std::nextafter(a.offset + a.width, INFINITY);
-    for (std::size_t j = i + 1; j < order.size() && usable.host[order[j]] == usable.host[order[i]] &&
-                                plan.openings[order[j]].offset < end;
+    for (std::size_t j = i + 1;
+         j < order.size() && usable.host[order[j]] == usable.host[order[i]] &&
+         plan.openings[order[j]].offset < end;
          ++j)
       if (openings_overlap(a, plan.openings[order[j]]))
-        report_opening_overlap(plan.walls[*usable.host[order[i]]], a, plan.openings[order[j]], report);
+        report_opening_overlap(plan.walls[*usable.host[order[i]]], a, plan.openings[order[j]],
+                               report);
   }
 }
 
@@ -218,7 +222,8 @@ bool is_blocked_by(const Plan& plan, const Footprints& fp, const Opening& o, std
   return exact::decide([&](auto tag) {
     using NT = decltype(tag);
     const NT bottom = NT(h.base) + NT(o.sill);
-    if (!spans_overlap(bottom, bottom + NT(o.height), NT(x.base), NT(x.base) + NT(highest_height(x))))
+    if (!spans_overlap(bottom, bottom + NT(o.height), NT(x.base),
+                       NT(x.base) + NT(highest_height(x))))
       return false;
     return interiors_overlap(hole_corners<NT>(h, o), fp.get<NT>(other));
   });
@@ -251,11 +256,11 @@ void report_blocked(const Plan& plan, const Joins& joins, const Opening& o, std:
   const Wall& x = plan.walls[other];
   const std::array<Point2, 4> hole = hole_points(h, o);
   const std::array<Point2, 4> blocker = approximate_footprint(plan, joins, other);
-  report.add(make_diagnostic(
-      Severity::error, Code::opening_blocked, {o.id, h.id, x.id},
-      fmt::format("{} in {} is blocked: {} fills its hole {} deep.", name_of(o), name_of(h),
-                  name_of(x), metres(penetration(hole, blocker).first)),
-      clearing_fix(h, o, blocker, x), bounds_where(hole)));
+  report.add(
+      make_diagnostic(Severity::error, Code::opening_blocked, {o.id, h.id, x.id},
+                      fmt::format("{} in {} is blocked: {} fills its hole {} deep.", name_of(o),
+                                  name_of(h), name_of(x), metres(penetration(hole, blocker).first)),
+                      clearing_fix(h, o, blocker, x), bounds_where(hole)));
 }
 
 void check_blocked_openings(const ResolvedPlan& r, const Joins& joins, const Footprints& fp,
@@ -266,7 +271,8 @@ void check_blocked_openings(const ResolvedPlan& r, const Joins& joins, const Foo
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     if (!usable.host[i]) continue;
     CGAL::Protect_FPU_rounding<true> upward;
-    holes.push_back(box_of(hole_corners<exact::Approx>(plan.walls[*usable.host[i]], plan.openings[i]), i));
+    holes.push_back(
+        box_of(hole_corners<exact::Approx>(plan.walls[*usable.host[i]], plan.openings[i]), i));
   }
   for (const auto& [i, other] : find_meeting_boxes(holes, fp.boxes())) {
     const std::size_t host = *usable.host[i];

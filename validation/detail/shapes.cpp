@@ -71,7 +71,8 @@ std::pair<double, Point2> penetration(const std::array<Point2, 4>& p,
   };
   for (const auto* shape : {&p, &q})
     for (std::size_t i = 0; i < 4; ++i) {
-      const Point2 e{(*shape)[(i + 1) % 4].x - (*shape)[i].x, (*shape)[(i + 1) % 4].y - (*shape)[i].y};
+      const Point2 e{(*shape)[(i + 1) % 4].x - (*shape)[i].x,
+                     (*shape)[(i + 1) % 4].y - (*shape)[i].y};
       const double len = std::hypot(e.x, e.y);
       if (len == 0) continue;
       Point2 axis{-e.y / len, e.x / len};

@@ -14,10 +14,10 @@
 
 #include <fmt/format.h>
 
+#include "geometry/polygon_predicates.h"
 #include "plan/plan_levels.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
-#include "geometry/polygon_predicates.h"
 #include "validation/detail/resolved_plan.h"
 #include "validation/detail/shapes.h"
 
@@ -55,14 +55,16 @@ void check_slab_overlaps(const Plan& plan, const std::vector<bool>& usable,
     if (!areas_overlap(a.outline, a.holes, b.outline, b.holes)) continue;
     const double lo = std::max(a.top - a.thickness, b.top - b.thickness);
     const double hi = std::min(a.top, b.top);
-    const Box2 common{std::max(boxes[i].min_x, boxes[j].min_x), std::max(boxes[i].min_y, boxes[j].min_y),
-                      std::min(boxes[i].max_x, boxes[j].max_x), std::min(boxes[i].max_y, boxes[j].max_y), 0};
+    const Box2 common{
+        std::max(boxes[i].min_x, boxes[j].min_x), std::max(boxes[i].min_y, boxes[j].min_y),
+        std::min(boxes[i].max_x, boxes[j].max_x), std::min(boxes[i].max_y, boxes[j].max_y), 0};
     report.add(make_diagnostic(
         Severity::error, Code::slab_overlap, {a.id, b.id},
         fmt::format("{} and {} overlap in plan, and in height from z = {} to {}.", slab_name(a),
                     slab_name(b), metres(lo), metres(hi)),
         fmt::format("cut the outline of {} back to where {} ends (or put it at another height, "
-                    "or delete it if it is drawn twice)", b.id, a.id),
+                    "or delete it if it is drawn twice)",
+                    b.id, a.id),
         where_of(common)));
   }
 }
@@ -124,7 +126,8 @@ void check_blocking_slabs(const ResolvedPlan& r, const std::vector<Box2>& slab_b
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     if (!r.usable.host[i]) continue;
     CGAL::Protect_FPU_rounding<true> upward;
-    hole_of[i] = box_of(hole_corners<exact::Approx>(plan.walls[*r.usable.host[i]], plan.openings[i]), i);
+    hole_of[i] =
+        box_of(hole_corners<exact::Approx>(plan.walls[*r.usable.host[i]], plan.openings[i]), i);
     holes.push_back(hole_of[i]);
   }
   for (const auto& [i, k] : find_meeting_boxes(holes, slab_boxes)) {
@@ -138,7 +141,8 @@ void check_blocking_slabs(const ResolvedPlan& r, const std::vector<Box2>& slab_b
                     name_of(o), name_of(h), slab_name(s), metres(s.top - s.thickness),
                     metres(s.top), metres(h.base + o.sill), metres(h.base + o.sill + o.height)),
         fmt::format("lower {} under the slab or raise its sill above it, or cut the slab's "
-                    "outline back from wall '{}'", o.id, h.id),
+                    "outline back from wall '{}'",
+                    o.id, h.id),
         where_of(hole_of[i])));
   }
 }
@@ -172,12 +176,14 @@ void check_slab_bounds(const Plan& plan, const Slab& s, const Box2& box, Report&
     problem = "reaches outside the site";
     fix = "move its outline inside the site, or enlarge the site (cells, origin)";
   } else if (!above) {
-    problem = fmt::format("starts at z = {}, below the site's floor (z = 0)", metres(s.top - s.thickness));
+    problem = fmt::format("starts at z = {}, below the site's floor (z = 0)",
+                          metres(s.top - s.thickness));
     fix = fmt::format("raise its top by {}", metres_at_least(s.thickness - s.top));
   } else {
     problem = fmt::format("rises to z = {}, above the site's max_height {}", metres(s.top),
                           metres(plan.site.max_height));
-    fix = fmt::format("lower its top to {} or raise site.max_height", metres_at_most(plan.site.max_height));
+    fix = fmt::format("lower its top to {} or raise site.max_height",
+                      metres_at_most(plan.site.max_height));
   }
   report.add(make_diagnostic(Severity::error, Code::out_of_bounds, {s.id},
                              fmt::format("{} {}.", slab_name(s), problem), fix, where_of(box)));
@@ -197,7 +203,8 @@ void check_level_bounds(const Plan& plan, Report& report) {
     report.add(make_diagnostic(
         Severity::error, Code::out_of_bounds, {l.id},
         fmt::format("level '{}' has its floor at z = {}, outside the site's heights 0 to "
-                    "max_height {}.", l.id, metres(l.elevation), metres(plan.site.max_height)),
+                    "max_height {}.",
+                    l.id, metres(l.elevation), metres(plan.site.max_height)),
         l.elevation < 0 ? fmt::format("raise its elevation by {}", metres_at_least(-l.elevation))
                         : fmt::format("raise site.max_height to {} or more, or lower the level",
                                       metres_at_least(l.elevation))));
@@ -206,13 +213,13 @@ void check_level_bounds(const Plan& plan, Report& report) {
 
 }  // namespace
 
-void check_slabs(const Plan& plan, const Usable& usable, const ResolvedPlan& resolved,
-                 const Joins&, const Footprints&, Report& report) {
+void check_slabs(const Plan& plan, const Usable& usable, const ResolvedPlan& resolved, const Joins&,
+                 const Footprints&, Report& report) {
   const Plan& r = resolved.plan;  // slabs with absolute tops
   std::vector<Box2> boxes;
   for (std::size_t i = 0; i < r.slabs.size(); ++i)
     boxes.push_back(resolved.usable.slabs[i] ? box_of_polygon(r.slabs[i].outline, i)
-                                    : Box2{NAN, NAN, NAN, NAN, i});
+                                             : Box2{NAN, NAN, NAN, NAN, i});
   std::erase_if(boxes, [](const Box2& b) { return std::isnan(b.min_x); });
   check_slab_overlaps(r, resolved.usable.slabs, boxes, report);
   check_blocking_slabs(resolved, boxes, report);

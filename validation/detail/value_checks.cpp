@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 
+#include "geometry/polygon_predicates.h"
 #include "plan/plan_fields.h"
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
-#include "geometry/polygon_predicates.h"
 
 namespace roomcad::detail {
 namespace {
@@ -42,7 +42,9 @@ class FieldChecker {
     bool all = true;
     for (const Field<Object>& f : fields_of<Object>())
       if (is_present(o, f))
-        all = std::visit([&](auto member) { return check_value<Object>(f, o.*member); }, f.member) && all;
+        all =
+            std::visit([&](auto member) { return check_value<Object>(f, o.*member); }, f.member) &&
+            all;
     return all;
   }
 
@@ -51,15 +53,14 @@ class FieldChecker {
   bool fail(std::string_view field, std::string_view value, std::string_view must_be,
             std::string fix = {}) {
     failed_.emplace_back(field);
-    const std::string label =
-        list_.empty() ? std::string(kind_)
-                      : fmt::format("{} '{}' ({}[{}])", kind_, id_, list_, index_);
+    const std::string label = list_.empty()
+                                  ? std::string(kind_)
+                                  : fmt::format("{} '{}' ({}[{}])", kind_, id_, list_, index_);
     if (fix.empty()) fix = fmt::format("set {} of {} to {}", field, label, must_be);
     report_.add(make_diagnostic(
         Severity::error, Code::invalid_value,
         id_.empty() ? std::vector<std::string>{} : std::vector<std::string>{std::string(id_)},
-        fmt::format("{}: {} is {}; it must be {}.", label, field, value, must_be),
-        std::move(fix)));
+        fmt::format("{}: {} is {}; it must be {}.", label, field, value, must_be), std::move(fix)));
     return false;
   }
 
@@ -94,7 +95,8 @@ class FieldChecker {
   }
   bool polygon_ok(std::string_view name, const Polygon& polygon, bool computable) {
     if (polygon.size() < 3)
-      return fail(name, fmt::format("{} corners", polygon.size()), "a polygon of at least 3 corners");
+      return fail(name, fmt::format("{} corners", polygon.size()),
+                  "a polygon of at least 3 corners");
     for (const Point2& p : polygon)
       if (!point_ok(name, p, computable)) return false;
     return true;
@@ -121,7 +123,8 @@ class FieldChecker {
   }
   template <class Object>
   bool check_value(const Field<Object>& f, const std::string& s) {
-    return f.name != "id" || !s.empty() || fail("id", "empty", "a non-empty string unique in the plan");
+    return f.name != "id" || !s.empty() ||
+           fail("id", "empty", "a non-empty string unique in the plan");
   }
   template <class Object>
   bool check_value(const Field<Object>& f, const std::array<std::int64_t, 2>& cells) {
@@ -172,11 +175,11 @@ bool check_wall(const Wall& w, std::size_t i, Report& report) {
   // Below its level's floor is where a wall of a level may start (docs/plan-format.md, "What
   // roomcad decides"); a wall without a level stands on z = 0 or above.
   if (w.level.empty() && std::isfinite(w.base) && w.base < 0)
-    ok = c.fail("base", fmt::format("{}", w.base), "a number of at least 0 (a wall without a level)",
-                fmt::format("set base of wall '{}' to 0 or more, or put the wall on a level",
-                            w.id));
-  const bool ends = std::isfinite(w.from.x) && std::isfinite(w.from.y) &&
-                    std::isfinite(w.to.x) && std::isfinite(w.to.y);
+    ok =
+        c.fail("base", fmt::format("{}", w.base), "a number of at least 0 (a wall without a level)",
+               fmt::format("set base of wall '{}' to 0 or more, or put the wall on a level", w.id));
+  const bool ends = std::isfinite(w.from.x) && std::isfinite(w.from.y) && std::isfinite(w.to.x) &&
+                    std::isfinite(w.to.y);
   if (ends && w.from == w.to)
     return c.fail("its length", "0 (from equals to)", "positive",
                   fmt::format("move `to` of wall '{}' away from `from`, or delete the wall", w.id));
@@ -202,7 +205,8 @@ bool check_slab_polygons(const Slab& slab, std::size_t i, Report& report) {
   if (!is_simple_polygon(slab.outline))
     return c.fail("outline", "a polygon whose edges cross or touch", "a simple polygon",
                   fmt::format("redraw the outline of slab '{}' so that its edges meet only at "
-                              "their shared corners", slab.id));
+                              "their shared corners",
+                              slab.id));
   for (std::size_t h = 0; h < slab.holes.size(); ++h) {
     const std::string field = fmt::format("holes[{}]", h);
     if (!is_simple_polygon(slab.holes[h]))
@@ -210,7 +214,8 @@ bool check_slab_polygons(const Slab& slab, std::size_t i, Report& report) {
     if (!is_strictly_inside(slab.holes[h], slab.outline))
       return c.fail(field, "not strictly inside the outline", "strictly inside the outline",
                     fmt::format("move or shrink hole {} of slab '{}' inside its outline, off "
-                                "its edges", h, slab.id));
+                                "its edges",
+                                h, slab.id));
     for (std::size_t k = 0; k < h; ++k)
       if (!are_disjoint(slab.holes[h], slab.holes[k]))
         return c.fail(field, fmt::format("meeting holes[{}]", k), "apart from the other holes",
@@ -230,7 +235,8 @@ bool check_shape(const Opening& o, std::size_t i, Report& report) {
   return is_simple_polygon(o.shape) ||
          c.fail("shape", "a polygon whose edges cross or touch", "a simple polygon",
                 fmt::format("redraw the shape of '{}' so that its edges meet only at their "
-                            "shared corners", o.id));
+                            "shared corners",
+                            o.id));
 }
 
 /// Checks each object of a list by its table. @return which were good.

@@ -30,7 +30,9 @@ std::pair<Point2, Point2> shared_run(const Wall& a, const Wall& b) {
   const double len2 = dx * dx + dy * dy;
   const double lo = std::max({0.0, std::min(along(b.from), along(b.to))});
   const double hi = std::min({len2, std::max(along(b.from), along(b.to))});
-  const auto at = [&](double t) { return Point2{a.from.x + t / len2 * dx, a.from.y + t / len2 * dy}; };
+  const auto at = [&](double t) {
+    return Point2{a.from.x + t / len2 * dx, a.from.y + t / len2 * dy};
+  };
   return {at(lo), at(hi)};
 }
 
@@ -42,7 +44,8 @@ void report_shared_centre_line(const Wall& a, const Wall& b, Report& report) {
                   name_of(b), metres(std::hypot(q.x - p.x, q.y - p.y)), point_text(p),
                   point_text(q)),
       fmt::format("shorten {} so that it only meets {} at an end, or delete it if it is a "
-                  "duplicate", b.id, a.id),
+                  "duplicate",
+                  b.id, a.id),
       box_where(std::min(p.x, q.x), std::min(p.y, q.y), std::max(p.x, q.x), std::max(p.y, q.y))));
 }
 
@@ -54,7 +57,8 @@ void report_overlap(const Wall& a, const Wall& b, const std::array<Point2, 4>& f
       fmt::format("{} and {} overlap by {} but are not joined (their centre lines do not meet).",
                   name_of(a), name_of(b), metres(depth)),
       fmt::format("move {} {} {} (or thin one of them), or extend one centre line to meet the "
-                  "other so that they join", b.id, metres_at_least(depth), direction_text(dir)),
+                  "other so that they join",
+                  b.id, metres_at_least(depth), direction_text(dir)),
       box_where(box.min_x, box.min_y, box.max_x, box.max_y)));
 }
 
@@ -82,7 +86,8 @@ void check_overlaps(const ResolvedPlan& r, const Joins& joins, const Footprints&
   for (const Box2& b : fp.boxes()) box_of_wall[b.index] = &b;
   std::set<std::pair<std::size_t, std::size_t>> reported;  // by input wall: arcs once
   for (const auto& [a, b] : find_meeting_boxes(fp.boxes())) {
-    const std::pair<std::size_t, std::size_t> walls = std::minmax(r.source_wall[a], r.source_wall[b]);
+    const std::pair<std::size_t, std::size_t> walls =
+        std::minmax(r.source_wall[a], r.source_wall[b]);
     if (walls.first == walls.second || reported.contains(walls)) continue;  // one arc's chords
     const Wall& wa = plan.walls[a];
     const Wall& wb = plan.walls[b];
@@ -95,7 +100,8 @@ void check_overlaps(const ResolvedPlan& r, const Joins& joins, const Footprints&
     }
     if (!solids_overlap(plan, fp, a, b)) continue;
     reported.insert(walls);
-    report_overlap(wa, wb, approximate_footprint(plan, joins, a), approximate_footprint(plan, joins, b),
+    report_overlap(wa, wb, approximate_footprint(plan, joins, a),
+                   approximate_footprint(plan, joins, b),
                    common_box(*box_of_wall[a], *box_of_wall[b]), report);
   }
 }
@@ -136,8 +142,8 @@ std::optional<std::string> enlarged_site(const SiteRect& r, double cs, double lo
   const double nx = cells(ox, hi_x, r.x1), ny = cells(oy, hi_y, r.y1);
   constexpr double kMostCells = 9007199254740992.0;  // 2^53
   if (!(nx <= kMostCells && ny <= kMostCells)) return std::nullopt;
-  std::string text = fmt::format("cells [{}, {}]", static_cast<std::int64_t>(nx),
-                                 static_cast<std::int64_t>(ny));
+  std::string text =
+      fmt::format("cells [{}, {}]", static_cast<std::int64_t>(nx), static_cast<std::int64_t>(ny));
   if (ox != r.x0 || oy != r.y0) text += fmt::format(" from origin [{}, {}]", ox, oy);
   return text;
 }
@@ -156,12 +162,17 @@ void report_outside_site(const Plan& plan, const std::array<Point2, 4>& f, const
     lo_x = std::min(lo_x, c.x), hi_x = std::max(hi_x, c.x);
     lo_y = std::min(lo_y, c.y), hi_y = std::max(hi_y, c.y);
   }
-  struct Side { double excess; const char* edge; const char* back; };
-  const Side sides[4] = {{r.x0 - lo_x, "west", "east"}, {hi_x - r.x1, "east", "west"},
-                         {r.y0 - lo_y, "south", "north"}, {hi_y - r.y1, "north", "south"}};
-  const Side& worst = *std::max_element(sides, sides + 4, [](const Side& a, const Side& b) {
-    return a.excess < b.excess;
-  });
+  struct Side {
+    double excess;
+    const char* edge;
+    const char* back;
+  };
+  const Side sides[4] = {{r.x0 - lo_x, "west", "east"},
+                         {hi_x - r.x1, "east", "west"},
+                         {r.y0 - lo_y, "south", "north"},
+                         {hi_y - r.y1, "north", "south"}};
+  const Side& worst = *std::max_element(
+      sides, sides + 4, [](const Side& a, const Side& b) { return a.excess < b.excess; });
   report.add(make_diagnostic(
       Severity::error, Code::out_of_bounds, {w.id},
       fmt::format("{} reaches {} past the {} edge of the site [{}, {}] x [{}, {}].", name_of(w),
@@ -178,8 +189,7 @@ bool is_under_max_height(const Site& s, const Wall& w) {
   });
 }
 
-void report_too_high(const Site& s, const Wall& w, const std::array<Point2, 4>& f,
-                     Report& report) {
+void report_too_high(const Site& s, const Wall& w, const std::array<Point2, 4>& f, Report& report) {
   const double height = highest_height(w);
   report.add(make_diagnostic(
       Severity::error, Code::out_of_bounds, {w.id},
@@ -192,8 +202,9 @@ void report_too_high(const Site& s, const Wall& w, const std::array<Point2, 4>& 
           : fmt::format("its base is at or above the site's max_height: lower its base below {}, "
                         "or raise site.max_height to at least {}",
                         metres(s.max_height), metres_at_least(w.base + height)),
-      box_where(std::min({f[0].x, f[1].x, f[2].x, f[3].x}), std::min({f[0].y, f[1].y, f[2].y, f[3].y}),
-                std::max({f[0].x, f[1].x, f[2].x, f[3].x}), std::max({f[0].y, f[1].y, f[2].y, f[3].y}))));
+      box_where(
+          std::min({f[0].x, f[1].x, f[2].x, f[3].x}), std::min({f[0].y, f[1].y, f[2].y, f[3].y}),
+          std::max({f[0].x, f[1].x, f[2].x, f[3].x}), std::max({f[0].y, f[1].y, f[2].y, f[3].y}))));
 }
 
 void report_below_ground(const Wall& w, const std::array<Point2, 4>& f, Report& report) {
@@ -202,13 +213,14 @@ void report_below_ground(const Wall& w, const std::array<Point2, 4>& f, Report& 
       fmt::format("{} starts at z = {}, below the site's floor (z = 0).", name_of(w),
                   metres(w.base)),
       fmt::format("raise its base by {}, or raise its level", metres_at_least(-w.base)),
-      box_where(std::min({f[0].x, f[1].x, f[2].x, f[3].x}), std::min({f[0].y, f[1].y, f[2].y, f[3].y}),
-                std::max({f[0].x, f[1].x, f[2].x, f[3].x}), std::max({f[0].y, f[1].y, f[2].y, f[3].y}))));
+      box_where(
+          std::min({f[0].x, f[1].x, f[2].x, f[3].x}), std::min({f[0].y, f[1].y, f[2].y, f[3].y}),
+          std::max({f[0].x, f[1].x, f[2].x, f[3].x}), std::max({f[0].y, f[1].y, f[2].y, f[3].y}))));
 }
 
 /// out_of_bounds of wall w; a chord of an arc wall `reported` already is not reported again.
-void check_bounds(const ResolvedPlan& r, const Joins& joins, const Footprints& fp,
-                  std::size_t w, std::vector<bool>& reported, Report& report) {
+void check_bounds(const ResolvedPlan& r, const Joins& joins, const Footprints& fp, std::size_t w,
+                  std::vector<bool>& reported, Report& report) {
   const Plan& plan = r.plan;
   const bool inside = is_inside_site(plan.site, fp, w);
   const bool low = is_under_max_height(plan.site, plan.walls[w]);

@@ -17,19 +17,23 @@ void warn_extra(const ExtraFields& extra, std::string_view owner, const std::str
                 Report& report) {
   for (const ExtraField& f : extra)
     report.add(make_diagnostic(
-        Severity::warning, Code::unknown_field, id.empty() ? std::vector<std::string>{} : std::vector{id},
+        Severity::warning, Code::unknown_field,
+        id.empty() ? std::vector<std::string>{} : std::vector{id},
         fmt::format("{} has a field '{}' that the plan format does not define; it is kept but "
-                    "has no effect.", owner, f.key),
+                    "has no effect.",
+                    owner, f.key),
         fmt::format("check the spelling of '{}', or remove it", f.key)));
 }
 
 void warn_unknown_fields(const Plan& plan, Report& report) {
   warn_extra(plan.extra, "the plan", "", report);
   warn_extra(plan.site.extra, "the site", "", report);
-  for (const Level& l : plan.levels) warn_extra(l.extra, fmt::format("level '{}'", l.id), l.id, report);
+  for (const Level& l : plan.levels)
+    warn_extra(l.extra, fmt::format("level '{}'", l.id), l.id, report);
   for (const Wall& w : plan.walls) warn_extra(w.extra, name_of(w), w.id, report);
   for (const Opening& o : plan.openings) warn_extra(o.extra, name_of(o), o.id, report);
-  for (const Slab& s : plan.slabs) warn_extra(s.extra, fmt::format("slab '{}'", s.id), s.id, report);
+  for (const Slab& s : plan.slabs)
+    warn_extra(s.extra, fmt::format("slab '{}'", s.id), s.id, report);
   for (const Light& l : plan.lights)
     warn_extra(l.extra, fmt::format("light '{}'", l.id), l.id, report);
   for (const Camera& c : plan.cameras)
@@ -53,10 +57,11 @@ void check_warnings(const Plan& plan, const ValidateOptions& options, Report& re
         Severity::warning, Code::door_above_floor, {o.id},
         below_floor
             ? fmt::format("{} starts {} above the floor of its level (wall '{}' reaches {} below "
-                          "it); a door normally starts at the floor.", name_of(o),
-                          metres(o.sill + w->base), o.wall, metres(-w->base))
+                          "it); a door normally starts at the floor.",
+                          name_of(o), metres(o.sill + w->base), o.wall, metres(-w->base))
             : fmt::format("{} starts {} above the base of wall '{}'; a door normally starts at "
-                          "the floor.", name_of(o), metres(o.sill), o.wall),
+                          "the floor.",
+                          name_of(o), metres(o.sill), o.wall),
         below_floor ? fmt::format("set its sill to {}, or make it a window if it is one", -w->base)
                     : "set its sill to 0, or make it a window if it is one"));
   }

@@ -59,7 +59,8 @@ void find_door_rooms(const Plan& plan, const std::vector<std::optional<std::size
     const double along = o.offset + o.width / 2;
     for (const double side : {-1.0, 1.0}) {
       const double across = side * (w.thickness / 2 + kSideProbe);
-      probes.push_back({w.from.x + along * u.x - across * u.y, w.from.y + along * u.y + across * u.x});
+      probes.push_back(
+          {w.from.x + along * u.x - across * u.y, w.from.y + along * u.y + across * u.x});
     }
     s.doors.push_back(i);
   }
@@ -81,17 +82,21 @@ bool is_inside_outline(const std::vector<Point2>& outline, Point2 p) {
   for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
     const Point2& a = outline[i];
     const Point2& b = outline[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
+      inside = !inside;
   }
   return inside;
 }
 
 bool is_segment_inside_outline(const std::vector<Point2>& outline, Point2 a, Point2 b) {
-  const auto cross = [](Point2 o, Point2 p, Point2 q) { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  const auto cross = [](Point2 o, Point2 p, Point2 q) {
+    return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x);
+  };
   for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
     const Point2 c = outline[j], d = outline[i];
     const double d1 = cross(a, b, c), d2 = cross(a, b, d), d3 = cross(c, d, a), d4 = cross(c, d, b);
-    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return false;
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+      return false;
   }
   return is_inside_outline(outline, a) && is_inside_outline(outline, b) &&
          is_inside_outline(outline, {(a.x + b.x) / 2, (a.y + b.y) / 2});
@@ -135,8 +140,8 @@ std::vector<std::optional<std::size_t>> locate_rooms(const std::vector<Room>& ro
   return out;
 }
 
-std::vector<std::size_t> walls_at_floor(const Plan& plan, const std::vector<std::size_t>& candidates,
-                                        double floor) {
+std::vector<std::size_t> walls_at_floor(const Plan& plan,
+                                        const std::vector<std::size_t>& candidates, double floor) {
   std::vector<std::size_t> out;
   for (const std::size_t w : candidates) {
     const Wall& wall = plan.walls[w];
@@ -213,16 +218,18 @@ Status check_accessible_rooms(const Plan& plan, const RuleSet& rules) {
   std::vector<bool> found(rules.accessible_rooms->size(), false);
   for (const rules::Storey& s : rules::find_storeys(plan, usable)) {
     const std::vector<Room> rooms = find_rooms(rules::plan_with_walls(plan, s.walls));
-    const std::vector<std::optional<std::size_t>> at = rules::locate_rooms(rooms, *rules.accessible_rooms);
+    const std::vector<std::optional<std::size_t>> at =
+        rules::locate_rooms(rooms, *rules.accessible_rooms);
     for (std::size_t i = 0; i < at.size(); ++i) found[i] = found[i] || at[i].has_value();
   }
   for (std::size_t i = 0; i < found.size(); ++i)
     if (!found[i]) {
       const Point2 p = (*rules.accessible_rooms)[i];
-      return Status::failure(Code::usage_error,
-                             fmt::format("{}: /accessible_rooms/{}: the point [{}, {}] lies in no room of the plan",
-                                         rules.name, i, p.x, p.y),
-                             Location{rules.name, fmt::format("/accessible_rooms/{}", i), 0, 0});
+      return Status::failure(
+          Code::usage_error,
+          fmt::format("{}: /accessible_rooms/{}: the point [{}, {}] lies in no room of the plan",
+                      rules.name, i, p.x, p.y),
+          Location{rules.name, fmt::format("/accessible_rooms/{}", i), 0, 0});
     }
   return Status::success();
 }

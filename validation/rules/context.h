@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "geometry/box_grid.h"
 #include "geometry/joins.h"
 #include "plan/plan.h"
 #include "validation/detail/checks.h"
 #include "validation/rule_set.h"
-#include "geometry/box_grid.h"
 #include "validation/validate.h"
 
 namespace roomcad::rules {
@@ -33,11 +33,11 @@ inline constexpr double kMinRoomArea = 0.5;
 /// storeys of their own, so rooms of different floors are not mixed.
 struct Storey {
   double floor = 0.0;
-  bool lowest = false;                   ///< the lowest storey: the one exterior doors lead out of
-  std::vector<std::size_t> walls;        ///< indices into Plan::walls
-  std::vector<Room> rooms;               ///< find_rooms on those walls, numbered from 1 in order
-  std::vector<bool> accessible;          ///< per room: the accessibility rules apply to it
-  std::vector<std::size_t> doors;        ///< indices into Plan::openings, doors in those walls
+  bool lowest = false;             ///< the lowest storey: the one exterior doors lead out of
+  std::vector<std::size_t> walls;  ///< indices into Plan::walls
+  std::vector<Room> rooms;         ///< find_rooms on those walls, numbered from 1 in order
+  std::vector<bool> accessible;    ///< per room: the accessibility rules apply to it
+  std::vector<std::size_t> doors;  ///< indices into Plan::openings, doors in those walls
   /// Per door (same order): the room on its wall's right side [0] and left side [1] (seen
   /// from the wall's `from` to its `to`), or nullopt for outside (no room).
   std::vector<std::array<std::optional<std::size_t>, 2>> door_rooms;
@@ -69,9 +69,9 @@ class Context {
   const Plan& plan;
   const Joins& joins;
   const RuleSet& rules;
-  std::vector<bool> wall_usable;                  ///< by wall
-  std::vector<std::optional<std::size_t>> host;   ///< by opening: its usable host wall
-  std::vector<Storey> storeys;                    ///< by rising floor
+  std::vector<bool> wall_usable;                 ///< by wall
+  std::vector<std::optional<std::size_t>> host;  ///< by opening: its usable host wall
+  std::vector<Storey> storeys;                   ///< by rising floor
   /// By opening: a door the accessibility rules apply to: every door when the rule set names
   /// no accessible rooms, else the doors with a named room on a side (in some storey).
   std::vector<bool> accessible_door;
@@ -93,8 +93,8 @@ class Context {
 };
 
 /// @return RoomLocator(rooms).locate(p) for each point. O(n + m) for n points and m rooms.
-[[nodiscard]] std::vector<std::optional<std::size_t>> locate_rooms(const std::vector<Room>& rooms,
-                                                                   const std::vector<Point2>& points);
+[[nodiscard]] std::vector<std::optional<std::size_t>> locate_rooms(
+    const std::vector<Room>& rooms, const std::vector<Point2>& points);
 
 /// @return true if p lies inside the polygon (crossing number, doubles: for points well
 ///         inside or outside, such as door sides 1 cm off a wall face). O(n).
@@ -102,7 +102,8 @@ class Context {
 
 /// @return true if the segment a-b lies inside the polygon: its ends and middle inside, and no
 ///         edge crossed properly (doubles, as is_inside_outline). O(n).
-[[nodiscard]] bool is_segment_inside_outline(const std::vector<Point2>& outline, Point2 a, Point2 b);
+[[nodiscard]] bool is_segment_inside_outline(const std::vector<Point2>& outline, Point2 a,
+                                             Point2 b);
 
 /// @return the bounding box of a room's clear outline (index 0).
 [[nodiscard]] Box2 room_box(const Room& room);

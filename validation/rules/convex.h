@@ -69,7 +69,8 @@ Poly<NT> clip_left(const Poly<NT>& p, const Pt<NT>& a, const Pt<NT>& b) {
 template <class NT>
 Poly<NT> clip(const Poly<NT>& p, const Poly<NT>& clipper) {
   Poly<NT> out = p;
-  for (std::size_t i = 0; i < clipper.n && out.n > 0; ++i) out = clip_left(out, clipper[i], clipper.next(i));
+  for (std::size_t i = 0; i < clipper.n && out.n > 0; ++i)
+    out = clip_left(out, clipper[i], clipper.next(i));
   return out;
 }
 
@@ -78,7 +79,8 @@ template <class NT>
 bool has_interior(const Poly<NT>& p) {
   if (p.n < 3) return false;
   NT twice_area(0);
-  for (std::size_t i = 1; i + 1 < p.n; ++i) twice_area = twice_area + exact::cross(p[i] - p[0], p[i + 1] - p[0]);
+  for (std::size_t i = 1; i + 1 < p.n; ++i)
+    twice_area = twice_area + exact::cross(p[i] - p[0], p[i + 1] - p[0]);
   return twice_area > NT(0);
 }
 
@@ -129,7 +131,8 @@ Truth<NT> is_nearer_than(const Pt<NT>& q, const Pt<NT>& a, const Pt<NT>& b, cons
   const Pt<NT> d = b - a;
   const NT c = exact::cross(d, q - a);
   return (squared_distance(q, a) < r2) |
-         ((exact::dot(q - a, d) > NT(0)) & (exact::dot(q - b, d) < NT(0)) & (c * c < r2 * exact::dot(d, d)));
+         ((exact::dot(q - a, d) > NT(0)) & (exact::dot(q - b, d) < NT(0)) &
+          (c * c < r2 * exact::dot(d, d)));
 }
 
 /// @return whether q is nearer than sqrt(r2) to the closed convex polygon p (n >= 1): inside
@@ -196,7 +199,8 @@ bool is_closer_than(const Poly<NT>& p, const Poly<NT>& q, const NT& w2) {
   for (const auto& [a, b] : {std::pair{&p, &q}, std::pair{&q, &p}})
     for (std::size_t i = 0; i < a->n; ++i)
       for (std::size_t j = 0; j < b->n; ++j) {
-        closer = closer | (squared_distance((*a)[i], closest_on_segment((*a)[i], (*b)[j], b->next(j))) < w2);
+        closer = closer |
+                 (squared_distance((*a)[i], closest_on_segment((*a)[i], (*b)[j], b->next(j))) < w2);
         if (is_surely(closer)) return true;
       }
   return static_cast<bool>(closer | !is_separated(p, q, true));
@@ -214,7 +218,8 @@ bool disc_meets_interior(const Pt<NT>& h, const NT& r2, const Poly<NT>& k) {
 ///         least over k at the point of k nearest h1, nearest h2, or nearest h1 on the line
 ///         where the two terms are equal; the discs meet inside k iff g < 0 there.
 template <class NT>
-bool discs_meet_in(const Pt<NT>& h1, const NT& r1, const Pt<NT>& h2, const NT& r2, const Poly<NT>& k) {
+bool discs_meet_in(const Pt<NT>& h1, const NT& r1, const Pt<NT>& h2, const NT& r2,
+                   const Poly<NT>& k) {
   if (!has_interior(k)) return false;
   const auto g_below_zero = [&](const Pt<NT>& p) {
     return squared_distance(p, h1) < r1 && squared_distance(p, h2) < r2;

@@ -42,7 +42,8 @@ std::vector<Opening> slides(const Opening& o, double length) {
   const long long start = std::llround(o.offset * 100);
   for (int k = 1; k <= kMaxSlides; ++k)
     for (const int sign : {1, -1}) {
-      const double offset = static_cast<double>(start + sign * k * std::llround(kSlideStep * 100)) / 100;
+      const double offset =
+          static_cast<double>(start + sign * k * std::llround(kSlideStep * 100)) / 100;
       if (offset < 0 || offset + o.width > length) continue;
       for (Opening s : settings(o)) {
         s.offset = offset;
@@ -52,7 +53,9 @@ std::vector<Opening> slides(const Opening& o, double length) {
   return out;
 }
 
-std::string side_words(Swing s) { return s == Swing::in ? "in (to its wall's left side)" : "out (to its wall's right side)"; }
+std::string side_words(Swing s) {
+  return s == Swing::in ? "in (to its wall's left side)" : "out (to its wall's right side)";
+}
 
 /// The change from `o` to `c` as edits and words.
 DoorFix describe(const Opening& o, const Opening& c, const Wall& host) {
@@ -60,7 +63,8 @@ DoorFix describe(const Opening& o, const Opening& c, const Wall& host) {
   std::vector<std::string> words;
   if (c.offset != o.offset) {
     fields.emplace_back("offset", number_text(c.offset));
-    words.push_back(fmt::format("move it along wall '{}' to offset {}", host.id, number_text(c.offset)));
+    words.push_back(
+        fmt::format("move it along wall '{}' to offset {}", host.id, number_text(c.offset)));
   }
   if (c.width != o.width) {
     fields.emplace_back("width", number_text(c.width));
@@ -99,16 +103,20 @@ DoorFixer::Needs DoorFixer::all_needs(std::size_t door) const {
 
 bool DoorFixer::passes(std::size_t door, const Opening& c, Needs needs, Precision precision) const {
   const std::size_t host = *scene_.host(door);
-  if (needs.clearance && !walls_in_clearance(scene_, c, host, cx_.rules.thresholds, precision).empty()) return false;
+  if (needs.clearance &&
+      !walls_in_clearance(scene_, c, host, cx_.rules.thresholds, precision).empty())
+    return false;
   if (!needs.swing) return true;
   if (!walls_hit_by_leaf(scene_, c, host, precision).empty()) return false;
   for (const std::size_t other : leaves().find(leaf_box(scene_, c, host)))
-    if (other != door && leaves_meet(scene_, c, host, scene_.plan().openings[other], *scene_.host(other), precision))
+    if (other != door &&
+        leaves_meet(scene_, c, host, scene_.plan().openings[other], *scene_.host(other), precision))
       return false;
   return true;
 }
 
-std::optional<DoorFix> DoorFixer::first_fix(std::size_t door, const std::vector<Opening>& candidates,
+std::optional<DoorFix> DoorFixer::first_fix(std::size_t door,
+                                            const std::vector<Opening>& candidates,
                                             Needs own) const {
   const Opening& o = scene_.plan().openings[door];
   const Wall& host = scene_.plan().walls[*scene_.host(door)];
@@ -124,7 +132,8 @@ std::optional<DoorFix> DoorFixer::first_fix(std::size_t door, const std::vector<
   };
   // Candidates are sorted out in doubles; the ones kept are verified exactly.
   const auto check = [&](const Opening& c, Needs needs) {
-    return passes(door, c, needs, Precision::approximate) && passes(door, c, needs, Precision::exact);
+    return passes(door, c, needs, Precision::approximate) &&
+           passes(door, c, needs, Precision::exact);
   };
   for (const Opening& c : candidates) {
     const bool strong = check(c, every);
@@ -140,7 +149,8 @@ std::optional<DoorFix> DoorFixer::first_fix(std::size_t door, const std::vector<
 std::optional<DoorFix> DoorFixer::find(std::size_t door, Code code) const {
   const Opening& o = scene_.plan().openings[door];
   std::vector<Opening> candidates = flips(o);
-  const std::vector<Opening> moved = slides(o, wall_length(scene_.plan().walls[*scene_.host(door)]));
+  const std::vector<Opening> moved =
+      slides(o, wall_length(scene_.plan().walls[*scene_.host(door)]));
   candidates.insert(candidates.end(), moved.begin(), moved.end());
   Needs own;
   (code == Code::door_clearance ? own.clearance : own.swing) = true;
@@ -152,7 +162,8 @@ std::optional<DoorFix> DoorFixer::widen(std::size_t door) const {
   const double width = centimetres_up(cx_.rules.thresholds.door_min_width);
   const double grow = width - o.width;
   std::vector<Opening> candidates;
-  for (const double offset : {centimetres_down(o.offset - grow / 2), o.offset, centimetres_down(o.offset - grow)})
+  for (const double offset :
+       {centimetres_down(o.offset - grow / 2), o.offset, centimetres_down(o.offset - grow)})
     for (Opening s : settings(o)) {
       s.offset = offset, s.width = width;
       if (offset >= 0) candidates.push_back(s);

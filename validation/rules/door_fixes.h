@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "validation/report.h"
 #include "geometry/box_grid.h"
+#include "validation/report.h"
 #include "validation/rules/context.h"
 #include "validation/rules/scene.h"
 #include "validation/rules/written_number.h"
@@ -17,8 +17,8 @@
 namespace roomcad::rules {
 
 struct DoorFix {
-  std::string text;             ///< what to do, in words
-  std::vector<FixEdit> edits;   ///< the same as edits
+  std::string text;            ///< what to do, in words
+  std::vector<FixEdit> edits;  ///< the same as edits
 };
 
 class DoorFixer {
@@ -42,9 +42,11 @@ class DoorFixer {
     bool swing = false;
     bool clearance = false;
   };
-  [[nodiscard]] bool passes(std::size_t door, const Opening& changed, Needs needs, Precision precision) const;
+  [[nodiscard]] bool passes(std::size_t door, const Opening& changed, Needs needs,
+                            Precision precision) const;
   [[nodiscard]] Needs all_needs(std::size_t door) const;
-  [[nodiscard]] std::optional<DoorFix> first_fix(std::size_t door, const std::vector<Opening>& candidates,
+  [[nodiscard]] std::optional<DoorFix> first_fix(std::size_t door,
+                                                 const std::vector<Opening>& candidates,
                                                  Needs own) const;
 
   [[nodiscard]] const BoxGrid& leaves() const;

@@ -68,7 +68,8 @@ LeafSweep<NT> leaf_sweep(const Wall& w, const Opening& o, Hinge hinge, Swing swi
 /// The free rectangle in front of a door on its push side (the side its leaf does not open
 /// to): `width` along the wall, centred on the opening, `depth` away from the wall face.
 template <class NT>
-Poly<NT> clearance_rectangle(const Wall& w, const Opening& o, Swing swing, double width, double depth) {
+Poly<NT> clearance_rectangle(const Wall& w, const Opening& o, Swing swing, double width,
+                             double depth) {
   const WallFrame<NT> f = wall_frame<NT>(w);
   const int p = -side_of(swing);
   const NT middle = NT(o.offset) + NT(o.width) / NT(2);

@@ -22,7 +22,8 @@
 namespace roomcad::rules {
 namespace {
 
-std::vector<std::string> ids_of(const Plan& plan, std::size_t door, const std::vector<std::size_t>& walls) {
+std::vector<std::string> ids_of(const Plan& plan, std::size_t door,
+                                const std::vector<std::size_t>& walls) {
   std::vector<std::string> ids{plan.openings[door].id};
   for (const std::size_t w : walls) ids.push_back(plan.walls[w].id);
   return ids;
@@ -44,11 +45,13 @@ Where polygon_where(const Poly<double>& p) {
 }
 
 std::string leaf_words(const Opening& o) {
-  return fmt::format("hinge {}, swing {}, {} wide", to_string(o.hinge), to_string(o.swing), detail::metres(o.width));
+  return fmt::format("hinge {}, swing {}, {} wide", to_string(o.hinge), to_string(o.swing),
+                     detail::metres(o.width));
 }
 
 /// The fix's words and edits, or what to do when no tried change clears it.
-std::pair<std::string, std::vector<FixEdit>> fix_or(const std::optional<DoorFix>& fix, std::string otherwise) {
+std::pair<std::string, std::vector<FixEdit>> fix_or(const std::optional<DoorFix>& fix,
+                                                    std::string otherwise) {
   if (!fix) return {std::move(otherwise), {}};
   return {fix->text, fix->edits};
 }
@@ -64,18 +67,21 @@ struct DoorChecks {
     const Opening& o = plan.openings[i];
     const std::vector<std::size_t> hit = walls_hit_by_leaf(scene, o, host);
     if (hit.empty()) return;
-    auto [fix, edits] = fix_or(fixer.find(i, Code::door_swing_blocked),
-                               fmt::format("no hinge side, swing or place along wall '{}' clears it: use a "
-                                           "narrower or a sliding door, or move {}", plan.walls[host].id,
-                                           quoted_list(plan, hit)));
+    auto [fix, edits] =
+        fix_or(fixer.find(i, Code::door_swing_blocked),
+               fmt::format("no hinge side, swing or place along wall '{}' clears it: use a "
+                           "narrower or a sliding door, or move {}",
+                           plan.walls[host].id, quoted_list(plan, hit)));
     report.add(make_finding(
         cx, Code::door_swing_blocked, ids_of(plan, i, hit),
-        fmt::format("door '{}' cannot open fully: its leaf ({}) sweeps through {}.", o.id, leaf_words(o),
-                    quoted_list(plan, hit)),
-        std::move(fix), std::move(edits), polygon_where(leaf_sweep<double>(plan.walls[host], o, o.hinge, o.swing).square)));
+        fmt::format("door '{}' cannot open fully: its leaf ({}) sweeps through {}.", o.id,
+                    leaf_words(o), quoted_list(plan, hit)),
+        std::move(fix), std::move(edits),
+        polygon_where(leaf_sweep<double>(plan.walls[host], o, o.hinge, o.swing).square)));
   }
 
-  void leaf_against_leaves(std::size_t i, std::size_t host, const std::vector<std::size_t>& others) const {
+  void leaf_against_leaves(std::size_t i, std::size_t host,
+                           const std::vector<std::size_t>& others) const {
     const Plan& plan = scene.plan();
     const Opening& a = plan.openings[i];
     for (const std::size_t j : others) {
@@ -84,13 +90,16 @@ struct DoorChecks {
       std::optional<DoorFix> fix = fixer.find(i, Code::door_swing_blocked);
       if (!fix) fix = fixer.find(j, Code::door_swing_blocked);
       if (fix) fix->text = fmt::format("door '{}': {}", fix->edits.front().id, fix->text);
-      auto [text, edits] = fix_or(fix, "no hinge side, swing or place along their walls clears them: use a "
-                                       "sliding door for one of them");
+      auto [text, edits] =
+          fix_or(fix,
+                 "no hinge side, swing or place along their walls clears them: use a "
+                 "sliding door for one of them");
       const Poly<double> sa = leaf_sweep<double>(plan.walls[host], a, a.hinge, a.swing).square;
-      report.add(make_finding(cx, Code::door_swing_blocked, {a.id, b.id},
-                              fmt::format("the leaves of door '{}' ({}) and door '{}' ({}) sweep into each other.",
-                                          a.id, leaf_words(a), b.id, leaf_words(b)),
-                              std::move(text), std::move(edits), polygon_where(sa)));
+      report.add(make_finding(
+          cx, Code::door_swing_blocked, {a.id, b.id},
+          fmt::format("the leaves of door '{}' ({}) and door '{}' ({}) sweep into each other.",
+                      a.id, leaf_words(a), b.id, leaf_words(b)),
+          std::move(text), std::move(edits), polygon_where(sa)));
     }
   }
 
@@ -100,16 +109,20 @@ struct DoorChecks {
     const RuleThresholds& t = cx.rules.thresholds;
     const std::vector<std::size_t> hit = walls_in_clearance(scene, o, host, t);
     if (hit.empty()) return;
-    auto [fix, edits] = fix_or(fixer.find(i, Code::door_clearance),
-                               fmt::format("no swing or place along wall '{}' gives it the clear space: move {}",
-                                           plan.walls[host].id, quoted_list(plan, hit)));
+    auto [fix, edits] =
+        fix_or(fixer.find(i, Code::door_clearance),
+               fmt::format("no swing or place along wall '{}' gives it the clear space: move {}",
+                           plan.walls[host].id, quoted_list(plan, hit)));
     report.add(make_finding(
         cx, Code::door_clearance, ids_of(plan, i, hit),
-        fmt::format("the clear space in front of door '{}' on its push side ({} x {} on its wall's {} side) runs "
-                    "into {}.", o.id, detail::metres(t.clearance_width), detail::metres(t.clearance_depth),
+        fmt::format("the clear space in front of door '{}' on its push side ({} x {} on its wall's "
+                    "{} side) runs "
+                    "into {}.",
+                    o.id, detail::metres(t.clearance_width), detail::metres(t.clearance_depth),
                     o.swing == Swing::in ? "right" : "left", quoted_list(plan, hit)),
         std::move(fix), std::move(edits),
-        polygon_where(clearance_rectangle<double>(plan.walls[host], o, o.swing, t.clearance_width, t.clearance_depth))));
+        polygon_where(clearance_rectangle<double>(plan.walls[host], o, o.swing, t.clearance_width,
+                                                  t.clearance_depth))));
   }
 
   void width(std::size_t i, std::size_t host) const {
@@ -117,21 +130,24 @@ struct DoorChecks {
     const Opening& o = plan.openings[i];
     const double min = cx.rules.thresholds.door_min_width;
     if (!is_narrower(o.width, min)) return;
-    auto [fix, edits] = fix_or(fixer.widen(i), fmt::format("wall '{}' has no room for it at {} wide: move it or "
-                                                          "lengthen the wall", plan.walls[host].id, detail::metres(min)));
+    auto [fix, edits] =
+        fix_or(fixer.widen(i), fmt::format("wall '{}' has no room for it at {} wide: move it or "
+                                           "lengthen the wall",
+                                           plan.walls[host].id, detail::metres(min)));
     const WallFrame<double> f = wall_frame<double>(plan.walls[host]);
     const Pt<double> a = f.at(o.offset, -f.half), b = f.at(o.offset + o.width, f.half);
     report.add(make_finding(cx, Code::door_too_narrow, {o.id},
-                            fmt::format("door '{}' is {} wide, narrower than {}.", o.id, detail::metres(o.width),
-                                        detail::metres(min)),
+                            fmt::format("door '{}' is {} wide, narrower than {}.", o.id,
+                                        detail::metres(o.width), detail::metres(min)),
                             std::move(fix), std::move(edits),
-                            detail::box_where(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                                              std::max(a.y, b.y))));
+                            detail::box_where(std::min(a.x, b.x), std::min(a.y, b.y),
+                                              std::max(a.x, b.x), std::max(a.y, b.y))));
   }
 };
 
 /// For each door, the other doors whose leaf boxes meet its own.
-std::vector<std::vector<std::size_t>> neighbouring_leaves(const Scene& scene, const std::vector<std::size_t>& doors) {
+std::vector<std::vector<std::size_t>> neighbouring_leaves(const Scene& scene,
+                                                          const std::vector<std::size_t>& doors) {
   std::vector<Box2> boxes;
   for (const std::size_t i : doors) {
     Box2 b = leaf_box(scene, scene.plan().openings[i], *scene.host(i));

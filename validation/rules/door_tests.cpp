@@ -20,21 +20,25 @@ bool heights_overlap(const NT& a_lo, const NT& a_h, const NT& b_lo, const NT& b_
 Box2 box_of(const Poly<WrittenApprox>& p) {
   Box2 b{p[0].x.value().inf(), p[0].y.value().inf(), p[0].x.value().sup(), p[0].y.value().sup(), 0};
   for (std::size_t i = 1; i < p.n; ++i) {
-    b.min_x = std::min(b.min_x, p[i].x.value().inf()), b.max_x = std::max(b.max_x, p[i].x.value().sup());
-    b.min_y = std::min(b.min_y, p[i].y.value().inf()), b.max_y = std::max(b.max_y, p[i].y.value().sup());
+    b.min_x = std::min(b.min_x, p[i].x.value().inf()),
+    b.max_x = std::max(b.max_x, p[i].x.value().sup());
+    b.min_y = std::min(b.min_y, p[i].y.value().inf()),
+    b.max_y = std::max(b.max_y, p[i].y.value().sup());
   }
   return b;
 }
 
 }  // namespace
 
-bool leaf_hits_wall(const Scene& scene, const Opening& o, std::size_t host, std::size_t wall, Precision precision) {
+bool leaf_hits_wall(const Scene& scene, const Opening& o, std::size_t host, std::size_t wall,
+                    Precision precision) {
   const Plan& plan = scene.plan();
   const Wall& h = plan.walls[host];
   const Wall& x = plan.walls[wall];
   return evaluate(precision, [&](auto tag) {
     using NT = decltype(tag);
-    if (!heights_overlap(NT(h.base) + NT(o.sill), NT(o.height), NT(x.base), NT(x.height))) return false;
+    if (!heights_overlap(NT(h.base) + NT(o.sill), NT(o.height), NT(x.base), NT(x.height)))
+      return false;
     const LeafSweep<NT> leaf = leaf_sweep<NT>(h, o, o.hinge, o.swing);
     const Poly<NT> footprint = wall_polygon<NT>(plan, scene.joins(), wall);
     // Apart on some axis for sure: decided without clipping (whose branches the intervals
@@ -50,7 +54,8 @@ bool leaves_meet(const Scene& scene, const Opening& a, std::size_t host_a, const
   const Wall& hb = scene.plan().walls[host_b];
   return evaluate(precision, [&](auto tag) {
     using NT = decltype(tag);
-    if (!heights_overlap(NT(ha.base) + NT(a.sill), NT(a.height), NT(hb.base) + NT(b.sill), NT(b.height)))
+    if (!heights_overlap(NT(ha.base) + NT(a.sill), NT(a.height), NT(hb.base) + NT(b.sill),
+                         NT(b.height)))
       return false;
     const LeafSweep<NT> la = leaf_sweep<NT>(ha, a, a.hinge, a.swing);
     const LeafSweep<NT> lb = leaf_sweep<NT>(hb, b, b.hinge, b.swing);
@@ -66,9 +71,11 @@ bool clearance_hits_wall(const Scene& scene, const Opening& o, std::size_t host,
   const Wall& x = plan.walls[wall];
   return evaluate(precision, [&](auto tag) {
     using NT = decltype(tag);
-    if (!heights_overlap(NT(h.base) + NT(o.sill), NT(kHeadroom), NT(x.base), NT(x.height))) return false;
-    return interiors_overlap(clearance_rectangle<NT>(h, o, o.swing, t.clearance_width, t.clearance_depth),
-                             wall_polygon<NT>(plan, scene.joins(), wall));
+    if (!heights_overlap(NT(h.base) + NT(o.sill), NT(kHeadroom), NT(x.base), NT(x.height)))
+      return false;
+    return interiors_overlap(
+        clearance_rectangle<NT>(h, o, o.swing, t.clearance_width, t.clearance_depth),
+        wall_polygon<NT>(plan, scene.joins(), wall));
   });
 }
 
@@ -77,7 +84,8 @@ Box2 leaf_box(const Scene& scene, const Opening& o, std::size_t host) {
   return box_of(leaf_sweep<WrittenApprox>(scene.plan().walls[host], o, o.hinge, o.swing).square);
 }
 
-Box2 clearance_box(const Scene& scene, const Opening& o, std::size_t host, const RuleThresholds& t) {
+Box2 clearance_box(const Scene& scene, const Opening& o, std::size_t host,
+                   const RuleThresholds& t) {
   CGAL::Protect_FPU_rounding<true> upward;
   return box_of(clearance_rectangle<WrittenApprox>(scene.plan().walls[host], o, o.swing,
                                                    t.clearance_width, t.clearance_depth));

@@ -25,8 +25,8 @@ constexpr double kBeyond = 0.01;  ///< metres beyond a wall's far face where the
 
 /// @return true if every place of a door `width` wide in the side has one room beyond it, so
 ///         that no door there leads outside. O(outline of that room).
-bool faces_one_room(const Plan& plan, const Storey& s, const RoomLocator& locator, const RoomSide& side,
-                    double width) {
+bool faces_one_room(const Plan& plan, const Storey& s, const RoomLocator& locator,
+                    const RoomSide& side, double width) {
   const double lo = side.lo + 0.05 + width / 2, hi = side.hi - 0.05 - width / 2;  // as door_offsets
   if (hi < lo) return false;
   const Point2 a = beyond_side(plan, side, lo, kBeyond), b = beyond_side(plan, side, hi, kBeyond);
@@ -34,8 +34,8 @@ bool faces_one_room(const Plan& plan, const Storey& s, const RoomLocator& locato
   return room && is_segment_inside_outline(s.rooms[*room].outline, a, b);
 }
 
-std::optional<FixEdit> exterior_door(const Context& cx, const Scene& scene, const Storey& s, const EscapeWalks& walks,
-                                     std::size_t r, double limit) {
+std::optional<FixEdit> exterior_door(const Context& cx, const Scene& scene, const Storey& s,
+                                     const EscapeWalks& walks, std::size_t r, double limit) {
   const Plan& plan = scene.plan();
   const RoomLocator& locator = cx.locator(s);
   const double width = std::max(0.9, centimetres_up(cx.rules.thresholds.door_min_width));
@@ -51,7 +51,8 @@ std::optional<FixEdit> exterior_door(const Context& cx, const Scene& scene, cons
       const Point2 p = beyond_side(plan, side, offset + width / 2, kBeyond);
       if (beyond && is_inside_outline(s.rooms[*beyond].outline, p)) continue;
       if ((beyond = locator.locate(p))) continue;
-      const std::vector<Point2> exits = EscapeWalks::door_points(w, offset, offset + width, side.side);
+      const std::vector<Point2> exits =
+          EscapeWalks::door_points(w, offset, offset + width, side.side);
       if (walks.walk_to(r, exits, w.thickness + 0.02, kFine) > limit) continue;
       std::vector<FixEdit> edits{add_door_edit(id, w.id, offset, width)};
       if (!near) near.emplace(scene, scene.wall_box(side.wall), heights_of(w));
@@ -76,20 +77,26 @@ void check_escape(const Context& cx, const Scene& scene, Report& report) {
     if (b->upper <= limit) continue;
     const Room& room = s->rooms[r];
     const std::optional<FixEdit> door = exterior_door(cx, scene, *s, walks, r, limit);
-    const std::string walk = b->lower > limit
-        ? fmt::format("is between {} and {}, more than {}", detail::metres(b->lower), detail::metres(b->upper),
-                      detail::metres(limit))
-        : fmt::format("may be more than {}: roomcad bounds it between {} and {}", detail::metres(limit),
-                      detail::metres(b->lower), detail::metres(b->upper));
+    const std::string walk =
+        b->lower > limit
+            ? fmt::format("is between {} and {}, more than {}", detail::metres(b->lower),
+                          detail::metres(b->upper), detail::metres(limit))
+            : fmt::format("may be more than {}: roomcad bounds it between {} and {}",
+                          detail::metres(limit), detail::metres(b->lower),
+                          detail::metres(b->upper));
     report.add(make_finding(
         cx, Code::escape_too_far, room.walls,
-        fmt::format("the longest walk from a point of {} ({:.2f} m², walls {}) to an exterior door, from {}, {}.",
-                    cx.room_name(*s, r), room.area, fmt::join(room.walls, ", "), detail::point_text(b->farthest), walk),
-        door ? fmt::format("add a door {} m wide to the outside in wall '{}' at offset {}", door->fields[3].second,
-                           door->fields[1].second, door->fields[2].second)
-             : "add an exterior door nearer to it: no wall of the room has room for one to the outside, clear "
+        fmt::format("the longest walk from a point of {} ({:.2f} m², walls {}) to an exterior "
+                    "door, from {}, {}.",
+                    cx.room_name(*s, r), room.area, fmt::join(room.walls, ", "),
+                    detail::point_text(b->farthest), walk),
+        door ? fmt::format("add a door {} m wide to the outside in wall '{}' at offset {}",
+                           door->fields[3].second, door->fields[1].second, door->fields[2].second)
+             : "add an exterior door nearer to it: no wall of the room has room for one to the "
+               "outside, clear "
                "of its openings, that brings the walk within the limit",
-        door ? std::vector<FixEdit>{*door} : std::vector<FixEdit>{}, Where{b->farthest, std::nullopt}));
+        door ? std::vector<FixEdit>{*door} : std::vector<FixEdit>{},
+        Where{b->farthest, std::nullopt}));
   }
 }
 

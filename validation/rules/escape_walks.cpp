@@ -15,16 +15,20 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kOffWall = 0.01;  ///< how far door points and corners stand off the walls
 
 double distance(Point2 a, Point2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
-double cross3(Point2 o, Point2 a, Point2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+double cross3(Point2 o, Point2 a, Point2 b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
 
 double segment_distance(Point2 p, Point2 a, Point2 b) {
   const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-  const double t = len2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  const double t =
+      len2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
   return distance(p, {a.x + t * dx, a.y + t * dy});
 }
 
 bool cross_properly(Point2 a, Point2 b, Point2 c, Point2 d) {
-  const double d1 = cross3(a, b, c), d2 = cross3(a, b, d), d3 = cross3(c, d, a), d4 = cross3(c, d, b);
+  const double d1 = cross3(a, b, c), d2 = cross3(a, b, d), d3 = cross3(c, d, a),
+               d4 = cross3(c, d, b);
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
@@ -71,7 +75,10 @@ std::vector<Point2> EscapeWalks::door_points(const Wall& w, double lo, double hi
 }
 
 EscapeWalks::EscapeWalks(const Scene& scene, const Storey& storey)
-    : scene_(scene), storey_(storey), room_points_(storey.rooms.size()), convex_(storey.rooms.size(), true) {
+    : scene_(scene),
+      storey_(storey),
+      room_points_(storey.rooms.size()),
+      convex_(storey.rooms.size(), true) {
   for (std::size_t r = 0; r < storey.rooms.size(); ++r) {
     const std::vector<Point2>& o = storey.rooms[r].outline;
     for (std::size_t i = 0; i < o.size(); ++i) {
@@ -82,13 +89,15 @@ EscapeWalks::EscapeWalks(const Scene& scene, const Storey& storey)
       if (la == 0 || lb == 0) continue;
       Point2 bis{(a.x - v.x) / la + (b.x - v.x) / lb, (a.y - v.y) / la + (b.y - v.y) / lb};
       const double len = std::hypot(bis.x, bis.y);
-      bis = len > 0 ? Point2{-bis.x / len, -bis.y / len} : Point2{(a.y - b.y) / distance(a, b), (b.x - a.x) / distance(a, b)};
+      bis = len > 0 ? Point2{-bis.x / len, -bis.y / len}
+                    : Point2{(a.y - b.y) / distance(a, b), (b.x - a.x) / distance(a, b)};
       room_points_[r].push_back(points_.size());
       points_.push_back({{v.x + kOffWall * bis.x, v.y + kOffWall * bis.y}, r});
     }
   }
   links_.resize(points_.size());
-  for (std::size_t d = 0; d < storey.doors.size(); ++d) add_door_points(d, *scene.host(storey.doors[d]));
+  for (std::size_t d = 0; d < storey.doors.size(); ++d)
+    add_door_points(d, *scene.host(storey.doors[d]));
   link_rooms();
   find_upper_walks();
   find_lower_walks();
@@ -192,18 +201,22 @@ std::vector<Point2> EscapeWalks::samples(std::size_t room, double spacing) const
 
 std::optional<WalkBounds> EscapeWalks::longest_walk(std::size_t room, double spacing) const {
   const std::vector<std::size_t>& pts = room_points_[room];
-  if (std::none_of(pts.begin(), pts.end(), [&](std::size_t i) { return upper_[i] < kInf; })) return std::nullopt;
+  if (std::none_of(pts.begin(), pts.end(), [&](std::size_t i) { return upper_[i] < kInf; }))
+    return std::nullopt;
   const std::vector<std::size_t>& doors = room_doors_[room];
   const Plan& plan = scene_.plan();
   WalkBounds bounds{0.0, 0.0, {}};
   for (const Point2& p : samples(room, spacing)) {
     double up = kInf, low = kInf;
     for (const std::size_t i : pts)
-      if (upper_[i] < kInf && is_visible(room, p, points_[i].p)) up = std::min(up, upper_[i] + distance(p, points_[i].p));
+      if (upper_[i] < kInf && is_visible(room, p, points_[i].p))
+        up = std::min(up, upper_[i] + distance(p, points_[i].p));
     for (const std::size_t d : doors) {
       const Opening& o = plan.openings[storey_.doors[d]];
       const Wall& w = plan.walls[*scene_.host(storey_.doors[d])];
-      low = std::min(low, segment_distance(p, hole_end(w, o.offset), hole_end(w, o.offset + o.width)) + lower_[d]);
+      low = std::min(
+          low,
+          segment_distance(p, hole_end(w, o.offset), hole_end(w, o.offset + o.width)) + lower_[d]);
     }
     if (up < kInf && up > bounds.upper) bounds.upper = up, bounds.farthest = p;
     if (low < kInf) bounds.lower = std::max(bounds.lower, low);
@@ -212,7 +225,8 @@ std::optional<WalkBounds> EscapeWalks::longest_walk(std::size_t room, double spa
   return bounds;
 }
 
-double EscapeWalks::walk_to(std::size_t room, const std::vector<Point2>& exits, double beyond, double spacing) const {
+double EscapeWalks::walk_to(std::size_t room, const std::vector<Point2>& exits, double beyond,
+                            double spacing) const {
   double longest = 0;
   for (const Point2& p : samples(room, spacing)) {
     double up = kInf;

@@ -47,7 +47,8 @@ class EscapeWalks {
 
   /// @return the points of a door's hole on one face, 1 cm off it: at 10 cm (or a quarter of
   ///         the width) in from each jamb, and the middle. side +1: the wall's left face.
-  [[nodiscard]] static std::vector<Point2> door_points(const Wall& w, double lo, double hi, int side);
+  [[nodiscard]] static std::vector<Point2> door_points(const Wall& w, double lo, double hi,
+                                                       int side);
 
  private:
   struct Point {
@@ -65,11 +66,12 @@ class EscapeWalks {
   const Storey& storey_;
   std::vector<Point> points_;
   std::vector<std::vector<std::pair<std::size_t, double>>> links_;
-  std::vector<std::vector<std::size_t>> room_points_;  ///< by room: its door points and inner corners
-  std::vector<bool> convex_;                           ///< by room
-  std::vector<double> upper_;                          ///< by point: walk to outside
-  std::vector<double> lower_;                          ///< by door (storey order): bound from its hole
-  std::vector<std::vector<std::size_t>> room_doors_;   ///< by room: its doors (storey order)
+  std::vector<std::vector<std::size_t>>
+      room_points_;            ///< by room: its door points and inner corners
+  std::vector<bool> convex_;   ///< by room
+  std::vector<double> upper_;  ///< by point: walk to outside
+  std::vector<double> lower_;  ///< by door (storey order): bound from its hole
+  std::vector<std::vector<std::size_t>> room_doors_;  ///< by room: its doors (storey order)
 };
 
 }  // namespace roomcad::rules

@@ -24,9 +24,7 @@ ValidateOptions local_options() {
 
 }  // namespace
 
-Heights heights_of(const Wall& w) {
-  return {w.base, w.base + highest_height(w)};
-}
+Heights heights_of(const Wall& w) { return {w.base, w.base + highest_height(w)}; }
 
 Heights heights_of(const Plan& plan, const std::vector<std::size_t>& walls) {
   Heights band = heights_of(plan.walls[walls.front()]);
@@ -65,7 +63,8 @@ std::optional<Plan> Neighbourhood::try_edits(const std::vector<FixEdit>& edits) 
   } catch (const PreconditionError&) {
     return std::nullopt;
   }
-  if (!introduced_errors(before_, validate(edited, local_options())).items.empty()) return std::nullopt;
+  if (!introduced_errors(before_, validate(edited, local_options())).items.empty())
+    return std::nullopt;
   return edited;
 }
 
@@ -84,13 +83,15 @@ std::vector<FixEdit> move_wall_edits(const Scene& scene, std::size_t wall, Point
   const Plan& plan = scene.plan();
   const Wall& w = plan.walls[wall];
   const auto moved = [&](Point2 p) { return Point2{p.x + by.x, p.y + by.y}; };
-  std::vector<FixEdit> edits{set_edit(w.id, {{"from", point_text(moved(w.from))}, {"to", point_text(moved(w.to))}})};
+  std::vector<FixEdit> edits{
+      set_edit(w.id, {{"from", point_text(moved(w.from))}, {"to", point_text(moved(w.to))}})};
   for (const std::size_t x : scene.walls_near(scene.wall_box(wall))) {
     if (x == wall || !scene.joins().are_joined(wall, x)) continue;
     const Wall& other = plan.walls[x];
     std::vector<std::pair<std::string, std::string>> ends;
     for (const auto& [key, end] : {std::pair{"from", other.from}, std::pair{"to", other.to}})
-      if (is_near_segment(end, w.from, w.to, plan.site.tolerance)) ends.emplace_back(key, point_text(moved(end)));
+      if (is_near_segment(end, w.from, w.to, plan.site.tolerance))
+        ends.emplace_back(key, point_text(moved(end)));
     if (!ends.empty()) edits.push_back(set_edit(other.id, std::move(ends)));
   }
   return edits;

@@ -60,6 +60,7 @@ class Neighbourhood {
 [[nodiscard]] std::string point_text(Point2 p);
 
 /// @return a set edit of one object.
-[[nodiscard]] FixEdit set_edit(std::string id, std::vector<std::pair<std::string, std::string>> fields);
+[[nodiscard]] FixEdit set_edit(std::string id,
+                               std::vector<std::pair<std::string, std::string>> fields);
 
 }  // namespace roomcad::rules

@@ -54,7 +54,8 @@ double distance_to_quad(Point2 p, const std::array<Point2, 4>& q) {
     const double ex = b.x - a.x, ey = b.y - a.y;
     if (ex * (p.y - a.y) - ey * (p.x - a.x) < 0) inside = false;
     const double len2 = ex * ex + ey * ey;
-    const double t = len2 > 0 ? std::clamp(((p.x - a.x) * ex + (p.y - a.y) * ey) / len2, 0.0, 1.0) : 0.0;
+    const double t =
+        len2 > 0 ? std::clamp(((p.x - a.x) * ex + (p.y - a.y) * ey) / len2, 0.0, 1.0) : 0.0;
     best = std::min(best, std::hypot(p.x - a.x - t * ex, p.y - a.y - t * ey));
   }
   return inside ? 0.0 : best;
@@ -68,7 +69,8 @@ struct Candidate {
 
 /// Candidates where circles of radius rho about wall corners meet the lines, or each other.
 void add_arc_candidates(const StoreyWalls& sw, const std::vector<std::size_t>& walls,
-                        const std::vector<std::pair<Point2, double>>& lines, double rho, std::vector<Point2>& out) {
+                        const std::vector<std::pair<Point2, double>>& lines, double rho,
+                        std::vector<Point2>& out) {
   std::vector<Point2> corners;
   for (const std::size_t w : walls)
     for (const Point2& c : sw.quad(w)) corners.push_back(c);
@@ -91,7 +93,8 @@ void add_arc_candidates(const StoreyWalls& sw, const std::vector<std::size_t>& w
 }
 
 std::vector<Candidate> candidates(const StoreyWalls& sw, const std::vector<std::size_t>& walls,
-                                  const RoomLocator& locator, std::size_t room, double rho, double tol) {
+                                  const RoomLocator& locator, std::size_t room, double rho,
+                                  double tol) {
   const Plan& plan = sw.scene().plan();
   std::vector<LineRef> refs;
   std::vector<std::pair<Point2, double>> lines;
@@ -109,18 +112,21 @@ std::vector<Candidate> candidates(const StoreyWalls& sw, const std::vector<std::
   };
   for (std::size_t i = 0; i < lines.size(); ++i)
     for (std::size_t j = i + 1; j < lines.size(); ++j) {
-      const auto p = crossing(std::pair{Pt<double>{lines[i].first.x, lines[i].first.y}, lines[i].second},
-                              std::pair{Pt<double>{lines[j].first.x, lines[j].first.y}, lines[j].second});
+      const auto p =
+          crossing(std::pair{Pt<double>{lines[i].first.x, lines[i].first.y}, lines[i].second},
+                   std::pair{Pt<double>{lines[j].first.x, lines[j].first.y}, lines[j].second});
       if (p) consider({p->x, p->y}, std::pair{refs[i], refs[j]});
     }
   std::vector<Point2> arcs;
   add_arc_candidates(sw, walls, lines, rho, arcs);
   for (const Point2& p : arcs) consider(p, std::nullopt);
-  std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) { return a.clearance > b.clearance; });
+  std::sort(out.begin(), out.end(),
+            [](const Candidate& a, const Candidate& b) { return a.clearance > b.clearance; });
   return out;
 }
 
-bool is_clear(const Scene& scene, const std::vector<std::size_t>& walls, Point2 c, double diameter) {
+bool is_clear(const Scene& scene, const std::vector<std::size_t>& walls, Point2 c,
+              double diameter) {
   return decide_written([&](auto tag) {
     using NT = decltype(tag);
     const Pt<NT> p{computed<NT>(c.x), computed<NT>(c.y)};
@@ -131,8 +137,8 @@ bool is_clear(const Scene& scene, const std::vector<std::size_t>& walls, Point2 
   });
 }
 
-bool is_clear_rebuilt(const Scene& scene, const std::vector<std::size_t>& walls, std::pair<LineRef, LineRef> l,
-                      double diameter) {
+bool is_clear_rebuilt(const Scene& scene, const std::vector<std::size_t>& walls,
+                      std::pair<LineRef, LineRef> l, double diameter) {
   const Plan& plan = scene.plan();
   return decide_written([&](auto tag) {
     using NT = decltype(tag);
@@ -179,15 +185,15 @@ double StoreyWalls::clearance(Point2 p, const std::vector<std::size_t>& walls) c
   return best;
 }
 
-FreeDisc find_free_disc(const StoreyWalls& sw, const std::vector<Room>& rooms, const RoomLocator& locator,
-                        std::size_t room, double diameter) {
+FreeDisc find_free_disc(const StoreyWalls& sw, const std::vector<Room>& rooms,
+                        const RoomLocator& locator, std::size_t room, double diameter) {
   const Room& r = rooms[room];
   if (r.outline.size() < 3) return {};
   const double rho = diameter / 2;
   const std::vector<std::size_t> walls = sw.near(grown(room_box(r), rho + kSlack));
   const Box2 box = room_box(r);
-  const double tol = 1e-9 * (1 + std::max({std::fabs(box.min_x), std::fabs(box.max_x), std::fabs(box.min_y),
-                                           std::fabs(box.max_y)}));
+  const double tol = 1e-9 * (1 + std::max({std::fabs(box.min_x), std::fabs(box.max_x),
+                                           std::fabs(box.min_y), std::fabs(box.max_y)}));
   const Point2 middle = centroid(r.outline);
   if (locator.locate(middle) == room && sw.clearance(middle, walls) > rho + tol &&
       is_clear(sw.scene(), walls, middle, diameter))
@@ -195,18 +201,20 @@ FreeDisc find_free_disc(const StoreyWalls& sw, const std::vector<Room>& rooms, c
   // Corners of the centres kSlack farther from the walls: clear by kSlack, so the intervals
   // verify them at once. Only a circle that fits with less to spare needs the exact rebuild.
   for (const Candidate& c : candidates(sw, walls, locator, room, rho + kSlack, tol))
-    if (c.clearance >= rho + kSlack / 2 && is_clear(sw.scene(), walls, c.p, diameter)) return {true, c.p, c.clearance};
+    if (c.clearance >= rho + kSlack / 2 && is_clear(sw.scene(), walls, c.p, diameter))
+      return {true, c.p, c.clearance};
   const std::vector<Candidate> touching = candidates(sw, walls, locator, room, rho, tol);
   for (std::size_t k = 0; k < touching.size() && k < kVerified; ++k) {
     const Candidate& c = touching[k];
-    if (c.lines && is_clear_rebuilt(sw.scene(), walls, *c.lines, diameter)) return {true, c.p, c.clearance};
+    if (c.lines && is_clear_rebuilt(sw.scene(), walls, *c.lines, diameter))
+      return {true, c.p, c.clearance};
   }
   if (touching.empty()) return {false, middle, sw.clearance(middle, walls)};
   return {false, touching.front().p, touching.front().clearance};
 }
 
-double largest_free_diameter(const StoreyWalls& sw, const std::vector<Room>& rooms, const RoomLocator& locator,
-                             std::size_t room, double diameter) {
+double largest_free_diameter(const StoreyWalls& sw, const std::vector<Room>& rooms,
+                             const RoomLocator& locator, std::size_t room, double diameter) {
   const Room& r = rooms[room];
   const std::vector<std::size_t> walls = sw.near(grown(room_box(r), diameter));
   double lo = 0, hi = diameter;

@@ -42,8 +42,8 @@ class StoreyWalls {
 
 struct FreeDisc {
   bool fits = false;
-  Point2 centre;          ///< where it fits (or the best place found)
-  double clearance = 0;   ///< that place's distance to the walls (doubles), about
+  Point2 centre;         ///< where it fits (or the best place found)
+  double clearance = 0;  ///< that place's distance to the walls (doubles), about
 };
 
 /// @param[in] rooms, room  the storey's rooms and the one to search
@@ -51,12 +51,14 @@ struct FreeDisc {
 /// @param[in] diameter     of the circle, metres (a written number: 1.5 is exactly 3/2)
 /// @return whether the circle fits in the room; exact as the file comment says.
 [[nodiscard]] FreeDisc find_free_disc(const StoreyWalls& walls, const std::vector<Room>& rooms,
-                                      const RoomLocator& locator, std::size_t room, double diameter);
+                                      const RoomLocator& locator, std::size_t room,
+                                      double diameter);
 
 /// @return the diameter of the largest free circle of the room, less than `diameter`, to
 ///         about 1 mm (doubles, by bisection on find_free_disc's candidates; for messages
 ///         and fixes, never for verdicts).
 [[nodiscard]] double largest_free_diameter(const StoreyWalls& walls, const std::vector<Room>& rooms,
-                                           const RoomLocator& locator, std::size_t room, double diameter);
+                                           const RoomLocator& locator, std::size_t room,
+                                           double diameter);
 
 }  // namespace roomcad::rules

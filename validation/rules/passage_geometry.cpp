@@ -21,7 +21,8 @@ double cross2(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
 Point2 closest_on(Point2 p, Point2 a, Point2 b) {
   const Point2 d = sub(b, a);
   const double len2 = d.x * d.x + d.y * d.y;
-  const double t = len2 > 0 ? std::clamp(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2, 0.0, 1.0) : 0.0;
+  const double t =
+      len2 > 0 ? std::clamp(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2, 0.0, 1.0) : 0.0;
   return {a.x + t * d.x, a.y + t * d.y};
 }
 
@@ -66,13 +67,15 @@ bool in_door_hole(const Scene& scene, std::size_t w, Point2 p, double tol) {
 
 template <class NT>
 Poly<NT> exact_piece(const Scene& scene, const Piece& piece) {
-  return wall_pieces<NT>(scene.plan(), scene.joins(), piece.wall, scene.door_holes(piece.wall))[piece.index];
+  return wall_pieces<NT>(scene.plan(), scene.joins(), piece.wall,
+                         scene.door_holes(piece.wall))[piece.index];
 }
 
 bool closer_than(const Scene& scene, const Piece& p, const Piece& q, double width) {
   return decide_written([&](auto tag) {
     using NT = decltype(tag);
-    return is_closer_than(exact_piece<NT>(scene, p), exact_piece<NT>(scene, q), NT(width) * NT(width));
+    return is_closer_than(exact_piece<NT>(scene, p), exact_piece<NT>(scene, q),
+                          NT(width) * NT(width));
   });
 }
 
@@ -80,11 +83,13 @@ std::vector<Piece> pieces_of(const Scene& scene, const std::vector<std::size_t>&
   std::vector<Piece> out;
   for (const std::size_t w : walls) {
     if (!scene.is_usable(w)) continue;
-    const std::vector<Poly<double>> polys = wall_pieces<double>(scene.plan(), scene.joins(), w, scene.door_holes(w));
+    const std::vector<Poly<double>> polys =
+        wall_pieces<double>(scene.plan(), scene.joins(), w, scene.door_holes(w));
     for (std::size_t k = 0; k < polys.size(); ++k) {
       if (polys[k].n < 3) continue;
       Piece piece{w, k, {}};
-      for (std::size_t i = 0; i < polys[k].n; ++i) piece.corners.push_back({polys[k][i].x, polys[k][i].y});
+      for (std::size_t i = 0; i < polys[k].n; ++i)
+        piece.corners.push_back({polys[k][i].x, polys[k][i].y});
       out.push_back(std::move(piece));
     }
   }
@@ -130,22 +135,27 @@ Point2 door_face_middle(const Wall& w, const Opening& o, int side) {
 PassageGeometry::PassageGeometry(const Scene& scene, const Storey& storey, double width)
     : scene_(scene), storey_(storey), pieces_(pieces_of(scene, storey.walls)) {
   std::vector<Box2> boxes;
-  for (std::size_t i = 0; i < pieces_.size(); ++i) boxes.push_back(box_of(pieces_[i].corners, i, width / 2 + 1e-6));
+  for (std::size_t i = 0; i < pieces_.size(); ++i)
+    boxes.push_back(box_of(pieces_[i].corners, i, width / 2 + 1e-6));
   const RoomLocator locator(storey.rooms);
   for (const auto& [p, q] : find_meeting_boxes(boxes))
     if (pieces_[p].wall != pieces_[q].wall) add_barrier(p, q, width, locator);
 }
 
-void PassageGeometry::add_barrier(std::size_t p, std::size_t q, double width, const RoomLocator& locator) {
+void PassageGeometry::add_barrier(std::size_t p, std::size_t q, double width,
+                                  const RoomLocator& locator) {
   const Gap gap = closest_pair(pieces_[p].corners, pieces_[q].corners);
   const Box2 box = box_of(pieces_[p].corners, 0, 0);
-  const double tol = 1e-9 * (1 + std::max({std::fabs(box.min_x), std::fabs(box.max_x), std::fabs(box.min_y),
-                                           std::fabs(box.max_y)}));
+  const double tol = 1e-9 * (1 + std::max({std::fabs(box.min_x), std::fabs(box.max_x),
+                                           std::fabs(box.min_y), std::fabs(box.max_y)}));
   if (gap.d > width + tol) return;
   if (gap.d >= width - tol && !closer_than(scene_, pieces_[p], pieces_[q], width)) return;
-  if (gap.d <= tol && scene_.joins().are_joined(pieces_[p].wall, pieces_[q].wall)) return;  // a join
+  if (gap.d <= tol && scene_.joins().are_joined(pieces_[p].wall, pieces_[q].wall))
+    return;  // a join
   const Point2 mid{(gap.a.x + gap.b.x) / 2, (gap.a.y + gap.b.y) / 2};
-  if (in_door_hole(scene_, pieces_[p].wall, mid, tol) || in_door_hole(scene_, pieces_[q].wall, mid, tol)) return;
+  if (in_door_hole(scene_, pieces_[p].wall, mid, tol) ||
+      in_door_hole(scene_, pieces_[q].wall, mid, tol))
+    return;
   const std::optional<std::size_t> room = locator.locate(mid);
   if (!room) return;
   barriers_.push_back({p, q, gap.a, gap.b, gap.d, *room});
@@ -160,7 +170,8 @@ namespace {
 bool is_free_end(const Scene& scene, std::size_t w, Point2 e) {
   for (const std::size_t z : scene.walls_near(scene.wall_box(w))) {
     const Join* j = z == w ? nullptr : scene.joins().find(w, z);
-    if (j && std::hypot(j->point.x - e.x, j->point.y - e.y) <= 10 * scene.plan().site.tolerance) return false;
+    if (j && std::hypot(j->point.x - e.x, j->point.y - e.y) <= 10 * scene.plan().site.tolerance)
+      return false;
   }
   return true;
 }
@@ -177,17 +188,23 @@ void add_shortenings(const Scene& scene, std::size_t w, double step, std::vector
   if (length <= step + 0.05) return;
   const Point2 u{(wall.to.x - wall.from.x) / length, (wall.to.y - wall.from.y) / length};
   if (is_free_end(scene, w, wall.to))
-    out.push_back({fmt::format("shorten wall '{}' by {} at its 'to' end", wall.id, detail::metres(step)),
-                   {set_edit(wall.id, {{"to", point_text({wall.to.x - step * u.x, wall.to.y - step * u.y})}})}});
+    out.push_back(
+        {fmt::format("shorten wall '{}' by {} at its 'to' end", wall.id, detail::metres(step)),
+         {set_edit(wall.id,
+                   {{"to", point_text({wall.to.x - step * u.x, wall.to.y - step * u.y})}})}});
   if (is_free_end(scene, w, wall.from))
-    out.push_back({fmt::format("shorten wall '{}' by {} at its 'from' end", wall.id, detail::metres(step)),
-                   {set_edit(wall.id, {{"from", point_text({wall.from.x + step * u.x, wall.from.y + step * u.y})}})}});
+    out.push_back(
+        {fmt::format("shorten wall '{}' by {} at its 'from' end", wall.id, detail::metres(step)),
+         {set_edit(wall.id,
+                   {{"from", point_text({wall.from.x + step * u.x, wall.from.y + step * u.y})}})}});
 }
 
-void add_move(const Scene& scene, std::size_t w, Point2 by, double step, std::vector<Candidate>& out) {
+void add_move(const Scene& scene, std::size_t w, Point2 by, double step,
+              std::vector<Candidate>& out) {
   std::vector<FixEdit> edits = move_wall_edits(scene, w, by);
-  std::string text = fmt::format("move wall '{}' {} {}", scene.plan().walls[w].id, detail::metres(step),
-                                 detail::direction_text({by.x / step, by.y / step}));
+  std::string text =
+      fmt::format("move wall '{}' {} {}", scene.plan().walls[w].id, detail::metres(step),
+                  detail::direction_text({by.x / step, by.y / step}));
   if (edits.size() > 1) text += " with the ends of the walls that meet it";
   out.push_back({std::move(text), std::move(edits)});
 }
@@ -209,8 +226,8 @@ std::optional<PassageFix> PassageGeometry::find_fix(const Barrier& bar, double w
   add_move(scene_, x, {-dir.x * step, -dir.y * step}, step, candidates);
   Box2 box = scene_.wall_box(x);
   const Box2& by = scene_.wall_box(y);
-  box = {std::min(box.min_x, by.min_x), std::min(box.min_y, by.min_y), std::max(box.max_x, by.max_x),
-         std::max(box.max_y, by.max_y), 0};
+  box = {std::min(box.min_x, by.min_x), std::min(box.min_y, by.min_y),
+         std::max(box.max_x, by.max_x), std::max(box.max_y, by.max_y), 0};
   const Neighbourhood near(scene_, grown(box, step + 2.0), heights_of(scene_.plan(), {x, y}));
   const Point2 mid{(bar.a.x + bar.b.x) / 2, (bar.a.y + bar.b.y) / 2};
   for (Candidate& c : candidates) {
@@ -227,7 +244,8 @@ std::optional<PassageFix> PassageGeometry::find_fix(const Barrier& bar, double w
     for (std::size_t w = 0; w < edited->walls.size(); ++w)
       if (local.is_usable(w)) usable.push_back(w);
     if (!apart) continue;
-    const std::vector<Room> rooms = find_rooms(plan_with_walls(*edited, walls_at_floor(*edited, usable, storey_.floor)));
+    const std::vector<Room> rooms =
+        find_rooms(plan_with_walls(*edited, walls_at_floor(*edited, usable, storey_.floor)));
     if (RoomLocator(rooms).locate(mid)) return PassageFix{std::move(c.text), std::move(c.edits)};
   }
   return std::nullopt;

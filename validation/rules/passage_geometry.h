@@ -28,9 +28,9 @@ struct Piece {
 struct Barrier {
   std::size_t p = 0;  ///< piece indices
   std::size_t q = 0;
-  Point2 a;           ///< closest points on p and q (doubles)
+  Point2 a;  ///< closest points on p and q (doubles)
   Point2 b;
-  double gap = 0.0;   ///< |a - b|, about
+  double gap = 0.0;  ///< |a - b|, about
   std::size_t room = 0;
 };
 

@@ -55,8 +55,8 @@ std::size_t arc_of(const std::vector<double>& door_params, double t) {
 }
 
 /// @return the arcs a node reaches without the link `skip`.
-std::vector<bool> arcs_reached(std::size_t from, std::size_t arcs, std::size_t nodes, const std::vector<Link>& links,
-                               std::size_t skip) {
+std::vector<bool> arcs_reached(std::size_t from, std::size_t arcs, std::size_t nodes,
+                               const std::vector<Link>& links, std::size_t skip) {
   std::vector<bool> seen(nodes, false);
   std::vector<std::size_t> stack{from};
   seen[from] = true;
@@ -74,13 +74,16 @@ std::vector<bool> arcs_reached(std::size_t from, std::size_t arcs, std::size_t n
 }
 
 /// @return the links that lie on a chain between two different arcs.
-std::vector<std::size_t> separating_links(std::size_t arcs, std::size_t nodes, const std::vector<Link>& links) {
+std::vector<std::size_t> separating_links(std::size_t arcs, std::size_t nodes,
+                                          const std::vector<Link>& links) {
   std::vector<std::size_t> out;
   for (std::size_t l = 0; l < links.size(); ++l) {
     if (links[l].a == links[l].b) continue;
     const std::vector<bool> ra = arcs_reached(links[l].a, arcs, nodes, links, l);
     const std::vector<bool> rb = arcs_reached(links[l].b, arcs, nodes, links, l);
-    const auto count = [](const std::vector<bool>& v) { return std::count(v.begin(), v.end(), true); };
+    const auto count = [](const std::vector<bool>& v) {
+      return std::count(v.begin(), v.end(), true);
+    };
     bool apart = false;
     for (std::size_t i = 0; i < arcs && !apart; ++i)
       apart = ra[i] && (count(rb) > 1 || (count(rb) == 1 && !rb[i]));
@@ -97,13 +100,15 @@ struct RoomPassages {
   Report& report;
 
   /// The room's doors by where they meet its outline.
-  std::pair<std::vector<double>, std::vector<std::string>> doors_along(std::size_t r, const Outline& outline) const {
+  std::pair<std::vector<double>, std::vector<std::string>> doors_along(
+      std::size_t r, const Outline& outline) const {
     std::vector<std::pair<double, std::string>> doors;
     for (std::size_t d = 0; d < storey.doors.size(); ++d)
       for (int side = 0; side < 2; ++side)
         if (storey.door_rooms[d][side] == r) {
           const Opening& o = scene.plan().openings[storey.doors[d]];
-          doors.emplace_back(outline.param(door_face_middle(scene.plan().walls[*scene.host(storey.doors[d])], o, side)),
+          doors.emplace_back(outline.param(door_face_middle(
+                                 scene.plan().walls[*scene.host(storey.doors[d])], o, side)),
                              o.id);
         }
     std::sort(doors.begin(), doors.end());
@@ -134,7 +139,8 @@ struct RoomPassages {
       links.push_back({b, node_of(bar.p, bar.a), node_of(bar.q, bar.b)});
     }
     std::map<std::pair<std::string, std::string>, const Barrier*> narrowest;
-    for (const std::size_t l : separating_links(params.size(), params.size() + inner.size(), links)) {
+    for (const std::size_t l :
+         separating_links(params.size(), params.size() + inner.size(), links)) {
       const Barrier& bar = geometry.barrier(links[l].barrier);
       auto ids = std::minmax(scene.plan().walls[geometry.piece(bar.p).wall].id,
                              scene.plan().walls[geometry.piece(bar.q).wall].id);
@@ -144,20 +150,24 @@ struct RoomPassages {
     for (const auto& [ids, bar] : narrowest) report_barrier(r, *bar, ids, door_ids);
   }
 
-  void report_barrier(std::size_t r, const Barrier& bar, const std::pair<std::string, std::string>& ids,
+  void report_barrier(std::size_t r, const Barrier& bar,
+                      const std::pair<std::string, std::string>& ids,
                       const std::vector<std::string>& doors) const {
     const double width = cx.rules.thresholds.passage_min_width;
     const std::optional<PassageFix> fix = geometry.find_fix(bar, width);
     report.add(make_finding(
         cx, Code::passage_too_narrow, {ids.first, ids.second},
-        fmt::format("in {} the clear width between wall '{}' and wall '{}' is {}, narrower than {}, on the only "
-                    "way between the room's doors ({}).", cx.room_name(storey, r), ids.first, ids.second,
-                    detail::metres(bar.gap), detail::metres(width), fmt::join(doors, ", ")),
-        fix ? fix->text : fmt::format("widen the gap between wall '{}' and wall '{}' to {}", ids.first, ids.second,
-                                      detail::metres(width)),
+        fmt::format("in {} the clear width between wall '{}' and wall '{}' is {}, narrower than "
+                    "{}, on the only "
+                    "way between the room's doors ({}).",
+                    cx.room_name(storey, r), ids.first, ids.second, detail::metres(bar.gap),
+                    detail::metres(width), fmt::join(doors, ", ")),
+        fix ? fix->text
+            : fmt::format("widen the gap between wall '{}' and wall '{}' to {}", ids.first,
+                          ids.second, detail::metres(width)),
         fix ? fix->edits : std::vector<FixEdit>{},
-        detail::box_where(std::min(bar.a.x, bar.b.x), std::min(bar.a.y, bar.b.y), std::max(bar.a.x, bar.b.x),
-                          std::max(bar.a.y, bar.b.y))));
+        detail::box_where(std::min(bar.a.x, bar.b.x), std::min(bar.a.y, bar.b.y),
+                          std::max(bar.a.x, bar.b.x), std::max(bar.a.y, bar.b.y))));
   }
 };
 
@@ -168,7 +178,8 @@ void check_passages(const Context& cx, const Scene& scene, Report& report) {
   for (const Storey& s : cx.storeys) {
     const PassageGeometry geometry(scene, s, cx.rules.thresholds.passage_min_width);
     std::vector<std::vector<std::size_t>> by_room(s.rooms.size());
-    for (std::size_t b = 0; b < geometry.barrier_count(); ++b) by_room[geometry.barrier(b).room].push_back(b);
+    for (std::size_t b = 0; b < geometry.barrier_count(); ++b)
+      by_room[geometry.barrier(b).room].push_back(b);
     const RoomPassages passages{cx, scene, s, geometry, report};
     for (std::size_t r = 0; r < s.rooms.size(); ++r)
       if (s.accessible[r] && !by_room[r].empty()) passages.check(r, by_room[r]);

@@ -27,7 +27,8 @@ struct RoomGraph {
 
   explicit RoomGraph(const Storey& s) : outside(s.rooms.size()), links(s.rooms.size() + 1) {
     for (std::size_t d = 0; d < s.doors.size(); ++d) {
-      const std::size_t a = s.door_rooms[d][0].value_or(outside), b = s.door_rooms[d][1].value_or(outside);
+      const std::size_t a = s.door_rooms[d][0].value_or(outside),
+                        b = s.door_rooms[d][1].value_or(outside);
       if (a == b) continue;
       links[a].emplace_back(s.doors[d], b);
       links[b].emplace_back(s.doors[d], a);
@@ -49,7 +50,8 @@ struct RoomGraph {
 
 /// A door from the component into a reached room or the outside, tried on the neighbourhood.
 std::optional<FixEdit> connecting_door(const Context& cx, const Scene& scene, const Storey& s,
-                                       const std::vector<std::size_t>& component, const std::vector<bool>& reached) {
+                                       const std::vector<std::size_t>& component,
+                                       const std::vector<bool>& reached) {
   const Plan& plan = scene.plan();
   const RoomLocator& locator = cx.locator(s);
   const double width = std::max(0.9, centimetres_up(cx.rules.thresholds.door_min_width));
@@ -58,10 +60,12 @@ std::optional<FixEdit> connecting_door(const Context& cx, const Scene& scene, co
     for (const RoomSide& side : room_sides(scene, s.rooms[r])) {
       std::optional<Neighbourhood> near;  // built for the first place worth trying
       for (const double offset : door_offsets(scene, side, width)) {
-        const std::optional<std::size_t> other = locator.locate(beyond_side(plan, side, offset + width / 2, kProbe));
+        const std::optional<std::size_t> other =
+            locator.locate(beyond_side(plan, side, offset + width / 2, kProbe));
         if (other && !reached[*other]) continue;
         std::vector<FixEdit> edits{add_door_edit(id, plan.walls[side.wall].id, offset, width)};
-        if (!near) near.emplace(scene, scene.wall_box(side.wall), heights_of(plan.walls[side.wall]));
+        if (!near)
+          near.emplace(scene, scene.wall_box(side.wall), heights_of(plan.walls[side.wall]));
         if (near->try_edits(edits)) return edits.front();
       }
     }
@@ -71,11 +75,13 @@ std::optional<FixEdit> connecting_door(const Context& cx, const Scene& scene, co
 std::string room_list(const Context& cx, const Storey& s, const std::vector<std::size_t>& rooms) {
   std::vector<std::string> names;
   for (const std::size_t r : rooms) names.push_back(std::to_string(r + 1));
-  return (rooms.size() == 1 ? cx.room_name(s, rooms[0]) : "rooms " + fmt::format("{}", fmt::join(names, ", ")));
+  return (rooms.size() == 1 ? cx.room_name(s, rooms[0])
+                            : "rooms " + fmt::format("{}", fmt::join(names, ", ")));
 }
 
-void report_component(const Context& cx, const Scene& scene, const Storey& s, const RoomGraph& graph,
-                      std::vector<std::size_t> component, const std::vector<bool>& reached, Report& report) {
+void report_component(const Context& cx, const Scene& scene, const Storey& s,
+                      const RoomGraph& graph, std::vector<std::size_t> component,
+                      const std::vector<bool>& reached, Report& report) {
   std::sort(component.begin(), component.end());
   std::vector<std::string> doors;
   for (const std::size_t r : component)
@@ -83,21 +89,24 @@ void report_component(const Context& cx, const Scene& scene, const Storey& s, co
   std::sort(doors.begin(), doors.end());
   doors.erase(std::unique(doors.begin(), doors.end()), doors.end());
   const std::optional<FixEdit> door = connecting_door(cx, scene, s, component, reached);
-  const std::string fix = door ? fmt::format("add a door {} m wide to wall '{}' at offset {}", door->fields[3].second,
-                                             door->fields[1].second, door->fields[2].second)
-                               : "no wall of these rooms has room, clear of its openings, for a door to the "
-                                 "outside or to a room that can be reached: move an opening or a wall to make one";
-  const std::string how = doors.empty() ? "it has no door"
-                          : component.size() == 1
-                              ? fmt::format("its doors ({}) lead to no room that can be", fmt::join(doors, ", "))
-                              : fmt::format("{} are joined by doors {}, but none of them leads to a room that can be",
-                                            room_list(cx, s, component), fmt::join(doors, ", "));
+  const std::string fix =
+      door ? fmt::format("add a door {} m wide to wall '{}' at offset {}", door->fields[3].second,
+                         door->fields[1].second, door->fields[2].second)
+           : "no wall of these rooms has room, clear of its openings, for a door to the "
+             "outside or to a room that can be reached: move an opening or a wall to make one";
+  const std::string how =
+      doors.empty() ? "it has no door"
+      : component.size() == 1
+          ? fmt::format("its doors ({}) lead to no room that can be", fmt::join(doors, ", "))
+          : fmt::format("{} are joined by doors {}, but none of them leads to a room that can be",
+                        room_list(cx, s, component), fmt::join(doors, ", "));
   for (const std::size_t r : component) {
     const Room& room = s.rooms[r];
-    report.add(make_finding(cx, Code::room_unreachable, room.walls,
-                            fmt::format("{} ({:.2f} m², walls {}) cannot be reached from outside through doors: {}.",
-                                        cx.room_name(s, r), room.area, fmt::join(room.walls, ", "), how),
-                            fix, door ? std::vector<FixEdit>{*door} : std::vector<FixEdit>{}, room_where(room)));
+    report.add(make_finding(
+        cx, Code::room_unreachable, room.walls,
+        fmt::format("{} ({:.2f} m², walls {}) cannot be reached from outside through doors: {}.",
+                    cx.room_name(s, r), room.area, fmt::join(room.walls, ", "), how),
+        fix, door ? std::vector<FixEdit>{*door} : std::vector<FixEdit>{}, room_where(room)));
   }
 }
 
@@ -109,11 +118,13 @@ void check_reachability(const Context& cx, const Scene& scene, Report& report) {
   if (!s) return;
   const RoomGraph graph(*s);
   std::vector<bool> reached(graph.links.size(), false);
-  for (const std::size_t n : graph.reach(graph.outside, [](std::size_t) { return true; })) reached[n] = true;
+  for (const std::size_t n : graph.reach(graph.outside, [](std::size_t) { return true; }))
+    reached[n] = true;
   std::vector<bool> reported(s->rooms.size(), false);
   for (std::size_t r = 0; r < s->rooms.size(); ++r) {
     if (reached[r] || reported[r] || s->rooms[r].area < kMinRoomArea) continue;
-    const std::vector<std::size_t> component = graph.reach(r, [&](std::size_t n) { return n != graph.outside; });
+    const std::vector<std::size_t> component =
+        graph.reach(r, [&](std::size_t n) { return n != graph.outside; });
     for (const std::size_t n : component) reported[n] = true;
     report_component(cx, scene, *s, graph, component, reached, report);
   }

@@ -30,7 +30,8 @@ std::vector<RoomSide> room_sides(const Scene& scene, const Room& room) {
   const std::size_t n = room.outline.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Point2 p = room.outline[k], q = room.outline[(k + 1) % n];
-    const double tol = 1e-6 + 1e-9 * std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)});
+    const double tol =
+        1e-6 + 1e-9 * std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)});
     for (const std::string& id : room.walls) {
       const std::optional<std::size_t> index = scene.wall_named(id);
       if (!index) continue;
@@ -38,9 +39,12 @@ std::vector<RoomSide> room_sides(const Scene& scene, const Room& room) {
       const Frame f = frame_of(w);
       const double half = w.thickness / 2;
       for (const int side : {1, -1}) {
-        if (std::fabs(f.across(p) - side * half) > tol || std::fabs(f.across(q) - side * half) > tol) continue;
+        if (std::fabs(f.across(p) - side * half) > tol ||
+            std::fabs(f.across(q) - side * half) > tol)
+          continue;
         const double lo = std::min(f.along(p), f.along(q)), hi = std::max(f.along(p), f.along(q));
-        if (hi - lo > tol && hi > -tol && lo < f.length + tol) out.push_back({*index, side, lo, hi});
+        if (hi - lo > tol && hi > -tol && lo < f.length + tol)
+          out.push_back({*index, side, lo, hi});
       }
     }
   }
@@ -61,7 +65,8 @@ std::vector<double> door_offsets(const Scene& scene, const RoomSide& s, double w
   const double lo = std::max(s.lo, 0.0) + 0.05, hi = std::min(s.hi, length) - 0.05 - width;
   if (hi < lo) return {};
   std::vector<double> out{centimetres_down((lo + hi) / 2)};
-  for (long long k = static_cast<long long>(std::ceil(lo * 20)); static_cast<double>(k) / 20 <= hi; ++k)
+  for (long long k = static_cast<long long>(std::ceil(lo * 20)); static_cast<double>(k) / 20 <= hi;
+       ++k)
     out.push_back(static_cast<double>(k * 5) / 100);
   std::stable_sort(out.begin() + 1, out.end(), [&](double a, double b) {
     return std::fabs(a - out[0]) < std::fabs(b - out[0]);
@@ -81,7 +86,10 @@ FixEdit add_door_edit(const std::string& id, const std::string& wall, double off
   FixEdit e;
   e.op = FixEdit::Op::add;
   e.id = id;
-  e.fields = {{"type", "door"}, {"wall", wall}, {"offset", number_text(offset)}, {"width", number_text(width)}};
+  e.fields = {{"type", "door"},
+              {"wall", wall},
+              {"offset", number_text(offset)},
+              {"width", number_text(width)}};
   return e;
 }
 

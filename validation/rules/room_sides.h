@@ -39,6 +39,7 @@ struct RoomSide {
 [[nodiscard]] std::vector<double> door_offsets(const Scene& scene, const RoomSide& s, double width);
 
 /// @return an add edit for a door `id` in wall `wall` at `offset`, `width` wide.
-[[nodiscard]] FixEdit add_door_edit(const std::string& id, const std::string& wall, double offset, double width);
+[[nodiscard]] FixEdit add_door_edit(const std::string& id, const std::string& wall, double offset,
+                                    double width);
 
 }  // namespace roomcad::rules

@@ -30,9 +30,10 @@ void check_passages(const Context& cx, const Scene& scene, Report& report);
 void check_escape(const Context& cx, const Scene& scene, Report& report);
 
 /// @return a finding of `code` with the rule set's severity for it.
-[[nodiscard]] Diagnostic make_finding(const Context& cx, Code code, std::vector<std::string> objects,
-                                      std::string message, std::string fix,
-                                      std::vector<FixEdit> edits, std::optional<Where> where);
+[[nodiscard]] Diagnostic make_finding(const Context& cx, Code code,
+                                      std::vector<std::string> objects, std::string message,
+                                      std::string fix, std::vector<FixEdit> edits,
+                                      std::optional<Where> where);
 
 /// @return the box of a room's clear outline as a `where`.
 [[nodiscard]] Where room_where(const Room& room);

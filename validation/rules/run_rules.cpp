@@ -9,10 +9,11 @@
 namespace roomcad {
 namespace rules {
 
-Diagnostic make_finding(const Context& cx, Code code, std::vector<std::string> objects, std::string message,
-                        std::string fix, std::vector<FixEdit> edits, std::optional<Where> where) {
-  Diagnostic d = detail::make_diagnostic(cx.severity(code), code, std::move(objects), std::move(message),
-                                         std::move(fix), std::move(where));
+Diagnostic make_finding(const Context& cx, Code code, std::vector<std::string> objects,
+                        std::string message, std::string fix, std::vector<FixEdit> edits,
+                        std::optional<Where> where) {
+  Diagnostic d = detail::make_diagnostic(cx.severity(code), code, std::move(objects),
+                                         std::move(message), std::move(fix), std::move(where));
   d.edits = std::move(edits);
   return d;
 }
@@ -26,8 +27,8 @@ Where room_where(const Room& room) {
 
 namespace detail {
 
-void check_rules(const Plan& plan, const Joins& joins, const Usable& usable, const RuleSet& rule_set,
-                 const std::vector<Room>* whole_rooms, Report& report) {
+void check_rules(const Plan& plan, const Joins& joins, const Usable& usable,
+                 const RuleSet& rule_set, const std::vector<Room>* whole_rooms, Report& report) {
   const rules::Context cx(plan, joins, usable, rule_set, whole_rooms);
   const rules::Scene scene(plan, joins, usable.walls, usable.host);
   // Objects on one thread, rooms on the other; each writes its own report, joined in order.

@@ -45,7 +45,8 @@ Scene::Scene(const Plan& plan) : plan_(plan) {
   index_walls();
   host_.resize(plan.openings.size());
   for (std::size_t i = 0; i < plan.openings.size(); ++i)
-    if (const auto w = wall_named(plan.openings[i].wall); w && usable_[*w] && is_testable(plan.openings[i]))
+    if (const auto w = wall_named(plan.openings[i].wall);
+        w && usable_[*w] && is_testable(plan.openings[i]))
       host_[i] = w;
   index_doors();
 }
@@ -55,7 +56,8 @@ void Scene::index_walls() {
   boxes_.assign(plan_.walls.size(), Box2{});
   for (Box2 b : footprints.boxes()) {
     // Written numbers differ from the doubles by less than an ulp: a relative margin covers them.
-    const double scale = std::max({std::fabs(b.min_x), std::fabs(b.max_x), std::fabs(b.min_y), std::fabs(b.max_y)});
+    const double scale =
+        std::max({std::fabs(b.min_x), std::fabs(b.max_x), std::fabs(b.min_y), std::fabs(b.max_y)});
     b = grown(b, 1e-12 * scale + 1e-12);
     boxes_[b.index] = b;
     usable_boxes_.push_back(b);

@@ -28,9 +28,11 @@ std::optional<Point2> interior_point(const Room& room) {
     const double w = o[k].x * o[(k + 1) % n].y - o[k].y * o[(k + 1) % n].x;
     a2 += w, cx += (o[k].x + o[(k + 1) % n].x) * w, cy += (o[k].y + o[(k + 1) % n].y) * w;
   }
-  if (a2 != 0 && is_inside_outline(o, {cx / (3 * a2), cy / (3 * a2)})) return Point2{cx / (3 * a2), cy / (3 * a2)};
+  if (a2 != 0 && is_inside_outline(o, {cx / (3 * a2), cy / (3 * a2)}))
+    return Point2{cx / (3 * a2), cy / (3 * a2)};
   for (std::size_t k = 0; k < n; ++k) {
-    const Point2 p{(o[k].x + o[(k + 1) % n].x + o[(k + 2) % n].x) / 3, (o[k].y + o[(k + 1) % n].y + o[(k + 2) % n].y) / 3};
+    const Point2 p{(o[k].x + o[(k + 1) % n].x + o[(k + 2) % n].x) / 3,
+                   (o[k].y + o[(k + 1) % n].y + o[(k + 2) % n].y) / 3};
     if (is_inside_outline(o, p)) return p;
   }
   return std::nullopt;
@@ -64,18 +66,22 @@ struct SideMove {
 std::vector<SideMove> side_moves(const Scene& scene, const Room& room, double step) {
   std::vector<SideMove> out;
   for (const RoomSide& side : room_sides(scene, room)) {
-    if (std::any_of(out.begin(), out.end(), [&](const SideMove& m) { return m.wall == side.wall; })) continue;
+    if (std::any_of(out.begin(), out.end(), [&](const SideMove& m) { return m.wall == side.wall; }))
+      continue;
     const Wall& w = scene.plan().walls[side.wall];
     const double length = std::hypot(w.to.x - w.from.x, w.to.y - w.from.y);
-    out.push_back({side.wall, {side.side * (w.to.y - w.from.y) / length * step,
-                               -side.side * (w.to.x - w.from.x) / length * step}});
+    out.push_back({side.wall,
+                   {side.side * (w.to.y - w.from.y) / length * step,
+                    -side.side * (w.to.x - w.from.x) / length * step}});
   }
   return out;
 }
 
-std::string move_words(const Scene& scene, const SideMove& m, const std::vector<FixEdit>& edits, double step) {
-  std::string text = fmt::format("move wall '{}' {} {} (away from the room)", scene.plan().walls[m.wall].id,
-                                 detail::metres(step), detail::direction_text({m.by.x / step, m.by.y / step}));
+std::string move_words(const Scene& scene, const SideMove& m, const std::vector<FixEdit>& edits,
+                       double step) {
+  std::string text =
+      fmt::format("move wall '{}' {} {} (away from the room)", scene.plan().walls[m.wall].id,
+                  detail::metres(step), detail::direction_text({m.by.x / step, m.by.y / step}));
   if (edits.size() > 1) {
     std::vector<std::string> ends;
     for (std::size_t k = 1; k < edits.size(); ++k) ends.push_back("'" + edits[k].id + "'");
@@ -86,12 +92,13 @@ std::string move_words(const Scene& scene, const SideMove& m, const std::vector<
 
 /// One wall moved out, or failing that two walls across each other (a room short both ways):
 /// the second move is made on the plan with the first one applied.
-std::optional<WallMove> widen_room(const Scene& scene, const Storey& s, const Room& room, double lacking,
-                                   double diameter) {
+std::optional<WallMove> widen_room(const Scene& scene, const Storey& s, const Room& room,
+                                   double lacking, double diameter) {
   const std::optional<Point2> inside = interior_point(room);
   if (!inside) return std::nullopt;
   const double step = centimetres_up(lacking + 0.01);
-  const Neighbourhood near(scene, grown(room_box(room), step + 2.0), heights_of(scene.plan(), s.walls));
+  const Neighbourhood near(scene, grown(room_box(room), step + 2.0),
+                           heights_of(scene.plan(), s.walls));
   const std::vector<SideMove> moves = side_moves(scene, room, step);
   for (const SideMove& m : moves) {
     std::vector<FixEdit> edits = move_wall_edits(scene, m.wall, m.by);
@@ -106,7 +113,8 @@ std::optional<WallMove> widen_room(const Scene& scene, const Storey& s, const Ro
     const Scene moved(*once);
     for (std::size_t j = i + 1; j < moves.size(); ++j) {
       const SideMove& m = moves[j];
-      if (std::fabs(moves[i].by.x * m.by.y - moves[i].by.y * m.by.x) < 1e-9 * step * step) continue;  // parallel
+      if (std::fabs(moves[i].by.x * m.by.y - moves[i].by.y * m.by.x) < 1e-9 * step * step)
+        continue;  // parallel
       const std::optional<std::size_t> wall = moved.wall_named(scene.plan().walls[m.wall].id);
       if (!wall) continue;
       std::vector<FixEdit> edits = first;
@@ -114,7 +122,8 @@ std::optional<WallMove> widen_room(const Scene& scene, const Storey& s, const Ro
       edits.insert(edits.end(), second.begin(), second.end());
       const std::optional<Plan> twice = near.try_edits(edits);
       if (twice && holds_circle(*twice, s.floor, *inside, diameter))
-        return WallMove{move_words(scene, moves[i], first, step) + "; and " + move_words(moved, {*wall, m.by}, second, step),
+        return WallMove{move_words(scene, moves[i], first, step) + "; and " +
+                            move_words(moved, {*wall, m.by}, second, step),
                         std::move(edits)};
     }
   }
@@ -137,10 +146,13 @@ void check_turning_circles(const Context& cx, const Scene& scene, Report& report
       const std::optional<WallMove> move = widen_room(scene, s, room, diameter - largest, diameter);
       report.add(make_finding(
           cx, Code::no_turning_circle, room.walls,
-          fmt::format("{} ({:.2f} m², walls {}) has no free circle {} across to turn a wheelchair in: the "
-                      "largest is about {}.", cx.room_name(s, r), room.area, fmt::join(room.walls, ", "),
-                      detail::metres(diameter), detail::metres(largest)),
-          move ? move->text : "enlarge the room: no wall of it, or two, can move outward far enough",
+          fmt::format(
+              "{} ({:.2f} m², walls {}) has no free circle {} across to turn a wheelchair in: the "
+              "largest is about {}.",
+              cx.room_name(s, r), room.area, fmt::join(room.walls, ", "), detail::metres(diameter),
+              detail::metres(largest)),
+          move ? move->text
+               : "enlarge the room: no wall of it, or two, can move outward far enough",
           move ? move->edits : std::vector<FixEdit>{}, room_where(room)));
     }
   }

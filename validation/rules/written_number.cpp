@@ -20,7 +20,8 @@ exact::Radical power_of_ten(int k) {
 /// The shortest decimal that reads back to x, as an exact number. @pre x finite.
 exact::Radical shortest_decimal(double x) {
   char text[64];
-  const char* const end = std::to_chars(text, text + sizeof text, x, std::chars_format::scientific).ptr;
+  const char* const end =
+      std::to_chars(text, text + sizeof text, x, std::chars_format::scientific).ptr;
   // "d.ddddde+XX": at most 17 digits, split in two parts that doubles hold exactly.
   long long high = 0, low = 0;
   int digits = 0, low_digits = 0;
@@ -34,7 +35,8 @@ exact::Radical shortest_decimal(double x) {
     ++digits;
   }
   int exponent = 0;
-  if (c != end) std::from_chars(c + 1 + (c[1] == '+'), end, exponent);  // "e+05": from_chars takes no '+' 
+  if (c != end)
+    std::from_chars(c + 1 + (c[1] == '+'), end, exponent);  // "e+05": from_chars takes no '+'
   exact::Radical mantissa = exact::Radical(static_cast<double>(high)) * power_of_ten(low_digits) +
                             exact::Radical(static_cast<double>(low));
   if (negative) mantissa = -mantissa;

@@ -33,14 +33,22 @@ namespace roomcad::rules {
 class WrittenApprox {
  public:
   WrittenApprox() = default;
-  WrittenApprox(double x);                       // NOLINT: a number type, like double
+  WrittenApprox(double x);                          // NOLINT: a number type, like double
   WrittenApprox(const exact::Approx& v) : v_(v) {}  // NOLINT: results of arithmetic
   [[nodiscard]] const exact::Approx& value() const { return v_; }
 
-  friend WrittenApprox operator+(const WrittenApprox& a, const WrittenApprox& b) { return a.v_ + b.v_; }
-  friend WrittenApprox operator-(const WrittenApprox& a, const WrittenApprox& b) { return a.v_ - b.v_; }
-  friend WrittenApprox operator*(const WrittenApprox& a, const WrittenApprox& b) { return a.v_ * b.v_; }
-  friend WrittenApprox operator/(const WrittenApprox& a, const WrittenApprox& b) { return a.v_ / b.v_; }
+  friend WrittenApprox operator+(const WrittenApprox& a, const WrittenApprox& b) {
+    return a.v_ + b.v_;
+  }
+  friend WrittenApprox operator-(const WrittenApprox& a, const WrittenApprox& b) {
+    return a.v_ - b.v_;
+  }
+  friend WrittenApprox operator*(const WrittenApprox& a, const WrittenApprox& b) {
+    return a.v_ * b.v_;
+  }
+  friend WrittenApprox operator/(const WrittenApprox& a, const WrittenApprox& b) {
+    return a.v_ / b.v_;
+  }
   WrittenApprox operator-() const { return -v_; }
   friend auto operator<(const WrittenApprox& a, const WrittenApprox& b) { return a.v_ < b.v_; }
   friend auto operator>(const WrittenApprox& a, const WrittenApprox& b) { return a.v_ > b.v_; }
@@ -50,8 +58,12 @@ class WrittenApprox {
   friend auto operator!=(const WrittenApprox& a, const WrittenApprox& b) { return a.v_ != b.v_; }
   friend WrittenApprox sqrt(const WrittenApprox& a) { return CGAL::sqrt(a.v_); }
   /// @return the interval hull of a and b (no decision needed).
-  friend WrittenApprox lesser(const WrittenApprox& a, const WrittenApprox& b) { return CGAL::min(a.v_, b.v_); }
-  friend WrittenApprox greater(const WrittenApprox& a, const WrittenApprox& b) { return CGAL::max(a.v_, b.v_); }
+  friend WrittenApprox lesser(const WrittenApprox& a, const WrittenApprox& b) {
+    return CGAL::min(a.v_, b.v_);
+  }
+  friend WrittenApprox greater(const WrittenApprox& a, const WrittenApprox& b) {
+    return CGAL::max(a.v_, b.v_);
+  }
 
  private:
   exact::Approx v_;
@@ -62,14 +74,22 @@ class WrittenApprox {
 class WrittenExact {
  public:
   WrittenExact() = default;
-  WrittenExact(double x);                         // NOLINT: a number type, like double
+  WrittenExact(double x);                           // NOLINT: a number type, like double
   WrittenExact(const exact::Radical& v) : v_(v) {}  // NOLINT: results of arithmetic
   [[nodiscard]] const exact::Radical& value() const { return v_; }
 
-  friend WrittenExact operator+(const WrittenExact& a, const WrittenExact& b) { return a.v_ + b.v_; }
-  friend WrittenExact operator-(const WrittenExact& a, const WrittenExact& b) { return a.v_ - b.v_; }
-  friend WrittenExact operator*(const WrittenExact& a, const WrittenExact& b) { return a.v_ * b.v_; }
-  friend WrittenExact operator/(const WrittenExact& a, const WrittenExact& b) { return a.v_ / b.v_; }
+  friend WrittenExact operator+(const WrittenExact& a, const WrittenExact& b) {
+    return a.v_ + b.v_;
+  }
+  friend WrittenExact operator-(const WrittenExact& a, const WrittenExact& b) {
+    return a.v_ - b.v_;
+  }
+  friend WrittenExact operator*(const WrittenExact& a, const WrittenExact& b) {
+    return a.v_ * b.v_;
+  }
+  friend WrittenExact operator/(const WrittenExact& a, const WrittenExact& b) {
+    return a.v_ / b.v_;
+  }
   WrittenExact operator-() const { return -v_; }
   friend bool operator<(const WrittenExact& a, const WrittenExact& b) { return a.v_ < b.v_; }
   friend bool operator>(const WrittenExact& a, const WrittenExact& b) { return a.v_ > b.v_; }
@@ -79,7 +99,9 @@ class WrittenExact {
   friend bool operator!=(const WrittenExact& a, const WrittenExact& b) { return a.v_ != b.v_; }
   friend WrittenExact sqrt(const WrittenExact& a) { return sqrt(a.v_); }
   friend WrittenExact lesser(const WrittenExact& a, const WrittenExact& b) { return a < b ? a : b; }
-  friend WrittenExact greater(const WrittenExact& a, const WrittenExact& b) { return a < b ? b : a; }
+  friend WrittenExact greater(const WrittenExact& a, const WrittenExact& b) {
+    return a < b ? b : a;
+  }
 
  private:
   exact::Radical v_;

@@ -9,8 +9,8 @@ namespace roomcad::detail {
 
 inline constexpr int kGlyphWidth = 6;
 inline constexpr int kGlyphHeight = 13;
-inline constexpr int kFirstGlyph = 32;   ///< ' '
-inline constexpr int kGlyphCount = 95;   ///< ' ' .. '~'
+inline constexpr int kFirstGlyph = 32;  ///< ' '
+inline constexpr int kGlyphCount = 95;  ///< ' ' .. '~'
 
 /// Rows of one glyph, top first; bit 7 is the leftmost of its kGlyphWidth pixels.
 using Glyph = std::array<std::uint8_t, kGlyphHeight>;

@@ -22,8 +22,10 @@ double tolerance_for(std::span<const OpenMesh::Vec3d> points) {
 }
 
 // A hole that runs on through a mitre reaches past its u range into the mitre's wedge.
-bool is_in_hole(const WallFrame& f, const Hole& h, std::span<const OpenMesh::Vec3d> points, double eps) {
-  const double u0 = h.through_mitre[0] ? -INFINITY : h.u0 - eps, u1 = h.through_mitre[1] ? INFINITY : h.u1 + eps;
+bool is_in_hole(const WallFrame& f, const Hole& h, std::span<const OpenMesh::Vec3d> points,
+                double eps) {
+  const double u0 = h.through_mitre[0] ? -INFINITY : h.u0 - eps,
+               u1 = h.through_mitre[1] ? INFINITY : h.u1 + eps;
   for (const auto& p : points) {
     const Local l = to_local(f, p);
     if (l.u < u0 || l.u > u1 || std::abs(l.w) > f.half + eps || l.z < h.z0 - eps ||

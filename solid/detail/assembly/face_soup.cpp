@@ -16,8 +16,8 @@
 #include <fmt/format.h>
 
 #include "core/assert.h"
-#include "solid/build_model.h"
 #include "core/flat_index.h"
+#include "solid/build_model.h"
 
 namespace roomcad::detail {
 namespace {
@@ -64,9 +64,10 @@ std::optional<std::string> find_add_face_problem(const SolidMesh& mesh,
     if (!mesh.is_boundary(face[i])) return "a corner is closed all round (complex vertex)";
     const SolidMesh::HalfedgeHandle side = mesh.find_halfedge(face[i], face[(i + 1) % n]);
     if (side.is_valid() && !mesh.is_boundary(side))
-      return fmt::format("an edge shared by more than two faces: a face of '{}' is already "
-                         "on that side (complex edge)",
-                         name_face(mesh.face_handle(side)));
+      return fmt::format(
+          "an edge shared by more than two faces: a face of '{}' is already "
+          "on that side (complex edge)",
+          name_face(mesh.face_handle(side)));
   }
   return std::nullopt;
 }
@@ -297,7 +298,8 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
         }
         const OpenMesh::Vec3d& p = f.points[k];
         const auto next = std::uint32_t(mesh.n_vertices());
-        const auto [vertex, added] = vertices.try_emplace(key_of(p, f.copies.empty() ? 0 : f.copies[k]), next);
+        const auto [vertex, added] =
+            vertices.try_emplace(key_of(p, f.copies.empty() ? 0 : f.copies[k]), next);
         if (added) mesh.add_vertex(p);
         if (known) *known = vertex;
         face.push_back(SolidMesh::VertexHandle(int(vertex)));
@@ -306,11 +308,13 @@ SolidMesh assemble_mesh(std::span<const FaceSoup> soups, const std::vector<std::
       const SolidMesh::FaceHandle fh = problem ? SolidMesh::FaceHandle() : mesh.add_face(face);
       if (!fh.is_valid()) {
         const OpenMesh::Vec3d at = f.points.empty() ? OpenMesh::Vec3d(0, 0, 0) : f.points[0];
-        throw PreconditionError(fmt::format(
-            "build_model: a {} face of '{}' with {} corners near ({}, {}, {}) would make the "
-            "mesh non-manifold: {}",
-            to_string(f.kind), object_name(objects, f.object), f.points.size(), at[0], at[1],
-            at[2], problem.value_or("OpenMesh refused it")), Code::not_buildable);
+        throw PreconditionError(
+            fmt::format(
+                "build_model: a {} face of '{}' with {} corners near ({}, {}, {}) would make the "
+                "mesh non-manifold: {}",
+                to_string(f.kind), object_name(objects, f.object), f.points.size(), at[0], at[1],
+                at[2], problem.value_or("OpenMesh refused it")),
+            Code::not_buildable);
       }
       mesh.property(props.object, fh) = f.object;
       mesh.property(props.kind, fh) = f.kind;
@@ -329,15 +333,19 @@ void require_closed(const SolidMesh& mesh, const std::vector<std::string>& objec
   for (const auto h : mesh.halfedges()) {
     if (!mesh.is_boundary(h)) continue;
     if (open++ == 0) first = h;
-    beside.insert(object_name(objects, mesh.property(props.object, mesh.face_handle(mesh.opposite_halfedge_handle(h)))));
+    beside.insert(object_name(
+        objects, mesh.property(props.object, mesh.face_handle(mesh.opposite_halfedge_handle(h)))));
   }
   if (open == 0) return;
-  const OpenMesh::Vec3d a = mesh.point(mesh.from_vertex_handle(first)), b = mesh.point(mesh.to_vertex_handle(first));
+  const OpenMesh::Vec3d a = mesh.point(mesh.from_vertex_handle(first)),
+                        b = mesh.point(mesh.to_vertex_handle(first));
   throw PreconditionError(
-      fmt::format("build_model: the solid is not closed beside the faces of '{}': {} edges have a face "
-                  "on one side only, the first from ({}, {}, {}) to ({}, {}, {}) (features finer than the rounding of "
-                  "their corners to doubles, such as a wall an ulp long where walls overlap)",
-                  fmt::join(beside, "', '"), open, a[0], a[1], a[2], b[0], b[1], b[2]),
+      fmt::format(
+          "build_model: the solid is not closed beside the faces of '{}': {} edges have a face "
+          "on one side only, the first from ({}, {}, {}) to ({}, {}, {}) (features finer than the "
+          "rounding of "
+          "their corners to doubles, such as a wall an ulp long where walls overlap)",
+          fmt::join(beside, "', '"), open, a[0], a[1], a[2], b[0], b[1], b[2]),
       Code::not_buildable);
 }
 

@@ -55,8 +55,8 @@ void require_closed(const SolidMesh& mesh, const std::vector<std::string>& objec
 
 /// The vertices of an indexed polygon soup's corners, per corner (polygons in order).
 struct FanSplit {
-  std::vector<std::uint32_t> copy;    ///< which copy of its point the corner uses
-  std::vector<std::uint32_t> vertex;  ///< its vertex: numbered in order of first corner
+  std::vector<std::uint32_t> copy;        ///< which copy of its point the corner uses
+  std::vector<std::uint32_t> vertex;      ///< its vertex: numbered in order of first corner
   std::vector<std::size_t> first_corner;  ///< per polygon, where its corners start (and the end)
 };
 

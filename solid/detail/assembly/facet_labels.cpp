@@ -83,9 +83,9 @@ void unify_facet_labels(const IndexedSoup& indexed, FaceSoup& soup) {
   }
   std::unordered_map<std::size_t, std::size_t> winner;
   for (const auto& [group, labels] : votes) {
-    const auto best = std::max_element(labels.begin(), labels.end(), [](const auto& x, const auto& y) {
-      return x.second.first < y.second.first;
-    });
+    const auto best = std::max_element(
+        labels.begin(), labels.end(),
+        [](const auto& x, const auto& y) { return x.second.first < y.second.first; });
     winner[group] = best->second.second;
   }
   for (std::size_t k = 0; k < soup.size(); ++k) {

@@ -22,7 +22,8 @@ Color darker(Color c) {
 
 // A closed box over a counter-clockwise quad, from z0 to z1; nothing for a box the doubles
 // cannot hold (corners that round together: a hairline opening's pane or leaf).
-void add_box(const std::array<Point2, 4>& quad, double z0, double z1, SoupFace proto, FaceSoup& out) {
+void add_box(const std::array<Point2, 4>& quad, double z0, double z1, SoupFace proto,
+             FaceSoup& out) {
   if (!(z0 < z1)) return;
   for (std::size_t k = 0; k < 4; ++k)
     for (std::size_t m = k + 1; m < 4; ++m)
@@ -64,7 +65,9 @@ FaceSoup build_floor(const Site& site) {
   if (nx <= 0 || ny <= 0 || !(s > 0.0) || !std::isfinite(s) || nx * ny > 10'000'000)
     throw PreconditionError(fmt::format("build_model: the site's floor cannot be built: cells "
                                         "[{}, {}], cell_size {} (need 1 to 10^7 tiles of a "
-                                        "positive finite size)", nx, ny, s), Code::not_buildable);
+                                        "positive finite size)",
+                                        nx, ny, s),
+                            Code::not_buildable);
   FaceSoup soup;
   soup.reserve(static_cast<std::size_t>(nx * ny));
   auto corner = [&](std::int64_t i, std::int64_t j) {
@@ -74,7 +77,11 @@ FaceSoup build_floor(const Site& site) {
   for (std::int64_t j = 0; j < ny; ++j)
     for (std::int64_t i = 0; i < nx; ++i)
       soup.push_back({{corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1)},
-                      FaceKind::floor, -1, (i + j) % 2 == 0 ? site.floor_color : dark, {}, {}});
+                      FaceKind::floor,
+                      -1,
+                      (i + j) % 2 == 0 ? site.floor_color : dark,
+                      {},
+                      {}});
   return soup;
 }
 
@@ -90,8 +97,8 @@ std::vector<FaceSoup> build_fixtures(const Plan& plan, std::span<const WallFrame
         add_box(frame_quad(f, h.u0, h.u1, -w, w), h.z0, h.z1,
                 {{}, FaceKind::window, object, kWindowColor, {}, {}}, soup);
       } else {
-        add_box(door_quad(f, h, o), h.z0, h.z1,
-                {{}, FaceKind::door, object, kDoorColor, {}, {}}, soup);
+        add_box(door_quad(f, h, o), h.z0, h.z1, {{}, FaceKind::door, object, kDoorColor, {}, {}},
+                soup);
       }
     }
   return soups;

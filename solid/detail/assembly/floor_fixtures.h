@@ -25,6 +25,7 @@ namespace roomcad::detail {
 /// standing out of the wall's left face (the side of the normal, `swing: in`) or right face.
 /// @return one soup per opening (fixtures may touch, so they share no vertices), faces with
 ///         kind door or window and the opening's object. O(openings).
-[[nodiscard]] std::vector<FaceSoup> build_fixtures(const Plan& plan, std::span<const WallFrame> frames);
+[[nodiscard]] std::vector<FaceSoup> build_fixtures(const Plan& plan,
+                                                   std::span<const WallFrame> frames);
 
 }  // namespace roomcad::detail

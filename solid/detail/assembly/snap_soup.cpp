@@ -23,7 +23,8 @@ using Polygon = std::vector<std::size_t>;
 // group's root is its exact point, else its lowest index. Points hash into cubes, so near
 // points are in the same or adjacent cubes.
 std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& points,
-                                           const std::function<bool(std::size_t)>& exact, double tolerance) {
+                                           const std::function<bool(std::size_t)>& exact,
+                                           double tolerance) {
   std::vector<std::size_t> parent(points.size());
   std::iota(parent.begin(), parent.end(), std::size_t{0});
   auto find = [&](std::size_t x) {
@@ -72,7 +73,9 @@ std::vector<std::size_t> find_snap_targets(const std::vector<OpenMesh::Vec3d>& p
           if (at == FlatIndex<CellKey>::kNone) continue;
           for (std::size_t j = ends[at].first; j != kNone; j = next[j]) {
             const OpenMesh::Vec3d d = points[i] - points[j];
-            if (std::abs(d[0]) > tolerance || std::abs(d[1]) > tolerance || std::abs(d[2]) > tolerance) continue;
+            if (std::abs(d[0]) > tolerance || std::abs(d[1]) > tolerance ||
+                std::abs(d[2]) > tolerance)
+              continue;
             unite(find(i), find(j));
           }
         }
@@ -105,7 +108,8 @@ void drop_repeats_and_spikes(Polygon& p) {
 
 // Appends the polygon, cleaned, to `out` (and its tag to `tags`): split where it touches
 // itself at a corner.
-void append_clean(Polygon p, std::size_t tag, std::vector<Polygon>& out, std::vector<std::size_t>& tags) {
+void append_clean(Polygon p, std::size_t tag, std::vector<Polygon>& out,
+                  std::vector<std::size_t>& tags) {
   drop_repeats_and_spikes(p);
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = i + 1; j < p.size(); ++j) {
@@ -143,7 +147,8 @@ void drop_fins(std::vector<Polygon>& polygons, std::vector<std::size_t>& tags) {
   std::sort(by_corners.begin(), by_corners.end());
   std::vector<char> gone(polygons.size(), 0);
   for (auto group = by_corners.begin(); group != by_corners.end();) {
-    const auto end = std::find_if(group, by_corners.end(), [&](const auto& e) { return e.first != group->first; });
+    const auto end = std::find_if(group, by_corners.end(),
+                                  [&](const auto& e) { return e.first != group->first; });
     std::map<Polygon, std::vector<std::size_t>> open;  // cycle -> unmatched polygons with it
     for (auto it = group; it != end && end - group > 1; ++it) {
       const std::size_t k = it->second;
@@ -194,12 +199,14 @@ Polygon corners_along_line(const std::vector<OpenMesh::Vec3d>& points, const Pol
   int axis = 0;
   double widest = -1.0;
   for (int k = 0; k < 3; ++k) {
-    const auto [lo, hi] = std::minmax_element(corners.begin(), corners.end(), [&](std::size_t a, std::size_t b) {
-      return points[a][k] < points[b][k];
-    });
-    if (points[*hi][k] - points[*lo][k] > widest) widest = points[*hi][k] - points[*lo][k], axis = k;
+    const auto [lo, hi] = std::minmax_element(
+        corners.begin(), corners.end(),
+        [&](std::size_t a, std::size_t b) { return points[a][k] < points[b][k]; });
+    if (points[*hi][k] - points[*lo][k] > widest)
+      widest = points[*hi][k] - points[*lo][k], axis = k;
   }
-  std::sort(corners.begin(), corners.end(), [&](std::size_t a, std::size_t b) { return points[a][axis] < points[b][axis]; });
+  std::sort(corners.begin(), corners.end(),
+            [&](std::size_t a, std::size_t b) { return points[a][axis] < points[b][axis]; });
   return corners;
 }
 
@@ -208,8 +215,8 @@ Polygon corners_along_line(const std::vector<OpenMesh::Vec3d>& points, const Pol
 // between two corners of a removed one gets the removed one's corners between them, so the
 // edges that met the flat polygon from both sides now meet each other. O(n) for n corners
 // when no polygon is flat.
-void collapse_flat_polygons(const std::vector<OpenMesh::Vec3d>& points, std::vector<Polygon>& polygons,
-                            std::vector<std::size_t>& tags) {
+void collapse_flat_polygons(const std::vector<OpenMesh::Vec3d>& points,
+                            std::vector<Polygon>& polygons, std::vector<std::size_t>& tags) {
   std::vector<char> flat(polygons.size(), 0);
   std::vector<Polygon> lines;  // per flat polygon, its corners along its line
   for (std::size_t k = 0; k < polygons.size(); ++k)
@@ -234,10 +241,13 @@ void collapse_flat_polygons(const std::vector<OpenMesh::Vec3d>& points, std::vec
       if (at_a == lines_at.end()) continue;
       for (const std::size_t l : at_a->second) {
         const Polygon& line = lines[l];
-        const auto ia = std::find(line.begin(), line.end(), a), ib = std::find(line.begin(), line.end(), b);
+        const auto ia = std::find(line.begin(), line.end(), a),
+                   ib = std::find(line.begin(), line.end(), b);
         if (ib == line.end()) continue;
         if (ia < ib) split.insert(split.end(), ia + 1, ib);
-        else split.insert(split.end(), std::make_reverse_iterator(ia), std::make_reverse_iterator(ib + 1));
+        else
+          split.insert(split.end(), std::make_reverse_iterator(ia),
+                       std::make_reverse_iterator(ib + 1));
         break;
       }
     }
@@ -286,7 +296,8 @@ bool has_paired_edges(const std::vector<Polygon>& polygons) {
 
 // Whether snapping to `target` puts two exact points (`exact`, possibly empty) in one group.
 // Asks `exact` only of points in groups of two or more.
-bool merges_exact_points(const std::vector<std::size_t>& target, const std::function<bool(std::size_t)>& exact) {
+bool merges_exact_points(const std::vector<std::size_t>& target,
+                         const std::function<bool(std::size_t)>& exact) {
   if (!exact) return false;
   std::vector<std::size_t> group_size(target.size(), 0);
   for (const std::size_t t : target) ++group_size[t];
@@ -311,7 +322,8 @@ IndexedSoup snap_soup(IndexedSoup soup, double tolerance) {
   // Merging two exact corners pinched the surface (walls an ulp apart, each corner exact:
   // an edge of four faces). Keeping exact corners apart leaves them as the exact solid has
   // them; taken only where that closes the surface.
-  const std::vector<std::size_t> apart_targets = find_snap_targets(soup.points, soup.is_exact, tolerance);
+  const std::vector<std::size_t> apart_targets =
+      find_snap_targets(soup.points, soup.is_exact, tolerance);
   IndexedSoup apart = snap_to(std::move(soup), apart_targets);
   return has_paired_edges(apart.polygons) ? apart : merged;
 }

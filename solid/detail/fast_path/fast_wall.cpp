@@ -42,12 +42,14 @@ class WallGrid {
     for (std::size_t k = 0; k < f.holes.size(); ++k) mark_hole(k);
     attached_top_.assign(2 * (u_.size() - 1), -INFINITY);
     for (const Attachment& a : f.attachments)
-      for (std::size_t c = index_of(u_, a.u0); c < index_of(u_, a.u1); ++c) attached_top_[2 * c + (a.side > 0)] = a.top;
+      for (std::size_t c = index_of(u_, a.u0); c < index_of(u_, a.u1); ++c)
+        attached_top_[2 * c + (a.side > 0)] = a.top;
   }
   /// Whether the side face s (0 right, 1 left) is solid at cell (c, r): wall material not
   /// covered by an attached stem (rows below the stem's top, which is a row line).
   bool is_side_solid(int s, std::ptrdiff_t c, std::ptrdiff_t r) const {
-    return cell(c, r) == kSolid && !(z_[std::size_t(r)] < attached_top_[2 * std::size_t(c) + std::size_t(s)]);
+    return cell(c, r) == kSolid &&
+           !(z_[std::size_t(r)] < attached_top_[2 * std::size_t(c) + std::size_t(s)]);
   }
   std::size_t nu() const { return u_.size(); }
   std::size_t nz() const { return z_.size(); }
@@ -109,7 +111,6 @@ struct Context {
   }
 };
 
-
 // Vertical cuts that leave no side-face piece around a hole: from each hole enclosed by wall
 // material, down and up along its first column line, through solid cells, to the next empty
 // cell or the border. cut[i * rows + r]: the edge on column line i at row r is cut.
@@ -149,11 +150,13 @@ std::vector<Edge> side_edges(const WallGrid& g, const std::vector<char>& cut, in
   const std::size_t nr = g.nz() - 1;
   auto is_solid = [&](std::ptrdiff_t c, std::ptrdiff_t r) { return g.is_side_solid(s, c, r); };
   auto apart_u = [&](std::size_t c, std::size_t r) {  // on column line c, row r
-    return !(is_solid(std::ptrdiff_t(c) - 1, std::ptrdiff_t(r)) && is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r))) ||
+    return !(is_solid(std::ptrdiff_t(c) - 1, std::ptrdiff_t(r)) &&
+             is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r))) ||
            cut[c * nr + r];
   };
   auto apart_z = [&](std::size_t c, std::size_t r) {  // on row line r, column c
-    return !(is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r) - 1) && is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r)));
+    return !(is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r) - 1) &&
+             is_solid(std::ptrdiff_t(c), std::ptrdiff_t(r)));
   };
   std::vector<Edge> edges;
   for (std::size_t c = 0; c + 1 < g.nu(); ++c)
@@ -171,7 +174,8 @@ std::vector<Edge> side_edges(const WallGrid& g, const std::vector<char>& cut, in
 // loop stays a simple polygon. @return the loops' corners (where the direction changes).
 std::vector<std::vector<GridPoint>> trace_loops(const WallGrid& g, const std::vector<Edge>& edges) {
   std::vector<std::vector<std::size_t>> leaving(g.nu() * g.nz());
-  for (std::size_t e = 0; e < edges.size(); ++e) leaving[edges[e].i * g.nz() + edges[e].j].push_back(e);
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    leaving[edges[e].i * g.nz() + edges[e].j].push_back(e);
   std::vector<char> used(edges.size(), 0);
   std::vector<std::vector<GridPoint>> loops;
   for (std::size_t first = 0; first < edges.size(); ++first) {
@@ -228,7 +232,8 @@ std::optional<std::array<std::vector<GridPoint>, 2>> find_chain_split(const Cont
 void add_side_faces(const Context& cx, std::vector<GridFace>& out) {
   for (const int s : {0, 1}) {
     std::vector<std::vector<GridPoint>> loops;
-    if (auto chain = find_chain_split(cx, s)) loops = {std::move((*chain)[0]), std::move((*chain)[1])};
+    if (auto chain = find_chain_split(cx, s))
+      loops = {std::move((*chain)[0]), std::move((*chain)[1])};
     else loops = trace_loops(cx.grid, side_edges(cx.grid, find_cuts(cx, s), s));
     for (std::vector<GridPoint> loop : loops) {
       if (s == 1) {
@@ -250,7 +255,8 @@ int facing(int before, int after) {
 // Faces across the thickness at u = u[i] (ends and jambs), merged along z.
 void add_u_faces(const Context& cx, std::size_t i, std::vector<GridFace>& out) {
   const std::size_t nr = cx.grid.nz() - 1;
-  const bool capless = (i == 0 && cx.frame.capless[0]) || (i + 1 == cx.grid.nu() && cx.frame.capless[1]);
+  const bool capless =
+      (i == 0 && cx.frame.capless[0]) || (i + 1 == cx.grid.nu() && cx.frame.capless[1]);
   auto state = [&](std::size_t r) {
     const int a = cx.grid.cell(std::ptrdiff_t(i) - 1, std::ptrdiff_t(r));
     const int b = cx.grid.cell(std::ptrdiff_t(i), std::ptrdiff_t(r));
@@ -264,10 +270,8 @@ void add_u_faces(const Context& cx, std::size_t i, std::vector<GridFace>& out) {
     if (s.first != 0 && !(capless && s.second == kOutside)) {
       const FaceKind kind = s.second == kOutside ? FaceKind::wall_end : FaceKind::jamb;
       const int obj = cx.object_of(s.second);
-      if (s.first > 0)
-        out.push_back({{{i, r0, 0}, {i, r0, 1}, {i, r1, 1}, {i, r1, 0}}, kind, obj});
-      else
-        out.push_back({{{i, r0, 0}, {i, r1, 0}, {i, r1, 1}, {i, r0, 1}}, kind, obj});
+      if (s.first > 0) out.push_back({{{i, r0, 0}, {i, r0, 1}, {i, r1, 1}, {i, r1, 0}}, kind, obj});
+      else out.push_back({{{i, r0, 0}, {i, r1, 0}, {i, r1, 1}, {i, r0, 1}}, kind, obj});
     }
     r0 = r1;
   }
@@ -294,10 +298,8 @@ void add_z_faces(const Context& cx, std::size_t j, std::vector<GridFace>& out) {
     if (s.first != 0) {
       const FaceKind kind = z_face_kind(s.first, s.second);
       const int obj = cx.object_of(s.second);
-      if (s.first > 0)
-        out.push_back({{{c0, j, 0}, {c1, j, 0}, {c1, j, 1}, {c0, j, 1}}, kind, obj});
-      else
-        out.push_back({{{c0, j, 0}, {c0, j, 1}, {c1, j, 1}, {c1, j, 0}}, kind, obj});
+      if (s.first > 0) out.push_back({{{c0, j, 0}, {c1, j, 0}, {c1, j, 1}, {c0, j, 1}}, kind, obj});
+      else out.push_back({{{c0, j, 0}, {c0, j, 1}, {c1, j, 1}, {c1, j, 0}}, kind, obj});
     }
     c0 = c1;
   }
@@ -307,7 +309,9 @@ void add_z_faces(const Context& cx, std::size_t j, std::vector<GridFace>& out) {
 FaceSoup emit_faces(const Context& cx, const std::vector<GridFace>& faces) {
   const std::size_t nu = cx.grid.nu(), nz = cx.grid.nz();
   std::vector<char> corner(nu * nz * 2, 0);
-  auto at = [&](std::size_t i, std::size_t j, int s) -> char& { return corner[(i * nz + j) * 2 + std::size_t(s)]; };
+  auto at = [&](std::size_t i, std::size_t j, int s) -> char& {
+    return corner[(i * nz + j) * 2 + std::size_t(s)];
+  };
   for (const GridFace& f : faces)
     for (const GridPoint& p : f.corners) at(p.i, p.j, p.s) = 1;
   FaceSoup soup;
@@ -338,7 +342,8 @@ FaceSoup emit_faces(const Context& cx, const std::vector<GridFace>& faces) {
 bool has_holes_clear_of_joins(const WallFrame& f) {
   if (f.holes.empty()) return true;
   const double lo = f.capless[0] ? std::max(u_of(f, f.footprint[0]), u_of(f, f.footprint[3])) : 0.0;
-  const double hi = f.capless[1] ? std::min(u_of(f, f.footprint[1]), u_of(f, f.footprint[2])) : f.length;
+  const double hi =
+      f.capless[1] ? std::min(u_of(f, f.footprint[1]), u_of(f, f.footprint[2])) : f.length;
   for (const Hole& h : f.holes) {
     if (f.capless[0] && !(h.u0 > lo)) return false;
     if (f.capless[1] && !(h.u1 < hi)) return false;

@@ -40,7 +40,8 @@ std::size_t find_corner(const std::vector<OpenMesh::Vec3d>& poly, const OpenMesh
 // (faces of an indexed soup, from the general or the Nef path, carry their vertex numbers and
 // stay as they are).
 bool is_alike(const SoupFace& a, const SoupFace& b) {
-  const OpenMesh::Vec3d na = polygon_normal(a.points).normalized(), nb = polygon_normal(b.points).normalized();
+  const OpenMesh::Vec3d na = polygon_normal(a.points).normalized(),
+                        nb = polygon_normal(b.points).normalized();
   return a.kind == b.kind && a.color == b.color && a.copies.empty() && b.copies.empty() &&
          a.vertices.empty() && b.vertices.empty() && (na | nb) > 1.0 - 1e-12;
 }
@@ -55,7 +56,8 @@ void erase_corner(SoupFace& f, std::size_t i) {
 
 // Joins polygons p and q across an edge at `at` that p runs one way and q the other.
 // @return the fused polygon, or empty if they share no such edge or more than one.
-std::vector<OpenMesh::Vec3d> fuse_pair(const std::vector<OpenMesh::Vec3d>& p, const std::vector<OpenMesh::Vec3d>& q,
+std::vector<OpenMesh::Vec3d> fuse_pair(const std::vector<OpenMesh::Vec3d>& p,
+                                       const std::vector<OpenMesh::Vec3d>& q,
                                        const OpenMesh::Vec3d& at) {
   const std::size_t n = p.size(), m = q.size(), ip = find_corner(p, at), iq = find_corner(q, at);
   if (ip == n || iq == m) return {};
@@ -79,7 +81,8 @@ std::vector<OpenMesh::Vec3d> fuse_pair(const std::vector<OpenMesh::Vec3d>& p, co
 bool is_straight_through(const std::vector<OpenMesh::Vec3d>& poly, std::size_t i) {
   const std::size_t n = poly.size();
   if (n < 4 || i == n) return false;
-  const OpenMesh::Vec3d a = poly[(i + n - 1) % n], b = poly[(i + 1) % n], d = b - a, e = poly[i] - a;
+  const OpenMesh::Vec3d a = poly[(i + n - 1) % n], b = poly[(i + 1) % n], d = b - a,
+                        e = poly[i] - a;
   const double len = d.norm();
   const double scale = std::max({a.max_abs(), b.max_abs(), 1.0});
   return len > 0.0 && (d | e) > 0.0 && (d | e) < len * len && (d % e).norm() / len <= 1e-12 * scale;
@@ -129,7 +132,8 @@ bool is_ear(const std::vector<OpenMesh::Vec3d>& poly, std::size_t i) {
   if ((turn | normal) <= 0.0) return false;
   for (const auto& q : poly) {
     if (q == a || q == p || q == b) continue;
-    if (((p - a) % (q - a) | turn) >= 0.0 && ((b - p) % (q - p) | turn) >= 0.0 && ((a - b) % (q - b) | turn) >= 0.0)
+    if (((p - a) % (q - a) | turn) >= 0.0 && ((b - p) % (q - p) | turn) >= 0.0 &&
+        ((a - b) % (q - b) | turn) >= 0.0)
       return false;
   }
   return true;
@@ -190,14 +194,16 @@ void fuse_around(std::span<FaceSoup> soups, const OpenMesh::Vec3d& p, FacesAt& a
 void drop_if_straight(std::span<FaceSoup> soups, const OpenMesh::Vec3d& p, const FacesAt& at) {
   const std::vector<FaceRef>& around = at.at(p);
   for (const FaceRef r : around)
-    if (!is_straight_through(face_of(soups, r).points, find_corner(face_of(soups, r).points, p))) return;
+    if (!is_straight_through(face_of(soups, r).points, find_corner(face_of(soups, r).points, p)))
+      return;
   for (const FaceRef r : around)
     erase_corner(face_of(soups, r), find_corner(face_of(soups, r).points, p));
 }
 
 }  // namespace
 
-std::vector<OpenMesh::Vec3d> find_seam_points(std::span<const Hub> hubs, const std::vector<WallFrame>& frames) {
+std::vector<OpenMesh::Vec3d> find_seam_points(std::span<const Hub> hubs,
+                                              const std::vector<WallFrame>& frames) {
   std::vector<OpenMesh::Vec3d> points;
   for (const Hub& h : hubs)
     for (std::size_t k = 0; k < h.arms.size(); ++k) {
@@ -205,7 +211,8 @@ std::vector<OpenMesh::Vec3d> find_seam_points(std::span<const Hub> hubs, const s
       const auto& [wb, eb] = h.arms[(k + 1) % h.arms.size()];
       const Point2 da = outward(frames[wa], ea), db = outward(frames[wb], eb);
       if (da.x * db.x + da.y * db.y > -1.0 + 1e-12) continue;
-      for (const double z : {frames[wa].base, frames[wa].top}) points.emplace_back(h.corners[k].x, h.corners[k].y, z);
+      for (const double z : {frames[wa].base, frames[wa].top})
+        points.emplace_back(h.corners[k].x, h.corners[k].y, z);
     }
   return points;
 }
@@ -219,7 +226,8 @@ void fuse_seams(std::span<FaceSoup> soups, std::span<const OpenMesh::Vec3d> poin
     drop_if_straight(soups, p, at);
   }
   for (FaceSoup& soup : soups)
-    soup.erase(std::remove_if(soup.begin(), soup.end(), [](const SoupFace& f) { return f.points.empty(); }),
+    soup.erase(std::remove_if(soup.begin(), soup.end(),
+                              [](const SoupFace& f) { return f.points.empty(); }),
                soup.end());
 }
 

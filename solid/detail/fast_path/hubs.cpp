@@ -11,7 +11,9 @@ namespace {
 
 using Arm = std::pair<std::size_t, WallEnd>;
 
-const Point2& end_point(const WallFrame& f, WallEnd end) { return end == WallEnd::from ? f.from : f.to; }
+const Point2& end_point(const WallFrame& f, WallEnd end) {
+  return end == WallEnd::from ? f.from : f.to;
+}
 
 double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
 
@@ -45,9 +47,10 @@ bool is_valid_hub(const std::vector<WallFrame>& frames, const Hub& hub) {
     const WallFrame& a = frames[arms[k].first];
     const WallFrame& b = frames[arms[(k + 1) % arms.size()].first];
     if (a.base != first.base || a.top != first.top) return false;
-    const Point2 da = outward(a, arms[k].second), db = outward(b, arms[(k + 1) % arms.size()].second);
+    const Point2 da = outward(a, arms[k].second),
+                 db = outward(b, arms[(k + 1) % arms.size()].second);
     const double c = cross(da, db), d = dot(da, db);
-    if (d > 0.0 || c < 0.0) return false;          // closer than 90 or beyond 180 degrees
+    if (d > 0.0 || c < 0.0) return false;            // closer than 90 or beyond 180 degrees
     if (c == 0.0 && a.half != b.half) return false;  // collinear arms of unequal thickness
     const Point2 to_corner{hub.corners[k].x - node.x, hub.corners[k].y - node.y};
     const double behind = -1e-12 * (a.half + b.half);
@@ -92,14 +95,16 @@ std::vector<Hub> find_hubs(const std::vector<WallFrame>& frames, const Joins& jo
     if (arms.size() < 3 || !are_all_joined(joins, arms)) continue;
     Hub hub = make_hub(frames, std::move(arms));
     // Arms a denormal off collinear put a corner at infinity: such a node is the general path's.
-    const bool finite = std::all_of(hub.corners.begin(), hub.corners.end(),
-                                    [](Point2 c) { return std::isfinite(c.x) && std::isfinite(c.y); });
+    const bool finite = std::all_of(hub.corners.begin(), hub.corners.end(), [](Point2 c) {
+      return std::isfinite(c.x) && std::isfinite(c.y);
+    });
     if (finite && is_valid_hub(frames, hub)) hubs.push_back(std::move(hub));
   }
   auto first_wall = [](const Hub& h) {
     return std::min_element(h.arms.begin(), h.arms.end())->first;
   };
-  std::sort(hubs.begin(), hubs.end(), [&](const Hub& a, const Hub& b) { return first_wall(a) < first_wall(b); });
+  std::sort(hubs.begin(), hubs.end(),
+            [&](const Hub& a, const Hub& b) { return first_wall(a) < first_wall(b); });
   return hubs;
 }
 
@@ -123,7 +128,8 @@ FaceSoup build_hub(const Hub& hub, const std::vector<WallFrame>& frames) {
   SoupFace top{{}, FaceKind::wall_top, object, owner.color, {}, {}};
   SoupFace bottom{{}, FaceKind::wall_bottom, object, owner.color, {}, {}};
   for (const Point2& c : hub.corners) top.points.emplace_back(c.x, c.y, owner.top);
-  for (auto c = hub.corners.rbegin(); c != hub.corners.rend(); ++c) bottom.points.emplace_back(c->x, c->y, owner.base);
+  for (auto c = hub.corners.rbegin(); c != hub.corners.rend(); ++c)
+    bottom.points.emplace_back(c->x, c->y, owner.base);
   return {top, bottom};
 }
 

@@ -8,7 +8,9 @@
 namespace roomcad::detail {
 namespace {
 
-double w_on(const WallFrame& f, Point2 p) { return (p.x - f.from.x) * f.normal.x + (p.y - f.from.y) * f.normal.y; }
+double w_on(const WallFrame& f, Point2 p) {
+  return (p.x - f.from.x) * f.normal.x + (p.y - f.from.y) * f.normal.y;
+}
 
 // Where the line p + t d crosses the through-wall's side line on `side`.
 Point2 cross_side(const WallFrame& t, int side, Point2 p, Point2 d) {
@@ -40,9 +42,11 @@ std::optional<Tee> make_tee(const std::vector<WallFrame>& frames, std::size_t st
   const Point2 right = cross_side(t, side, {e.x - n.x, e.y - n.y}, out);
   Tee tee{stem, end, through, {}, {right, left}};
   const double ul = u_of(t, left), ur = u_of(t, right);
-  tee.attachment = ul < ur ? Attachment{ul, ur, side, left, right, s.top} : Attachment{ur, ul, side, right, left, s.top};
+  tee.attachment = ul < ur ? Attachment{ul, ur, side, left, right, s.top}
+                           : Attachment{ur, ul, side, right, left, s.top};
   const auto [lo, hi] = clear_range(t);
-  if (!(tee.attachment.u0 > lo && tee.attachment.u1 < hi) || !(u > 0.0 && u < t.length)) return std::nullopt;
+  if (!(tee.attachment.u0 > lo && tee.attachment.u1 < hi) || !(u > 0.0 && u < t.length))
+    return std::nullopt;
   // What the clip takes off the stem must lie inside the through-wall: its square end's
   // corners too (a stem thicker than the wall, or meeting it askew, reaches past its far face).
   for (const Point2 corner : {Point2{e.x + n.x, e.y + n.y}, Point2{e.x - n.x, e.y - n.y}}) {
@@ -54,7 +58,9 @@ std::optional<Tee> make_tee(const std::vector<WallFrame>& frames, std::size_t st
   return tee;
 }
 
-bool overlaps(const Attachment& a, const Attachment& b) { return a.side == b.side && !(a.u1 < b.u0 || b.u1 < a.u0); }
+bool overlaps(const Attachment& a, const Attachment& b) {
+  return a.side == b.side && !(a.u1 < b.u0 || b.u1 < a.u0);
+}
 
 }  // namespace
 

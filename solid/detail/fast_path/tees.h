@@ -20,8 +20,8 @@ struct Tee {
   std::size_t stem = 0;
   WallEnd end = WallEnd::from;  ///< the stem's end on the through-wall
   std::size_t through = 0;
-  Attachment attachment;        ///< the gap in the through-wall's face
-  std::array<Point2, 2> clip;   ///< the stem's new corners at `end`: right, left (seen outward)
+  Attachment attachment;       ///< the gap in the through-wall's face
+  std::array<Point2, 2> clip;  ///< the stem's new corners at `end`: right, left (seen outward)
 };
 
 /// Finds the T joins the fast path can build, among unite joins between walls of equal base

@@ -10,9 +10,9 @@
 
 #include "core/error.h"
 #include "plan/arc_chords.h"
-#include "solid/detail/frames/wall_frame.h"
 #include "plan/plan_chords.h"
 #include "plan/plan_levels.h"
+#include "solid/detail/frames/wall_frame.h"
 
 namespace roomcad::detail {
 namespace {
@@ -20,7 +20,8 @@ namespace {
 // The openings of an arc wall as pieces on its chords: the span [offset, offset + width] along
 // the polyline cut at the chords' corners. A piece ending within rounding of its chord's end
 // ends there, so that pieces meet exactly on the mitre plane.
-void split_openings(const Plan& in, std::size_t wall, const std::vector<std::size_t>& chords, BuildablePlan& out) {
+void split_openings(const Plan& in, std::size_t wall, const std::vector<std::size_t>& chords,
+                    BuildablePlan& out) {
   std::vector<double> start{0.0}, lengths;  // each chord's length as its frame computes it
   for (std::size_t c : chords) {
     const Wall& w = out.plan.walls[c];
@@ -35,7 +36,8 @@ void split_openings(const Plan& in, std::size_t wall, const std::vector<std::siz
       const double length = lengths[k];
       const double from = std::max(o.offset - start[k], 0.0);
       double to = o.offset + o.width - start[k];
-      if (to > length && (k + 1 < chords.size() || to <= length + slack)) to = length;  // past the end: refused
+      if (to > length && (k + 1 < chords.size() || to <= length + slack))
+        to = length;  // past the end: refused
       if (!(to > from)) continue;
       Opening piece = o;
       piece.wall = out.plan.walls[chords[k]].id;
@@ -43,10 +45,12 @@ void split_openings(const Plan& in, std::size_t wall, const std::vector<std::siz
       // A shape's hole would have to run on through the mitre planes as a rectangle's does;
       // refused rather than cut as separate holes with wall left between them.
       if (!o.shape.empty() && (o.offset - start[k] < 0.0 || to < o.offset + o.width - start[k]))
-        throw PreconditionError(fmt::format("build_model: opening '{}' has a shape and spans corners of the chords "
-                                            "of arc wall '{}', which the build does not cut yet; make it rectangular "
-                                            "or narrow it to one chord", o.id, in.walls[wall].id),
-                                Code::not_buildable);
+        throw PreconditionError(
+            fmt::format("build_model: opening '{}' has a shape and spans corners of the chords "
+                        "of arc wall '{}', which the build does not cut yet; make it rectangular "
+                        "or narrow it to one chord",
+                        o.id, in.walls[wall].id),
+            Code::not_buildable);
       out.plan.openings.push_back(std::move(piece));
       out.opening_of.push_back(i);
       out.through_mitre.push_back({k > 0 && from == 0.0, k + 1 < chords.size() && to == length});
@@ -99,9 +103,10 @@ void label_input_objects(const BuildablePlan& b, std::vector<FaceSoup>& soups) {
   for (FaceSoup& soup : soups)
     for (SoupFace& f : soup) {
       if (f.object < 0) continue;
-      f.object = f.object < walls        ? static_cast<int>(b.wall_of[std::size_t(f.object)])
-                 : f.object < first_slab ? static_cast<int>(b.input_walls + b.opening_of[std::size_t(f.object - walls)])
-                                         : input_first_slab + (f.object - first_slab);
+      f.object = f.object < walls ? static_cast<int>(b.wall_of[std::size_t(f.object)])
+                 : f.object < first_slab
+                     ? static_cast<int>(b.input_walls + b.opening_of[std::size_t(f.object - walls)])
+                     : input_first_slab + (f.object - first_slab);
     }
 }
 

@@ -11,8 +11,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "solid/detail/assembly/face_soup.h"
 #include "plan/plan.h"
+#include "solid/detail/assembly/face_soup.h"
 
 namespace roomcad::detail {
 
@@ -23,8 +23,8 @@ struct BuildablePlan {
   /// Per opening of `plan`: whether it runs on through the mitre at its chord's from / to end
   /// (make_wall_frames' through_mitre).
   std::vector<std::array<bool, 2>> through_mitre;
-  std::size_t input_walls = 0;          ///< the input plan's wall count
-  std::size_t input_openings = 0;       ///< the input plan's opening count
+  std::size_t input_walls = 0;     ///< the input plan's wall count
+  std::size_t input_openings = 0;  ///< the input plan's opening count
 };
 
 /// @return the plan as built (slabs kept in order, their tops absolute).

@@ -16,7 +16,9 @@ namespace {
 
 class DisjointSets {
  public:
-  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  explicit DisjointSets(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
   std::size_t find(std::size_t x) {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
     return x;
@@ -64,7 +66,8 @@ bool is_same_height(const WallFrame& a, const WallFrame& b) {
 // The two corners of a footprint's end (0: from, 1: to), in ascending order.
 std::pair<Point2, Point2> end_corners(const WallFrame& f, std::size_t end) {
   const Point2 p = f.footprint[end == 0 ? 0 : 1], q = f.footprint[end == 0 ? 3 : 2];
-  return std::minmax(p, q, [](Point2 u, Point2 v) { return std::tie(u.x, u.y) < std::tie(v.x, v.y); });
+  return std::minmax(p, q,
+                     [](Point2 u, Point2 v) { return std::tie(u.x, u.y) < std::tie(v.x, v.y); });
 }
 
 // Whether every end of `a` mitred to `b` has the very end face of an end of `b` mitred to `a`.
@@ -77,7 +80,8 @@ bool mitre_ends_coincide(const std::vector<WallFrame>& frames, const Joins& join
     if (joins.mitre[a][e] != b) continue;
     bool matched = false;
     for (std::size_t f = 0; f < 2; ++f)
-      matched = matched || (joins.mitre[b][f] == a && end_corners(frames[a], e) == end_corners(frames[b], f));
+      matched = matched ||
+                (joins.mitre[b][f] == a && end_corners(frames[a], e) == end_corners(frames[b], f));
     if (!matched) return false;
   }
   return true;
@@ -91,9 +95,9 @@ void link_walls(const std::vector<WallFrame>& frames, const Joins& joins, const 
                 std::vector<char>& general, DisjointSets& sets) {
   for (const Join& j : joins.pairs) {
     sets.unite(j.a, j.b);
-    const bool plain = j.kind == JoinKind::mitre
-                           ? is_same_height(frames[j.a], frames[j.b]) && mitre_ends_coincide(frames, joins, j.a, j.b)
-                           : explained.count({j.a, j.b}) > 0;
+    const bool plain = j.kind == JoinKind::mitre ? is_same_height(frames[j.a], frames[j.b]) &&
+                                                       mitre_ends_coincide(frames, joins, j.a, j.b)
+                                                 : explained.count({j.a, j.b}) > 0;
     if (!plain) general[j.a] = general[j.b] = 1;
   }
   std::vector<SpaceBox> boxes;
@@ -129,7 +133,8 @@ std::vector<char> find_general_components(const std::vector<char>& general, Disj
 
 // Slab s is element n + s of the sets (n walls): it meets the walls and slabs whose boxes
 // meet its box, heights included (touching counts).
-void link_slabs(const std::vector<WallFrame>& frames, const std::vector<SlabFrame>& slabs, DisjointSets& sets) {
+void link_slabs(const std::vector<WallFrame>& frames, const std::vector<SlabFrame>& slabs,
+                DisjointSets& sets) {
   const std::size_t n = frames.size();
   std::vector<SpaceBox> walls, boxes;
   for (const WallFrame& f : frames) walls.push_back(footprint_space_box(f));
@@ -137,13 +142,16 @@ void link_slabs(const std::vector<WallFrame>& frames, const std::vector<SlabFram
     boxes.push_back(space_box({slabs[s].min_x, slabs[s].min_y, slabs[s].max_x, slabs[s].max_y, s},
                               slabs[s].bottom, slabs[s].top));
   for (const auto& [w, s] : find_meeting_boxes(walls, boxes))
-    if (!(frames[w].top_max < slabs[s].bottom || slabs[s].top < frames[w].base)) sets.unite(w, n + s);
+    if (!(frames[w].top_max < slabs[s].bottom || slabs[s].top < frames[w].base))
+      sets.unite(w, n + s);
   for (const auto& [a, b] : find_meeting_boxes(boxes))
-    if (!(slabs[a].top < slabs[b].bottom || slabs[b].top < slabs[a].bottom)) sets.unite(n + a, n + b);
+    if (!(slabs[a].top < slabs[b].bottom || slabs[b].top < slabs[a].bottom))
+      sets.unite(n + a, n + b);
 }
 
 // The items of walls 0..n-1 and slabs n.. (every slab in a cluster).
-std::vector<WorkItem> group_walls(std::size_t n, const std::vector<char>& root_general, DisjointSets& sets) {
+std::vector<WorkItem> group_walls(std::size_t n, const std::vector<char>& root_general,
+                                  DisjointSets& sets) {
   const std::size_t all = root_general.size();
   std::vector<WorkItem> items;
   std::vector<std::size_t> item_of_root(all, all);

@@ -2,13 +2,13 @@
 // Which walls take the fast path and which go to a boolean path together (clusters).
 //
 // A wall needs the general path if it takes part in a unite join that no hub or tee builds
-// (solid/detail/fast_path/hubs.h, solid/detail/fast_path/tees.h), is mitred to a wall of another base or height or whose mitred
-// end face is not its own (a straight run from one thickness to another), has a hole not clear of a
-// capless end, or meets a wall it is not joined to (their boxes touch). A cluster is a
-// connected group of walls (joined or touching) holding such a wall; every other wall is built
-// alone on the fast path, and every hub among fast walls adds its top and bottom. So fast
-// pieces and clusters never touch, and the wall solid is their disjoint union. A slab joins
-// the cluster of every wall and slab its box meets (it needs the general path).
+// (solid/detail/fast_path/hubs.h, solid/detail/fast_path/tees.h), is mitred to a wall of another
+// base or height or whose mitred end face is not its own (a straight run from one thickness to
+// another), has a hole not clear of a capless end, or meets a wall it is not joined to (their boxes
+// touch). A cluster is a connected group of walls (joined or touching) holding such a wall; every
+// other wall is built alone on the fast path, and every hub among fast walls adds its top and
+// bottom. So fast pieces and clusters never touch, and the wall solid is their disjoint union. A
+// slab joins the cluster of every wall and slab its box meets (it needs the general path).
 #pragma once
 
 #include <cstddef>
@@ -16,8 +16,8 @@
 
 #include "solid/build_model.h"
 #include "solid/detail/fast_path/hubs.h"
-#include "solid/detail/frames/slab_frames.h"
 #include "solid/detail/fast_path/tees.h"
+#include "solid/detail/frames/slab_frames.h"
 #include "solid/detail/frames/wall_frame.h"
 
 namespace roomcad::detail {

@@ -65,7 +65,8 @@ inline std::vector<EK::Point_2> exact_footprint(const WallFrame& f) {
 
 /// @return the exact point of the side line a -> b where (p - from) . dir = u, with the
 ///         frame's rounded from and dir taken as exact values (so jambs are exactly square).
-inline EK::Point_2 exact_side_point(const WallFrame& f, const Point2& a, const Point2& b, double u) {
+inline EK::Point_2 exact_side_point(const WallFrame& f, const Point2& a, const Point2& b,
+                                    double u) {
   const EK::FT dx(f.dir.x), dy(f.dir.y);
   const EK::FT ax(a.x), ay(a.y), ex = EK::FT(b.x) - ax, ey = EK::FT(b.y) - ay;
   const EK::FT ua = (ax - f.from.x) * dx + (ay - f.from.y) * dy;

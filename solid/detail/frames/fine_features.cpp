@@ -10,9 +10,9 @@
 
 #include <fmt/format.h>
 
-#include "solid/detail/frames/wall_frame.h"
-#include "plan/plan_levels.h"
 #include "geometry/segment_predicates.h"
+#include "plan/plan_levels.h"
+#include "solid/detail/frames/wall_frame.h"
 
 namespace roomcad::detail {
 namespace {

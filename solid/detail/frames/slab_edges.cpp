@@ -32,9 +32,12 @@ std::optional<Face> face_of(const WallFrame& f, int k) {
 bool runs_along(const Face& face, Point2 p, Point2 q, double tolerance) {
   const double dx = face.b.x - face.a.x, dy = face.b.y - face.a.y, length = std::hypot(dx, dy);
   auto along = [&](Point2 r) { return ((r.x - face.a.x) * dx + (r.y - face.a.y) * dy) / length; };
-  auto off = [&](Point2 r) { return std::abs((r.x - face.a.x) * dy - (r.y - face.a.y) * dx) / length; };
+  auto off = [&](Point2 r) {
+    return std::abs((r.x - face.a.x) * dy - (r.y - face.a.y) * dx) / length;
+  };
   if (off(p) > tolerance || off(q) > tolerance) return false;
-  const double lo = std::max(0.0, std::min(along(p), along(q))), hi = std::min(length, std::max(along(p), along(q)));
+  const double lo = std::max(0.0, std::min(along(p), along(q))),
+               hi = std::min(length, std::max(along(p), along(q)));
   return hi - lo > tolerance;
 }
 
@@ -47,8 +50,8 @@ bool is_same_direction(Point2 s, Point2 t) {
 
 // Lays the ring's edges into the walls they run along. `inside` is +1 when the slab's area lies
 // left of the ring's edges (an outline drawn counter-clockwise, a hole clockwise), -1 otherwise.
-void lay_ring(Polygon& ring, int inside, const std::vector<WallFrame>& walls, const std::vector<Box2>& boxes,
-              double bottom, double top, double tolerance) {
+void lay_ring(Polygon& ring, int inside, const std::vector<WallFrame>& walls,
+              const std::vector<Box2>& boxes, double bottom, double top, double tolerance) {
   const std::size_t m = ring.size();
   std::vector<Box2> edges;
   for (std::size_t k = 0; k < m; ++k) {
@@ -72,7 +75,8 @@ void lay_ring(Polygon& ring, int inside, const std::vector<WallFrame>& walls, co
       const bool beside = inside * ((q.x - p.x) * face->step.y - (q.y - p.y) * face->step.x) < 0.0;
       if (!covers && !beside) continue;
       for (const std::size_t v : {e, (e + 1) % m})
-        if (std::none_of(steps[v].begin(), steps[v].end(), [&](Point2 s) { return is_same_direction(s, face->step); }))
+        if (std::none_of(steps[v].begin(), steps[v].end(),
+                         [&](Point2 s) { return is_same_direction(s, face->step); }))
           steps[v].push_back(face->step);
     }
   }
@@ -86,19 +90,21 @@ std::vector<Box2> wall_boxes_for_laying(const std::vector<WallFrame>& walls, dou
   std::vector<Box2> boxes;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const auto& c = walls[i].footprint;
-    if (!(signed_area(Polygon(c.begin(), c.end())) > 0.0)) continue;  // a bow tie: no inside to lay into
+    if (!(signed_area(Polygon(c.begin(), c.end())) > 0.0))
+      continue;  // a bow tie: no inside to lay into
     boxes.push_back(footprint_box(walls[i], tolerance));
     boxes.back().index = i;
   }
   return boxes;
 }
 
-void lay_slab_edges_into_walls(Slab& slab, const std::vector<WallFrame>& walls, const std::vector<Box2>& boxes,
-                               double tolerance) {
+void lay_slab_edges_into_walls(Slab& slab, const std::vector<WallFrame>& walls,
+                               const std::vector<Box2>& boxes, double tolerance) {
   const double bottom = slab.top - slab.thickness;
   const int outline_turn = signed_area(slab.outline) > 0.0 ? 1 : -1;
   lay_ring(slab.outline, outline_turn, walls, boxes, bottom, slab.top, tolerance);
-  for (Polygon& h : slab.holes) lay_ring(h, signed_area(h) > 0.0 ? -1 : 1, walls, boxes, bottom, slab.top, tolerance);
+  for (Polygon& h : slab.holes)
+    lay_ring(h, signed_area(h) > 0.0 ? -1 : 1, walls, boxes, bottom, slab.top, tolerance);
 }
 
 }  // namespace roomcad::detail

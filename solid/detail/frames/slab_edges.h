@@ -15,8 +15,8 @@
 
 #include <vector>
 
-#include "solid/detail/frames/wall_frame.h"
 #include "plan/plan.h"
+#include "solid/detail/frames/wall_frame.h"
 
 namespace roomcad::detail {
 
@@ -28,11 +28,12 @@ namespace roomcad::detail {
 /// @param[in] boxes     wall_boxes_for_laying(walls, tolerance), made once for every slab
 /// @param[in] tolerance the site's join tolerance
 /// Cost O((n + e) log (n + e) + k) for n walls, e slab edges and k near pairs.
-void lay_slab_edges_into_walls(Slab& slab, const std::vector<WallFrame>& walls, const std::vector<Box2>& boxes,
-                               double tolerance);
+void lay_slab_edges_into_walls(Slab& slab, const std::vector<WallFrame>& walls,
+                               const std::vector<Box2>& boxes, double tolerance);
 
 /// @return the walls' footprint boxes grown by `tolerance`, tagged with their index in
 ///         `walls`; a wall whose footprint is a bow tie (no inside to lay into) has none. O(n).
-[[nodiscard]] std::vector<Box2> wall_boxes_for_laying(const std::vector<WallFrame>& walls, double tolerance);
+[[nodiscard]] std::vector<Box2> wall_boxes_for_laying(const std::vector<WallFrame>& walls,
+                                                      double tolerance);
 
 }  // namespace roomcad::detail

@@ -21,9 +21,11 @@ struct FaceInfo {
   int nesting = -1;  ///< constraints crossed from outside: odd inside the slab's area
   bool used = false;
 };
-using Fb = CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<
+    K, CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>>;
 using Tds = CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<K>, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<
+    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
 using Face = CDT::Face_handle;
 
 // Gives every face its nesting level: 0 outside, 1 inside the outline, 2 inside a hole.
@@ -63,7 +65,9 @@ struct Corner {
 
 Corner corner_of(const CDT& cdt, const Face& f, const CDT::Vertex_handle& v, int opposite) {
   const Face n = f->neighbor(opposite);
-  return {v, n, !cdt.is_constrained({f, opposite}) && !cdt.is_infinite(n) && is_inside(n) && !n->info().used};
+  return {
+      v, n,
+      !cdt.is_constrained({f, opposite}) && !cdt.is_infinite(n) && is_inside(n) && !n->info().used};
 }
 
 // Takes in the triangles across the piece's edges while it stays strictly convex (a turn that
@@ -90,7 +94,8 @@ Polygon grow_piece(const CDT& cdt, const Face& start) {
       continue;
     }
     g->info().used = true;
-    const Corner to_w = corner_of(cdt, g, a, g->index(b)), from_w = corner_of(cdt, g, w, g->index(a));
+    const Corner to_w = corner_of(cdt, g, a, g->index(b)),
+                 from_w = corner_of(cdt, g, w, g->index(a));
     c = to_w;
     piece.insert(piece.begin() + std::ptrdiff_t(k) + 1, from_w);  // k is looked at again
   }
@@ -190,9 +195,12 @@ std::vector<Polygon> convex_pieces(const Slab& slab) {
     insert_ring(slab.outline);
     for (const Polygon& h : slab.holes) insert_ring(h);
   } catch (const CDT::Intersection_of_constraints_exception&) {
-    throw PreconditionError(fmt::format("build_model: slab '{}' cannot be built: its outline and holes cross "
-                                        "themselves or each other (they must be simple, the holes inside the "
-                                        "outline and apart)", slab.id), Code::not_buildable);
+    throw PreconditionError(
+        fmt::format("build_model: slab '{}' cannot be built: its outline and holes cross "
+                    "themselves or each other (they must be simple, the holes inside the "
+                    "outline and apart)",
+                    slab.id),
+        Code::not_buildable);
   }
   if (is_rectilinear(slab)) return rectangles(slab);  // the triangulation checked the rings
   mark_nesting(cdt);
@@ -209,7 +217,13 @@ std::vector<SlabFrame> make_slab_frames(const Plan& plan, const std::vector<Wall
   const std::vector<Box2> wall_boxes = wall_boxes_for_laying(walls, plan.site.tolerance);
   for (std::size_t i = 0; i < plan.slabs.size(); ++i) {
     Slab s = plan.slabs[i];
-    SlabFrame f{.slab = i, .id = s.id, .outline = {}, .holes = {}, .pieces = {}, .bottom = s.top - s.thickness, .top = s.top,
+    SlabFrame f{.slab = i,
+                .id = s.id,
+                .outline = {},
+                .holes = {},
+                .pieces = {},
+                .bottom = s.top - s.thickness,
+                .top = s.top,
                 .color = s.color};
     if (!(f.bottom < f.top) || s.outline.size() < 3) continue;
     lay_slab_edges_into_walls(s, walls, wall_boxes, plan.site.tolerance);

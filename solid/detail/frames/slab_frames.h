@@ -9,18 +9,18 @@
 #include <string>
 #include <vector>
 
-#include "solid/detail/frames/wall_frame.h"
 #include "plan/plan.h"
+#include "solid/detail/frames/wall_frame.h"
 
 namespace roomcad::detail {
 
 struct SlabFrame {
-  std::size_t slab = 0;                ///< index into Plan::slabs
-  std::string id;                      ///< the slab's id, for messages
-  Polygon outline;                     ///< laid into the walls along it (slab_edges.h)
-  std::vector<Polygon> holes;          ///< likewise
-  std::vector<Polygon> pieces;         ///< convex, counter-clockwise, together the slab's area
-  double bottom = 0.0, top = 0.0;      ///< top - thickness, top
+  std::size_t slab = 0;            ///< index into Plan::slabs
+  std::string id;                  ///< the slab's id, for messages
+  Polygon outline;                 ///< laid into the walls along it (slab_edges.h)
+  std::vector<Polygon> holes;      ///< likewise
+  std::vector<Polygon> pieces;     ///< convex, counter-clockwise, together the slab's area
+  double bottom = 0.0, top = 0.0;  ///< top - thickness, top
   double min_x = 0.0, min_y = 0.0, max_x = 0.0, max_y = 0.0;  ///< the outline's box
   Color color;
 };
@@ -33,6 +33,7 @@ struct SlabFrame {
 ///         themselves or each other (validation's invalid_value says the same). O(n log n)
 ///         for n corners (a constrained Delaunay triangulation, then triangles merged while
 ///         the union stays convex), or O(r n) for the rectangles of r rows.
-[[nodiscard]] std::vector<SlabFrame> make_slab_frames(const Plan& plan, const std::vector<WallFrame>& walls);
+[[nodiscard]] std::vector<SlabFrame> make_slab_frames(const Plan& plan,
+                                                      const std::vector<WallFrame>& walls);
 
 }  // namespace roomcad::detail

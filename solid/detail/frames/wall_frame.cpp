@@ -12,9 +12,9 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
-#include "solid/build_model.h"
 #include "core/flat_index.h"
 #include "geometry/segment_predicates.h"
+#include "solid/build_model.h"
 
 namespace roomcad::detail {
 namespace {
@@ -33,10 +33,12 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   const double length = std::hypot(dx, dy);
   if (!is_positive(length) || !is_positive(w.thickness) || !is_positive(w.height) ||
       !std::isfinite(w.base))
-    throw PreconditionError(fmt::format(
-        "build_model: wall '{}' cannot be built: length {}, thickness {}, height {}, base {} "
-        "(length, thickness and height must be positive and finite)",
-        w.id, length, w.thickness, w.height, w.base), Code::not_buildable);
+    throw PreconditionError(
+        fmt::format(
+            "build_model: wall '{}' cannot be built: length {}, thickness {}, height {}, base {} "
+            "(length, thickness and height must be positive and finite)",
+            w.id, length, w.thickness, w.height, w.base),
+        Code::not_buildable);
   WallFrame f;
   f.wall = index;
   f.id = w.id;
@@ -49,10 +51,14 @@ WallFrame make_frame(const Plan& plan, const Joins& joins, std::size_t index) {
   f.base = w.base;
   f.heights = {w.height, w.height_at_end.value_or(w.height)};
   if (!is_positive(f.heights[1]))
-    throw PreconditionError(fmt::format("build_model: wall '{}' cannot be built: height_at_end {} (must be "
-                                        "positive and finite)", w.id, f.heights[1]), Code::not_buildable);
-  const double reach = std::max({std::abs(w.from.x), std::abs(w.from.y), std::abs(w.to.x), std::abs(w.to.y)}) +
-                      w.thickness;
+    throw PreconditionError(
+        fmt::format("build_model: wall '{}' cannot be built: height_at_end {} (must be "
+                    "positive and finite)",
+                    w.id, f.heights[1]),
+        Code::not_buildable);
+  const double reach =
+      std::max({std::abs(w.from.x), std::abs(w.from.y), std::abs(w.to.x), std::abs(w.to.y)}) +
+      w.thickness;
   const double top = std::abs(w.base) + highest_height(w);
   const double smallest = std::max(resolvable_size(reach), resolvable_size(top));
   const double lowest = std::min(f.heights[0], f.heights[1]);
@@ -113,16 +119,20 @@ Hole make_hole(const Plan& plan, std::size_t index, const WallFrame& f) {
                       o.offset + o.width <= f.length + r && o.sill >= -r &&
                       (is_sloped(f) || o.sill + o.height <= w.height + r);
   if (!inside)
-    throw PreconditionError(fmt::format(
-        "build_model: opening '{}' cannot be cut: u [{}, {}] x v [{}, {}] is not a non-empty "
-        "rectangle inside wall '{}' ([0, {}] x [0, {}])",
-        o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length,
-        std::max(f.heights[0], f.heights[1])), Code::not_buildable);
+    throw PreconditionError(
+        fmt::format(
+            "build_model: opening '{}' cannot be cut: u [{}, {}] x v [{}, {}] is not a non-empty "
+            "rectangle inside wall '{}' ([0, {}] x [0, {}])",
+            o.id, o.offset, o.offset + o.width, o.sill, o.sill + o.height, w.id, f.length,
+            std::max(f.heights[0], f.heights[1])),
+        Code::not_buildable);
   for (std::size_t k = 0; k < 4; ++k)
     if (f.footprint[k] == f.footprint[(k + 1) % 4])
-      throw PreconditionError(fmt::format(
-          "build_model: opening '{}' cannot be cut: wall '{}' is shorter than its mitres (a side "
-          "of its footprint has no length)", o.id, w.id), Code::not_buildable);
+      throw PreconditionError(fmt::format("build_model: opening '{}' cannot be cut: wall '{}' is "
+                                          "shorter than its mitres (a side "
+                                          "of its footprint has no length)",
+                                          o.id, w.id),
+                              Code::not_buildable);
   // Both edges snap alike (0 first), so u0 <= u1 and z0 <= z1 stay so. base + (sill + height)
   // equals the wall's top (f.top) exactly when the opening reaches it.
   const auto snap = [r](double x, double end) { return x < r ? 0.0 : end - x < r ? end : x; };
@@ -165,7 +175,8 @@ Joins with_hairline_mitres(const Plan& plan, Joins joins) {
   for (std::size_t i = 0; i < plan.walls.size(); ++i)
     for (const WallEnd e : {WallEnd::from, WallEnd::to}) {
       const Point2& p = e == WallEnd::from ? plan.walls[i].from : plan.walls[i].to;
-      nodes[{std::bit_cast<std::uint64_t>(p.x + 0.0), std::bit_cast<std::uint64_t>(p.y + 0.0)}].emplace_back(i, e);
+      nodes[{std::bit_cast<std::uint64_t>(p.x + 0.0), std::bit_cast<std::uint64_t>(p.y + 0.0)}]
+          .emplace_back(i, e);
     }
   for (const auto& [key, ends] : nodes) {
     if (ends.size() < 3) continue;
@@ -204,18 +215,21 @@ std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& plan_join
     if (w == by_id.kNone)
       throw PreconditionError(fmt::format("build_model: opening '{}' cannot be cut: its wall '{}' "
                                           "does not exist",
-                                          plan.openings[i].id, plan.openings[i].wall), Code::not_buildable);
+                                          plan.openings[i].id, plan.openings[i].wall),
+                              Code::not_buildable);
     Hole& hole = frames[w].holes.emplace_back(make_hole(plan, i, frames[w]));
     if (i < through_mitre.size()) hole.through_mitre = through_mitre[i];
   }
   for (WallFrame& f : frames)
-    std::sort(f.holes.begin(), f.holes.end(),
-              [](const Hole& a, const Hole& b) { return a.u0 < b.u0 || (a.u0 == b.u0 && a.z0 < b.z0); });
+    std::sort(f.holes.begin(), f.holes.end(), [](const Hole& a, const Hole& b) {
+      return a.u0 < b.u0 || (a.u0 == b.u0 && a.z0 < b.z0);
+    });
   return frames;
 }
 
 bool needs_general_path(const WallFrame& f) {
-  return is_sloped(f) || std::any_of(f.holes.begin(), f.holes.end(), [](const Hole& h) { return !h.shape.empty(); });
+  return is_sloped(f) || std::any_of(f.holes.begin(), f.holes.end(),
+                                     [](const Hole& h) { return !h.shape.empty(); });
 }
 
 Point2 side_point(const WallFrame& f, double u, int side) {

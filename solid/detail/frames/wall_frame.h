@@ -4,9 +4,9 @@
 #pragma once
 
 #include <array>
-#include <string>
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "geometry/broad_phase.h"
@@ -48,9 +48,9 @@ struct WallFrame {
   double length = 0.0;
   double half = 0.0;  ///< half the thickness
   double base = 0.0;
-  double top = 0.0;       ///< base + height: the top at `from` (of the whole wall, if flat)
-  double top_end = 0.0;   ///< base + height_at_end: the top at `to`
-  double top_max = 0.0;   ///< at least the highest top over the footprint (sloped: its corners)
+  double top = 0.0;      ///< base + height: the top at `from` (of the whole wall, if flat)
+  double top_end = 0.0;  ///< base + height_at_end: the top at `to`
+  double top_max = 0.0;  ///< at least the highest top over the footprint (sloped: its corners)
   /// The smallest size the build resolves in this wall, metres: 64 units in the last place of
   /// its coordinates and of its top. A wall shorter, thinner or lower is refused; a hole
   /// edge nearer than this to the wall's end, base or flat top is flush with it.
@@ -59,7 +59,7 @@ struct WallFrame {
   std::array<Point2, 4> footprint;  ///< wall_footprint: from-right, to-right, to-left, from-left
   std::array<bool, 2> capless{false, false};  ///< per WallEnd: no end cap (mitred, or on a hub)
   Color color;
-  std::vector<Hole> holes;  ///< sorted by u0
+  std::vector<Hole> holes;              ///< sorted by u0
   std::vector<Attachment> attachments;  ///< stems glued to its sides (fast path only)
 };
 
@@ -126,8 +126,8 @@ inline Point2 outward(const WallFrame& f, WallEnd end) {
 ///         of its wall to within its resolution).
 /// @param through_mitre  per opening (or empty: none), whether its hole runs on through a
 ///                       mitre at its wall's from and to ends (Hole::through_mitre).
-[[nodiscard]] std::vector<WallFrame> make_wall_frames(const Plan& plan, const Joins& joins,
-                                                      std::span<const std::array<bool, 2>> through_mitre = {});
+[[nodiscard]] std::vector<WallFrame> make_wall_frames(
+    const Plan& plan, const Joins& joins, std::span<const std::array<bool, 2>> through_mitre = {});
 
 /// @return the point at u along the wall on its right (side = -1) or left (side = +1) face,
 ///         rounded to doubles. O(1).

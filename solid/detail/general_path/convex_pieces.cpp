@@ -9,12 +9,12 @@
 #include <iterator>
 #include <tuple>
 
-#include <boost/container/small_vector.hpp>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/partition_2.h>
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <boost/container/small_vector.hpp>
 
 #include "solid/build_model.h"
 
@@ -78,7 +78,9 @@ PlaneRef plane_at_u(PlaneSet& set, const WallFrame& f, double u, int outward) {
   return {set.add(r), outward};
 }
 
-PlaneRef plane_at_z(PlaneSet& set, double z, int outward) { return axis_plane(set, 2, z, 0.0, outward); }
+PlaneRef plane_at_z(PlaneSet& set, double z, int outward) {
+  return axis_plane(set, 2, z, 0.0, outward);
+}
 
 // The plane of a sloped top (docs/plan-format.md, height_at_end): through the top at `from`
 // and at `to`, rising by exactly height_at_end - height; above it is outside.
@@ -116,7 +118,8 @@ std::vector<Polygon> convex_parts(const Polygon& shape) {
   };
   if (polygon.is_convex()) return {to_part(polygon)};
   std::vector<Traits::Polygon_2> pieces;
-  CGAL::approx_convex_partition_2(polygon.vertices_begin(), polygon.vertices_end(), std::back_inserter(pieces));
+  CGAL::approx_convex_partition_2(polygon.vertices_begin(), polygon.vertices_end(),
+                                  std::back_inserter(pieces));
   for (const auto& q : pieces) parts.push_back(to_part(q));
   return parts;
 }
@@ -141,8 +144,9 @@ Primitive make_prism(const PlaneSet& set, const PlanePolygon& base, PlaneRef c0,
   std::vector<XPoint> a = base.vertices, b;
   b.reserve(k);
   for (std::size_t i = 0; i < k; ++i) {
-    b.push_back(vertical && a[i].is_explicit() ? with_coordinate(a[i], 2, top_z)
-                     : make_point(set, c1.id, base.lines[i].id, base.lines[(i + 1) % k].id));
+    b.push_back(vertical && a[i].is_explicit()
+                    ? with_coordinate(a[i], 2, top_z)
+                    : make_point(set, c1.id, base.lines[i].id, base.lines[(i + 1) % k].id));
   }
   PlanePolygon bottom{c0, {}, {}}, top{c1, base.lines, b};
   for (std::size_t j = 0; j < k; ++j) {
@@ -153,7 +157,9 @@ Primitive make_prism(const PlaneSet& set, const PlanePolygon& base, PlaneRef c0,
   p.faces.push_back(std::move(top));
   for (std::size_t i = 0; i < k; ++i) {
     const std::size_t prev = (i + k - 1) % k, next = (i + 1) % k;
-    p.faces.push_back({base.lines[i], {c0, base.lines[next], c1, base.lines[prev]}, {a[i], b[i], b[prev], a[prev]}});
+    p.faces.push_back({base.lines[i],
+                       {c0, base.lines[next], c1, base.lines[prev]},
+                       {a[i], b[i], b[prev], a[prev]}});
   }
   p.vertices = std::move(a);
   p.vertices.insert(p.vertices.end(), b.begin(), b.end());
@@ -164,7 +170,8 @@ Primitive make_prism(const PlaneSet& set, const PlanePolygon& base, PlaneRef c0,
 // The convex polygon in `plane` on the negative side of every line, clipped from the box.
 // @return nullopt when it has no area. @throws if it is unbounded (cannot happen for a wall).
 std::optional<PlanePolygon> intersect_half_planes(const PlaneSet& set, const BoxPlanes& box,
-                                                  PlaneRef plane, const std::vector<PlaneRef>& lines,
+                                                  PlaneRef plane,
+                                                  const std::vector<PlaneRef>& lines,
                                                   const std::string& what) {
   PlanePolygon poly = box_polygon(set, box, plane);
   for (const PlaneRef& l : lines)
@@ -178,7 +185,8 @@ std::optional<PlanePolygon> intersect_half_planes(const PlaneSet& set, const Box
 }
 
 // Whether each corner turns strictly left (the lines through consecutive corners exist).
-bool is_strictly_convex(const PlaneSet& set, const std::array<Point2, 4>& c, const std::vector<PlaneRef>& lines) {
+bool is_strictly_convex(const PlaneSet& set, const std::array<Point2, 4>& c,
+                        const std::vector<PlaneRef>& lines) {
   if (lines.size() != 4) return false;
   for (std::size_t i = 0; i < 4; ++i) {
     const Point2 q = c[(i + 2) % 4];
@@ -218,8 +226,8 @@ struct HolePlanes {
 // from its planes alone, walls in parallel (predicates only read the set).
 struct WallPlanes {
   std::array<PlaneRef, 4> sides{};
-  std::vector<PlaneRef> lines;   // the footprint's sides that exist
-  std::vector<PlaneRef> sloped;  // a sloped wall's sides, base and top
+  std::vector<PlaneRef> lines;                      // the footprint's sides that exist
+  std::vector<PlaneRef> sloped;                     // a sloped wall's sides, base and top
   std::optional<std::array<PlaneRef, 2>> base_top;  // a flat-topped wall with height: c0, c1
   std::vector<HolePlanes> holes;
 };
@@ -232,7 +240,8 @@ HolePlanes rectangle_hole_planes(PlaneSet& set, const WallFrame& f, const Hole& 
   HolePlanes p{&h, {}, false, std::nullopt};
   if (!(h.u0 < h.u1) || !(h.z0 < h.z1)) return p;
   const bool from_cap = hole_reaches_end_line(f, h, 0), to_cap = hole_reaches_end_line(f, h, 1);
-  p.outlines.push_back({plane_at_z(set, h.z0, -1), from_cap ? sides[3] : plane_at_u(set, f, h.u0, -1),
+  p.outlines.push_back({plane_at_z(set, h.z0, -1),
+                        from_cap ? sides[3] : plane_at_u(set, f, h.u0, -1),
                         plane_at_z(set, h.z1, 1), to_cap ? sides[1] : plane_at_u(set, f, h.u1, 1)});
   p.at_end = from_cap || to_cap;
   p.sides = inward_sides(set, f, sides);
@@ -281,8 +290,9 @@ WallPlanes wall_planes(PlaneSet& set, const WallFrame& f, std::array<bool, 2> sh
 }
 
 // The wall piece: its footprint between base and top.
-std::optional<Primitive> make_wall_piece(const PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
-                                         const WallPlanes& planes, const std::string& name) {
+std::optional<Primitive> make_wall_piece(const PlaneSet& set, const BoxPlanes& box,
+                                         const WallFrame& f, const WallPlanes& planes,
+                                         const std::string& name) {
   if (!planes.sloped.empty()) return make_convex(set, box, planes.sloped);
   if (!planes.base_top) return std::nullopt;
   const auto [c0, c1] = *planes.base_top;
@@ -309,8 +319,8 @@ std::optional<Primitive> make_wall_piece(const PlaneSet& set, const BoxPlanes& b
 }
 
 // The hole's primitives (a shaped opening's: one per convex part) appended to `out`.
-void add_hole(const PlaneSet& set, const BoxPlanes& box, const HolePlanes& planes, const std::string& name,
-              std::vector<Primitive>& out) {
+void add_hole(const PlaneSet& set, const BoxPlanes& box, const HolePlanes& planes,
+              const std::string& name, std::vector<Primitive>& out) {
   if (!planes.sides) return;
   const auto [c0, c1] = *planes.sides;
   for (const std::vector<PlaneRef>& outline : planes.outlines) {
@@ -332,8 +342,9 @@ void add_hole(const PlaneSet& set, const BoxPlanes& box, const HolePlanes& plane
 }
 
 // The wall's piece, then its holes' primitives.
-std::vector<Primitive> wall_primitives(const PlaneSet& set, const BoxPlanes& box, const WallFrame& f,
-                                       const WallPlanes& planes, std::size_t frame) {
+std::vector<Primitive> wall_primitives(const PlaneSet& set, const BoxPlanes& box,
+                                       const WallFrame& f, const WallPlanes& planes,
+                                       std::size_t frame) {
   const std::string name = fmt::format("the footprint of wall '{}'", f.id);
   std::vector<Primitive> out;
   if (auto piece = make_wall_piece(set, box, f, planes, name)) out.push_back(std::move(*piece));
@@ -344,7 +355,8 @@ std::vector<Primitive> wall_primitives(const PlaneSet& set, const BoxPlanes& box
 
 }  // namespace
 
-std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box, const std::vector<PlaneRef>& planes) {
+std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box,
+                                     const std::vector<PlaneRef>& planes) {
   Primitive p;
   for (std::size_t i = 0; i < planes.size(); ++i) {
     PlanePolygon face = box_polygon(set, box, planes[i]);
@@ -360,7 +372,8 @@ std::optional<Primitive> make_convex(const PlaneSet& set, const BoxPlanes& box, 
   return p;
 }
 
-double largest_coordinate(std::span<const WallFrame* const> walls, std::span<const SlabFrame* const> slabs) {
+double largest_coordinate(std::span<const WallFrame* const> walls,
+                          std::span<const SlabFrame* const> slabs) {
   double m = 0.0;
   for (const WallFrame* f : walls) {
     for (const Point2& p : f->footprint) m = std::max({m, std::abs(p.x), std::abs(p.y)});
@@ -412,10 +425,13 @@ int dominant_axis(const PlaneSet& set, PlaneId plane) {
 PlanePolygon box_polygon(const PlaneSet& set, const BoxPlanes& box, PlaneRef plane) {
   const int k = dominant_axis(set, plane.id);
   const auto i = std::size_t((k + 1) % 3), j = std::size_t((k + 2) % 3);
-  PlanePolygon poly{plane, {{box.high[i], 1}, {box.high[j], 1}, {box.low[i], -1}, {box.low[j], -1}}, {}};
-  if (orient_normals(set, plane, poly.lines[0], poly.lines[1]) < 0) std::reverse(poly.lines.begin(), poly.lines.end());
+  PlanePolygon poly{
+      plane, {{box.high[i], 1}, {box.high[j], 1}, {box.low[i], -1}, {box.low[j], -1}}, {}};
+  if (orient_normals(set, plane, poly.lines[0], poly.lines[1]) < 0)
+    std::reverse(poly.lines.begin(), poly.lines.end());
   for (std::size_t m = 0; m < 4; ++m)
-    poly.vertices.push_back(make_point(set, plane.id, poly.lines[m].id, poly.lines[(m + 1) % 4].id));
+    poly.vertices.push_back(
+        make_point(set, plane.id, poly.lines[m].id, poly.lines[(m + 1) % 4].id));
   return poly;
 }
 
@@ -538,7 +554,8 @@ std::vector<Primitive> make_primitives(PlaneSet& set, const BoxPlanes& box,
   for (const std::exception_ptr& e : failure)
     if (e) std::rethrow_exception(e);
   std::vector<Primitive> out;
-  for (std::vector<Primitive>& prims : of_wall) std::move(prims.begin(), prims.end(), std::back_inserter(out));
+  for (std::vector<Primitive>& prims : of_wall)
+    std::move(prims.begin(), prims.end(), std::back_inserter(out));
   for (std::size_t s = 0; s < slabs.size(); ++s)
     for (const Polygon& piece : slabs[s]->pieces) {
       out.push_back(make_slab_piece(set, *slabs[s], piece));

@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "core/box.h"
-#include "solid/detail/general_path/exact_planes.h"
 #include "solid/detail/frames/slab_frames.h"
 #include "solid/detail/frames/wall_frame.h"
+#include "solid/detail/general_path/exact_planes.h"
 
 namespace roomcad::detail {
 
@@ -65,9 +65,9 @@ bool clip_polygon(const PlaneSet& set, PlanePolygon& polygon, PlaneRef h);
 struct Primitive {
   static constexpr std::size_t kNoSlab = SIZE_MAX;
   enum class Kind : std::uint8_t { solid, hole } kind = Kind::solid;
-  std::size_t frame = 0;    ///< index of its wall in the walls given to the builder
-  std::size_t slab = kNoSlab;  ///< for a slab's piece: index of its slab in the slabs given
-  std::size_t opening = 0;  ///< Plan::openings index, for a hole
+  std::size_t frame = 0;            ///< index of its wall in the walls given to the builder
+  std::size_t slab = kNoSlab;       ///< for a slab's piece: index of its slab in the slabs given
+  std::size_t opening = 0;          ///< Plan::openings index, for a hole
   std::vector<PlanePolygon> faces;  ///< plane: outward; counter-clockwise seen from outside
   std::vector<XPoint> vertices;
   Box3 box;

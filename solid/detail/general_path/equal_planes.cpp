@@ -18,7 +18,8 @@ namespace {
 // over |n|, as intervals (equal planes have equal invariants, so theirs overlap).
 std::array<Interval, 4> invariants(const std::array<Interval, 4>& c) {
   const Interval norm = CGAL::sqrt(CGAL::square(c[0]) + CGAL::square(c[1]) + CGAL::square(c[2]));
-  return {CGAL::abs(c[3]) / norm, CGAL::abs(c[0]) / norm, CGAL::abs(c[1]) / norm, CGAL::abs(c[2]) / norm};
+  return {CGAL::abs(c[3]) / norm, CGAL::abs(c[0]) / norm, CGAL::abs(c[1]) / norm,
+          CGAL::abs(c[2]) / norm};
 }
 
 }  // namespace
@@ -59,7 +60,8 @@ std::vector<PlaneRef> PlaneSet::find_equal_planes() const {
     rep_of[id] = id;
     if (r.kind == PlaneRecipe::Kind::axis && !std::isnan(r.v[1]) && !std::isnan(r.v[2])) {
       // + 0.0: -0.0 and 0.0 are one coordinate, as == has them.
-      const std::array<std::uint64_t, 3> key{std::uint64_t(r.v[0]), std::bit_cast<std::uint64_t>(r.v[1] + 0.0),
+      const std::array<std::uint64_t, 3> key{std::uint64_t(r.v[0]),
+                                             std::bit_cast<std::uint64_t>(r.v[1] + 0.0),
                                              std::bit_cast<std::uint64_t>(r.v[2] + 0.0)};
       const auto [first, fresh] = axis_first.try_emplace(key, id);
       rep_of[id] = first;
@@ -80,7 +82,8 @@ std::vector<PlaneRef> PlaneSet::find_equal_planes() const {
   std::vector<PlaneId> active;  // representatives whose |d| / |n| may still overlap
   for (PlaneId id : order) {
     const double lo = inv[id][0].inf();
-    active.erase(std::remove_if(active.begin(), active.end(), [&](PlaneId r) { return inv[r][0].sup() < lo; }),
+    active.erase(std::remove_if(active.begin(), active.end(),
+                                [&](PlaneId r) { return inv[r][0].sup() < lo; }),
                  active.end());
     PlaneId found = id;
     for (PlaneId r : active) {
@@ -94,7 +97,8 @@ std::vector<PlaneRef> PlaneSet::find_equal_planes() const {
     rep_of[id] = found;
     if (found == id) active.push_back(id);
   }
-  for (PlaneId id = 0; id < n; ++id) rep_of[id] = rep_of[rep_of[id]];  // a hashed repeat: its first's
+  for (PlaneId id = 0; id < n; ++id)
+    rep_of[id] = rep_of[rep_of[id]];  // a hashed repeat: its first's
   // The group's representative is its lowest id, so the result does not depend on the sort.
   std::vector<PlaneId> lowest(n, PlaneId(n));
   for (PlaneId id = 0; id < n; ++id) lowest[rep_of[id]] = std::min(lowest[rep_of[id]], id);

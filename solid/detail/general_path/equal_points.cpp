@@ -27,7 +27,8 @@ bool for_each_fine_cell(int i, int j, const XPoint& p, double cell, F&& f) {
   if (!(i1 - i0 <= 1.0 && j1 - j0 <= 1.0)) return false;  // NaN and infinite bounds too
   for (double ci = i0; ci <= i1; ++ci)
     for (double cj = j0; cj <= j1; ++cj)
-      f(std::array<std::uint64_t, 2>{std::uint64_t(std::int64_t(ci)), std::uint64_t(std::int64_t(cj))});
+      f(std::array<std::uint64_t, 2>{std::uint64_t(std::int64_t(ci)),
+                                     std::uint64_t(std::int64_t(cj))});
   return true;
 }
 
@@ -54,7 +55,7 @@ std::vector<std::size_t> find_equal_points(PointCache& points, int i, int j) {
   };
   using CellKey = std::array<std::uint64_t, 2>;
   FlatIndex<CellKey> cell_of(n);
-  std::vector<std::uint32_t> last_in_cell;                  // per cell, its last filed entry
+  std::vector<std::uint32_t> last_in_cell;                   // per cell, its last filed entry
   std::vector<std::pair<std::size_t, std::uint32_t>> filed;  // (point, the cell's entry before it)
   std::vector<std::size_t> wide;
   for (std::size_t k = 0; k < n; ++k) {

@@ -12,8 +12,8 @@
 #include <tbb/concurrent_unordered_map.h>
 
 #include "core/assert.h"
-#include "exact/interval_sign.h"
 #include "core/flat_index.h"
+#include "exact/interval_sign.h"
 
 namespace roomcad::detail {
 namespace {
@@ -83,7 +83,8 @@ T det4(const std::array<T, 4>& a, const std::array<T, 4>& b, const std::array<T,
 
 // Homogeneous coordinates of the meeting point of three planes (Cramer).
 template <class T>
-std::array<T, 4> meet(const std::array<T, 4>& p0, const std::array<T, 4>& p1, const std::array<T, 4>& p2) {
+std::array<T, 4> meet(const std::array<T, 4>& p0, const std::array<T, 4>& p1,
+                      const std::array<T, 4>& p2) {
   return {-det3(p0, p1, p2, 1, 2, 3), det3(p0, p1, p2, 0, 2, 3), -det3(p0, p1, p2, 0, 1, 3),
           det3(p0, p1, p2, 0, 1, 2)};
 }
@@ -113,8 +114,14 @@ double round_quotient(const Exact& num, const Exact& den) {
       // 2 n vs (r + up) d: sums of two doubles are exact in Mpzf.
       const int above = exact_sign(Exact(2) * n - (Exact(r) + Exact(up)) * d);
       const int below = exact_sign(Exact(2) * n - (Exact(r) + Exact(down)) * d);
-      if (above > 0) { r = up; continue; }
-      if (below < 0) { r = down; continue; }
+      if (above > 0) {
+        r = up;
+        continue;
+      }
+      if (below < 0) {
+        r = down;
+        continue;
+      }
       const bool even = (std::bit_cast<std::uint64_t>(r) & 1u) == 0;
       if (above == 0 && !even) return up;
       if (below == 0 && !even) return down;
@@ -129,7 +136,6 @@ double round_quotient(const Exact& num, const Exact& den) {
   mpfr_clear(m);
   return out;
 }
-
 
 }  // namespace
 
@@ -222,7 +228,8 @@ const std::array<Exact, 4>& PlaneSet::exact(PlaneId id) const {
 
 std::array<std::uint64_t, 3> representation_key(const XPoint& p) {
   if (p.is_explicit())  // + 0.0: -0.0 and 0.0 are one coordinate
-    return {std::bit_cast<std::uint64_t>(p.approx[0].inf() + 0.0), std::bit_cast<std::uint64_t>(p.approx[1].inf() + 0.0),
+    return {std::bit_cast<std::uint64_t>(p.approx[0].inf() + 0.0),
+            std::bit_cast<std::uint64_t>(p.approx[1].inf() + 0.0),
             std::bit_cast<std::uint64_t>(p.approx[2].inf() + 0.0)};
   auto ids = p.planes;
   std::sort(ids.begin(), ids.end());
@@ -321,7 +328,8 @@ bool same_point(const XPoint& p, const XPoint& q, HomOf&& hom_of) {
   bool all_points = true;
   for (std::size_t k = 0; k < 3; ++k) {
     if (!do_overlap(p.approx[k], q.approx[k])) return false;
-    all_points = all_points && p.approx[k].inf() == p.approx[k].sup() && q.approx[k].inf() == q.approx[k].sup();
+    all_points = all_points && p.approx[k].inf() == p.approx[k].sup() &&
+                 q.approx[k].inf() == q.approx[k].sup();
   }
   if (all_points) return true;  // overlapping point intervals: equal doubles
   if (!p.is_explicit() && !q.is_explicit()) {
@@ -355,7 +363,8 @@ int compare_value(const XPoint& p, double value, int axis, HomOf&& hom_of) {
 // does not matter.
 std::optional<double> nearest_to_sum(double hi, double lo) {
   if (lo == 0.0) return hi;
-  if (!(std::abs(hi) >= 0x1p-1000 && std::abs(hi) <= 0x1p1000)) return std::nullopt;  // normal, with room
+  if (!(std::abs(hi) >= 0x1p-1000 && std::abs(hi) <= 0x1p1000))
+    return std::nullopt;  // normal, with room
   const double next = std::nextafter(hi, lo > 0.0 ? INFINITY : -INFINITY);
   const double half = (next - hi) / 2.0;  // half an ulp toward lo, signed (Sterbenz: exact)
   if (std::abs(lo) < std::abs(half)) return hi;
@@ -473,12 +482,14 @@ int PointCache::side(PlaneRef plane, std::size_t i) {
 
 bool PointCache::is_same(std::size_t i, std::size_t j) {
   if (i == j) return true;
-  return same_point(points_[i], points_[j], [&](int k) -> const XHom& { return exact(k == 0 ? i : j); });
+  return same_point(points_[i], points_[j],
+                    [&](int k) -> const XHom& { return exact(k == 0 ? i : j); });
 }
 
 int PointCache::compare(std::size_t i, std::size_t j, int axis) {
   if (i == j) return 0;
-  return compare_points(points_[i], points_[j], axis, [&](int k) -> const XHom& { return exact(k == 0 ? i : j); });
+  return compare_points(points_[i], points_[j], axis,
+                        [&](int k) -> const XHom& { return exact(k == 0 ? i : j); });
 }
 
 int PointCache::compare(std::size_t i, double value, int axis) {

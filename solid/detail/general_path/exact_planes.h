@@ -157,7 +157,8 @@ class PlaneSet {
 /// @return whether two points are the same point.
 [[nodiscard]] bool is_same_point(const PlaneSet& set, const XPoint& p, const XPoint& q);
 /// @return sign(p[axis] - q[axis]).
-[[nodiscard]] int compare_coordinate(const PlaneSet& set, const XPoint& p, const XPoint& q, int axis);
+[[nodiscard]] int compare_coordinate(const PlaneSet& set, const XPoint& p, const XPoint& q,
+                                     int axis);
 /// @return sign(p[axis] - value).
 [[nodiscard]] int compare_coordinate(const PlaneSet& set, const XPoint& p, double value, int axis);
 /// @return sign(det(n_a, n_b, n_c)) of the oriented normals.

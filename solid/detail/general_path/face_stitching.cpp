@@ -40,10 +40,12 @@ struct PointTable {
   std::vector<std::uint32_t> corner_exact;  // per corner, its face's own exact point
 
   [[nodiscard]] std::span<const std::uint32_t> polygon(std::size_t face) const {
-    return std::span(corner_point).subspan(first_corner[face], first_corner[face + 1] - first_corner[face]);
+    return std::span(corner_point)
+        .subspan(first_corner[face], first_corner[face + 1] - first_corner[face]);
   }
   [[nodiscard]] std::span<const std::uint32_t> exact_polygon(std::size_t face) const {
-    return std::span(corner_exact).subspan(first_corner[face], first_corner[face + 1] - first_corner[face]);
+    return std::span(corner_exact)
+        .subspan(first_corner[face], first_corner[face + 1] - first_corner[face]);
   }
 };
 
@@ -51,7 +53,8 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
   PointTable t(set);
   t.first_corner.reserve(faces.size() + 1);
   t.first_corner.push_back(0);
-  for (const SolidFace* f : faces) t.first_corner.push_back(t.first_corner.back() + f->vertices.size());
+  for (const SolidFace* f : faces)
+    t.first_corner.push_back(t.first_corner.back() + f->vertices.size());
   const std::size_t corners = t.first_corner.back();
   t.corner_point.resize(corners), t.corner_exact.resize(corners);
   std::vector<const XPoint*> exact_points;  // in order of first use
@@ -63,7 +66,8 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
         for (const SolidFace* f : faces)
           for (const auto& r : f->rounded) {
             const OpenMesh::Vec3d p(r[0], r[1], r[2]);
-            const auto [at, added] = by_coordinates.try_emplace(coordinates_key(p), std::uint32_t(t.points.size()));
+            const auto [at, added] =
+                by_coordinates.try_emplace(coordinates_key(p), std::uint32_t(t.points.size()));
             if (added) t.points.push_back(p);
             t.corner_point[c++] = at;
           }
@@ -73,7 +77,8 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
         std::size_t c = 0;
         for (const SolidFace* f : faces)
           for (const XPoint& v : f->vertices) {
-            const auto [rep, fresh] = by_representation.try_emplace(representation_key(v), std::uint32_t(exact_points.size()));
+            const auto [rep, fresh] = by_representation.try_emplace(
+                representation_key(v), std::uint32_t(exact_points.size()));
             if (fresh) exact_points.push_back(&v);
             t.corner_exact[c++] = rep;
           }
@@ -85,9 +90,11 @@ PointTable number_faces(const PlaneSet& set, std::span<const SolidFace* const> f
   for (const XPoint* v : exact_points) t.exact.add(*v);
   for (std::size_t c = 0, known = 0; c < corners; ++c) {
     const std::uint32_t rep = t.corner_exact[c], at = t.corner_point[c];
-    if (rep < known) continue;  // not its first corner: exact points are numbered in order of first corner
+    if (rep < known)
+      continue;  // not its first corner: exact points are numbered in order of first corner
     known = rep + 1;
-    (t.last_exact[at] == PointTable::kNone ? t.first_exact[at] : t.next_exact[t.last_exact[at]]) = rep;
+    (t.last_exact[at] == PointTable::kNone ? t.first_exact[at] : t.next_exact[t.last_exact[at]]) =
+        rep;
     t.last_exact[at] = rep;
   }
   return t;
@@ -135,7 +142,8 @@ class PointGrid {
   }
   /// Calls f(i) for every point in the cells the box [a, b] (grown by `margin`) touches.
   template <class F>
-  void for_each_near(const OpenMesh::Vec3d& a, const OpenMesh::Vec3d& b, double margin, F&& f) const {
+  void for_each_near(const OpenMesh::Vec3d& a, const OpenMesh::Vec3d& b, double margin,
+                     F&& f) const {
     std::array<int, 3> lo{}, hi{};
     for (int k = 0; k < 3; ++k) {
       lo[std::size_t(k)] = index(std::min(a[k], b[k]) - margin, k);
@@ -145,7 +153,8 @@ class PointGrid {
       for (int y = lo[1]; y <= hi[1]; ++y)
         for (int z = lo[2]; z <= hi[2]; ++z) {
           const std::size_t cell = cell_at(x, y, z);
-          for (std::uint32_t at = first_[cell]; at < first_[cell + 1]; ++at) f(std::size_t(filed_[at]));
+          for (std::uint32_t at = first_[cell]; at < first_[cell + 1]; ++at)
+            f(std::size_t(filed_[at]));
         }
   }
 
@@ -156,7 +165,8 @@ class PointGrid {
     return c >= 0.0 ? int(std::min(c, double(side_ - 1))) : 0;
   }
   std::size_t cell_at(int x, int y, int z) const {
-    return (std::size_t(x) * std::size_t(side_) + std::size_t(y)) * std::size_t(side_) + std::size_t(z);
+    return (std::size_t(x) * std::size_t(side_) + std::size_t(y)) * std::size_t(side_) +
+           std::size_t(z);
   }
   std::uint32_t cell_of(const OpenMesh::Vec3d& p) const {
     return std::uint32_t(cell_at(index(p[0], 0), index(p[1], 1), index(p[2], 2)));
@@ -232,7 +242,8 @@ bool is_near_segment(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, const O
   if (len2 == 0.0) return false;
   const double t = (r | d) / len2;
   double scale = 0.0;
-  for (int k = 0; k < 3; ++k) scale = std::max({scale, std::abs(u[k]), std::abs(v[k]), std::abs(w[k])});
+  for (int k = 0; k < 3; ++k)
+    scale = std::max({scale, std::abs(u[k]), std::abs(v[k]), std::abs(w[k])});
   const double tol = 64.0 * std::numeric_limits<double>::epsilon() * scale;
   return t > 0.0 && t < 1.0 && (r - d * t).norm() <= tol;
 }
@@ -249,9 +260,11 @@ int only_differing_axis(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v) {
 }
 
 // The axis along which u -> v changes most, and the sign of that change (exact).
-std::pair<int, int> edge_axis(PointCache& exact, std::size_t u, std::size_t v, const OpenMesh::Vec3d& d) {
+std::pair<int, int> edge_axis(PointCache& exact, std::size_t u, std::size_t v,
+                              const OpenMesh::Vec3d& d) {
   std::array<int, 3> axes{0, 1, 2};
-  std::sort(axes.begin(), axes.end(), [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
+  std::sort(axes.begin(), axes.end(),
+            [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
   for (int a : axes)
     if (const int s = exact.compare(v, u, a); s != 0) return {a, s};
   return {0, 0};

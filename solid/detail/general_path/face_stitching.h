@@ -10,9 +10,9 @@
 #include <cstddef>
 #include <span>
 
+#include "solid/detail/assembly/snap_soup.h"
 #include "solid/detail/general_path/exact_planes.h"
 #include "solid/detail/general_path/plane_faces.h"
-#include "solid/detail/assembly/snap_soup.h"
 
 namespace roomcad::detail {
 
@@ -23,6 +23,7 @@ namespace roomcad::detail {
 ///         lines (each line's points in order), O(e c) for the other edges and c points in the
 ///         cells of a uniform grid they cross; exact tests only for points within a few ulps
 ///         of an edge; faces in parallel.
-[[nodiscard]] IndexedSoup stitch_faces(const PlaneSet& set, std::span<const SolidFace* const> faces);
+[[nodiscard]] IndexedSoup stitch_faces(const PlaneSet& set,
+                                       std::span<const SolidFace* const> faces);
 
 }  // namespace roomcad::detail

@@ -72,7 +72,9 @@ std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primit
     const IntervalScope intervals;
     for (std::size_t p = 0; p < prims.size(); ++p) {
       if (!boxes_meet(all, prims[p].box)) continue;
-      if (std::any_of(w.faces.begin(), w.faces.end(), [&](const auto& pf) { return pf.first == p; })) continue;
+      if (std::any_of(w.faces.begin(), w.faces.end(),
+                      [&](const auto& pf) { return pf.first == p; }))
+        continue;
       bool below = false, above = false;
       for (const XPoint& v : prims[p].vertices) {
         const int s = side(set, {w.plane, 1}, v);
@@ -80,8 +82,9 @@ std::vector<PlaneWork> plan_planes(const PlaneSet& set, const std::vector<Primit
         above = above || s > 0;
         if (below && above) break;
       }
-      if (below && above &&
-          std::any_of(faces.begin(), faces.end(), [&](const Box3& b) { return boxes_meet(b, prims[p].box); }))
+      if (below && above && std::any_of(faces.begin(), faces.end(), [&](const Box3& b) {
+            return boxes_meet(b, prims[p].box);
+          }))
         w.crossing.push_back(p);
     }
   });
@@ -125,7 +128,8 @@ void first_pass(const PlaneSet& set, const BoxPlanes& box, const std::vector<Pri
   for (const auto& [p, f] : w.faces) contributions.push_back(face_contribution(prims[p], p, f));
   for (std::size_t p : w.crossing)
     if (auto section = section_of(set, box, prims[p], {w.plane, 1}))
-      contributions.push_back({std::move(*section), p, prims[p].kind == Primitive::Kind::solid, true, true});
+      contributions.push_back(
+          {std::move(*section), p, prims[p].kind == Primitive::Kind::solid, true, true});
   if (auto apart = faces_if_apart(set, {w.plane, 1}, contributions)) {
     w.lone = std::move(*apart);
     return;
@@ -145,9 +149,9 @@ void first_pass(const PlaneSet& set, const BoxPlanes& box, const std::vector<Pri
 // A segment of a line of the plane through the middle of a hole loop (along a view axis),
 // across the owner's box: the owner's faces lie in its polygon, inside that box. None when
 // the owner already has a cut on that line (two holes level with each other).
-std::optional<Cut> cut_through(PlaneSet& set, const BoxPlanes& box, PlaneId plane, std::size_t owner,
-                               const Box3& owner_box, const std::vector<XPoint>& loop,
-                               const std::vector<Cut>& cuts) {
+std::optional<Cut> cut_through(PlaneSet& set, const BoxPlanes& box, PlaneId plane,
+                               std::size_t owner, const Box3& owner_box,
+                               const std::vector<XPoint>& loop, const std::vector<Cut>& cuts) {
   const int k = dominant_axis(set, plane);
   for (const int a : {(k + 1) % 3, (k + 2) % 3}) {
     double lo = INFINITY, hi = -INFINITY;
@@ -158,11 +162,16 @@ std::optional<Cut> cut_through(PlaneSet& set, const BoxPlanes& box, PlaneId plan
       lo = std::min(lo, x), hi = std::max(hi, x);
     }
     const double c = lo + (hi - lo) / 2.0;
-    const bool left = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) < 0; });
-    const bool right = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) { return compare_coordinate(set, v, c, a) > 0; });
+    const bool left = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) {
+      return compare_coordinate(set, v, c, a) < 0;
+    });
+    const bool right = std::any_of(loop.begin(), loop.end(), [&](const XPoint& v) {
+      return compare_coordinate(set, v, c, a) > 0;
+    });
     if (!left || !right) continue;
     for (const Cut& cut : cuts)
-      if (cut.owner == owner && simple_axis(set, cut.line.id) == std::pair{a, c}) return std::nullopt;
+      if (cut.owner == owner && simple_axis(set, cut.line.id) == std::pair{a, c})
+        return std::nullopt;
     // Along the cut: the axis other than a and k (the plane's normal has a k part, so the
     // line runs along b). Ends strictly outside the owner's box, or the box's planes where
     // the owner's box is unbounded (a corner of nearly parallel planes).
@@ -172,10 +181,13 @@ std::optional<Cut> cut_through(PlaneSet& set, const BoxPlanes& box, PlaneId plan
       return Cut{{set.add_axis(a, c), 1}, owner, box.low[b], box.high[b]};
     const double margin = (high - low) / 16.0 + (std::abs(low) + std::abs(high) + 1.0) * 0x1p-30;
     const PlaneId line = set.add_axis(a, c);
-    return Cut{{line, 1}, owner, set.add_axis(int(b), low - margin), set.add_axis(int(b), high + margin)};
+    return Cut{
+        {line, 1}, owner, set.add_axis(int(b), low - margin), set.add_axis(int(b), high + margin)};
   }
-  throw PreconditionError("build_model: a hole in a face of the general path is too thin to cut "
-                          "(narrower than the doubles can split)", Code::not_buildable);
+  throw PreconditionError(
+      "build_model: a hole in a face of the general path is too thin to cut "
+      "(narrower than the doubles can split)",
+      Code::not_buildable);
 }
 
 // Builds every plane's faces; planes whose faces would have holes get cuts, and only the
@@ -194,7 +206,8 @@ void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive
       PlaneWork& w = works[todo[t]];
       first_new[t] = w.cuts.size();
       for (const auto& [owner, loop] : w.result.holes)
-        if (auto cut = cut_through(set, box, w.plane, owner, prims[owner].box, loop, w.cuts)) w.cuts.push_back(*cut);
+        if (auto cut = cut_through(set, box, w.plane, owner, prims[owner].box, loop, w.cuts))
+          w.cuts.push_back(*cut);
     }
     tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t t) {
       PlaneWork& w = works[todo[t]];
@@ -205,7 +218,8 @@ void run_planes(PlaneSet& set, const BoxPlanes& box, const std::vector<Primitive
   }
 }
 
-SoupFace label_face(const Primitive& prim, const PlaneSet& set, PlaneRef plane, const Labels& labels) {
+SoupFace label_face(const Primitive& prim, const PlaneSet& set, PlaneRef plane,
+                    const Labels& labels) {
   SoupFace face;
   if (prim.slab != Primitive::kNoSlab) {
     const SlabFrame& s = *labels.slabs[prim.slab];
@@ -240,8 +254,9 @@ std::string owner_name(const Primitive& prim, const Labels& labels) {
   return fmt::format("'{}'", labels.walls[prim.frame]->id);
 }
 
-FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces, const std::vector<Primitive>& prims,
-                      const PlaneSet& set, const Labels& labels) {
+FaceSoup to_face_soup(IndexedSoup soup, std::span<const SolidFace* const> faces,
+                      const std::vector<Primitive>& prims, const PlaneSet& set,
+                      const Labels& labels) {
   const double tolerance = snap_tolerance(soup.points);
   const IndexedSoup r = snap_soup(std::move(soup), tolerance);
   std::pair<std::size_t, std::size_t> bad;

@@ -9,21 +9,21 @@
 #include <span>
 #include <tuple>
 
+#include "core/flat_index.h"
 #include "solid/detail/general_path/convex_pieces.h"
 #include "solid/detail/general_path/grid_tracing.h"
 #include "solid/detail/general_path/wedges_apart.h"
-#include "core/flat_index.h"
 
 namespace roomcad::detail {
 namespace {
 
-using grid::Grid;
-using grid::Region;
-using grid::Step;
-using grid::TraceScratch;
 using grid::face_corners;
 using grid::find_regions;
+using grid::Grid;
+using grid::Region;
 using grid::region_loops;
+using grid::Step;
+using grid::TraceScratch;
 
 // An interval is [0, 0] only where the value it encloses is 0.
 bool is_zero(const Interval& x) { return x.inf() == 0.0 && x.sup() == 0.0; }

@@ -130,10 +130,6 @@ std::int64_t twice_area(const Grid& g, const std::vector<Step>& loop) {
   return sum;
 }
 
-
-
-
-
 }  // namespace
 
 // The regions, in the order PlaneBoolean files its face groups: side, then owner.

@@ -28,7 +28,8 @@ class OnceSlot {
     if (const T* known = value_.load(std::memory_order_acquire)) return *known;
     auto made = std::make_unique<T>(make());
     T* expected = nullptr;
-    if (value_.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) return *made.release();
+    if (value_.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel))
+      return *made.release();
     return *expected;  // another thread published first
   }
 

@@ -12,7 +12,8 @@ namespace roomcad::detail {
 namespace {
 
 // The contributions whose flag in `dropped` is 0, in their order.
-std::vector<Contribution> without_dropped(std::vector<Contribution> contributions, const std::vector<char>& dropped) {
+std::vector<Contribution> without_dropped(std::vector<Contribution> contributions,
+                                          const std::vector<char>& dropped) {
   std::size_t n = 0;
   for (std::size_t k = 0; k < contributions.size(); ++k)
     if (!dropped[k]) {
@@ -23,10 +24,10 @@ std::vector<Contribution> without_dropped(std::vector<Contribution> contribution
   return contributions;
 }
 
-
 // Whether point v lies in convex polygon `polygon` (closed). Exact.
 bool holds_point(const PlaneSet& set, const PlanePolygon& polygon, const XPoint& v) {
-  return std::none_of(polygon.lines.begin(), polygon.lines.end(), [&](PlaneRef t) { return side(set, t, v) > 0; });
+  return std::none_of(polygon.lines.begin(), polygon.lines.end(),
+                      [&](PlaneRef t) { return side(set, t, v) > 0; });
 }
 
 // Whether convex polygon `inner` lies in convex polygon `outer` (both closed). Exact.
@@ -40,9 +41,11 @@ bool lies_in(const PlaneSet& set, const PlanePolygon& inner, const PlanePolygon&
 // one is at most one convex piece per line of the latter). A corner in no cover says no at
 // once, before any piece is made: most faces that are not covered have one. Gives up (false)
 // past 64 pieces. Exact.
-bool lies_in_union(const PlaneSet& set, const PlanePolygon& face, const std::vector<const PlanePolygon*>& covers) {
+bool lies_in_union(const PlaneSet& set, const PlanePolygon& face,
+                   const std::vector<const PlanePolygon*>& covers) {
   const auto in_a_cover = [&](const XPoint& v) {
-    return std::any_of(covers.begin(), covers.end(), [&](const PlanePolygon* c) { return holds_point(set, *c, v); });
+    return std::any_of(covers.begin(), covers.end(),
+                       [&](const PlanePolygon* c) { return holds_point(set, *c, v); });
   };
   if (!std::all_of(face.vertices.begin(), face.vertices.end(), in_a_cover)) return false;
   constexpr std::size_t kMostPieces = 64;
@@ -69,7 +72,6 @@ std::vector<Box3> boxes_of(const std::vector<Contribution>& contributions) {
   for (const Contribution& c : contributions) boxes.push_back(box_of(c.polygon.vertices));
   return boxes;
 }
-
 
 // A point near the middle of convex polygon `polygon`: the mean of its corners' interval
 // midpoints, as explicit doubles (so up to a rounding off the polygon's plane); none where
@@ -115,8 +117,8 @@ std::vector<Contribution> without_duplicates(std::vector<Contribution> contribut
     Contribution& kept = contributions[first];
     for (std::size_t b = a + 1; b < by_hash.size() && by_hash[b].first == by_hash[a].first; ++b) {
       Contribution& other = contributions[by_hash[b].second];
-      if (dropped[by_hash[b].second] || corners[by_hash[b].second] != corners[first] || other.solid != kept.solid ||
-          other.above != kept.above || other.below != kept.below)
+      if (dropped[by_hash[b].second] || corners[by_hash[b].second] != corners[first] ||
+          other.solid != kept.solid || other.above != kept.above || other.below != kept.below)
         continue;
       kept.primitive = std::min(kept.primitive, other.primitive);
       dropped[by_hash[b].second] = 1;
@@ -132,7 +134,8 @@ std::vector<Contribution> without_duplicates(std::vector<Contribution> contribut
 // storey's wall top inside the section of a wall across it. O(n s) box tests for s sections,
 // plus the side tests of containment where boxes meet; each polygon is tested against the
 // kept sections.
-std::vector<Contribution> without_covered(const PlaneSet& set, std::vector<Contribution> contributions) {
+std::vector<Contribution> without_covered(const PlaneSet& set,
+                                          std::vector<Contribution> contributions) {
   std::vector<std::size_t> sections;
   for (std::size_t s = 0; s < contributions.size(); ++s)
     if (contributions[s].above && contributions[s].below) sections.push_back(s);

@@ -23,7 +23,8 @@ namespace roomcad::detail {
 /// storey's wall top inside the section of a wall across it. O(n s) box tests for s sections,
 /// plus the side tests of containment where boxes meet; each polygon is tested against the
 /// kept sections.
-[[nodiscard]] std::vector<Contribution> without_covered(const PlaneSet& set, std::vector<Contribution> contributions);
+[[nodiscard]] std::vector<Contribution> without_covered(const PlaneSet& set,
+                                                        std::vector<Contribution> contributions);
 
 /// Whether the plane surely holds no face of the solid: every solid polygon with a face there
 /// lies whole in a solid polygon on its other side (a section, or a face of a primitive
@@ -33,6 +34,7 @@ namespace roomcad::detail {
 /// not mean faces (a face whose middle, rounded to doubles, lies in no polygon beyond it gives
 /// false before any containment test: most planes with faces). O(n^2) box tests, and the
 /// predicates of containment tests where boxes meet, the polygons holding the middle first.
-[[nodiscard]] bool has_no_faces(const PlaneSet& set, const std::vector<Contribution>& contributions);
+[[nodiscard]] bool has_no_faces(const PlaneSet& set,
+                                const std::vector<Contribution>& contributions);
 
 }  // namespace roomcad::detail

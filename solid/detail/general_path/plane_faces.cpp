@@ -11,8 +11,8 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "geometry/box_grid.h"
 #include "core/flat_index.h"
+#include "geometry/box_grid.h"
 #include "solid/detail/general_path/equal_points.h"
 #include "solid/detail/general_path/plane_contributions.h"
 #include "solid/detail/general_path/plane_loops.h"
@@ -59,8 +59,8 @@ Box2 bounds_of(const Context& cx, std::size_t a, std::size_t b) {
   const XPoint& p = cx.points[a];
   const XPoint& q = cx.points[b];
   const auto pi = bounds(p, cx.i), pj = bounds(p, cx.j), qi = bounds(q, cx.i), qj = bounds(q, cx.j);
-  return {std::min(pi.first, qi.first), std::min(pj.first, qj.first), std::max(pi.second, qi.second),
-          std::max(pj.second, qj.second), 0};
+  return {std::min(pi.first, qi.first), std::min(pj.first, qj.first),
+          std::max(pi.second, qi.second), std::max(pj.second, qj.second), 0};
 }
 
 // The cut's segment, directed along n x n_cut.
@@ -84,7 +84,14 @@ std::vector<Edge> make_edges(const Context& cx) {
     for (const XPoint& v : poly.vertices) cx.points.add(v);
     for (std::size_t m = 0; m < n; ++m) {
       const std::size_t prev = (m + n - 1) % n;
-      Edge e{poly.lines[m], poly.lines[prev], poly.lines[(m + 1) % n], first + prev, first + m, c, {}, {}};
+      Edge e{poly.lines[m],
+             poly.lines[prev],
+             poly.lines[(m + 1) % n],
+             first + prev,
+             first + m,
+             c,
+             {},
+             {}};
       e.bounds = bounds_of(cx, e.start, e.end);
       edges.push_back(std::move(e));
     }
@@ -136,9 +143,10 @@ void split_edges(const Context& cx, std::vector<Edge>& edges) {
   std::vector<std::size_t> active;
   for (const auto& [low, idx] : order) {
     Edge& e = edges[idx];
-    active.erase(std::remove_if(active.begin(), active.end(),
-                                [&](std::size_t a) { return edges[a].bounds.max_x < e.bounds.min_x; }),
-                 active.end());
+    active.erase(
+        std::remove_if(active.begin(), active.end(),
+                       [&](std::size_t a) { return edges[a].bounds.max_x < e.bounds.min_x; }),
+        active.end());
     for (std::size_t a : active) {
       Edge& f = edges[a];
       if (f.source != e.source && boxes_meet(e.bounds, f.bounds)) split_pair(cx, e, f);
@@ -163,7 +171,9 @@ void append_pieces(const Context& cx, std::size_t index, Edge& e, std::vector<Pi
     dir = cx.points.compare(e.end, e.start, axis);
   }
   auto& s = e.splits;
-  std::sort(s.begin(), s.end(), [&](const auto& p, const auto& q) { return cx.points.compare(p.first, q.first, axis) * dir < 0; });
+  std::sort(s.begin(), s.end(), [&](const auto& p, const auto& q) {
+    return cx.points.compare(p.first, q.first, axis) * dir < 0;
+  });
   sources.clear();
   first_source.assign(1, 0);
   std::size_t from = e.start;
@@ -185,7 +195,8 @@ std::array<int, 2> side_signs(const Context& cx, PlaneRef t, const Piece& p) {
   if (s == 0) s = cx.points.side(t, p.b);
   if (s != 0) return {s, s};
   // t runs along the piece: its inside is the piece's negative side if they point alike.
-  const int aligned = t.id == p.line.id ? t.sign * p.line.sign : dot_in_plane(cx.set, cx.plane, t, p.line);
+  const int aligned =
+      t.id == p.line.id ? t.sign * p.line.sign : dot_in_plane(cx.set, cx.plane, t, p.line);
   return aligned > 0 ? std::array<int, 2>{-1, 1} : std::array<int, 2>{1, -1};
 }
 
@@ -286,7 +297,8 @@ void classify_edge(const Context& cx, std::span<const Piece> pieces, PlaneRef ac
   inside.clear();
   near.for_each_meeting(first.bounds, [&](std::size_t c) {
     // The piece lies on its own polygon's edge, the polygon on its left.
-    const std::array<bool, 2> sides = c == first.source ? std::array<bool, 2>{true, false} : inside_sides(cx, c, first);
+    const std::array<bool, 2> sides =
+        c == first.source ? std::array<bool, 2>{true, false} : inside_sides(cx, c, first);
     if (sides[0] || sides[1]) inside.push_back({c, sides});
   });
   out[0] = faces_of(cx, first, across, inside);
@@ -294,11 +306,13 @@ void classify_edge(const Context& cx, std::span<const Piece> pieces, PlaneRef ac
     for (std::size_t at = first_source[k]; at < first_source[k + 1]; ++at) {
       const std::size_t c = sources[at];
       if (c >= cx.contributions.size()) continue;  // a cut: no polygon
-      if (std::find(sources.begin() + std::ptrdiff_t(first_source[k]), sources.begin() + std::ptrdiff_t(at), c) !=
-          sources.begin() + std::ptrdiff_t(at))
+      if (std::find(sources.begin() + std::ptrdiff_t(first_source[k]),
+                    sources.begin() + std::ptrdiff_t(at),
+                    c) != sources.begin() + std::ptrdiff_t(at))
         continue;  // its polygon is done
       const std::array<bool, 2> sides = inside_sides(cx, c, pieces[k]);
-      const auto it = std::find_if(inside.begin(), inside.end(), [&](const Inside& in) { return in.polygon == c; });
+      const auto it = std::find_if(inside.begin(), inside.end(),
+                                   [&](const Inside& in) { return in.polygon == c; });
       if (!sides[0] && !sides[1]) {
         if (it != inside.end()) inside.erase(it);
       } else if (it != inside.end()) {
@@ -320,7 +334,8 @@ class FaceGroups {
  public:
   void add(int side, long owner, const std::string& cells, const DirectedPiece& piece) {
     const std::size_t name = cell_names_.try_emplace(cells, cell_names_.size()).first->second;
-    const std::array<std::uint64_t, 2> key{(std::uint64_t(owner) << 1) | (side > 0 ? 1u : 0u), name};
+    const std::array<std::uint64_t, 2> key{(std::uint64_t(owner) << 1) | (side > 0 ? 1u : 0u),
+                                           name};
     const auto [group, added] = index_.try_emplace(key, std::uint32_t(keys_.size()));
     if (added) {
       keys_.emplace_back(side, owner, cells);
@@ -332,7 +347,8 @@ class FaceGroups {
   [[nodiscard]] std::vector<std::size_t> in_key_order() const {
     std::vector<std::size_t> order(keys_.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys_[a] < keys_[b]; });
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return keys_[a] < keys_[b]; });
     return order;
   }
   [[nodiscard]] const GroupKey& key(std::size_t group) const { return keys_[group]; }
@@ -362,7 +378,8 @@ void add_boundary(const Context& cx, FaceGroups& groups, const Piece& p, std::si
     if (o[0].up >= 0) groups.add(1, o[0].up, up[0], {a, b, p.line, 1});
     if (o[1].up >= 0) groups.add(1, o[1].up, up[1], {b, a, p.line, -1});
   }
-  const std::array<std::string, 2> down{cells_of(cx, p, o[0].down, 0), cells_of(cx, p, o[1].down, 1)};
+  const std::array<std::string, 2> down{cells_of(cx, p, o[0].down, 0),
+                                        cells_of(cx, p, o[1].down, 1)};
   if (o[0].down != o[1].down || down[0] != down[1] || faces.down_pinched) {
     if (o[0].down >= 0) groups.add(-1, o[0].down, down[0], {b, a, p.line, -1});
     if (o[1].down >= 0) groups.add(-1, o[1].down, down[1], {a, b, p.line, 1});
@@ -386,8 +403,12 @@ struct PlaneBoolean::State {
   std::vector<PieceFaces> owners;
 
   State(const PlaneSet& s, PlaneRef p, std::vector<Contribution> c)
-      : set(s), plane(p), i((dominant_axis(s, p.id) + 1) % 3), j((i + 1) % 3),
-        contributions(without_covered(s, without_duplicates(std::move(c)))), points(s),
+      : set(s),
+        plane(p),
+        i((dominant_axis(s, p.id) + 1) % 3),
+        j((i + 1) % 3),
+        contributions(without_covered(s, without_duplicates(std::move(c)))),
+        points(s),
         near(bounds_of_polygons()) {}
   [[nodiscard]] Context context() {
     return {set, plane, i, j, contributions, cuts, cuts_by_owner, points};
@@ -423,7 +444,8 @@ struct PlaneBoolean::State {
   }
 };
 
-PlaneBoolean::PlaneBoolean(const PlaneSet& set, PlaneRef plane, std::vector<Contribution> contributions)
+PlaneBoolean::PlaneBoolean(const PlaneSet& set, PlaneRef plane,
+                           std::vector<Contribution> contributions)
     : state_(std::make_unique<State>(set, plane, std::move(contributions))) {
   const IntervalScope intervals;
   State& st = *state_;
@@ -493,15 +515,17 @@ PlaneFaces PlaneBoolean::faces() {
     std::sort(directed.begin(), directed.end(), [](const DirectedPiece& x, const DirectedPiece& y) {
       return std::tie(x.from, x.to) < std::tie(y.from, y.to);
     });
-    directed.erase(std::unique(directed.begin(), directed.end(), [](const DirectedPiece& x, const DirectedPiece& y) {
-                     return x.from == y.from && x.to == y.to;
-                   }),
+    directed.erase(std::unique(directed.begin(), directed.end(),
+                               [](const DirectedPiece& x, const DirectedPiece& y) {
+                                 return x.from == y.from && x.to == y.to;
+                               }),
                    directed.end());
     const auto& [side_of, owner, cells] = groups.key(group);
     std::vector<PieceLoop> loops = link_loops(st.plane, side_of, std::move(directed), st.points);
     for (const PieceLoop& loop : loops) {
       if (!loop.is_hole) continue;
-      std::vector<XPoint>& hole = out.holes.emplace_back(std::size_t(owner), std::vector<XPoint>{}).second;
+      std::vector<XPoint>& hole =
+          out.holes.emplace_back(std::size_t(owner), std::vector<XPoint>{}).second;
       for (const DirectedPiece& p : loop.pieces) hole.push_back(st.points[p.from]);
     }
     loops_of_group.emplace_back(group, std::move(loops));

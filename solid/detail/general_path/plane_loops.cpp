@@ -34,7 +34,8 @@ struct Turn {
 
 // Of the pieces leaving the end of `in`, the one with the smallest clockwise turn from
 // `in` reversed: it bounds the same part of the face as `in`.
-std::size_t pick_next(const Turn& turn, const DirectedPiece& in, const std::vector<DirectedPiece>& pieces,
+std::size_t pick_next(const Turn& turn, const DirectedPiece& in,
+                      const std::vector<DirectedPiece>& pieces,
                       const std::vector<std::size_t>& candidates) {
   std::size_t best = candidates.front();
   int best_half = turn.half(in, pieces[best]);
@@ -90,10 +91,12 @@ std::vector<PieceLoop> link_loops(PlaneRef plane, int view, std::vector<Directed
       candidates.clear();
       auto it = std::lower_bound(pieces.begin(), pieces.end(), v,
                                  [](const DirectedPiece& p, std::size_t x) { return p.from < x; });
-      for (; it != pieces.end() && it->from == v; ++it) candidates.push_back(std::size_t(it - pieces.begin()));
+      for (; it != pieces.end() && it->from == v; ++it)
+        candidates.push_back(std::size_t(it - pieces.begin()));
       RC_ASSERT(!candidates.empty(), "every boundary piece of a plane's faces has a successor");
-      const std::size_t next = candidates.size() == 1 ? candidates.front()
-                                                      : pick_next(turn, pieces[cur], pieces, candidates);
+      const std::size_t next = candidates.size() == 1
+                                   ? candidates.front()
+                                   : pick_next(turn, pieces[cur], pieces, candidates);
       if (next == start) break;
       RC_ASSERT(!used[next], "the boundary loops of a plane's faces do not cross themselves");
       cur = next;

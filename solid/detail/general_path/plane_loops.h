@@ -32,7 +32,8 @@ struct PieceLoop {
 /// @param[in,out] points  the points, by vertex id (a cache of their exact coordinates)
 /// @return the loops. O(n log n) for n pieces, plus angular sorts at shared vertices.
 /// @throws PreconditionError (internal) if a loop does not close.
-[[nodiscard]] std::vector<PieceLoop> link_loops(PlaneRef plane, int view, std::vector<DirectedPiece> pieces,
+[[nodiscard]] std::vector<PieceLoop> link_loops(PlaneRef plane, int view,
+                                                std::vector<DirectedPiece> pieces,
                                                 PointCache& points);
 
 }  // namespace roomcad::detail

@@ -17,7 +17,8 @@ constexpr std::size_t kNone = SIZE_MAX;
 // (its exit; an edge m runs on lines[m] from vertex m - 1 to vertex m). Seen from the plane's
 // positive side, walking the section counter-clockwise, a face's part runs from its entry to
 // its exit (the solid on the left), and the next face is the one across that edge.
-std::optional<PlanePolygon> section_from_crossings(const PlaneSet& set, const Primitive& prim, PlaneRef plane) {
+std::optional<PlanePolygon> section_from_crossings(const PlaneSet& set, const Primitive& prim,
+                                                   PlaneRef plane) {
   const std::size_t faces = prim.faces.size();
   boost::container::small_vector<std::size_t, 16> exit(faces, kNone);
   boost::container::small_vector<int, 16> s;
@@ -57,16 +58,16 @@ std::optional<PlanePolygon> section_from_crossings(const PlaneSet& set, const Pr
   return section;
 }
 
-std::optional<PlanePolygon> section_by_clipping(const PlaneSet& set, const BoxPlanes& box, const Primitive& primitive,
-                                                PlaneRef plane) {
+std::optional<PlanePolygon> section_by_clipping(const PlaneSet& set, const BoxPlanes& box,
+                                                const Primitive& primitive, PlaneRef plane) {
   PlanePolygon clipped = box_polygon(set, box, plane);
   for (const PlanePolygon& f : primitive.faces)
     if (!clip_polygon(set, clipped, f.plane)) return std::nullopt;
   return clipped;
 }
 
-std::optional<PlanePolygon> section_of(const PlaneSet& set, const BoxPlanes& box, const Primitive& primitive,
-                                       PlaneRef plane) {
+std::optional<PlanePolygon> section_of(const PlaneSet& set, const BoxPlanes& box,
+                                       const Primitive& primitive, PlaneRef plane) {
   if (auto section = section_from_crossings(set, primitive, plane)) return section;
   return section_by_clipping(set, box, primitive, plane);
 }

@@ -20,13 +20,16 @@ namespace roomcad::detail {
 /// The section from the faces the plane crosses. @return none where a vertex of the primitive
 ///         lies on the plane, the faces do not close into one loop, or fewer than three cross
 ///         it (then section_of clips). O(v) predicates, O(c) points made.
-[[nodiscard]] std::optional<PlanePolygon> section_from_crossings(const PlaneSet& set, const Primitive& primitive,
+[[nodiscard]] std::optional<PlanePolygon> section_from_crossings(const PlaneSet& set,
+                                                                 const Primitive& primitive,
                                                                  PlaneRef plane);
 
 /// The section as the box's square in the plane clipped by every face of the primitive.
 /// @return none if it has no area. O(f v) predicates for f faces of v corners.
-[[nodiscard]] std::optional<PlanePolygon> section_by_clipping(const PlaneSet& set, const BoxPlanes& box,
-                                                              const Primitive& primitive, PlaneRef plane);
+[[nodiscard]] std::optional<PlanePolygon> section_by_clipping(const PlaneSet& set,
+                                                              const BoxPlanes& box,
+                                                              const Primitive& primitive,
+                                                              PlaneRef plane);
 
 /// @param[in] plane  a plane with vertices of `primitive` strictly on both of its sides
 /// @return the section: lines on the primitive's faces (outward), counter-clockwise seen from

@@ -14,9 +14,9 @@
 
 #include "solid/build_model.h"
 #include "solid/detail/assembly/classify_face.h"
-#include "solid/detail/frames/exact_wall.h"
 #include "solid/detail/assembly/facet_labels.h"
 #include "solid/detail/assembly/snap_soup.h"
+#include "solid/detail/frames/exact_wall.h"
 
 namespace roomcad::detail {
 namespace {
@@ -58,20 +58,23 @@ Nef unite_balanced(std::vector<Nef> parts) {
 // Names the walls of a cluster for messages.
 std::string wall_list(std::span<const WallFrame* const> walls) {
   std::string ids;
-  for (std::size_t k = 0; k < walls.size() && k < 6; ++k) ids += fmt::format("{}'{}'", k ? ", " : "", walls[k]->id);
+  for (std::size_t k = 0; k < walls.size() && k < 6; ++k)
+    ids += fmt::format("{}'{}'", k ? ", " : "", walls[k]->id);
   return walls.size() > 6 ? ids + ", ..." : ids;
 }
 
 // The result's points rounded to doubles, snapped where they round to within a few ulps of
 // each other (snap_soup: points that are exact doubles stay apart), and its polygons over them.
-IndexedSoup round_soup(const std::vector<EK::Point_3>& exact, std::vector<std::vector<std::size_t>> polygons) {
+IndexedSoup round_soup(const std::vector<EK::Point_3>& exact,
+                       std::vector<std::vector<std::size_t>> polygons) {
   IndexedSoup out;
   out.points.reserve(exact.size());
   std::vector<char> is_exact;
   is_exact.reserve(exact.size());
   for (const EK::Point_3& p : exact) {
-    const OpenMesh::Vec3d& r = out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
-                                                       round_to_nearest(p.z()) + 0.0);
+    const OpenMesh::Vec3d& r =
+        out.points.emplace_back(round_to_nearest(p.x()) + 0.0, round_to_nearest(p.y()) + 0.0,
+                                round_to_nearest(p.z()) + 0.0);
     is_exact.push_back(EK::FT(r[0]) == p.x() && EK::FT(r[1]) == p.y() && EK::FT(r[2]) == p.z());
   }
   out.is_exact = [is_exact = std::move(is_exact)](std::size_t i) { return is_exact[i] != 0; };
@@ -107,7 +110,8 @@ void sort_soup(std::vector<EK::Point_3>& points, std::vector<std::vector<std::si
   std::sort(polygons.begin(), polygons.end());
 }
 
-FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls, int first_opening_object) {
+FaceSoup to_soup(const Nef& solid, std::span<const WallFrame* const> walls,
+                 int first_opening_object) {
   std::vector<EK::Point_3> exact;
   std::vector<std::vector<std::size_t>> polygons;
   CGAL::convert_nef_polyhedron_to_polygon_soup(solid, exact, polygons, false);
@@ -146,9 +150,11 @@ FaceSoup build_cluster_cgal(std::span<const WallFrame* const> walls, int first_o
   // The reference path builds prisms: flat tops and rectangular holes only.
   for (const WallFrame* f : walls)
     if (needs_general_path(*f))
-      throw PreconditionError(fmt::format("build_model: wall '{}' has a sloped top or a shaped opening, which "
-                                          "the Nef path (--boolean nef) does not build; the default path does",
-                                          f->id), Code::not_buildable);
+      throw PreconditionError(
+          fmt::format("build_model: wall '{}' has a sloped top or a shaped opening, which "
+                      "the Nef path (--boolean nef) does not build; the default path does",
+                      f->id),
+          Code::not_buildable);
   std::vector<Nef> prisms, holes;
   // A footprint or hole with no area, or a height that rounds to nothing, has no volume.
   for (const WallFrame* f : walls) {
@@ -163,7 +169,9 @@ FaceSoup build_cluster_cgal(std::span<const WallFrame* const> walls, int first_o
   if (!holes.empty()) solid -= unite_balanced(std::move(holes));
   if (solid.is_empty() && !prisms_were_empty)
     throw PreconditionError(fmt::format("build_model: the walls joined to wall '{}' leave nothing "
-                                        "once their openings are cut", walls.front()->id), Code::not_buildable);
+                                        "once their openings are cut",
+                                        walls.front()->id),
+                            Code::not_buildable);
   return to_soup(solid, walls, first_opening_object);
 }
 

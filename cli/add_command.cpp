@@ -36,22 +36,24 @@ std::string option_name(std::string_view key) {
   return name;
 }
 
-/// @return the given field options as (key, value), checked against the kind: add_object
-/// checks them too, but these messages name the options.
-FieldValues given_fields(const AddArgs& args) {
+/// @return the given field options as (key, value), or a usage_error: checked against the
+/// kind, as add_object checks them too, but these messages name the options.
+Result<FieldValues> given_fields(const AddArgs& args) {
   const std::vector<std::string_view> allowed = settable_fields(args.kind);
   FieldValues given;
   for (std::size_t i = 0; i < args.fields.size(); ++i) {
     const auto& [key, option] = args.fields[i];
     if (option->count() == 0) continue;
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw_usage_error(fmt::format("{} does not apply to a {} (it takes: {})", option_name(key),
-                                    args.kind, fmt::join(allowed, ", ")));
+      return Result<FieldValues>::failure(
+          Code::usage_error, fmt::format("{} does not apply to a {} (it takes: {})",
+                                         option_name(key), args.kind, fmt::join(allowed, ", ")));
     given.emplace_back(key, args.values[i]);
   }
   for (const std::string_view key : required_fields(args.kind)) {
     if (std::none_of(given.begin(), given.end(), [&](const auto& g) { return g.first == key; }))
-      throw_usage_error(fmt::format("add {} needs {}", args.kind, option_name(key)));
+      return Result<FieldValues>::failure(
+          Code::usage_error, fmt::format("add {} needs {}", args.kind, option_name(key)));
   }
   return given;
 }
@@ -102,9 +104,10 @@ void add_add_command(CLI::App& root, Commands& commands) {
         keys[i], app->add_option(option_name(keys[i]), args->values[i], field_help(keys[i])));
   add_edit_flags(*app, args->flags);
   commands.push_back({app, [args] {
-                        const auto given = given_fields(*args);
+                        const Result<FieldValues> given = given_fields(*args);
+                        if (!given) return report_failure("add", given.error());
                         return run_edit("add", args->path, args->flags, [&](Plan& plan) {
-                          return add_object(plan, args->kind, args->id, given);
+                          return add_object(plan, args->kind, args->id, *given);
                         });
                       }});
 }

@@ -3,8 +3,9 @@
 // add_<name>_command that registers its options on the root app and returns what to run.
 //
 // Failing: a command's run function returns its exit status; a step that fails returns an
-// Error (Result/Status) which the command hands to report_failure, or throws
-// PreconditionError (a bad flag found deep in a helper), which main reports the same way.
+// Error (Result/Status) which the command hands to report_failure. A PreconditionError of a
+// library call (a precondition the command did not check) reaches main, which reports it the
+// same way.
 #pragma once
 
 #include <chrono>
@@ -28,12 +29,6 @@ int report_failure(std::string_view command, const Error& error);
 /// report_failure for a command line CLI11 could not parse (a usage_error naming the deepest
 /// subcommand given), then "Run with --help for more information." @return 2.
 int report_usage_error(const CLI::App& app, const CLI::ParseError& error);
-
-/// Throws PreconditionError(usage_error): a bad flag found inside a helper; main reports it
-/// and ends with exit status 2.
-[[noreturn]] inline void throw_usage_error(std::string message) {
-  throw PreconditionError(std::move(message), Code::usage_error);
-}
 
 /// A registered subcommand and the function that runs it once its options are parsed.
 struct Command {

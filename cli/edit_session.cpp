@@ -107,15 +107,17 @@ int run_edit(std::string_view command, const std::string& path, const EditFlags&
   return kExitOk;
 }
 
-Point2 require_point(std::string_view option, const std::string& text) {
+Result<Point2> point_option(std::string_view option, const std::string& text) {
   if (const auto p = parse_point2(text)) return *p;
-  throw_usage_error(
+  return Result<Point2>::failure(
+      Code::usage_error,
       fmt::format("{} wants a point x,y in metres (e.g. 1.5,2), got '{}'", option, text));
 }
 
-double require_number(std::string_view option, const std::string& text) {
+Result<double> number_option(std::string_view option, const std::string& text) {
   if (const auto x = parse_number(text)) return *x;
-  throw_usage_error(fmt::format("{} wants a finite number, got '{}'", option, text));
+  return Result<double>::failure(Code::usage_error,
+                                 fmt::format("{} wants a finite number, got '{}'", option, text));
 }
 
 }  // namespace roomcad::cli

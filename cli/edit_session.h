@@ -51,10 +51,10 @@ using Edit = std::function<Result<EditSummary>(Plan&)>;
 [[nodiscard]] int run_edit(std::string_view command, const std::string& path,
                            const EditFlags& flags, const Edit& edit);
 
-/// @return `text` as a point x,y. @throws PreconditionError (usage_error) naming `option`.
-[[nodiscard]] Point2 require_point(std::string_view option, const std::string& text);
+/// @return `text` as a point x,y, or a usage_error naming `option` and the text.
+[[nodiscard]] Result<Point2> point_option(std::string_view option, const std::string& text);
 
-/// @return `text` as a finite number. @throws PreconditionError (usage_error) naming `option`.
-[[nodiscard]] double require_number(std::string_view option, const std::string& text);
+/// @return `text` as a finite number, or a usage_error naming `option` and the text.
+[[nodiscard]] Result<double> number_option(std::string_view option, const std::string& text);
 
 }  // namespace roomcad::cli

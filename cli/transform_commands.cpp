@@ -65,8 +65,10 @@ void warn_unless_undoable(const std::string& name, const Plan& before, const Pla
 int run_transform(const std::string& name, const TransformArgs& args, const SignedEdit& edit,
                   bool undoable) {
   if (args.all == !args.id.empty())
-    throw_usage_error(args.all ? "give an object ID or --all, not both"
-                               : "give the ID of the object to transform, or --all");
+    return report_failure(
+        name,
+        Error{Code::usage_error, args.all ? "give an object ID or --all, not both"
+                                          : "give the ID of the object to transform, or --all"});
   return run_edit(name, args.path, args.flags, [&](Plan& plan) {
     const Plan before = plan;
     EditSummary summary = edit(plan, 1.0);
@@ -75,9 +77,12 @@ int run_transform(const std::string& name, const TransformArgs& args, const Sign
   });
 }
 
-std::optional<Point2> optional_about(const TransformArgs& args) {
-  if (args.about.empty()) return std::nullopt;
-  return require_point("--about", args.about);
+/// @return --about's centre (nullopt: none given), or its usage_error.
+Result<std::optional<Point2>> optional_about(const TransformArgs& args) {
+  if (args.about.empty()) return std::optional<Point2>{};
+  const Result<Point2> about = point_option("--about", args.about);
+  if (!about) return about.error();
+  return std::optional<Point2>(*about);
 }
 
 void add_move(CLI::App& root, Commands& commands) {
@@ -98,10 +103,14 @@ void add_move(CLI::App& root, Commands& commands) {
          const auto by = parse_point2(args->amount);
          const auto du = parse_number(args->amount);
          if (!by && (!du || args->all))
-           throw_usage_error(fmt::format(
-               "--by wants dx,dy in metres{}, got '{}'",
-               args->all ? "" : " (or one number du to move a door or window along its wall)",
-               args->amount));
+           return report_failure(
+               "move",
+               Error{Code::usage_error,
+                     fmt::format("--by wants dx,dy in metres{}, got '{}'",
+                                 args->all ? ""
+                                           : " (or one number du to move a door or window along "
+                                             "its wall)",
+                                 args->amount)});
          const auto move = [&](Plan& plan, double sign) {
            if (!by) return slide_opening(plan, args->id, sign * *du);
            const Point2 shift{sign * by->x, sign * by->y};
@@ -131,8 +140,13 @@ void add_about_command(CLI::App& root, Commands& commands, const AboutCommand& s
                   "centre x,y in metres (default: a wall's midpoint, a "
                   "camera's target, the site's centre for --all)");
   commands.push_back({app, [args, spec] {
-                        const double amount = require_number(spec.amount_option, args->amount);
-                        const auto about = optional_about(*args);
+                        const Result<double> amount_given =
+                            number_option(spec.amount_option, args->amount);
+                        if (!amount_given) return report_failure(spec.name, amount_given.error());
+                        const double amount = *amount_given;
+                        const Result<std::optional<Point2>> about_given = optional_about(*args);
+                        if (!about_given) return report_failure(spec.name, about_given.error());
+                        const std::optional<Point2> about = *about_given;
                         const auto edit = [&](Plan& plan, double sign) {
                           return args->all ? spec.whole(plan, sign * amount, about)
                                            : spec.one(plan, args->id, sign * amount, about);

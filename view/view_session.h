@@ -77,10 +77,11 @@ class ViewSession {
   void select_next();
 
   // The actions below return success when done (the plan changed, the file written), else
-  // the Error why not: usage_error (nothing selected, nothing to undo or keep), edit_refused
-  // (an edit that cannot be made or changes nothing, a plan with errors or a file changed on
-  // disk not saved over), lock_timeout, or the reading or writing error of the file. The
-  // window shows message() either way.
+  // the Error why not: usage_error (nothing selected, nothing to undo or keep), the edit's own
+  // error (an edit that cannot be made: a light has no position), edit_refused (an edit that
+  // changes nothing, a delete that asks first, a plan with errors or a file changed on disk
+  // not saved over), lock_timeout, or the reading or writing error of the file. The window
+  // shows message() either way.
 
   /// Moves the selection by whole site cells (dx east, dy north); an opening slides along its
   /// wall by dx cells (dy if dx is 0).

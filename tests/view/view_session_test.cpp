@@ -42,6 +42,25 @@ struct SessionFile {
   Plan on_disk() const { return read_plan_file(path).value(); }
 };
 
+TEST(ViewSession, AnActionNotDoneSaysWhyWithItsCode) {
+  SessionFile file(corner_plan());
+  ViewSession s = file.open();
+  EXPECT_EQ(s.move_selection(1, 0).code(), Code::usage_error);   // nothing selected
+  EXPECT_EQ(s.undo().code(), Code::usage_error);                 // nothing to undo
+  EXPECT_EQ(s.keep_window_version().code(), Code::usage_error);  // no conflict
+  s.select("a");
+  const Status held = s.delete_selection();  // it holds door d: asks first
+  EXPECT_EQ(held.code(), Code::edit_refused);
+  EXPECT_EQ(held.message(), s.message());
+  s.select("sun");
+  EXPECT_EQ(s.move_selection(1, 0).code(), Code::precondition);  // a light has no position
+  s.select("b");
+  ASSERT_TRUE(s.move_selection(-20, 0));  // past wall a's far end: overlaps or leaves the site
+  const Status refused = s.save();
+  EXPECT_EQ(refused.code(), Code::edit_refused) << refused.message();
+  EXPECT_EQ(file.on_disk(), corner_plan());  // nothing written
+}
+
 TEST(ViewSession, MovesTheSelectionByWholeCellsAndUndoes) {
   SessionFile file(corner_plan());
   ViewSession s = file.open();

@@ -2,8 +2,8 @@
 # roomcad_allocator: what the executables (the command, the tests, the benchmarks) link to
 # allocate through jemalloc. The exact general path makes many small short-lived vectors per
 # plane, from two threads, where glibc's malloc took 12-15% of a real home's build
-# (bench/homes_side_by_side.sh, 2026-11-28: 0.86 of the time on arif-putra-pertama-1, 0.92 on
-# the 504-wall tower, 0.75-1.03 on the other homes). jemalloc_options.cpp keeps the pages it
+# (bench/report.md, "the figures behind the build's choices").
+# jemalloc_options.cpp keeps the pages it
 # frees (see there). The libraries do not link it: a program using them (the Python module
 # too) keeps its own allocator. Not with the sanitizers, which bring theirs.
 option(ROOMCAD_JEMALLOC "Link the executables with jemalloc (libjemalloc-dev)" ON)

@@ -2,8 +2,8 @@
 // ExactPolygonSet: exact union, intersection and difference of plane areas (CGAL's
 // Polygon_set_2 over Epeck), behind a small class whose operations are all compiled in
 // exact_polygon_set.cpp. CGAL's Boolean set operations are among its heaviest templates: the
-// analytic volume and the polygon predicates each instantiated them (141 and 170 s to compile
-// under the sanitizers, clang 14, 2026-12-02), and now share this one (168 s).
+// analytic volume and the polygon predicates share this one instantiation instead of each
+// compiling their own (bench/report.md has the compile times).
 //
 // Every operation is regularised, as CGAL's: what only touches (a shared edge or corner) is no
 // part of an intersection, and a result has no dangling edges or isolated points.

@@ -9,14 +9,14 @@
 #
 # Left out here (the Release suite runs them): the slow tests that build every bundled plan
 # again only to export or re-read it, or that time external readers. Under ASan they took
-# 150-217 s each, 700 s of 1351 s for the slow tests (2026-11-25, one core each), and the
+# 150-217 s each, 700 s of 1351 s for the slow tests (one core each), and the
 # code they run is what Sh3dBuild.HomesBuild*, BuildCommand's fast tests and the stress
 # tests run under the sanitizers already. Also left out: ExamplesRules.FixesOnTheBundled*,
 # which validates the 304-wall arif-putra-pertama-1 twice under every rule (30 s each in
 # Release; here one had not finished after 11 min of CPU); the rule tests run its code
 # under the sanitizers. And BuildCommand.NefPathWritesTheSameBytesEveryRun, which builds the
 # 304-wall home through Nef three times to compare the bytes (24 s in Release, 224 s here, the
-# longest test of the run by far, 2026-11-28); FuzzSeeds and the random-plan tests run the Nef
+# longest test of the run by far); FuzzSeeds and the random-plan tests run the Nef
 # path under the sanitizers. And Sh3dBuild.GridPlanesBuildTheSolidOfTheGeneralBoolean, which
 # builds every bundled home twice, with the general path's grid of planes and without, to
 # compare the solids: Sh3dBuild.HomesBuild* builds them with the grid here, and the random

@@ -53,6 +53,11 @@ inline CLI::Option* add_format_option(CLI::App& app, std::string& format,
       ->capture_default_str();
 }
 
+/// Parses the command line into `app` and runs the subcommand given (its Command), reporting
+/// a parse error, a PreconditionError or any other exception as report_failure does.
+/// @return the exit status.
+int run_command_line(CLI::App& app, const Commands& commands, int argc, char** argv);
+
 void add_info_command(CLI::App& root, Commands& commands);
 void add_fmt_command(CLI::App& root, Commands& commands);
 void add_validate_command(CLI::App& root, Commands& commands);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// roomcad view PLAN: the interactive window (view/), or a scripted headless run of it.
+// roomcad view PLAN: the interactive window (view/), or a scripted headless run of it. Built
+// into roomcad-view (cli/view_main.cpp), which `roomcad view` runs.
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -8,6 +9,7 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "cli/window_program.h"
 #include "plan/plan_levels.h"
 #include "view/key_bindings.h"
 #include "view/sdl_window.h"
@@ -74,8 +76,7 @@ int run_view(const ViewArgs& a) {
 
 void add_view_command(CLI::App& root, Commands& commands) {
   auto args = std::make_shared<ViewArgs>();
-  CLI::App* app =
-      root.add_subcommand("view", "Open a window on the plan: look around, select, edit, save");
+  CLI::App* app = root.add_subcommand(kWindowCommand, kWindowDescription);
   app->add_option("plan", args->plan, "The plan file (JSON)")->required();
   const auto pixels = CLI::Range(1, 16384);
   app->add_option("--width", args->width, "Window width in pixels")

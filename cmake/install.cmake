@@ -15,7 +15,7 @@ add_library(roomcad_all INTERFACE)
 target_link_libraries(roomcad_all INTERFACE ${roomcad_modules})
 set_target_properties(roomcad_all PROPERTIES EXPORT_NAME roomcad)
 
-install(TARGETS roomcad RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+install(TARGETS roomcad roomcad-view RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 install(TARGETS ${roomcad_modules} roomcad_all EXPORT roomcadTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/roomcad COMPONENT development
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/roomcad)

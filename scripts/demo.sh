@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# The main job on a bundled example: set up, build the roomcad executable (only it: no tests,
-# no benchmarks), then validate the plan, describe it, build and check its 3D model
+# The main job on a bundled example: set up, build the roomcad executables (roomcad and the
+# window it runs for `roomcad view`, roomcad-view; no tests, no benchmarks), then validate the plan, describe it, build and check its 3D model
 # (build/demo.obj), render a picture (build/demo.png) and draw its floor plan
 # (build/demo-plan.svg). Prints how long the build and the run took.
 # Usage: scripts/demo.sh [PLAN]   (default examples/house.json)
@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 plan=${1:-examples/house.json}
 start=$SECONDS
-bash scripts/build.sh roomcad
+bash scripts/build.sh roomcad roomcad-view
 built=$SECONDS
 roomcad=./build/roomcad
 "$roomcad" validate "$plan"

@@ -15,7 +15,9 @@ add_library(roomcad_all INTERFACE)
 target_link_libraries(roomcad_all INTERFACE ${roomcad_modules})
 set_target_properties(roomcad_all PROPERTIES EXPORT_NAME roomcad)
 
-install(TARGETS roomcad roomcad-view RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+install(TARGETS roomcad RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+# The window of `roomcad view`, with its libraries (SDL, audio, X11, Wayland): its own package.
+install(TARGETS roomcad-view RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT window)
 install(TARGETS ${roomcad_modules} roomcad_all EXPORT roomcadTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/roomcad COMPONENT development
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/roomcad)

@@ -34,6 +34,7 @@ struct BuildCommandOptions {
   int threads = 0;
   bool check = false;
   bool force = false;
+  bool verbose = false;  ///< list the plan's findings (else one line counts them)
   bool stats = false;
 };
 
@@ -87,7 +88,8 @@ int run_build(const BuildCommandOptions& options) {
   const Result<OutputKind> kind = output_kind(options.out);
   if (!kind) return report_failure("build", kind.error());
   // The validation gate: errors stop the build unless --force.
-  const Result<LoadedPlan> loaded = load_valid_plan("build", options.plan, options.force);
+  const Result<LoadedPlan> loaded =
+      load_valid_plan("build", options.plan, options.force, findings_for(options.verbose));
   if (!loaded) return exit_status_of(loaded.code());
   const Result<Plan> level = select_level(loaded->plan, options.level);
   if (!level) return report_failure("build", level.error());
@@ -162,6 +164,7 @@ void add_build_command(CLI::App& root, Commands& commands) {
       "doubles that .obj, .off and .ply store exactly (.stl rounds them to float32)");
   add_format_option(*app, options->format, "format of the --check report");
   app->add_flag("--force", options->force, "build even if the plan has validation errors");
+  add_verbose_flag(*app, options->verbose);
   app->add_option("--level", options->level,
                   "build only the walls of this level (and their openings), where they stand")
       ->type_name("ID");

@@ -28,6 +28,7 @@ struct DrawOptions {
   DrawRequest request;
   std::filesystem::path output;
   bool force = false;
+  bool verbose = false;  ///< list the plan's findings (else one line counts them)
   bool findings = false;
   std::string rules = "all";
 };
@@ -61,7 +62,8 @@ int run_draw(const DrawOptions& o) {
     return report_failure("draw", {Code::usage_error, fmt::format("--findings: only the plan view "
                                                                   "marks findings, not --view {}",
                                                                   request.view)});
-  const Result<LoadedPlan> loaded = load_valid_plan("draw", o.plan_file, o.force);
+  const Result<LoadedPlan> loaded =
+      load_valid_plan("draw", o.plan_file, o.force, findings_for(o.verbose));
   if (!loaded) return exit_status_of(loaded.code());
   if (o.findings) {
     Result<std::vector<PlanMark>> marks = find_marks(loaded->plan, o.rules);
@@ -136,6 +138,7 @@ void add_draw_command(CLI::App& root, Commands& commands) {
                   "OUT.svg, or OUT.dxf for the plan view (written atomically)")
       ->required();
   app->add_flag("--force", o->force, "Draw even if the plan has validation errors");
+  add_verbose_flag(*app, o->verbose);
   app->add_flag("--findings", o->findings,
                 "plan view: mark what validate --rules finds in red, with its code");
   app->add_option("--rules", o->rules,

@@ -72,6 +72,7 @@ void add_edit_flags(CLI::App& command, EditFlags& flags) {
       "--dry-run", flags.dry_run,
       "print what would change (objects, then a line diff of the file), write nothing");
   add_wait_option(command, flags.wait_seconds);
+  add_verbose_flag(command, flags.verbose);
 }
 
 int run_edit(std::string_view command, const std::string& path, const EditFlags& flags,
@@ -82,7 +83,7 @@ int run_edit(std::string_view command, const std::string& path, const EditFlags&
     if (!taken) return exit_status_of(taken.code());
     lock.emplace(std::move(taken).value());
   }
-  const Result<LoadedPlan> read = load_plan(command, path);  // prints what reading found
+  const Result<LoadedPlan> read = load_plan(command, path, findings_for(flags.verbose));
   if (!read) return exit_status_of(read.code());
   Plan edited = read->plan;
   const Result<EditSummary> made = make_edit(edit, edited);

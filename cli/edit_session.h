@@ -31,9 +31,10 @@ struct EditFlags {
   bool force = false;         ///< write even when the edit introduces errors
   bool dry_run = false;       ///< print what would change, write nothing (takes no lock)
   double wait_seconds = 0.0;  ///< how long to wait for another editor's lock (--wait)
+  bool verbose = false;       ///< list the plan's findings as read (else one line counts them)
 };
 
-/// Registers --force, --dry-run and --wait on an edit subcommand.
+/// Registers --force, --dry-run, --wait and --verbose on an edit subcommand.
 void add_edit_flags(CLI::App& command, EditFlags& flags);
 
 /// An edit of an in-memory plan: returns what it changed, or the Error why not (set_field and

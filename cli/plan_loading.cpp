@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <unistd.h>
 
@@ -33,9 +36,36 @@ Error first_error(const Report& report, const std::filesystem::path& path) {
                fmt::format("{}: {}", path.string(), format_report_summary(report))};
 }
 
-}  // namespace
+/// "wall_overlap, room_without_window": the report's codes, each once, in order.
+std::string codes_of(const Report& report) {
+  std::vector<std::string_view> codes;
+  for (const Diagnostic& d : report.items)
+    if (std::find(codes.begin(), codes.end(), to_string(d.code)) == codes.end())
+      codes.push_back(to_string(d.code));
+  return fmt::format("{}", fmt::join(codes, ", "));
+}
 
-Result<LoadedPlan> load_plan(std::string_view command, const std::filesystem::path& path) {
+/// The one line about a report: its counts (listed: after the findings themselves), or its
+/// counts, codes and the command that lists them (counted); then `then`.
+void print_summary(const Report& report, const std::filesystem::path& path, Findings findings,
+                   std::string_view then) {
+  const std::string file = path.string();
+  if (findings == Findings::listed)
+    std::fprintf(stderr, "%s: %s%.*s\n", file.c_str(), format_report_summary(report).c_str(),
+                 int(then.size()), then.data());
+  else
+    std::fprintf(stderr, "%s: %s (%s): `roomcad validate %s` lists them%.*s\n", file.c_str(),
+                 format_report_summary(report).c_str(), codes_of(report).c_str(), file.c_str(),
+                 int(then.size()), then.data());
+}
+
+void list_findings(const Report& report) {
+  std::fputs(format_report_text(report, use_colour(stderr)).c_str(), stderr);
+}
+
+/// load_plan, but the counted line of a plan that reads is left to the caller.
+Result<LoadedPlan> read_plan(std::string_view command, const std::filesystem::path& path,
+                             Findings findings) {
   Result<std::string> text = read_text_file(path);
   if (!text) {
     report_failure(command, text.error());
@@ -43,13 +73,22 @@ Result<LoadedPlan> load_plan(std::string_view command, const std::filesystem::pa
   }
   LoadedPlan loaded{.plan = {}, .text = std::move(text).value(), .report = {}};
   Result<Plan> read = read_plan_text(loaded.text, path.string(), &loaded.report);
-  std::fputs(format_report_text(loaded.report, use_colour(stderr)).c_str(), stderr);
+  if (findings == Findings::listed) list_findings(loaded.report);
   if (!read) {
-    std::fprintf(stderr, "%s: %s\n", path.string().c_str(),
-                 format_report_summary(loaded.report).c_str());
+    print_summary(loaded.report, path, findings, "");
     return Error{read.code(), read.message()};
   }
   loaded.plan = std::move(read).value();
+  return loaded;
+}
+
+}  // namespace
+
+Result<LoadedPlan> load_plan(std::string_view command, const std::filesystem::path& path,
+                             Findings findings) {
+  Result<LoadedPlan> loaded = read_plan(command, path, findings);
+  if (loaded && findings == Findings::counted && !loaded->report.items.empty())
+    print_summary(loaded->report, path, findings, "");
   return loaded;
 }
 
@@ -65,19 +104,22 @@ Result<PlanLock> lock_plan(std::string_view command, const std::filesystem::path
 }
 
 Result<LoadedPlan> load_valid_plan(std::string_view command, const std::filesystem::path& path,
-                                   bool force) {
-  Result<LoadedPlan> loaded = load_plan(command, path);
+                                   bool force, Findings findings) {
+  Result<LoadedPlan> loaded = read_plan(command, path, findings);
   if (!loaded) return loaded;
   ValidateOptions options;
   options.unknown_field_warnings = false;  // the reader has reported them, with positions
   const Report checks = validate(loaded->plan, options);
-  std::fputs(format_report_text(checks, use_colour(stderr)).c_str(), stderr);
+  if (findings == Findings::listed) list_findings(checks);
   loaded->report.append(checks);
-  if (checks.ok()) return loaded;
-  std::fprintf(stderr, "%s: %s%s\n", path.string().c_str(),
-               format_report_summary(loaded->report).c_str(),
-               force ? " (going on: --force)" : "; fix them, or pass --force to go on anyway");
-  if (!force) return first_error(checks, path);
+  const std::string_view then = checks.ok() ? ""
+                                : force     ? " (going on: --force)"
+                                            : "; fix them, or pass --force to go on anyway";
+  // Listed, a line only where there are errors (as before); counted, one whenever there is
+  // anything to count.
+  if (!checks.ok() || (findings == Findings::counted && !loaded->report.items.empty()))
+    print_summary(loaded->report, path, findings, then);
+  if (!checks.ok() && !force) return first_error(checks, path);
   return loaded;
 }
 

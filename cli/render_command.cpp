@@ -27,6 +27,7 @@ struct RenderArgs {
   std::string plan, output, depth, ids;
   std::string level;  ///< render only this level; empty: all
   bool stats = false, force = false;
+  bool verbose = false;  ///< list the plan's findings (else one line counts them)
 };
 
 /// Writes the requested files. @return the first failure, if one could not be written.
@@ -40,7 +41,8 @@ Status write_outputs(const RenderArgs& a, const FrameBuffers& out, const Model& 
 
 int run_render(const RenderArgs& a) {
   // The validation gate: errors stop the render unless --force.
-  const Result<LoadedPlan> loaded = load_valid_plan("render", a.plan, a.force);
+  const Result<LoadedPlan> loaded =
+      load_valid_plan("render", a.plan, a.force, findings_for(a.verbose));
   if (!loaded) return exit_status_of(loaded.code());
   const Result<Plan> level = select_level(loaded->plan, a.level);
   if (!level) return report_failure("render", level.error());
@@ -134,6 +136,7 @@ void add_render_command(CLI::App& root, Commands& commands) {
                   "Threads, 0 = all cores (same picture at any count)")
       ->check(CLI::Range(0, kMaxThreads));
   app->add_flag("--force", args->force, "Render even if the plan has validation errors");
+  add_verbose_flag(*app, args->verbose);
   app->add_flag("--stats", args->stats, "Print triangles and timings as one JSON line on stderr");
   commands.push_back({app, [args] { return run_render(*args); }});
 }

@@ -76,6 +76,52 @@ TEST(BuildCommand, WritesEveryFormatAndChecks) {
   EXPECT_NE(obj.find("\ng south\n"), std::string::npos);
 }
 
+/// @return how many times `needle` occurs in `text`.
+std::size_t count_of(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1))
+    ++n;
+  return n;
+}
+
+TEST(BuildCommand, CountsTheFindingsInOneLineAndListsThemWithVerbose) {
+  // Two rooms without a window each: two warnings, which validate lists.
+  Plan plan = two_rooms();
+  std::erase_if(plan.openings, [](const Opening& o) { return o.type == OpeningType::window; });
+  TempDir dir;
+  const std::string file = write_plan(dir, plan);
+  const std::string out = (dir / "model.obj").string();
+  for (const std::string command : {"build", "draw", "render"}) {
+    SCOPED_TRACE(command);
+    const std::string to = command == "build"  ? out
+                           : command == "draw" ? (dir / "plan.svg").string()
+                                               : (dir / "picture.png").string();
+    std::vector<std::string> args{command, file, "-o", to};
+    if (command == "render") args.insert(args.end(), {"--width", "64", "--height", "48"});
+    const auto counted = run_roomcad(args);
+    EXPECT_EQ(counted.status, 0) << counted.err;
+    EXPECT_EQ(count_of(counted.err, "warning[room_without_window]"), 0u) << counted.err;
+    EXPECT_NE(counted.err.find("0 errors, 2 warnings (room_without_window): `roomcad validate " +
+                               file + "` lists them"),
+              std::string::npos)
+        << counted.err;
+    args.push_back("--verbose");
+    const auto listed = run_roomcad(args);
+    EXPECT_EQ(listed.status, 0) << listed.err;
+    EXPECT_EQ(count_of(listed.err, "warning[room_without_window]"), 2u) << listed.err;
+  }
+  // Errors stop the build, counted in one line that says how to go on.
+  plan.walls.push_back(plan.walls.front());  // a wall drawn twice: duplicate_id
+  ASSERT_TRUE(test::write_bytes(file, write_plan_text(plan)));
+  const auto refused = run_roomcad({"build", file, "-o", out});
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("`roomcad validate " + file +
+                             "` lists them; fix them, or pass --force to go on anyway"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_EQ(refused.err.find("error[duplicate_id]"), std::string::npos) << refused.err;
+}
+
 TEST(BuildCommand, CoordinatesReadBackToTheSameDoubles) {
   TempDir dir;
   Plan plan = two_rooms();

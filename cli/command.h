@@ -61,6 +61,7 @@ int run_command_line(CLI::App& app, const Commands& commands, int argc, char** a
 void add_info_command(CLI::App& root, Commands& commands);
 void add_fmt_command(CLI::App& root, Commands& commands);
 void add_validate_command(CLI::App& root, Commands& commands);
+void add_repair_command(CLI::App& root, Commands& commands);
 void add_surface_command(CLI::App& root, Commands& commands);
 void add_draw_command(CLI::App& root, Commands& commands);
 void add_import_command(CLI::App& root, Commands& commands);

@@ -16,6 +16,8 @@
 #include "import/ifc_import.h"
 #include "import/sweethome3d_import.h"
 #include "io/plan_json.h"
+#include "repair/repair.h"
+#include "repair/repair_report.h"
 
 namespace roomcad::cli {
 namespace {
@@ -27,7 +29,20 @@ struct ImportArgs {
   bool ceilings = false;
   std::optional<double> chord_tolerance;  ///< unset: the format's default
   double wait_seconds = 0.0;              ///< --wait: for an editor of the plan being replaced
+  bool repair = false;                    ///< --repair: repair the plan before writing it
+  double tolerance = 0.01;                ///< --tolerance of the repair
 };
+
+/// With --repair: the plan repaired (repair/repair.h), its summary on stderr.
+Result<Plan> repaired_if_asked(const ImportArgs& args, Plan plan) {
+  if (!args.repair) return plan;
+  Result<RepairResult> repaired = repair_plan(plan, {.tolerance = args.tolerance, .only = {}});
+  if (!repaired) return repaired.error();
+  fmt::print(stderr,
+             "roomcad import: repair: {} (`roomcad repair PLAN --dry-run` lists what is left)\n",
+             format_repair_summary(*repaired));
+  return std::move(repaired->plan);
+}
 
 void print_warnings(const Report& warnings) {
   for (const Diagnostic& d : warnings.items)
@@ -57,7 +72,9 @@ int run_ifc_import(const ImportArgs& args) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const IfcImport& r = imported.value();
   print_warnings(r.warnings);
-  if (const Status written = write_plan_file(r.plan, args.output); !written)
+  const Result<Plan> plan = repaired_if_asked(args, r.plan);
+  if (!plan) return report_failure("import", plan.error());
+  if (const Status written = write_plan_file(*plan, args.output); !written)
     return report_failure("import", written.error());
   fmt::print(
       stderr,
@@ -81,7 +98,9 @@ int run_import(const ImportArgs& args) {
     return kExitCannotRun;  // a home that cannot be read is not a plan with errors: no plan yet
   }
   print_warnings(imported.value().warnings);
-  const Plan& plan = imported.value().plan;
+  const Result<Plan> repaired = repaired_if_asked(args, imported.value().plan);
+  if (!repaired) return report_failure("import", repaired.error());
+  const Plan& plan = *repaired;
   // Replaced under the plan's lock (io/plan_lock.h): an edit of the old plan under way would
   // otherwise rename its result over the imported plan just written, and the import be lost.
   const Result<PlanLock> lock = lock_plan("import", args.output, args.wait_seconds);
@@ -120,6 +139,13 @@ void add_import_command(CLI::App& root, Commands& commands) {
                   "site.chord_tolerance of the plan: largest distance in metres between a curved "
                   "wall and its chords (default 0.001, the format's, left unwritten)")
       ->check(CLI::PositiveNumber);
+  app->add_flag("--repair", args->repair,
+                "repair the plan before writing it, as `roomcad repair` does (walls drawn twice or "
+                "into their neighbours, openings a hair past their wall, ...)");
+  app->add_option("--tolerance", args->tolerance,
+                  "with --repair: how far, in metres, the built solid may move")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   add_wait_option(*app, args->wait_seconds,
                   "seconds to wait for another editor of the plan being replaced (an edit "
                   "command, `roomcad view` saving) to finish before giving up (exit 2)");

@@ -85,4 +85,28 @@ bool outlines_overlap(const Opening& a, const Opening& b) {
   return !common.is_empty();
 }
 
+namespace {
+
+Polygon rounded(const CgalPolygon& p) {
+  Polygon out;
+  for (const auto& c : p.vertices())
+    out.push_back({CGAL::to_double(c.x()), CGAL::to_double(c.y())});
+  return out;
+}
+
+}  // namespace
+
+std::vector<Area> area_difference(const Polygon& a, const std::vector<Polygon>& a_holes,
+                                  const Polygon& b, const std::vector<Polygon>& b_holes) {
+  ExactPolygonSet rest(area_of(a, a_holes));
+  rest.difference(ExactPolygonSet(area_of(b, b_holes)));
+  std::vector<Area> out;
+  for (const WithHoles& piece : rest.polygons_with_holes()) {
+    Area area{rounded(piece.outer_boundary()), {}};
+    for (const CgalPolygon& hole : piece.holes()) area.holes.push_back(rounded(hole));
+    out.push_back(std::move(area));
+  }
+  return out;
+}
+
 }  // namespace roomcad

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Exact verdicts on polygons given by double coordinates (slab areas, opening outlines): CGAL's
-// exact rationals, and its Boolean set operations through detail::ExactPolygonSet.
+// exact rationals, and its Boolean set operations through detail::ExactPolygonSet; and the
+// one construction repairs need, an area's difference, rounded once to doubles.
 #pragma once
 
 #include <vector>
@@ -29,5 +30,18 @@ namespace roomcad {
 /// @return whether the outlines of two openings of one wall (their `shape`, or their
 /// rectangle, in the wall's (u, v) frame) share interior area. Exact. @pre shapes simple.
 [[nodiscard]] bool outlines_overlap(const Opening& a, const Opening& b);
+
+/// An area of the plane: an outline (counter-clockwise) minus its holes (clockwise).
+struct Area {
+  Polygon outline;
+  std::vector<Polygon> holes;
+};
+
+/// @return the pieces of area `a` outside area `b`, computed exactly, each corner then rounded
+///         to the nearest double. @pre as areas_overlap. O((n + m) log (n + m) + k).
+[[nodiscard]] std::vector<Area> area_difference(const Polygon& a,
+                                                const std::vector<Polygon>& a_holes,
+                                                const Polygon& b,
+                                                const std::vector<Polygon>& b_holes);
 
 }  // namespace roomcad

@@ -24,6 +24,8 @@
 #include "python/py_plan_values.h"
 #include "python/py_types.h"
 #include "render/render_request.h"
+#include "repair/repair.h"
+#include "repair/repair_report.h"
 #include "solid/build_model.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
@@ -320,7 +322,40 @@ void register_edits(PlanClass& plan) {
           py::arg("id"), py::arg("field"), py::arg("value"), py::kw_only(),
           py::arg("force") = false,
           "Sets one field of an object ('site' for the site's), type-checked, as `roomcad set`.\n"
-          "@raise roomcad.Error usage_error (unknown object or field, bad value), edit_refused");
+          "@raise roomcad.Error usage_error (unknown object or field, bad value), edit_refused")
+      .def(
+          "repair",
+          [](PyPlan& self, double tolerance, const std::vector<std::string>& only) {
+            RepairOptions options{.tolerance = tolerance, .only = {}};
+            for (const std::string& name : only) {
+              const std::optional<Code> code = parse_code(name);
+              if (!code)
+                require(Status::failure(Code::usage_error,
+                                        fmt::format("only: '{}' is no validation code", name)));
+              options.only.push_back(*code);
+            }
+            std::optional<Result<RepairResult>> repaired;
+            {
+              py::gil_scoped_release free;
+              repaired.emplace(repair_plan(self.plan, options));
+            }
+            RepairResult r = take(std::move(*repaired));
+            const py::object report = json_loads(format_repair_json(r));
+            if (!r.edits.empty()) {
+              self.plan = std::move(r.plan);
+              self.reading.reset();
+            }
+            return report;
+          },
+          py::arg("tolerance") = 0.01, py::arg("only") = std::vector<std::string>{},
+          "Repairs the plan in place, as `roomcad repair`: edits that clear its errors and move\n"
+          "the built solid by at most `tolerance` metres (nothing where the union allows).\n"
+          "@param only  the codes to repair (default: every code repair knows)\n"
+          "@return the report as a dict, what `roomcad repair --format json` prints: 'edits'\n"
+          "        (object, change, old, new, clears, moves), 'before' and 'after' (errors per\n"
+          "        code), 'remaining' (each finding with its 'reason')\n"
+          "@raise roomcad.Error invalid_value for a bad tolerance, usage_error for an unknown "
+          "code");
 }
 
 /// plan[id], `id in plan`, ids(), import_warnings.

@@ -21,6 +21,9 @@
 # builds every bundled home twice, with the general path's grid of planes and without, to
 # compare the solids: Sh3dBuild.HomesBuild* builds them with the grid here, and the random
 # plans and fuzz seeds run the general boolean.
+# And RepairHomes.EachHomeKeepsTheGuarantees, which repairs every bundled home twice and
+# measures each repaired solid against the one drawn (3-4 min in Release); the Repair.* tests
+# run the repairs' code under the sanitizers.
 # ROOMCAD_SANITIZE_ALL=1 keeps them.
 # Usage: scripts/test-sanitized.sh [CTEST_REGEX]   (default: every test but those)
 set -euo pipefail
@@ -31,7 +34,7 @@ built=$SECONDS
 source scripts/sanitizer-env.sh
 export ROOMCAD_STRESS_PLANS=${ROOMCAD_STRESS_PLANS:-100}
 echo "test-sanitized: ROOMCAD_STRESS_PLANS=$ROOMCAD_STRESS_PLANS"
-exclude="MeshExport\.(ObjOffAndPlyReadBackAsTheModel|StlIsTheModelRoundedClosedAndNeverFlat)|StlAdmesh\.|BuildCommand\.EveryExamplePlanBuildsAndChecks|IndependentReaders\.|ExamplesRules\.FixesOnTheBundled|BuildCommand\.NefPathWritesTheSameBytesEveryRun|Sh3dBuild\.GridPlanesBuildTheSolidOfTheGeneralBoolean"
+exclude="MeshExport\.(ObjOffAndPlyReadBackAsTheModel|StlIsTheModelRoundedClosedAndNeverFlat)|StlAdmesh\.|BuildCommand\.EveryExamplePlanBuildsAndChecks|IndependentReaders\.|ExamplesRules\.FixesOnTheBundled|BuildCommand\.NefPathWritesTheSameBytesEveryRun|Sh3dBuild\.GridPlanesBuildTheSolidOfTheGeneralBoolean|RepairHomes\."
 [[ ${ROOMCAD_SANITIZE_ALL:-0} == 1 ]] && exclude=""
 ctest --test-dir build-san --output-on-failure -j"$(nproc)" --timeout 1500 ${1:+-R "$1"} ${exclude:+-E "$exclude"}
 echo "test-sanitized: built in $((built - start)) s, tested in $((SECONDS - built)) s"

@@ -138,6 +138,10 @@ std::string format_report_json(const Report& report, const ReportFormatOptions& 
   return out + "\n}\n";
 }
 
+std::string format_item_json(const Diagnostic& item, const std::string& plan_file) {
+  return json_item(item, {}, plan_file);
+}
+
 std::string format_report_text(const Report& report, bool colour, const ReportFormatOptions& o) {
   const char* bold = colour ? "\033[1m" : "";
   const char* reset = colour ? "\033[0m" : "";

@@ -29,6 +29,10 @@ struct ReportFormatOptions {
 [[nodiscard]] std::string format_report_json(const Report& report,
                                              const ReportFormatOptions& options = {});
 
+/// @return one item as format_report_json writes it (no id or status), on one line.
+[[nodiscard]] std::string format_item_json(const Diagnostic& item,
+                                           const std::string& plan_file = "PLAN");
+
 /// @return one block per item, errors and warnings in report order:
 /// `error[code] a, b: message`, then indented `at: ...` (where), `fix: ...` and `edit: roomcad
 /// ...` lines; with a comparison each block starts with `new` or `unchanged`, and the fixed

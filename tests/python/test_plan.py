@@ -156,3 +156,29 @@ def test_hostile_calls_raise_roomcad_error(call):
         call(plan)
     assert caught.value.code and str(caught.value)
     assert plan.to_json() == before
+
+
+def test_repair_applies_the_edits_and_returns_the_commands_report():
+    twice = json.loads(json.dumps(ROOM))
+    twice["walls"].append({"id": "s2", "from": [4, 1], "to": [6, 1], "thickness": 0.2, "height": 2.5})
+    plan = roomcad.Plan.from_dict(twice)
+    assert plan.validate().to_dict()["ok"] is False
+    report = plan.repair(tolerance=0.01)
+    assert set(report) == {"tolerance", "before", "after", "edits", "remaining"}
+    assert report["before"] == {"wall_overlap": 1}
+    assert report["after"] == {}
+    assert [(e["object"], e["change"], e["moves"]) for e in report["edits"]] == [("s2", "delete", 0.0)]
+    assert report["edits"][0]["clears"] == [{"code": "wall_overlap", "objects": ["s", "s2"]}]
+    assert "s2" not in plan
+    assert plan.validate().to_dict()["ok"] is True
+    assert plan.repair()["edits"] == []  # nothing left to do
+
+
+def test_repair_rejects_a_bad_tolerance_and_an_unknown_code():
+    plan = roomcad.Plan.from_dict(ROOM)
+    with pytest.raises(roomcad.Error) as bad:
+        plan.repair(tolerance=-1)
+    assert bad.value.code == "invalid_value"
+    with pytest.raises(roomcad.Error) as unknown:
+        plan.repair(only=["wall_overlaps"])
+    assert unknown.value.code == "usage_error"

@@ -236,15 +236,14 @@ std::vector<Proposal> choose(const Plan& plan, const RepairOptions& options,
   return chosen;
 }
 
-enum class RoundEnd { nothing_proposed, nothing_kept, kept };
-
 /// Applies the proposals that hold to `plan` (and `errors` to its errors), and appends their
 /// edits, with what they clear, to `made`. A proposal that does not hold is marked failed in
 /// `tries`, so that the next round tries the finding's next one.
-RoundEnd run_round(Plan& plan, std::vector<Diagnostic>& errors, PlanVolume& plan_volume,
-                   const RepairOptions& options, Tries& tries, std::vector<RepairEdit>& made) {
+/// @return false when there was nothing to propose (the pass is over).
+bool run_round(Plan& plan, std::vector<Diagnostic>& errors, PlanVolume& plan_volume,
+               const RepairOptions& options, Tries& tries, std::vector<RepairEdit>& made) {
   std::vector<Proposal> chosen = choose(plan, options, errors, tries);
-  if (chosen.empty()) return RoundEnd::nothing_proposed;
+  if (chosen.empty()) return false;
   std::vector<const Proposal*> kept;
   for (const Proposal& p : chosen) kept.push_back(&p);
   const std::optional<double> volume = plan_volume.of(plan);
@@ -258,7 +257,7 @@ RoundEnd run_round(Plan& plan, std::vector<Diagnostic>& errors, PlanVolume& plan
     if (fits.empty()) {
       for (const Proposal* p : kept)
         tries.fail(p->finding, "the plan cannot be built, so no edit of it can be checked");
-      return RoundEnd::nothing_kept;
+      return true;
     }
     kept = std::move(fits);
   }
@@ -295,10 +294,9 @@ RoundEnd run_round(Plan& plan, std::vector<Diagnostic>& errors, PlanVolume& plan
       // wall at a corner whose mitre or union changes): the volume's slack for the move could
       // hide that change. What keeps the union exactly, the volume has checked.
       const bool rejoins = std::any_of(p->edits.begin(), p->edits.end(), [&](const RepairEdit& e) {
-        if (e.moves == 0 || !neighbours.contains(e.object)) return false;
-        if (rejoined.contains(e.object)) return true;
         const auto near = neighbours.find(e.object);
-        return near != neighbours.end() &&
+        if (e.moves == 0 || near == neighbours.end()) return false;
+        return rejoined.contains(e.object) ||
                std::any_of(near->second.begin(), near->second.end(),
                            [&](const std::string& w) { return rejoined.contains(w); });
       });
@@ -335,9 +333,9 @@ RoundEnd run_round(Plan& plan, std::vector<Diagnostic>& errors, PlanVolume& plan
     }
     plan = std::move(next);
     errors = std::move(next_errors);
-    return RoundEnd::kept;
+    return true;
   }
-  return RoundEnd::nothing_kept;
+  return true;
 }
 
 bool moves_solid(const std::vector<RepairEdit>& edits, std::size_t from) {
@@ -366,8 +364,7 @@ Result<RepairResult> repair_plan(const Plan& input, const RepairOptions& options
     tries = {};
     for (int round = 0; round < kMostRounds; ++round) {
       const std::size_t first = result.edits.size();
-      const RoundEnd end = run_round(result.plan, errors, volume, options, tries, result.edits);
-      if (end == RoundEnd::nothing_proposed) break;
+      if (!run_round(result.plan, errors, volume, options, tries, result.edits)) break;
       if (moves_solid(result.edits, first)) volume.forget();
     }
     if (result.edits.size() == pass_start) break;

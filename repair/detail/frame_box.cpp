@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "repair/detail/frame_box.h"
 
+#include "geometry/segment_predicates.h"
 #include "plan/plan_levels.h"
 
 namespace roomcad::detail {
+
+bool on_one_line(const Wall& a, const Wall& b) {
+  return are_parallel(a.from, a.to, a.from, b.from) && are_parallel(a.from, a.to, a.from, b.to);
+}
 
 double wall_length(const Wall& w) { return std::hypot(w.to.x - w.from.x, w.to.y - w.from.y); }
 

@@ -61,6 +61,9 @@ struct FrameBox {
 /// @pre is_plain_wall(w), and w parallel to the frame (else the box is not the wall's).
 [[nodiscard]] FrameBox frame_box(const Plan& plan, const LineFrame& frame, const Wall& w);
 
+/// @return whether the two walls' centre lines lie on one line. Exact.
+[[nodiscard]] bool on_one_line(const Wall& a, const Wall& b);
+
 /// @return the length of wall `w`'s centre line.
 [[nodiscard]] double wall_length(const Wall& w);
 

@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include "geometry/segment_predicates.h"
 #include "plan/plan_levels.h"
 #include "repair/detail/frame_box.h"
 #include "repair/detail/proposal.h"
@@ -93,10 +92,6 @@ double reach_out_of(const Plan& plan, const std::vector<std::size_t>& openings, 
 }
 
 }  // namespace
-
-bool on_one_line(const Wall& a, const Wall& b) {
-  return are_parallel(a.from, a.to, a.from, b.from) && are_parallel(a.from, a.to, a.from, b.to);
-}
 
 Placement place_openings(const Plan& plan, const std::vector<std::size_t>& openings,
                          const Wall& old_host, const std::optional<Wall>& new_host,

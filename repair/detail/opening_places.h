@@ -32,7 +32,4 @@ struct Placement {
                                        const std::vector<std::size_t>& others_openings,
                                        double tolerance);
 
-/// @return whether the two walls' centre lines lie on one line. Exact.
-[[nodiscard]] bool on_one_line(const Wall& a, const Wall& b);
-
 }  // namespace roomcad::detail

@@ -10,7 +10,6 @@
 #include "repair/repair.h"
 #include "repair/solid_distance_support.h"
 #include "solid/analytic_volume.h"
-#include "solid/build_model.h"
 #include "support/model_support.h"
 #include "validation/validate.h"
 
@@ -35,19 +34,13 @@ double largest_move(const RepairResult& r) {
   return most;
 }
 
-Model walls_of(const Plan& plan) {
-  BuildOptions options;
-  options.parts = {.walls = true, .floor = false, .fixtures = false, .slabs = true};
-  return build_model(plan, options);
-}
-
 /// The guarantees every repair keeps: no error it was asked about left that it claims to have
 /// cleared, the solid within the largest claimed move (and the tolerance), the volume kept
 /// when every edit claims to keep the union, and nothing more to do on the result.
 void expect_guarantees(const Plan& plan, const RepairResult& r, double tolerance = 0.01) {
   EXPECT_LE(largest_move(r), tolerance);
   const double distance =
-      test::surface_distance(walls_of(plan).walls, walls_of(r.plan).walls, 0.05);
+      test::surface_distance(test::walls_and_slabs(plan), test::walls_and_slabs(r.plan), 0.05);
   EXPECT_LE(distance, largest_move(r) + 1e-9);
   if (largest_move(r) == 0) {
     EXPECT_EQ(analytic_wall_volume(r.plan), analytic_wall_volume(plan));

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "repair/solid_distance_support.h"
 
+#include "solid/build_model.h"
+
 #include <algorithm>
 #include <iterator>
 #include <vector>
@@ -44,6 +46,12 @@ double one_way(const Surface& from, const Surface& to, double spacing) {
 }
 
 }  // namespace
+
+SolidMesh walls_and_slabs(const Plan& plan) {
+  BuildOptions options;
+  options.parts = {.walls = true, .floor = false, .fixtures = false, .slabs = true};
+  return build_model(plan, options).walls;
+}
 
 double surface_distance(const SolidMesh& a, const SolidMesh& b, double spacing) {
   const Surface sa = to_surface(a), sb = to_surface(b);

@@ -129,6 +129,23 @@ TEST(FineFeatures, ParallelWallsOnLinesUnderATenthOfAMicrometreApartAreNamed) {
   EXPECT_EQ(fine_feature(apart), std::nullopt);
 }
 
+// A wall drawn over another along one line, ending an ulp past it, is named (a fuzzed plan
+// whose written solid was open); walls that meet end to end, or end a millimetre apart, are not.
+TEST(FineFeatures, WallEndsAlongOneLineUnderATenthOfAMicrometreApartAreNamed) {
+  Plan plan = empty_plan();
+  add_wall(plan, "a", {-0.5, -1.0}, {-1.0, -1.0});
+  add_wall(plan, "b", {-0.5, -1.0}, {std::nextafter(-1.0, -2.0), -1.0});
+  EXPECT_EQ(fine_feature(plan),
+            std::optional<std::string>(
+                "an end of wall 'b' lies 2.22e-16 m along their line from an end of wall 'a'"));
+
+  Plan meeting = empty_plan();
+  add_wall(meeting, "a", {0.0, 2.0}, {4.0, 2.0});
+  add_wall(meeting, "b", {4.0, 2.0}, {7.0, 2.0});
+  add_wall(meeting, "c", {7.001, 2.0}, {9.0, 2.0});
+  EXPECT_EQ(fine_feature(meeting), std::nullopt);
+}
+
 TEST(FineFeatures, ACornerPastTenKilometresIsNamedWithItsDistance) {
   Plan plan = empty_plan();
   add_wall(plan, "near", {0.0, 0.0}, {4.0, 0.0});

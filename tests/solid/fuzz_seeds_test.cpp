@@ -47,9 +47,12 @@ TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
       SCOPED_TRACE(path == BooleanPath::general ? "general" : "automatic");
       const Outcome made = build_on(plan, path);
       if (!made.model) {
-        // Refused only where Nef refuses too, or where Nef's solid, rounded to doubles, is no
-        // valid solid either.
-        if (nef.model) {
+        // Refused only where Nef refuses too, where Nef's solid, rounded to doubles, is no
+        // valid solid either, or where a feature finer than the doubles resolve made the
+        // written solid fail its check (fine_features.h), named in the refusal.
+        const bool written_solid_failed =
+            made.refusal.find("fails once its corners are rounded") != std::string::npos;
+        if (nef.model && !written_solid_failed) {
           EXPECT_FALSE(check_solid(nef.model->walls).is_valid()) << made.refusal;
         }
         if (path == BooleanPath::automatic) refused.insert(name);
@@ -75,10 +78,13 @@ TEST(FuzzSeeds, EveryBuildSeedBuildsAsNefDoesOrIsRefusedOnEveryPath) {
   // Refused by name: a wall of length 0 (zero-length), walls thinner than 64 units in the last
   // place of their coordinates (far-tiny, crash-far-wall-thinner-than-its-ulps) and walls an
   // ulp long, shorter than that (stress finding S6: bowtie, hairline, crash-rounded-end-3 and
-  // crash-ulp-wall-at-reversed-diagonal-walls, which built solids that cross themselves).
+  // crash-ulp-wall-at-reversed-diagonal-walls, which built solids that cross themselves), and
+  // a wall over another that ends an ulp past it (crash-ulp-step-between-collinear-wall-ends,
+  // whose written solid is open).
   const std::set<std::string> expected{"bowtie",
                                        "crash-far-wall-thinner-than-its-ulps",
                                        "crash-rounded-end-3",
+                                       "crash-ulp-step-between-collinear-wall-ends",
                                        "crash-ulp-wall-at-reversed-diagonal-walls",
                                        "far-tiny",
                                        "hairline",

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
@@ -108,6 +109,43 @@ double sine_between(const Wall& a, const Wall& b) {
   return double(std::abs(ax * by - ay * bx) / std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by)));
 }
 
+// A straight wall's line: its direction and where it lies.
+struct Line {
+  double angle, offset;  // direction in [0, pi); signed distance of the line from the origin
+  const Wall* wall;
+};
+
+// Two ends of walls drawn along one line that lie under kFinestFeature apart, yet apart: a
+// wall drawn over another that ends an ulp past it leaves a sliver an ulp long, which rounds
+// into the faces around it (a fuzzed plan: crash-ulp-step-between-collinear-wall-ends). Each
+// end's place along the line is measured along the first wall's direction, so that one point
+// has one place. O(k log k) for k walls.
+std::optional<std::string> fine_step_along_line(std::span<const Line> walls) {
+  if (walls.size() < 2) return std::nullopt;
+  const Wall& first = *walls.front().wall;
+  const double dx = first.to.x - first.from.x, dy = first.to.y - first.from.y;
+  const double length = std::hypot(dx, dy);
+  struct End {
+    double along;
+    const Wall* wall;
+    bool operator<(const End& o) const { return along < o.along; }
+  };
+  std::vector<End> ends;
+  for (const Line& line : walls)
+    for (const Point2 p : {line.wall->from, line.wall->to})
+      ends.push_back({(p.x * dx + p.y * dy) / length, line.wall});
+  std::stable_sort(ends.begin(), ends.end());
+  for (std::size_t k = 1; k < ends.size(); ++k) {
+    const double step = ends[k].along - ends[k - 1].along;
+    if (step > 0.0 && step < kFinestFeature)
+      return fmt::format(
+          "an end of wall '{}' lies {:.3g} m along their line from an end of wall "
+          "'{}'",
+          ends[k].wall->id, step, ends[k - 1].wall->id);
+  }
+  return std::nullopt;
+}
+
 // How two walls, or a wall and an axis, may lie finer than kFinestFeature: their directions
 // differ by under kFinestAngle (the sliver between them is under kFinestFeature wide across
 // kFarthestCoordinate), or they are parallel on lines under kFinestFeature apart. Each
@@ -116,10 +154,6 @@ double sine_between(const Wall& a, const Wall& b) {
 // count. O(n log n).
 std::optional<std::string> fine_alignment(const Plan& plan) {
   constexpr double kFinestAngle = kFinestFeature / kFarthestCoordinate;
-  struct Line {
-    double angle, offset;  // direction in [0, pi); signed distance of the line from the origin
-    const Wall* wall;
-  };
   std::vector<Line> lines;
   for (const Wall& w : plan.walls) {
     const double dx = w.to.x - w.from.x, dy = w.to.y - w.from.y;  // 0 exactly when equal
@@ -160,6 +194,15 @@ std::optional<std::string> fine_alignment(const Plan& plan) {
           !are_parallel(a.from, a.to, a.from, b.from))
         return fmt::format("wall '{}' runs parallel to wall '{}', {:.3g} m from its line", b.id,
                            a.id, lines[k].offset - lines[k - 1].offset);
+    }
+    // Walls closer than that are on one line (confirmed above): their ends along it.
+    for (std::size_t begin = first, end = first; begin < last; begin = end) {
+      for (end = begin + 1;
+           end < last && lines[end].offset - lines[end - 1].offset < kFinestFeature;)
+        ++end;
+      if (auto step = fine_step_along_line(
+              {lines.begin() + std::ptrdiff_t(begin), lines.begin() + std::ptrdiff_t(end)}))
+        return step;
     }
   }
   return std::nullopt;

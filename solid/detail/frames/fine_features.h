@@ -32,8 +32,10 @@ inline constexpr double kFarthestCoordinate = 1e4;
 ///         above the base of wall 'a' (z 0 m)"), else two walls, or a wall and an axis, whose
 ///         directions differ by under kFinestFeature / kFarthestCoordinate radians ("wall 'w'
 ///         runs 3.9e-14 rad off the y axis"), or two parallel walls on lines closer than
-///         kFinestFeature ("wall 'a' runs parallel to wall 'b', 1e-17 m from its line"); or
-///         a corner past kFarthestCoordinate; nothing if there is none. Heights are absolute
+///         kFinestFeature ("wall 'a' runs parallel to wall 'b', 1e-17 m from its line"), or
+///         ends of walls along one line closer than that, yet apart ("an end of wall 'b'
+///         lies 2.2e-16 m along their line from an end of wall 'a'"); or a corner past
+///         kFarthestCoordinate; nothing if there is none. Heights are absolute
 ///         (levels' elevations added); arc walls count by their dimensions and corners only
 ///         (their chords' directions and heights, computed, differ by ulps by construction).
 ///         O(n log n).

@@ -132,8 +132,10 @@ void join_t_ends(std::vector<WallRecord>& walls, double snap_distance, Report& w
       const Point2 new_end =
           nearby_end(walls, walls.size(), i, join->first, snap_distance).value_or(join->first);
       if (!keeps_lengths(walls, old_end, new_end)) continue;  // not moved: not reported
-      moved.push_back(fmt::format("'{}' {} by {:.4f} m onto '{}'", w.id, at_start ? "start" : "end",
-                                  distance(old_end, join->first), walls[join->second].id));
+      const double by_mm = distance(old_end, join->first) * 1000.0;
+      moved.push_back(fmt::format("'{}' {} by {} onto '{}'", w.id, at_start ? "start" : "end",
+                                  by_mm < 0.1 ? "under 0.1 mm" : fmt::format("{:.1f} mm", by_mm),
+                                  walls[join->second].id));
       for (WallRecord& other : walls)
         for (Point2* p : {&other.start, &other.end})
           if (*p == old_end) *p = new_end;  // this end and the pieces in line sharing it
@@ -145,8 +147,8 @@ void join_t_ends(std::vector<WallRecord>& walls, double snap_distance, Report& w
       Code::import_t_junction, ids.front(),
       fmt::format("{} wall ends drawn inside another wall were moved onto that wall's centre line "
                   "(along their own wall) or onto its end (at a corner), so that the plan joins "
-                  "them as Sweet Home 3D does: {}",
-                  moved.size(), fmt::join(moved, "; ")));
+                  "them as Sweet Home 3D does, one per line:\n  {}",
+                  moved.size(), fmt::join(moved, "\n  ")));
   d.objects = std::move(ids);
   warnings.add(std::move(d));
 }

@@ -433,6 +433,12 @@ TEST(Sh3dImport, NoLooseWallEndInsideACrossingWallOffItsCentreLine) {
   for (const fs::path& home : all_homes()) {
     const Sh3dImport imported = import_or_fail(home);
     moved += objects_warned(imported.warnings, Code::import_t_junction).size();
+    for (const Diagnostic& d : imported.warnings.items)
+      if (d.code == Code::import_t_junction) {  // one moved end per line, each naming its wall
+        const auto lines = std::count(d.message.begin(), d.message.end(), '\n');
+        EXPECT_GE(std::size_t(lines), d.objects.size()) << d.message;
+        EXPECT_EQ(d.message.find("; "), std::string::npos) << d.message;
+      }
     for (const Wall& w : imported.plan.walls)
       for (const Wall& host : imported.plan.walls) {
         const double L = length_of(host), own = length_of(w);

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// `roomcad validate PLAN [--format text|json] [--rules NAME|FILE] [--baseline OLD]`: every
-// problem of a plan, in one run; with rules beyond the format's checks, and compared with an
-// earlier revision.
+// `roomcad validate PLAN [--format text|json] [--rules NAME|FILE] [--baseline OLD]
+// [--max-findings N]`: every problem of a plan, in one run; with rules beyond the format's
+// checks, and compared with an earlier revision.
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -17,6 +18,7 @@
 #include "io/text_file.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
+#include "validation/report_tally.h"
 
 namespace roomcad::cli {
 namespace {
@@ -26,36 +28,48 @@ struct ValidateCommandOptions {
   std::string format = "text";
   std::string rules = "default";
   std::string baseline;
+  std::size_t max_findings = 0;  ///< 0: all
+};
+
+/// A plan's findings, and the level of each (item_levels; empty where the plan was not read).
+struct CheckedPlan {
+  Report report;
+  std::vector<std::string> levels;
 };
 
 /// Reading problems (with their lines and columns) then, if the plan could be read, what
 /// validation and the rules find (io/plan_check.h).
 /// @return the report, or an error: the file cannot be read, or the rules name rooms the plan
 ///         does not have.
-Result<Report> check_plan_file(const std::string& path, const RuleSet& rules) {
+Result<CheckedPlan> check_plan_file(const std::string& path, const RuleSet& rules) {
   const Result<std::string> text = read_text_file(path);
   if (!text) return text.error();
   Report reading;
   const Result<Plan> read = read_plan_text(text.value(), path, &reading);
-  if (!read) return reading;
+  if (!read) return CheckedPlan{reading, {}};
   if (const Status rooms = check_accessible_rooms(read.value(), rules); !rooms)
     return rooms.error();
-  return check_plan(read.value(), &reading, rules);
+  CheckedPlan checked{check_plan(read.value(), &reading, rules), {}};
+  checked.levels = item_levels(checked.report, read.value());
+  return checked;
 }
 
 int run_validate(const ValidateCommandOptions& options) {
   const Result<RuleSet> rules = load_rule_set(options.rules, "--rules");
   if (!rules) return report_failure("validate", rules.error());
-  const Result<Report> report = check_plan_file(options.plan, rules.value());
-  if (!report) return report_failure("validate", report.error());
+  const Result<CheckedPlan> checked = check_plan_file(options.plan, rules.value());
+  if (!checked) return report_failure("validate", checked.error());
+  const Result<Report> report = checked.value().report;
   std::optional<ReportComparison> comparison;
   ReportFormatOptions format;
   format.plan_file = options.plan;
   format.ids = rules.value().any_enabled();
+  format.item_levels = &checked.value().levels;
+  if (options.max_findings > 0) format.max_items = options.max_findings;
   if (!options.baseline.empty()) {
-    const Result<Report> old = check_plan_file(options.baseline, rules.value());
+    const Result<CheckedPlan> old = check_plan_file(options.baseline, rules.value());
     if (!old) return report_failure("validate", old.error());
-    comparison = compare_reports(old.value(), report.value());
+    comparison = compare_reports(old.value().report, report.value());
     format.comparison = &*comparison;
     format.baseline_file = options.baseline;
   }
@@ -98,6 +112,12 @@ void add_validate_command(CLI::App& root, Commands& commands) {
   app->add_option("--baseline", options->baseline,
                   "an earlier revision of the plan to compare with")
       ->type_name("OLD");
+  app->add_option("--max-findings", options->max_findings,
+                  "text: print the first N findings in full and count the rest (0, the "
+                  "default: all); a report of 10 findings or more ends with a summary by code "
+                  "and level either way")
+      ->type_name("N")
+      ->check(CLI::NonNegativeNumber);
   app->footer(
       "Exit status: 0 no errors (warnings allowed); 1 the plan has errors; 2 could not run\n"
       "(bad arguments, PLAN, OLD or the rules file unreadable, an unknown rule or a bad\n"

@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <optional>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "validation/fix_edits.h"
+#include "validation/report_tally.h"
 
 namespace roomcad {
 namespace {
@@ -164,12 +166,20 @@ std::string format_report_text(const Report& report, bool colour, const ReportFo
     if (!d.fix.empty()) out += "  fix: " + d.fix + '\n';
     for (const FixEdit& e : d.edits) out += "  edit: " + edit_command(e, o.plan_file) + '\n';
   };
-  for (std::size_t i = 0; i < report.items.size(); ++i)
+  const std::size_t shown = std::min(report.items.size(), o.max_items);
+  for (std::size_t i = 0; i < shown; ++i)
     block(report.items[i], o.comparison ? to_string(o.comparison->status[i]) : "");
+  if (shown < report.items.size())
+    out += fmt::format(
+        "... and {} more (--max-findings N prints N in full; --format json lists "
+        "them all)\n",
+        report.items.size() - shown);
   if (o.comparison && !o.comparison->fixed.items.empty()) {
     out += "fixed since " + o.baseline_file + ":\n";
     for (const Diagnostic& d : o.comparison->fixed.items) block(d, "fixed");
   }
+  if (report.items.size() >= kTallyFrom || shown < report.items.size())
+    out += format_report_tally(report, o.item_levels ? *o.item_levels : std::vector<std::string>{});
   return out;
 }
 

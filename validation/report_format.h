@@ -3,7 +3,10 @@
 // tools, and plain text for people.
 #pragma once
 
+#include <cstddef>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "validation/report.h"
 #include "validation/report_diff.h"
@@ -16,7 +19,14 @@ struct ReportFormatOptions {
   const ReportComparison* comparison = nullptr;  ///< each item's status, and the fixed items
   std::string baseline_file;                     ///< the baseline named in the output
   std::string plan_file = "PLAN";                ///< the plan named in fixes' edit commands
+  /// Text: the items printed in full; the rest are counted (`--max-findings`).
+  std::size_t max_items = std::numeric_limits<std::size_t>::max();
+  /// Text: each item's level (item_levels), for the summary by level; null for none.
+  const std::vector<std::string>* item_levels = nullptr;
 };
+
+/// Text reports of at least this many items end with a summary by code and level.
+inline constexpr std::size_t kTallyFrom = 10;
 
 /// @return `{"ok": bool, "errors": [...], "warnings": [...]}`, one item per line, each with
 /// `code`, `objects`, `message`, then `where` (a point `[x, y]` or a box `[[xmin, ymin],
@@ -36,7 +46,9 @@ struct ReportFormatOptions {
 /// @return one block per item, errors and warnings in report order:
 /// `error[code] a, b: message`, then indented `at: ...` (where), `fix: ...` and `edit: roomcad
 /// ...` lines; with a comparison each block starts with `new` or `unchanged`, and the fixed
-/// items follow under `fixed since FILE:`.
+/// items follow under `fixed since FILE:`. Only the first `options.max_items` items are
+/// printed in full, then a line counting the rest; a report of kTallyFrom items or more, or
+/// one cut short, ends with format_report_tally's summary.
 /// @param[in] colour  add ANSI colours (for a terminal)
 [[nodiscard]] std::string format_report_text(const Report& report, bool colour,
                                              const ReportFormatOptions& options = {});

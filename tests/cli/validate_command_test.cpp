@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad validate` and the rooms of `roomcad info`, run as a user would.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -92,6 +94,29 @@ TEST(ValidateCommand, TextNamesObjectsPlaceAndFixWithoutColourOffATerminal) {
   EXPECT_NE(r.out.find("or enlarge the site to cells [7, 6]\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("3 errors, 1 warning"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find('\033'), std::string::npos);
+}
+
+// A real home with 1,421 findings: --max-findings prints the first in full, counts the rest,
+// and the report ends with the findings by code and by level.
+TEST(ValidateCommand, MaxFindingsPrintsTheFirstAndTheSummaryByCodeAndLevel) {
+  const auto r = run_roomcad(
+      {"validate", "--max-findings", "5",
+       (test::source_dir() / "examples/sweethome3d/arif-putra-pertama-1.json").string()});
+  EXPECT_EQ(r.status, 1);
+  std::size_t blocks = 0;
+  for (std::size_t at = r.out.find("\nerror["); at != std::string::npos;
+       at = r.out.find("\nerror[", at + 1))
+    ++blocks;
+  EXPECT_EQ(blocks + (r.out.starts_with("error[") ? 1 : 0), 5u) << r.out;
+  EXPECT_NE(r.out.find("... and 1416 more"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("by code:\n  wall_overlap      1208 errors\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("by level:\n  Level 0   106 errors\n"), std::string::npos) << r.out;
+  EXPECT_LT(std::count(r.out.begin(), r.out.end(), '\n'), 40) << r.out;
+
+  const auto bad = run_roomcad(
+      {"validate", "--max-findings", "-1", (test::source_dir() / "examples/house.json").string()});
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--max-findings"), std::string::npos) << bad.err;
 }
 
 TEST(ValidateCommand, UnreadableFileIsExit2AndBadJsonIsAParseError) {

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "validation/report_tally.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <string_view>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+namespace roomcad {
+namespace {
+
+/// Errors and warnings of one group of items.
+struct Count {
+  std::string name;
+  std::size_t errors = 0, warnings = 0;
+};
+
+/// Adds an item of `severity` to the group `name`, kept in order of first appearance.
+void tally(std::vector<Count>& counts, std::string_view name, Severity severity) {
+  auto it =
+      std::find_if(counts.begin(), counts.end(), [&](const Count& c) { return c.name == name; });
+  if (it == counts.end()) it = counts.insert(counts.end(), Count{std::string(name)});
+  ++(severity == Severity::error ? it->errors : it->warnings);
+}
+
+std::string counted(std::size_t n, std::string_view word) {
+  return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
+}
+
+void print(std::string& out, std::string_view heading, const std::vector<Count>& counts) {
+  std::size_t width = 0;
+  for (const Count& c : counts) width = std::max(width, c.name.size());
+  out += fmt::format("{}\n", heading);
+  for (const Count& c : counts) {
+    std::string both;
+    if (c.errors) both = counted(c.errors, "error");
+    if (c.warnings) both += (both.empty() ? "" : ", ") + counted(c.warnings, "warning");
+    out += fmt::format("  {:<{}}  {}\n", c.name, width, both);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> item_levels(const Report& report, const Plan& plan) {
+  std::unordered_map<std::string_view, std::string_view> level_of;
+  for (const Wall& w : plan.walls) level_of.emplace(w.id, w.level);
+  for (const Slab& s : plan.slabs) level_of.emplace(s.id, s.level);
+  for (const Opening& o : plan.openings)
+    if (const auto host = level_of.find(o.wall); host != level_of.end())
+      level_of.emplace(o.id, host->second);
+  std::vector<std::string> levels;
+  levels.reserve(report.items.size());
+  for (const Diagnostic& d : report.items) {
+    std::string_view level;
+    for (const std::string& id : d.objects)
+      if (const auto it = level_of.find(id); it != level_of.end() && !it->second.empty()) {
+        level = it->second;
+        break;
+      }
+    levels.emplace_back(level);
+  }
+  return levels;
+}
+
+std::string format_report_tally(const Report& report, const std::vector<std::string>& levels) {
+  std::vector<Count> by_code, by_level;
+  for (std::size_t i = 0; i < report.items.size(); ++i) {
+    const Diagnostic& d = report.items[i];
+    tally(by_code, to_string(d.code), d.severity);
+    if (!levels.empty()) tally(by_level, levels[i].empty() ? "(no level)" : levels[i], d.severity);
+  }
+  std::string out;
+  print(out, "by code:", by_code);
+  const bool any_level =
+      std::any_of(levels.begin(), levels.end(), [](const std::string& l) { return !l.empty(); });
+  if (any_level) print(out, "by level:", by_level);
+  return out;
+}
+
+}  // namespace roomcad

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomcad add PLAN KIND [--id ID] [--<field> VALUE ...]: adds a level, wall, door, window, slab,
-// light or camera. Its options are the fields of the plan format, from the field tables
+// room, light or camera. Its options are the fields of the plan format, from the field tables
 // (plan/plan_fields.h): --from, --thickness, --fov-deg, ...; each type-checked by
 // modeling's set_field; ids are generated when --id is not given.
 #include <fmt/format.h>
@@ -75,8 +75,9 @@ std::string field_help(std::string_view key) {
 
 void add_add_command(CLI::App& root, Commands& commands) {
   auto args = std::make_shared<AddArgs>();
-  CLI::App* app = root.add_subcommand(
-      "add", "Add a level, wall, door, window, slab, light or camera to a plan");
+  CLI::App* app = root.add_subcommand("add",
+                                      "Add a level, wall, door, window, slab, room (a name for the "
+                                      "room around a point), light or camera to a plan");
   app->footer(
       "Examples:\n"
       "  roomcad add plan.json wall --from 1,1 --to 11,1 --thickness 0.2\n"
@@ -86,11 +87,12 @@ void add_add_command(CLI::App& root, Commands& commands) {
       "  roomcad add plan.json camera --eye 16,-9,10 --target 6,4,1\n"
       "  roomcad add plan.json level --id first --elevation 3 --height 2.6\n"
       "  roomcad add plan.json slab --level first --outline \"0,0;6,0;6,4;0,4\"\n"
+      "  roomcad add plan.json room --at 3,2 --name Kitchen\n"
       "Ids are generated (wall-1, door-2, ...) unless --id is given. The edited plan is\n"
       "validated: an edit that introduces errors is refused (exit 1, file untouched)\n"
       "unless --force.");
   app->add_option("PLAN", args->path, "plan file to edit")->required();
-  app->add_option("KIND", args->kind, "level, wall, door, window, slab, light or camera")
+  app->add_option("KIND", args->kind, "level, wall, door, window, slab, room, light or camera")
       ->required()
       ->check(CLI::IsMember(kKinds));
   app->add_option("--id", args->id, "id of the new object (default: generated, e.g. wall-3)");

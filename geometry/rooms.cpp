@@ -97,6 +97,7 @@ Room room_of(const Plan& plan, const OpeningsByWall& by_wall, const detail::Face
   std::vector<Line> lines;
   std::vector<Point2> starts;
   for (const detail::FaceEdge& e : face.boundary) {
+    room.level = plan.walls[e.wall].level;  // rooms are found level by level: one for all
     room.walls.push_back(plan.walls[e.wall].id);
     collect_openings(plan, by_wall, e, room);
     // Two exact vertices a hair apart can round to one double: such an edge has no direction.

@@ -19,6 +19,7 @@ struct Room {
                                      ///< by each bounding wall's half-thickness
   double area = 0.0;                 ///< clear floor area, square metres (rooms nested
                                      ///< inside are subtracted by their centre-line area)
+  std::string level;                 ///< the level of the walls bounding it ("": none)
   std::vector<std::string> walls;    ///< ids of the walls bounding it
   std::vector<std::string> doors;    ///< ids of doors in those walls
   std::vector<std::string> windows;  ///< ids of windows in those walls

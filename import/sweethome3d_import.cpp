@@ -215,6 +215,7 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   out.plan.openings = sh3d::place_openings(home.items, walls, placement, out.warnings);
   out.plan.slabs = sh3d::make_slabs(home, home.rooms, levels, sh3d::z_of(z_shift_cm),
                                     options.ceilings, out.warnings);
+  out.plan.rooms = sh3d::make_room_labels(home.rooms, levels);
   if (out.plan.slabs.size() > kMaxPlanObjects)
     return Result<Sh3dImport>::failure(
         Code::too_large,

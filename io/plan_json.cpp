@@ -198,6 +198,7 @@ std::string write_plan_text(const Plan& plan) {
   write_array(out, "walls", plan.walls);
   write_array(out, "openings", plan.openings);
   if (v2) write_array(out, "slabs", plan.slabs);
+  if (!plan.rooms.empty()) write_array(out, "rooms", plan.rooms);  // only where named
   write_array(out, "lights", plan.lights);
   write_array(out, "cameras", plan.cameras);
   // Top-level unknown fields: one per line after the known ones.

@@ -146,6 +146,18 @@ struct Slab {
   friend bool operator==(const Slab&, const Slab&) = default;
 };
 
+/// A name for the room around a point (roomcad's own field, `rooms[]`): the room that the
+/// walls of `level` close around `at` is called `name` ("Kitchen", "Bath"). Names decide
+/// which rooms a person stays in (room_without_window asks a window only of those).
+struct RoomLabel {
+  std::string id{};
+  std::string level{};  ///< id of its level, empty for none
+  Point2 at{};          ///< a point inside the room
+  std::string name{};
+  ExtraFields extra{};
+  friend bool operator==(const RoomLabel&, const RoomLabel&) = default;
+};
+
 /// The defaults the spec gives each opening type (width, height, sill).
 struct OpeningDefaults {
   double width;
@@ -185,10 +197,11 @@ struct Plan {
   std::vector<Level> levels{};  ///< version 2
   std::vector<Wall> walls{};
   std::vector<Opening> openings{};
-  std::vector<Slab> slabs{};      ///< version 2
-  std::vector<Light> lights{};    ///< empty: a default light is used (render: default_light)
-  std::vector<Camera> cameras{};  ///< empty: a camera framing the plan is used
-  ExtraFields extra{};            ///< unknown top-level fields
+  std::vector<Slab> slabs{};       ///< version 2
+  std::vector<RoomLabel> rooms{};  ///< names of rooms
+  std::vector<Light> lights{};     ///< empty: a default light is used (render: default_light)
+  std::vector<Camera> cameras{};   ///< empty: a camera framing the plan is used
+  ExtraFields extra{};             ///< unknown top-level fields
   friend bool operator==(const Plan&, const Plan&) = default;
 };
 

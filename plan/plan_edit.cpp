@@ -90,14 +90,25 @@ EditSummary add_level(Plan& plan, Level level) {
   return append_object(plan, plan.levels, std::move(level), "level");
 }
 
-EditSummary add_slab(Plan& plan, Slab slab) {
-  if (!slab.level.empty() && std::none_of(plan.levels.begin(), plan.levels.end(),
-                                          [&](const Level& l) { return l.id == slab.level; }))
+/// @throws PreconditionError if `object` names a level the plan does not have.
+template <class Object>
+void require_known_level(const Plan& plan, const Object& object, std::string_view kind) {
+  if (!object.level.empty() && std::none_of(plan.levels.begin(), plan.levels.end(),
+                                            [&](const Level& l) { return l.id == object.level; }))
     throw PreconditionError(
-        fmt::format("add: slab '{}' names level '{}', and the plan has no "
+        fmt::format("add: {} '{}' names level '{}', and the plan has no "
                     "such level",
-                    slab.id, slab.level));
+                    kind, object.id, object.level));
+}
+
+EditSummary add_slab(Plan& plan, Slab slab) {
+  require_known_level(plan, slab, "slab");
   return append_object(plan, plan.slabs, std::move(slab), "slab");
+}
+
+EditSummary add_room(Plan& plan, RoomLabel room) {
+  require_known_level(plan, room, "room");
+  return append_object(plan, plan.rooms, std::move(room), "room");
 }
 
 EditSummary add_light(Plan& plan, Light light) {

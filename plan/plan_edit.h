@@ -63,6 +63,10 @@ EditSummary add_level(Plan& plan, Level level);
 /// @throws PreconditionError if the id is used or `slab.level` names no level of the plan.
 EditSummary add_slab(Plan& plan, Slab slab);
 
+/// Appends a room's name (`room-N` when the id is empty).
+/// @throws PreconditionError if the id is used or `room.level` names no level of the plan.
+EditSummary add_room(Plan& plan, RoomLabel room);
+
 /// Appends a light (`light-N` when the id is empty). @throws PreconditionError on a used id.
 EditSummary add_light(Plan& plan, Light light);
 

@@ -81,6 +81,13 @@ const Field<Light> kLightFields[] = {
     {"intensity", &Light::intensity, none, Check::finite, optional, 1.0, "a number"},
     {"ambient", &Light::ambient, none, Check::unit_interval, optional, 0.25, "0 to 1"},
 };
+const Field<RoomLabel> kRoomLabelFields[] = {
+    {"id", &RoomLabel::id, none, Check::any, required, 0, kId},
+    {"level", &RoomLabel::level, none, Check::any, version2, 0, "id of its level"},
+    {"at", &RoomLabel::at, metre, Check::finite, required, 0, "a point inside the room, x,y"},
+    {"name", &RoomLabel::name, none, Check::any, required, 0,
+     "what the room is: Kitchen, Bedroom, Bath, Hall, ..."},
+};
 
 const Field<Camera> kCameraFields[] = {
     {"id", &Camera::id, none, Check::any, required, 0, kId},
@@ -127,6 +134,10 @@ std::span<const Field<Slab>> fields_of<Slab>() {
   return kSlabFields;
 }
 template <>
+std::span<const Field<RoomLabel>> fields_of<RoomLabel>() {
+  return kRoomLabelFields;
+}
+template <>
 std::span<const Field<Light>> fields_of<Light>() {
   return kLightFields;
 }
@@ -138,7 +149,7 @@ std::span<const Field<Camera>> fields_of<Camera>() {
 bool uses_version2(const Plan& plan) {
   return !plan.levels.empty() || !plan.slabs.empty() ||
          uses_version2_fields(std::vector<Site>{plan.site}) || uses_version2_fields(plan.walls) ||
-         uses_version2_fields(plan.openings);
+         uses_version2_fields(plan.openings) || uses_version2_fields(plan.rooms);
 }
 
 }  // namespace roomcad

@@ -88,14 +88,16 @@ std::span<const Field<Opening>> fields_of<Opening>();
 template <>
 std::span<const Field<Slab>> fields_of<Slab>();
 template <>
+std::span<const Field<RoomLabel>> fields_of<RoomLabel>();
+template <>
 std::span<const Field<Light>> fields_of<Light>();
 template <>
 std::span<const Field<Camera>> fields_of<Camera>();
 
 /// The keys of a plan document's top level, in the order the writer writes them.
-inline constexpr std::array<std::string_view, 10> kTopLevelKeys = {
-    "format", "version",  "units", "site",   "levels",
-    "walls",  "openings", "slabs", "lights", "cameras"};
+inline constexpr std::array<std::string_view, 11> kTopLevelKeys = {
+    "format",   "version", "units", "site",   "levels", "walls",
+    "openings", "slabs",   "rooms", "lights", "cameras"};
 
 /// @return the field named `name`, or nullptr. O(fields).
 template <class Object>

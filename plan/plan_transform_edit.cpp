@@ -69,6 +69,8 @@ void map_camera(Camera& camera, const PlanMap& map) {
   camera.up = map_direction(map.directions, camera.up);
 }
 
+void map_room(RoomLabel& room, const PlanMap& map) { room.at = map_point(map, room.at); }
+
 void map_light(Light& light, const PlanMap& map) {
   light.direction = map_direction(map.directions, light.direction);
 }
@@ -102,12 +104,13 @@ Point2 site_centre(const Site& s) {
 }
 
 /// The default centre of a turn or scale of one object: a wall's midpoint, a slab's first
-/// corner, a camera's target.
+/// corner, a room's point, a camera's target.
 Point2 default_centre(const Plan& plan, ObjectRef ref) {
   if (ref.kind == ObjectKind::wall)
     return midpoint(plan.walls[ref.index].from, plan.walls[ref.index].to);
   if (ref.kind == ObjectKind::slab && !plan.slabs[ref.index].outline.empty())
     return plan.slabs[ref.index].outline.front();
+  if (ref.kind == ObjectKind::room) return plan.rooms[ref.index].at;
   if (ref.kind == ObjectKind::camera)
     return {plan.cameras[ref.index].target.x, plan.cameras[ref.index].target.y};
   return {};
@@ -122,6 +125,7 @@ EditSummary map_object(Plan& plan, ObjectRef ref, const PlanMap& map, std::strin
       map_openings(plan, plan.walls[ref.index].id, map);
       break;
     case ObjectKind::slab: map_slab(plan.slabs[ref.index], map); break;
+    case ObjectKind::room: map_room(plan.rooms[ref.index], map); break;
     case ObjectKind::camera: map_camera(plan.cameras[ref.index], map); break;
     case ObjectKind::light: map_light(plan.lights[ref.index], map); break;
     case ObjectKind::level:
@@ -142,6 +146,7 @@ EditSummary map_everything(Plan& plan, const PlanMap& map) {
   const Plan before = plan;
   for (Wall& w : plan.walls) map_wall(w, map);
   for (Slab& s : plan.slabs) map_slab(s, map);
+  for (RoomLabel& r : plan.rooms) map_room(r, map);
   map_openings(plan, std::nullopt, map);
   for (Camera& c : plan.cameras) map_camera(c, map);
   for (Light& l : plan.lights) map_light(l, map);
@@ -199,6 +204,7 @@ EditSummary changed_objects(const Plan& before, const Plan& after) {
   compare(before.walls, after.walls);
   compare(before.openings, after.openings);
   compare(before.slabs, after.slabs);
+  compare(before.rooms, after.rooms);
   compare(before.lights, after.lights);
   compare(before.cameras, after.cameras);
   return summary;

@@ -262,7 +262,8 @@ void register_edits(PlanClass& plan) {
             return done.added.empty() ? std::string() : done.added.front();
           },
           py::arg("kind"), py::arg("id") = py::none(), py::kw_only(), py::arg("force") = false,
-          "Adds a level, wall, door, window, slab, light or camera, as `roomcad add`.\n"
+          "Adds a level, wall, door, window, slab, room (a name for a room), light or camera, as "
+          "`roomcad add`.\n"
           "@param kind    'level', 'wall', 'door', 'window', 'slab', 'light' or 'camera'\n"
           "@param id      its id (default: generated, e.g. 'wall-3')\n"
           "@param fields  the object's fields by name (docs/plan-format.md): numbers in metres or\n"

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plan/nearest_name.h"
+#include "validation/detail/habitable_rooms.h"
 
 namespace roomcad {
 namespace {
@@ -33,8 +34,8 @@ constexpr ThresholdKey kThresholdKeys[] = {
     {Code::window_sill_high, "max_sill", &RuleThresholds::window_max_sill},
 };
 
-constexpr std::string_view kTopLevelKeys[] = {"format", "version", "base", "rules",
-                                              "accessible_rooms"};
+constexpr std::string_view kTopLevelKeys[] = {"format", "version",          "base",
+                                              "rules",  "accessible_rooms", "habitable_rooms"};
 
 /// A failure while reading: the JSON pointer and what is wrong there.
 struct Problem {
@@ -149,6 +150,32 @@ std::optional<Problem> read_accessible_rooms(const Json& rooms, RuleSet& set) {
   return std::nullopt;
 }
 
+/// `habitable_rooms`: {"min_area": m², "corridor_width": m, "not_habitable": ["word", ...]}.
+std::optional<Problem> read_habitable_rooms(const Json& body, RuleSet& set) {
+  if (!body.is_object())
+    return Problem{"/habitable_rooms", "expected an object of settings, found " + value_text(body)};
+  HabitableRooms& h = set.habitable_rooms;
+  for (const auto& [key, value] : body.items()) {
+    const std::string at = "/habitable_rooms/" + key;
+    if (key == "min_area" || key == "corridor_width") {
+      if (auto p = read_threshold(value, at, key == "min_area" ? h.min_area : h.corridor_width))
+        return p;
+    } else if (key == "not_habitable") {
+      if (!value.is_array() || !std::all_of(value.begin(), value.end(), [](const Json& w) {
+            return w.is_string() && !w.get<std::string>().empty();
+          }))
+        return Problem{at, "expected an array of words (strings), found " + value_text(value)};
+      h.not_habitable.clear();
+      for (const Json& word : value)
+        h.not_habitable.push_back(detail::lower_case(word.get<std::string>()));
+    } else {
+      return Problem{at, unknown_name("setting of habitable_rooms", key,
+                                      {"min_area", "corridor_width", "not_habitable"})};
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<Problem> read_header(const Json& doc, RuleSet& set) {
   for (const auto& [key, value] : doc.items())
     if (std::find(std::begin(kTopLevelKeys), std::end(kTopLevelKeys), key) ==
@@ -237,6 +264,8 @@ Result<RuleSet> parse_rule_set(std::string_view text, const std::string& file) {
   if (!problem && doc.contains("rules")) problem = read_rules(doc["rules"], set);
   if (!problem && doc.contains("accessible_rooms"))
     problem = read_accessible_rooms(doc["accessible_rooms"], set);
+  if (!problem && doc.contains("habitable_rooms"))
+    problem = read_habitable_rooms(doc["habitable_rooms"], set);
   if (problem) return usage_error(file, *problem);
   return set;
 }

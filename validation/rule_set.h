@@ -41,6 +41,24 @@ struct RuleThresholds {
   friend bool operator==(const RuleThresholds&, const RuleThresholds&) = default;
 };
 
+/// Which rooms a person stays in: those room_without_window asks a window of. A room named by
+/// the plan's `rooms` is one unless a word of its name is in `not_habitable` ("Bath",
+/// "Walk-in closet"); an unnamed room is one unless it is under `min_area` or a corridor (at
+/// most `corridor_width` wide and three times as long). docs/plan-format.md, "Rule sets".
+struct HabitableRooms {
+  double min_area = 6.0;        ///< square metres of clear floor
+  double corridor_width = 1.8;  ///< metres
+  /// Words of room names, lower case; a word with a final "s" matches too ("stairs").
+  std::vector<std::string> not_habitable = {
+      "hall",    "hallway",   "corridor", "entry",     "entrance",  "foyer",
+      "lobby",   "vestibule", "closet",   "wardrobe",  "dressing",  "store",
+      "storage", "storeroom", "pantry",   "bath",      "bathroom",  "shower",
+      "wc",      "toilet",    "lavatory", "restroom",  "washroom",  "laundry",
+      "utility", "garage",    "stair",    "staircase", "stairwell", "landing",
+      "boiler",  "cellar",    "balcony",  "terrace",   "porch",     "loggia"};
+  friend bool operator==(const HabitableRooms&, const HabitableRooms&) = default;
+};
+
 struct RuleSet {
   std::string name = "default";  ///< the built-in set's name or the rules file's path
   std::array<bool, kRuleCodes.size()> enabled{};
@@ -49,6 +67,8 @@ struct RuleSet {
   RuleThresholds thresholds;
   /// Points (x, y) inside the rooms the accessibility rules apply to; unset: every room.
   std::optional<std::vector<Point2>> accessible_rooms;
+  /// The rooms room_without_window applies to (the format's check, in every set).
+  HabitableRooms habitable_rooms;
 
   RuleSet() { severity.fill(Severity::warning); }
   [[nodiscard]] bool is_enabled(Code code) const;

@@ -80,7 +80,8 @@ Report validate(const Plan& plan, const ValidateOptions& options) {
   std::vector<Room> found;
   if (rooms.valid()) found = rooms.get();
   // Rooms are only meaningful on a plan whose walls are sound: with errors, say nothing more.
-  if (options.room_warnings && !has_errors) detail::warn_about_rooms(found, report);
+  if (options.room_warnings && !has_errors)
+    detail::warn_about_rooms(found, plan, options.rules.habitable_rooms, report);
   if (rules)
     detail::check_rules(resolved.plan, joins, resolved.usable, options.rules,
                         rooms_for_rules ? &found : nullptr, report);

@@ -57,7 +57,46 @@ struct Planned {
   Bounds box;
 };
 
+/// The middle of the widest run inside `outline` along the line halfway up its box.
+/// @pre outline has area.
+Point2 point_inside(const Polygon& outline) {
+  const Bounds box = bounds_of(outline);
+  const double y = box.min.y + (box.max.y - box.min.y) / 2.0;
+  std::vector<double> xs;  // where the edges cross the line, each edge half-open at its top
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const Point2 a = outline[i], b = outline[(i + 1) % outline.size()];
+    if ((a.y > y) != (b.y > y)) xs.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+  }
+  std::ranges::sort(xs);
+  Point2 best{(box.min.x + box.max.x) / 2.0, y};
+  double widest = -1.0;
+  for (std::size_t k = 0; k + 1 < xs.size(); k += 2)
+    if (xs[k + 1] - xs[k] > widest) {
+      widest = xs[k + 1] - xs[k];
+      best = {xs[k] + widest / 2.0, y};
+    }
+  return best;
+}
+
 }  // namespace
+
+std::vector<RoomLabel> make_room_labels(const std::vector<RoomRecord>& rooms,
+                                        const std::vector<PlacedLevel>& levels) {
+  std::vector<RoomLabel> labels;
+  for (std::size_t k = 0; k < rooms.size(); ++k) {
+    const RoomRecord& room = rooms[k];
+    const Polygon outline = outline_of(room);
+    if (room.name.find_first_not_of(" \t\n") == std::string::npos || outline.empty()) continue;
+    const PlacedLevel* level = find_placed(levels, room.level);
+    RoomLabel label;
+    label.id = (room.id.empty() ? fmt::format("room{}", k + 1) : room.id) + "-name";
+    label.level = level ? level->level.id : std::string();
+    label.at = point_inside(outline);
+    label.name = room.name;
+    labels.push_back(std::move(label));
+  }
+  return labels;
+}
 
 std::vector<Slab> make_slabs(const Home& home, const std::vector<RoomRecord>& rooms,
                              const std::vector<PlacedLevel>& levels, double base_z,

@@ -31,4 +31,11 @@ inline constexpr double kDefaultFloorThicknessCm = 12.0;
                                            const std::vector<PlacedLevel>& levels, double base_z,
                                            bool ceilings, Report& warnings);
 
+/// The names of `rooms` (`plan.rooms`): for each room with a name and an outline of some area,
+/// the label `<room id>-name` with that name, on the room's level, at a point inside its
+/// outline (the middle of the widest run inside it along the line halfway up its box), so
+/// that validation knows a bath from a bedroom. O(points).
+[[nodiscard]] std::vector<RoomLabel> make_room_labels(const std::vector<RoomRecord>& rooms,
+                                                      const std::vector<PlacedLevel>& levels);
+
 }  // namespace roomcad::sh3d

@@ -209,6 +209,7 @@ class PlanReader {
     else if (key == "site") read_site(v, plan.site);
     else if (key == "walls") read_list(v, plan.walls);
     else if (key == "openings") read_list(v, plan.openings);
+    else if (key == "rooms") read_list(v, plan.rooms);
     else if (key == "lights") read_list(v, plan.lights);
     else if (key == "cameras") read_list(v, plan.cameras);
     else if (v2 && key == "levels") read_list(v, plan.levels);

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "import/sh3d_test_data.h"
+#include "validation/detail/habitable_rooms.h"
 #include "validation/validate.h"
 
 namespace roomcad {
@@ -195,6 +196,33 @@ TEST(Sh3dValidation, OnlyTheHomesOwnProblemsAreErrors) {
       EXPECT_TRUE(errors.contains(p))
           << "missing " << p.code << " " << ::testing::PrintToString(p.objects);
   }
+}
+
+// The homes' named rooms come across as `rooms` labels, each inside the room it names on its
+// level; every room of the Studio and the 4-bedroom house that has a name gets it, and those
+// named as baths, halls or corridors are not asked for a window.
+TEST(Sh3dValidation, RoomNamesComeAcrossInsideTheirRooms) {
+  for (const char* name : {"Studio", "4-BedroomHouse"}) {
+    SCOPED_TRACE(name);
+    const Sh3dImport imported =
+        import_or_fail(kData / "eteks-example-homes" / (std::string(name) + ".Home.xml"));
+    const Plan& plan = imported.plan;
+    ASSERT_FALSE(plan.rooms.empty());
+    std::vector<Room> rooms;
+    for (const LevelRooms& level : find_rooms_by_level(plan))
+      rooms.insert(rooms.end(), level.rooms.begin(), level.rooms.end());
+    const std::vector<std::string> names = detail::room_names(rooms, plan);
+    std::size_t named = 0;
+    for (std::size_t r = 0; r < rooms.size(); ++r) named += !names[r].empty();
+    EXPECT_GE(named, plan.rooms.size() / 2) << named << " of " << rooms.size() << " rooms named";
+    for (const Diagnostic& d : validate(plan).items)
+      EXPECT_NE(d.code, Code::room_without_window) << d.message;
+  }
+  const Sh3dImport house =
+      import_or_fail(kData / "eteks-example-homes" / "4-BedroomHouse.Home.xml");
+  std::set<std::string> kinds;
+  for (const RoomLabel& label : house.plan.rooms) kinds.insert(label.name);
+  EXPECT_TRUE(kinds.contains("Kitchen") && kinds.contains("Corridor")) << kinds.size();
 }
 
 }  // namespace

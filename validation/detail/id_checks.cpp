@@ -30,7 +30,7 @@ std::vector<IdUse> collect_ids(const Plan& plan) {
   return uses;
 }
 
-/// unknown_reference for each wall or slab whose `level` names no level.
+/// unknown_reference for each wall, slab or room whose `level` names no level.
 template <class Object>
 void check_level_references(const Plan& plan, const std::vector<Object>& objects,
                             std::string_view kind, Report& report) {
@@ -89,6 +89,7 @@ void check_ids(const Plan& plan, Usable& usable, Report& report) {
   report_duplicates(plan, report);
   check_level_references(plan, plan.walls, "wall", report);
   check_level_references(plan, plan.slabs, "slab", report);
+  check_level_references(plan, plan.rooms, "room", report);
   const IdIndex walls = index_by_id(plan.walls);
   for (std::size_t i = 0; i < plan.openings.size(); ++i) {
     const Opening& o = plan.openings[i];

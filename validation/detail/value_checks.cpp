@@ -268,6 +268,7 @@ Usable check_values(const Plan& plan, Report& report) {
   usable.slabs = check_list(plan.slabs, "slab", "slabs", report);
   for (std::size_t i = 0; i < plan.slabs.size(); ++i)
     if (usable.slabs[i]) usable.slabs[i] = check_slab_polygons(plan.slabs[i], i, report);
+  (void)check_list(plan.rooms, "room", "rooms", report);
   (void)check_list(plan.lights, "light", "lights", report);
   for (std::size_t i = 0; i < plan.cameras.size(); ++i) check_camera(plan.cameras[i], i, report);
   return usable;

@@ -61,7 +61,7 @@ double distance_to_quad(Point2 p, const std::array<Point2, 4>& q) {
   return inside ? 0.0 : best;
 }
 
-struct Candidate {
+struct DiscCentre {
   Point2 p;
   double clearance;
   std::optional<std::pair<LineRef, LineRef>> lines;  ///< for an exact rebuild
@@ -92,9 +92,9 @@ void add_arc_candidates(const StoreyWalls& sw, const std::vector<std::size_t>& w
   }
 }
 
-std::vector<Candidate> candidates(const StoreyWalls& sw, const std::vector<std::size_t>& walls,
-                                  const RoomLocator& locator, std::size_t room, double rho,
-                                  double tol) {
+std::vector<DiscCentre> candidates(const StoreyWalls& sw, const std::vector<std::size_t>& walls,
+                                   const RoomLocator& locator, std::size_t room, double rho,
+                                   double tol) {
   const Plan& plan = sw.scene().plan();
   std::vector<LineRef> refs;
   std::vector<std::pair<Point2, double>> lines;
@@ -104,7 +104,7 @@ std::vector<Candidate> candidates(const StoreyWalls& sw, const std::vector<std::
       const auto [a, b] = line_of<double>(plan.walls[w], refs.back(), rho);
       lines.push_back({{a.x, a.y}, b});
     }
-  std::vector<Candidate> out;
+  std::vector<DiscCentre> out;
   const auto consider = [&](Point2 p, std::optional<std::pair<LineRef, LineRef>> from) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || locator.locate(p) != room) return;
     const double c = sw.clearance(p, walls);
@@ -121,7 +121,7 @@ std::vector<Candidate> candidates(const StoreyWalls& sw, const std::vector<std::
   add_arc_candidates(sw, walls, lines, rho, arcs);
   for (const Point2& p : arcs) consider(p, std::nullopt);
   std::sort(out.begin(), out.end(),
-            [](const Candidate& a, const Candidate& b) { return a.clearance > b.clearance; });
+            [](const DiscCentre& a, const DiscCentre& b) { return a.clearance > b.clearance; });
   return out;
 }
 
@@ -200,12 +200,12 @@ FreeDisc find_free_disc(const StoreyWalls& sw, const std::vector<Room>& rooms,
     return {true, middle, sw.clearance(middle, walls)};
   // Corners of the centres kSlack farther from the walls: clear by kSlack, so the intervals
   // verify them at once. Only a circle that fits with less to spare needs the exact rebuild.
-  for (const Candidate& c : candidates(sw, walls, locator, room, rho + kSlack, tol))
+  for (const DiscCentre& c : candidates(sw, walls, locator, room, rho + kSlack, tol))
     if (c.clearance >= rho + kSlack / 2 && is_clear(sw.scene(), walls, c.p, diameter))
       return {true, c.p, c.clearance};
-  const std::vector<Candidate> touching = candidates(sw, walls, locator, room, rho, tol);
+  const std::vector<DiscCentre> touching = candidates(sw, walls, locator, room, rho, tol);
   for (std::size_t k = 0; k < touching.size() && k < kVerified; ++k) {
-    const Candidate& c = touching[k];
+    const DiscCentre& c = touching[k];
     if (c.lines && is_clear_rebuilt(sw.scene(), walls, *c.lines, diameter))
       return {true, c.p, c.clearance};
   }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What a durable save costs (README, "Editing"): write_plan_file, which flushes the new file to
-// disk before renaming it over the plan and the folder after (io/atomic_write.h), against the
+// What a durable save costs (bench/report.md, "Edits"): write_plan_file, which flushes the new file
+// to disk before renaming it over the plan and the folder after (io/atomic_write.h), against the
 // same text written and renamed without the two flushes; the text alone; and the plan lock
 // (io/plan_lock.h) taken and released. Grid plans of 112 and 9,940 walls (testing/grid_plan.h,
 // n = 7 and 70), written in a fresh folder under the system's temporary folder (its file system

@@ -210,6 +210,10 @@ section_kernels
 section_skipping
 seconds=$((SECONDS - start))
 
+# The hand-written sections (measurements of single changes, CI times) from the marker on.
+marker='<!-- Hand-written sections: bench/report.sh keeps everything from this line on. -->'
+kept=$(awk -v m="$marker" 'found || $0 == m { found = 1; print }' bench/report.md 2>/dev/null || true)
+[[ -n "$kept" ]] || kept=$marker
 {
   echo "# roomcad evidence report: run time against size and error"
   echo
@@ -312,5 +316,7 @@ seconds=$((SECONDS - start))
   echo
   echo "The per-wall fast path on and off is the fast path against the CGAL path in the build section."
   echo
-} >bench/report.md
+  printf '%s\n' "$kept"
+} >bench/report.md.new
+mv bench/report.md.new bench/report.md
 echo "bench/report.sh: wrote bench/report.md and bench/report/ in ${seconds} s"

@@ -20,7 +20,7 @@ namespace roomcad {
 /// reported too, saying the new file is in place but not yet safe from a power cut. A process
 /// killed midway (SIGKILL, power cut) leaves `path` intact but may leave its temporary file
 /// `.<name>.tmp-<pid>-XXXXXX`; the next write of `path` removes those whose process is gone.
-/// Cost: the writes, plus the two fsyncs, which dominate small files (README, "Editing").
+/// Cost: the writes, plus the two fsyncs, which dominate small files (bench/report.md, "Edits").
 Status write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
 /// The same for content produced by a callback writing to a stream (large meshes, images).

@@ -7,7 +7,7 @@
 #
 # -O1 keeps ASan's checks exact and the build short; -gline-tables-only keeps file and line in
 # every report. clang rather than GCC because libFuzzer needs it, and it is the faster of the
-# two here (the README gives both measured times). Warnings are errors here too
+# two here (bench/report.md gives both measured times). Warnings are errors here too
 # (ROOMCAD_WERROR): clang warns where GCC does not.
 # Usage: scripts/build-sanitized.sh [CMAKE_BUILD_ARGS...]   (e.g. --target fuzzers)
 set -euo pipefail

@@ -10,7 +10,7 @@
 #
 # Without TARGETs: every target, the readers' and fuzz_build and fuzz_render (degenerate plans
 # through the build and the renderer; the inputs of the bugs they found are in
-# fuzz/corpus/{build,render}/crash-*, README "Hostile input" has the runs). Their seed corpora
+# fuzz/corpus/{build,render}/crash-*, docs/stress-findings.md says what they were). Their seed corpora
 # also run in CTest (FuzzSeeds.*, RenderFuzzSeeds.*).
 set -euo pipefail
 cd "$(dirname "$0")/.."

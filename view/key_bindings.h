@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Which key does what in the window: one table, used to dispatch keys, to print the key help
-// (`roomcad view --help`, the overlay) and to document the README's table.
+// (`roomcad view --help`, the overlay) and to document docs/cli.md's table.
 #pragma once
 
 #include <optional>

@@ -180,5 +180,28 @@ TEST(Version2Checks, OutlinesMustBeSimpleAndHolesInside) {
   EXPECT_EQ(error_codes(validate(p, no_rooms())), Codes{Code::invalid_value});
 }
 
+// A door in a wall that reaches below its level's floor is at the floor when its sill is that
+// depth exactly. The fix gives the depth as a person reads it, and the exact value where the
+// rounded one would leave the door off the floor (Sweet Home 3D's float depths).
+TEST(Version2Checks, DoorAboveTheFloorFixGivesTheExactDepthWhereRoundingWouldNotClearIt) {
+  for (const auto& [depth, fix] :
+       {std::pair{0.12, "set its sill to 0.12 m, the depth"},
+        std::pair{0.11999988555908203,
+                  "set its sill to 0.120 m (exactly 0.11999988555908203 m)"}}) {
+    Plan p = two_levels();
+    Wall w = on("first", make_wall("w", {0, 0}, {4, 0}, 0.2));
+    w.base = -depth;
+    w.height = 3;
+    p.walls = {w};
+    p.openings = {make_opening("d", OpeningType::door, "w", 1, 0.9, 2.1, depth + 0.1)};
+    Report r = validate(p);
+    ASSERT_EQ(r.items.size(), 1u);
+    EXPECT_EQ(r.items[0].code, Code::door_above_floor);
+    EXPECT_TRUE(r.items[0].fix.starts_with(fix)) << r.items[0].fix;
+    p.openings[0].sill = depth;  // the fix, exactly as written, clears it
+    EXPECT_TRUE(validate(p).items.empty());
+  }
+}
+
 }  // namespace
 }  // namespace roomcad

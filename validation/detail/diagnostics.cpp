@@ -12,6 +12,12 @@ std::string metres(double value) {
   return fmt::format("{:.2f} m", value);
 }
 
+std::string exact_metres(double value) {
+  const double millimetres = std::round(value * 1000.0) / 1000.0;
+  if (millimetres == value) return fmt::format("{} m", value == 0.0 ? 0.0 : value);
+  return fmt::format("{:.3f} m (exactly {} m)", millimetres, value);
+}
+
 std::string metres_at_least(double value) {
   if (value < 0.005) return metres(value);
   return fmt::format("{:.2f} m", std::ceil(value * 100 - 1e-7) / 100);

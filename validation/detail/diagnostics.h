@@ -12,6 +12,11 @@
 
 namespace roomcad::detail {
 
+/// @return the exact length a fix must set, as a person reads it: "0.12 m" where that is
+///         the value, else rounded to the millimetre with the exact value after it, which the
+///         rounded one would not match: "0.120 m (exactly 0.11999988555908203 m)".
+[[nodiscard]] std::string exact_metres(double value);
+
 /// @return a length as text: "0.15 m"; 2 decimals, or 3 significant digits below 5 mm so
 ///         that a micrometre does not print as "0.00 m".
 [[nodiscard]] std::string metres(double value);

@@ -62,7 +62,9 @@ void check_warnings(const Plan& plan, const ValidateOptions& options, Report& re
             : fmt::format("{} starts {} above the base of wall '{}'; a door normally starts at "
                           "the floor.",
                           name_of(o), metres(o.sill), o.wall),
-        below_floor ? fmt::format("set its sill to {}, or make it a window if it is one", -w->base)
+        below_floor ? fmt::format("set its sill to {}, the depth its wall reaches below the floor, "
+                                  "or make it a window if it is one",
+                                  exact_metres(-w->base))
                     : "set its sill to 0, or make it a window if it is one"));
   }
 }

@@ -205,7 +205,7 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
   const std::vector<sh3d::PlacedWall> walls =
       sh3d::convert_walls(home, home.walls, levels, wall_options, out.warnings);
   for (const sh3d::PlacedWall& w : walls) out.plan.walls.push_back(w.wall);
-  // Found by fuzz_sh3d_archive: with every wall left out, the site's box stayed empty.
+  // With every wall left out, the site's box would be empty.
   if (out.plan.walls.empty())
     return Result<Sh3dImport>::failure(Code::invalid_value,
                                        fmt::format("{}: no wall to import: each of its {} <wall> "

@@ -55,7 +55,7 @@ TriMesh triangulate_copy(const SolidMesh& mesh, SolidCheck& check) {
 // Mpzf (CGAL's dyadic multi-precision numbers, which hold every double and their sums and
 // products) and rounded once. In doubles, even relative to a point of the component, the
 // differences of coordinates far apart round: a solid of 5.7e-15 m^3 spanning 46 m, 10 m
-// high, read as 110 times its volume (stress finding S6).
+// high, read as 110 times its volume.
 std::vector<double> component_volumes(
     const TriMesh& tri, const TriMesh::Property_map<TriMesh::Face_index, std::size_t>& comp,
     std::size_t count) {

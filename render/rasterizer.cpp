@@ -175,8 +175,7 @@ std::optional<ScreenTriangle> set_up_triangle(const std::array<ClipVertex, 3>& v
     const double sx = (static_cast<double>(p.x) * inv_w + 1.0) * 0.5 * width;
     const double sy = (1.0 - static_cast<double>(p.y) * inv_w) * 0.5 * height;
     // Not a number, or past the fixed point's range (a light's view fitted to a scene whose
-    // bounds overflow, as one with a wall corner 5e306 m out did: found by fuzz_render, and
-    // that corner by the fast path's hubs, since fixed): nothing to draw.
+    // bounds overflow, such as one with a corner 5e306 m out): nothing to draw.
     constexpr double kLimit = 0x1p30 / kSubpixelScale;  // round_to_fixed's
     if (!(std::abs(sx) < kLimit && std::abs(sy) < kLimit)) return std::nullopt;
     t.x[i] = round_to_fixed(sx * kSubpixelScale);

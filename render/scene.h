@@ -28,7 +28,7 @@ struct Cluster {
 
 /// Triangles in metres relative to `origin`, the centre of the model (float: positions within
 /// a few km of it keep ~0.1 mm). Float world coordinates would lose that far from (0, 0): 1e6 m
-/// away a float step is 6 cm, and shadow depths compared in it make acne (stress finding S3).
+/// away a float step is 6 cm, and shadow depths compared in it make acne.
 /// The renderer moves its cameras and lights' maps into this frame (rebase_camera).
 struct Scene {
   std::vector<glm::vec3> corners;       ///< 3 per triangle, counter-clockwise from outside,

@@ -6,7 +6,7 @@
 // it is written. Where a plan's features are millions of times finer than its coordinates (a
 // wall a nanometre thick, a window 2e-8 m high, a home 750 km from its origin), a rounded
 // corner can land across a face a few ulps away, and the solid as written crosses itself
-// (stress finding S6: every fuzzed plan whose solid failed so had such a feature).
+// (every fuzzed plan whose solid failed so has such a feature: docs/stress-findings.md).
 // build_model checks the written solid of such plans as `build --check` does, and refuses
 // it by name if it fails; other plans skip that check, which costs 2 to 8 times the build.
 #pragma once

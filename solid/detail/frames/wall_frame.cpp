@@ -162,7 +162,7 @@ bool is_hairline_pair(const Wall& a, WallEnd ea, const Wall& b, WallEnd eb) {
   const Point2 da = outward(a, ea), db = outward(b, eb);
   const double cross = da.x * db.y - da.y * db.x, dot = da.x * db.x + da.y * db.y;
   return a.thickness == b.thickness && dot < 0.0 && cross != 0.0 && std::abs(cross) <= kHairline &&
-         share_heights(a, b);  // one above the other they do not meet (found by fuzz_build)
+         share_heights(a, b);  // one above the other they do not meet
 }
 
 // Where three or more walls meet at a node (a unite join), two of equal thickness that run

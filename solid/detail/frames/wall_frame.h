@@ -66,7 +66,7 @@ struct WallFrame {
 /// @return the smallest size the build resolves among numbers of magnitude up to m: 64 units
 ///         in the last place. The exact solid's corners are written as doubles; a wall
 ///         shorter, thinner or lower than this folds its faces onto each other when they are
-///         rounded (stress finding S6: walls an ulp long built solids that cross themselves).
+///         rounded (a wall an ulp long makes a solid that crosses itself).
 ///         A hole narrower than this is cut: it rounds away or to a slit whose faces meet, as
 ///         its volume is below the rounding's. O(1).
 [[nodiscard]] double resolvable_size(double m);

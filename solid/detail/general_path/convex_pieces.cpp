@@ -50,7 +50,7 @@ PlaneRef plane_through(PlaneSet& set, Point2 p, Point2 q) {
 // one plane there whatever their thickness, and walls at other angles meet on the vertical
 // line through the point. Through their own rounded corners, two such caps cross at a hair's
 // angle or a hair off the point, and the slivers between them round into faces that cross
-// (stress finding S6). Outside beyond the end.
+// when written. Outside beyond the end.
 PlaneRef square_end_plane(PlaneSet& set, const WallFrame& f, WallEnd end) {
   PlaneRecipe r;
   r.kind = PlaneRecipe::Kind::square_end;

@@ -9,7 +9,7 @@ namespace roomcad::detail {
 
 /// Whether two solids just below `plane` (`below`; else just above), either side of a line L
 /// of it, touch only along L: each is a wedge between the plane and its own plane through L,
-/// and the two wedges leave a gap between them (stress finding S6). The plane's face then
+/// and the two wedges leave a gap between them. The plane's face then
 /// ends at L on both sides, as the faces of the wedges' other sides do; a face running on
 /// across L would be crossed by them by an ulp once its corners are rounded (walls leaving one
 /// point a few degrees apart, a window at their ends). Why the signs: in the cross-section

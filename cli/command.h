@@ -62,6 +62,7 @@ void add_info_command(CLI::App& root, Commands& commands);
 void add_fmt_command(CLI::App& root, Commands& commands);
 void add_validate_command(CLI::App& root, Commands& commands);
 void add_repair_command(CLI::App& root, Commands& commands);
+void add_report_command(CLI::App& root, Commands& commands);
 void add_surface_command(CLI::App& root, Commands& commands);
 void add_draw_command(CLI::App& root, Commands& commands);
 void add_import_command(CLI::App& root, Commands& commands);

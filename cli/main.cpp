@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   add_fmt_command(app, commands);
   add_validate_command(app, commands);
   add_repair_command(app, commands);
+  add_report_command(app, commands);
   add_surface_command(app, commands);
   add_draw_command(app, commands);
   add_import_command(app, commands);

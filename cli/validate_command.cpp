@@ -11,14 +11,11 @@
 #include <fmt/format.h>
 
 #include "cli/command.h"
+#include "cli/plan_checking.h"
 #include "cli/plan_loading.h"
-#include "io/plan_check.h"
-#include "io/plan_json.h"
 #include "io/rule_set_file.h"
-#include "io/text_file.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
-#include "validation/report_tally.h"
 
 namespace roomcad::cli {
 namespace {
@@ -30,29 +27,6 @@ struct ValidateCommandOptions {
   std::string baseline;
   std::size_t max_findings = 0;  ///< 0: all
 };
-
-/// A plan's findings, and the level of each (item_levels; empty where the plan was not read).
-struct CheckedPlan {
-  Report report;
-  std::vector<std::string> levels;
-};
-
-/// Reading problems (with their lines and columns) then, if the plan could be read, what
-/// validation and the rules find (io/plan_check.h).
-/// @return the report, or an error: the file cannot be read, or the rules name rooms the plan
-///         does not have.
-Result<CheckedPlan> check_plan_file(const std::string& path, const RuleSet& rules) {
-  const Result<std::string> text = read_text_file(path);
-  if (!text) return text.error();
-  Report reading;
-  const Result<Plan> read = read_plan_text(text.value(), path, &reading);
-  if (!read) return CheckedPlan{reading, {}};
-  if (const Status rooms = check_accessible_rooms(read.value(), rules); !rooms)
-    return rooms.error();
-  CheckedPlan checked{check_plan(read.value(), &reading, rules), {}};
-  checked.levels = item_levels(checked.report, read.value());
-  return checked;
-}
 
 int run_validate(const ValidateCommandOptions& options) {
   const Result<RuleSet> rules = load_rule_set(options.rules, "--rules");

@@ -84,21 +84,25 @@ Result<RgbImage> decode_png(std::string_view bytes, std::string_view file) {
 
 }  // namespace
 
-Status write_png(const RgbImage& image, const std::filesystem::path& path) {
+Result<std::string> png_bytes(const RgbImage& image) {
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
-    return Status::failure(
-        Code::precondition,
-        fmt::format("write_png: '{}': image is {} x {} with {} bytes", path.string(), image.width,
-                    image.height, image.pixels.size()));
+    return Result<std::string>::failure(
+        Code::precondition, fmt::format("image is {} x {} with {} bytes", image.width, image.height,
+                                        image.pixels.size()));
   }
   std::string bytes;
   std::string error;
-  if (!encode_png(image, bytes, error)) {
-    return Status::failure(Code::io_error,
-                           fmt::format("write_png: '{}': {}", path.string(), error));
-  }
-  return write_file_atomically(path, bytes);
+  if (!encode_png(image, bytes, error)) return Result<std::string>::failure(Code::io_error, error);
+  return bytes;
+}
+
+Status write_png(const RgbImage& image, const std::filesystem::path& path) {
+  const Result<std::string> bytes = png_bytes(image);
+  if (!bytes)
+    return Status::failure(bytes.code(),
+                           fmt::format("write_png: '{}': {}", path.string(), bytes.message()));
+  return write_file_atomically(path, bytes.value());
 }
 
 Result<RgbImage> read_png(const std::filesystem::path& path) {

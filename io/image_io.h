@@ -13,6 +13,9 @@ namespace roomcad {
 /// Writes an 8-bit RGB PNG. Deterministic: the same image gives the same bytes.
 Status write_png(const RgbImage& image, const std::filesystem::path& path);
 
+/// @return the bytes write_png writes, or an error (an empty or inconsistent image).
+[[nodiscard]] Result<std::string> png_bytes(const RgbImage& image);
+
 /// Largest PNG read_png accepts, pixels per side and in all: a 40-byte header can claim
 /// 2^31 x 2^31 pixels, and the image is allocated before the data is seen to be missing.
 inline constexpr int kMaxPngSide = 16384;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Installs, from Debian's packages, whatever roomcad needs that this machine lacks (toolchain
-# included); with --tests also the independent readers of the export tests (python3-ezdxf,
+# included); with --tests also Chromium, its driver and Selenium (the report page's tests),
+# and the independent readers of the export tests (python3-ezdxf,
 # Node.js, and tests/readers' npm packages web-ifc and gltf-validator at the versions of its
 # package-lock.json), which the demo does not need. Idempotent and non-interactive: packages
 # already installed are left alone, and nothing is fetched when nothing is missing. Run as
@@ -35,6 +36,8 @@ if $tests; then
   # Node.js runs web-ifc and the Khronos glTF validator (tests/readers); Node.js from Debian
   # unless a node and npm are already on the PATH (a newer one, e.g. nvm's)
   packages+=(python3-ezdxf)
+  # the report page's tests open it in a real browser: Chromium driven by Selenium
+  packages+=(chromium chromium-driver python3-selenium)
   if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
 fi
 

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "import/sh3d_test_data.h"
-#include "validation/detail/habitable_rooms.h"
+#include "validation/room_labels.h"
 #include "validation/validate.h"
 
 namespace roomcad {
@@ -211,9 +211,9 @@ TEST(Sh3dValidation, RoomNamesComeAcrossInsideTheirRooms) {
     std::vector<Room> rooms;
     for (const LevelRooms& level : find_rooms_by_level(plan))
       rooms.insert(rooms.end(), level.rooms.begin(), level.rooms.end());
-    const std::vector<std::string> names = detail::room_names(rooms, plan);
+    const std::vector<const RoomLabel*> labels = room_labels(rooms, plan);
     std::size_t named = 0;
-    for (std::size_t r = 0; r < rooms.size(); ++r) named += !names[r].empty();
+    for (std::size_t r = 0; r < rooms.size(); ++r) named += labels[r] != nullptr;
     EXPECT_GE(named, plan.rooms.size() / 2) << named << " of " << rooms.size() << " rooms named";
     for (const Diagnostic& d : validate(plan).items)
       EXPECT_NE(d.code, Code::room_without_window) << d.message;

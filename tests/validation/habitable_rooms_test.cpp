@@ -6,7 +6,7 @@
 #include <string>
 
 #include "plan_cases.h"
-#include "validation/detail/habitable_rooms.h"
+#include "validation/room_labels.h"
 
 namespace roomcad {
 namespace {
@@ -66,11 +66,12 @@ TEST(HabitableRooms, ANameOnAnotherLevelOrOutsideEveryRoomNamesNone) {
   Plan plan = windowless_rooms();
   plan.rooms = {{.id = "a", .at = {2, 2}, .name = "Bath"}};
   const std::vector<Room> rooms = find_rooms(plan);
-  EXPECT_EQ(detail::room_names(rooms, plan)[0], "Bath");
+  ASSERT_NE(room_labels(rooms, plan)[0], nullptr);
+  EXPECT_EQ(room_labels(rooms, plan)[0]->name, "Bath");
   plan.rooms[0].level = "upper";
-  EXPECT_EQ(detail::room_names(rooms, plan)[0], "");
+  EXPECT_EQ(room_labels(rooms, plan)[0], nullptr);
   plan.rooms[0] = {.id = "a", .at = {20, 20}, .name = "Bath"};
-  for (const std::string& name : detail::room_names(rooms, plan)) EXPECT_EQ(name, "");
+  for (const RoomLabel* label : room_labels(rooms, plan)) EXPECT_EQ(label, nullptr);
 }
 
 TEST(HabitableRooms, ARulesFileSetsTheAreaTheCorridorWidthAndTheNames) {

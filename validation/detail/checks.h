@@ -43,7 +43,7 @@ void check_geometry(const Plan& plan, const Usable& usable, const ResolvedPlan& 
 void check_warnings(const Plan& plan, const ValidateOptions& options, Report& report);
 
 /// room_without_door and room_without_window warnings for rooms found by find_rooms. O(n).
-/// A room is named by the plan's `rooms` (room_names); only rooms a person stays in
+/// A room is named by the plan's `rooms` (room_labels); only rooms a person stays in
 /// (is_habitable) are asked for a window.
 void warn_about_rooms(const std::vector<Room>& rooms, const Plan& plan,
                       const HabitableRooms& habitable, Report& report);

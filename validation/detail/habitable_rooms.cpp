@@ -61,17 +61,6 @@ std::string lower_case(std::string_view text) {
   return out;
 }
 
-std::vector<std::string> room_names(const std::vector<Room>& rooms, const Plan& plan) {
-  std::vector<std::string> names(rooms.size());
-  for (std::size_t r = 0; r < rooms.size(); ++r)
-    for (const RoomLabel& label : plan.rooms)
-      if (label.level == rooms[r].level && rules::is_inside_outline(rooms[r].outline, label.at)) {
-        names[r] = label.name;
-        break;
-      }
-  return names;
-}
-
 bool is_habitable(const Room& room, std::string_view name, const HabitableRooms& rules) {
   if (!name.empty()) {
     const std::vector<std::string> words = words_of(name);

@@ -17,11 +17,6 @@ namespace roomcad::detail {
 /// @return `text` with ASCII letters in lower case (other bytes, UTF-8 included, kept). O(n).
 [[nodiscard]] std::string lower_case(std::string_view text);
 
-/// @return the name the plan gives each room: that of the first of `plan.rooms` on the room's
-///         level whose point lies inside the room's clear outline, or "" (none). O(r * l * v)
-///         for r rooms, l names and v corners.
-[[nodiscard]] std::vector<std::string> room_names(const std::vector<Room>& rooms, const Plan& plan);
-
 /// @return whether a person stays in `room`: named, unless a word of its name (letters and
 ///         digits, compared in lower case, a final "s" dropped too) is in
 ///         `rules.not_habitable`; unnamed, unless its clear area is under `rules.min_area` or

@@ -7,6 +7,7 @@
 #include "validation/detail/checks.h"
 #include "validation/detail/diagnostics.h"
 #include "validation/detail/habitable_rooms.h"
+#include "validation/room_labels.h"
 
 namespace roomcad::detail {
 namespace {
@@ -31,12 +32,13 @@ void warn_room(const Room& room, std::size_t number, std::string_view name, Code
 
 void warn_about_rooms(const std::vector<Room>& rooms, const Plan& plan,
                       const HabitableRooms& habitable, Report& report) {
-  const std::vector<std::string> names = room_names(rooms, plan);
+  const std::vector<const RoomLabel*> labels = room_labels(rooms, plan);
   for (std::size_t i = 0; i < rooms.size(); ++i) {
+    const std::string_view name = labels[i] ? std::string_view(labels[i]->name) : "";
     if (rooms[i].doors.empty())
-      warn_room(rooms[i], i + 1, names[i], Code::room_without_door, "door", report);
-    if (rooms[i].windows.empty() && is_habitable(rooms[i], names[i], habitable))
-      warn_room(rooms[i], i + 1, names[i], Code::room_without_window, "window", report);
+      warn_room(rooms[i], i + 1, name, Code::room_without_door, "door", report);
+    if (rooms[i].windows.empty() && is_habitable(rooms[i], name, habitable))
+      warn_room(rooms[i], i + 1, name, Code::room_without_window, "window", report);
   }
 }
 

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A plan file checked as `roomcad validate` checks it: what `validate` prints and `report`
+// shows.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "plan/plan.h"
+#include "validation/report.h"
+#include "validation/rule_set.h"
+
+namespace roomcad::cli {
+
+/// A plan's findings, the level of each (item_levels), and the plan where it could be read.
+struct CheckedPlan {
+  Report report;
+  std::vector<std::string> levels;  ///< empty where the plan was not read
+  std::optional<Plan> plan;
+};
+
+/// Reading problems (with their lines and columns) then, if the plan could be read, what
+/// validation and the rules find (io/plan_check.h).
+/// @return the findings, or an error: the file cannot be read, or the rules name rooms the
+///         plan does not have.
+[[nodiscard]] Result<CheckedPlan> check_plan_file(const std::string& path, const RuleSet& rules);
+
+}  // namespace roomcad::cli

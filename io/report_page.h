@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The report page of `roomcad report`: one self-contained HTML file (inline SVG, CSS and a
+// small script of its own; nothing fetched) with a summary of a plan's findings, a floor plan
+// per level whose walls, openings, slabs and rooms carry `data-id`, and the findings list:
+// selecting a finding marks its objects `selected` and zooms the plans to its place.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "plan/plan.h"
+#include "validation/report.h"
+#include "validation/report_diff.h"
+
+namespace roomcad {
+
+/// What the page shows. Pointers are not owned and may be null where optional.
+struct ReportPageInput {
+  std::string title;                                      ///< the plan file, as given
+  const Plan* plan = nullptr;                             ///< required
+  const Report* report = nullptr;                         ///< required
+  const std::vector<std::string>* item_levels = nullptr;  ///< item_levels(report, plan)
+  const ReportComparison* comparison = nullptr;           ///< with --baseline
+  std::string baseline_file;
+  std::string level;        ///< draw and list only this level's objects and findings
+  std::string picture_png;  ///< the bytes of a render of the model; empty: none
+};
+
+/// @return the page. Deterministic: the same input gives the same bytes. O(n log n) for the
+///         plan's objects and the findings (rooms are found level by level).
+/// @pre input.plan and input.report are set; item_levels, if set, has one entry per item.
+[[nodiscard]] std::string make_report_page(const ReportPageInput& input);
+
+}  // namespace roomcad

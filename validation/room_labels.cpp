@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "validation/room_labels.h"
+
+#include "validation/rules/context.h"
+
+namespace roomcad {
+
+std::vector<const RoomLabel*> room_labels(const std::vector<Room>& rooms, const Plan& plan) {
+  std::vector<const RoomLabel*> labels(rooms.size(), nullptr);
+  for (std::size_t r = 0; r < rooms.size(); ++r)
+    for (const RoomLabel& label : plan.rooms)
+      if (label.level == rooms[r].level && rules::is_inside_outline(rooms[r].outline, label.at)) {
+        labels[r] = &label;
+        break;
+      }
+  return labels;
+}
+
+}  // namespace roomcad

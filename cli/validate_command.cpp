@@ -31,9 +31,10 @@ struct ValidateCommandOptions {
 int run_validate(const ValidateCommandOptions& options) {
   const Result<RuleSet> rules = load_rule_set(options.rules, "--rules");
   if (!rules) return report_failure("validate", rules.error());
-  const Result<CheckedPlan> checked = check_plan_file(options.plan, rules.value());
+  Result<CheckedPlan> checked = check_plan_file(options.plan, rules.value());
   if (!checked) return report_failure("validate", checked.error());
-  const Result<Report> report = checked.value().report;
+  checked.value().plan.reset();  // not needed to print: its memory serves the printing
+  const Report& report = checked.value().report;
   std::optional<ReportComparison> comparison;
   ReportFormatOptions format;
   format.plan_file = options.plan;
@@ -43,20 +44,20 @@ int run_validate(const ValidateCommandOptions& options) {
   if (!options.baseline.empty()) {
     const Result<CheckedPlan> old = check_plan_file(options.baseline, rules.value());
     if (!old) return report_failure("validate", old.error());
-    comparison = compare_reports(old.value().report, report.value());
+    comparison = compare_reports(old.value().report, report);
     format.comparison = &*comparison;
     format.baseline_file = options.baseline;
   }
   std::string out;
   if (options.format == "json") {
-    out = format_report_json(report.value(), format);
+    out = format_report_json(report, format);
   } else {
-    out = format_report_text(report.value(), use_colour(stdout), format);
-    out += options.plan + ": " + format_report_summary(report.value(), format) + '\n';
+    out = format_report_text(report, use_colour(stdout), format);
+    out += options.plan + ": " + format_report_summary(report, format) + '\n';
   }
   std::fputs(out.c_str(), stdout);
   if (std::fflush(stdout) != 0) return kExitCannotRun;
-  return report.value().ok() ? kExitOk : kExitPlanErrors;
+  return report.ok() ? kExitOk : kExitPlanErrors;
 }
 
 }  // namespace

@@ -44,7 +44,9 @@ void print(std::string& out, std::string_view heading, const std::vector<Count>&
 }  // namespace
 
 std::vector<std::string> item_levels(const Report& report, const Plan& plan) {
+  if (plan.levels.empty()) return std::vector<std::string>(report.items.size());  // none
   std::unordered_map<std::string_view, std::string_view> level_of;
+  level_of.reserve(plan.walls.size() + plan.slabs.size() + plan.openings.size());
   for (const Wall& w : plan.walls) level_of.emplace(w.id, w.level);
   for (const Slab& s : plan.slabs) level_of.emplace(s.id, s.level);
   for (const Opening& o : plan.openings)

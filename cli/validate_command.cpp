@@ -1,18 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad validate PLAN [--format text|json] [--rules NAME|FILE] [--baseline OLD]
-// [--max-findings N]`: every problem of a plan, in one run; with rules beyond the format's
-// checks, and compared with an earlier revision.
+// [--max-findings N] [--format bcf -o FILE]`: every problem of a plan, in one run; with rules
+// beyond the format's checks, and compared with an earlier revision.
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <fmt/chrono.h>
 #include <fmt/format.h>
 
 #include "cli/command.h"
 #include "cli/plan_checking.h"
 #include "cli/plan_loading.h"
+#include "io/atomic_write.h"
+#include "io/bcf_export.h"
 #include "io/rule_set_file.h"
 #include "validation/report_diff.h"
 #include "validation/report_format.h"
@@ -26,14 +31,51 @@ struct ValidateCommandOptions {
   std::string rules = "default";
   std::string baseline;
   std::size_t max_findings = 0;  ///< 0: all
+  std::string output;            ///< --format bcf: the .bcfzip to write
 };
+
+/// The date of the plan file, as BCF's CreationDate: the same file gives the same archive.
+std::string file_date(const std::string& path) {
+  std::error_code error;
+  const auto written = std::filesystem::last_write_time(path, error);
+  if (error) return "1980-01-01T00:00:00Z";
+  const auto seconds =
+      std::chrono::time_point_cast<std::chrono::seconds>(std::chrono::file_clock::to_sys(written));
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", seconds);
+}
+
+/// Writes the findings as BCF (io/bcf_export.h) to `options.output`.
+int write_bcf(const ValidateCommandOptions& options, const CheckedPlan& checked,
+              const ReportComparison* comparison) {
+  if (!checked.plan)
+    return report_failure(
+        "validate", Error{Code::parse_error,
+                          fmt::format("--format bcf: {} is not a plan ({} "
+                                      "problems: `roomcad validate {}` lists them)",
+                                      options.plan, checked.report.items.size(), options.plan)});
+  const Result<std::string> archive = write_bcf_archive({.plan = &*checked.plan,
+                                                         .report = &checked.report,
+                                                         .comparison = comparison,
+                                                         .plan_file = options.plan,
+                                                         .date = file_date(options.plan)});
+  if (!archive) return report_failure("validate", archive.error());
+  if (const Status written = write_file_atomically(options.output, archive.value()); !written)
+    return report_failure("validate", written.error());
+  std::fprintf(stderr, "roomcad validate: wrote %s (%zu topics)\n", options.output.c_str(),
+               checked.report.items.size() + (comparison ? comparison->fixed.items.size() : 0));
+  return checked.report.ok() ? kExitOk : kExitPlanErrors;
+}
 
 int run_validate(const ValidateCommandOptions& options) {
   const Result<RuleSet> rules = load_rule_set(options.rules, "--rules");
   if (!rules) return report_failure("validate", rules.error());
+  if ((options.format == "bcf") != !options.output.empty())
+    return report_failure("validate", Error{Code::usage_error,
+                                            "-o,--output: give it with --format bcf, and only "
+                                            "then (text and JSON go to the standard output)"});
   Result<CheckedPlan> checked = check_plan_file(options.plan, rules.value());
   if (!checked) return report_failure("validate", checked.error());
-  checked.value().plan.reset();  // not needed to print: its memory serves the printing
+  if (options.format != "bcf") checked.value().plan.reset();  // its memory serves the printing
   const Report& report = checked.value().report;
   std::optional<ReportComparison> comparison;
   ReportFormatOptions format;
@@ -48,6 +90,7 @@ int run_validate(const ValidateCommandOptions& options) {
     format.comparison = &*comparison;
     format.baseline_file = options.baseline;
   }
+  if (options.format == "bcf") return write_bcf(options, checked.value(), format.comparison);
   std::string out;
   if (options.format == "json") {
     out = format_report_json(report, format);
@@ -78,7 +121,14 @@ void add_validate_command(CLI::App& root, Commands& commands) {
       "--baseline compares with an earlier revision: each item is new or unchanged, and the\n"
       "baseline's items that are gone are listed as fixed.");
   app->add_option("PLAN", options->plan, "the plan file (JSON)")->required()->type_name("FILE");
-  add_format_option(*app, options->format);
+  app->add_option("--format", options->format,
+                  "text (default), json, or bcf: BCF 2.1 for BIM tools, written to -o")
+      ->check(CLI::IsMember({"text", "json", "bcf"}))
+      ->capture_default_str();
+  app->add_option("-o,--output", options->output,
+                  "with --format bcf: the .bcfzip to write (one topic per finding, its objects "
+                  "named by the GlobalIds of `roomcad build -o x.ifc`)")
+      ->type_name("FILE");
   app->add_option(
          "--rules", options->rules,
          "rule set: default (the format's checks), accessibility, all, or a rules file (JSON)")
@@ -101,6 +151,7 @@ void add_validate_command(CLI::App& root, Commands& commands) {
       "  roomcad validate examples/house.json\n"
       "  roomcad validate --format json plan.json\n"
       "  roomcad validate plan.json --rules all\n"
+      "  roomcad validate plan.json --format bcf -o findings.bcfzip\n"
       "  roomcad validate plan.json --rules examples/rules/accessible-ground-floor.json --baseline "
       "old.json");
   commands.push_back({app, [options] { return run_validate(*options); }});

@@ -11,6 +11,7 @@
 #include "geometry/rooms.h"
 #include "io/atomic_write.h"
 #include "io/detail/ifc_shapes.h"
+#include "io/ifc_guid.h"
 #include "io/step_file.h"
 #include "plan/plan_chords.h"
 #include "plan/plan_levels.h"
@@ -22,26 +23,12 @@ namespace {
 using io_detail::IfcShapeWriter;
 using step::ref;
 
-/// The 64-bit FNV-1a hash of `text`, from `basis`, finished by SplitMix64's mixer.
-std::uint64_t hash64(std::string_view text, std::uint64_t basis) {
-  std::uint64_t h = basis;
-  for (const char c : text) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
-  return h ^ (h >> 31);
-}
-
-/// @return the quoted IFC GlobalId of `key`: 128 bits of hash in IFC's 22-character base 64.
+/// @return the quoted IFC GlobalId of `key` (io/ifc_guid.h).
 std::string global_id(std::string_view key) {
-  static constexpr char kDigits[] =
-      "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_$";
-  unsigned __int128 bits =
-      (static_cast<unsigned __int128>(hash64(key, 0xcbf29ce484222325ULL)) << 64) |
-      hash64(key, 0x84222325cbf29ce4ULL);
-  std::string id(22, '0');
-  for (int k = 21; k >= 1; --k, bits >>= 6) id[static_cast<std::size_t>(k)] = kDigits[bits & 63];
-  id[0] = kDigits[bits & 3];
-  return '\'' + id + '\'';
+  std::string quoted = "'";  // appended, not `'\'' + ...`: GCC 12 warns (-Wrestrict) on that
+  quoted += ifc_global_id(key);
+  quoted += '\'';
+  return quoted;
 }
 
 std::string text(std::string_view s) {

@@ -190,9 +190,9 @@ std::string level_plan(const Plan& plan, const std::string& level) {
   }
   for (const Slab& s : plan.slabs) {
     if (s.level != level || s.outline.size() < 3) continue;
-    std::string d;
-    for (const Polygon* ring : {&s.outline}) d += "M" + points_text(*ring) + "Z";
-    for (const Polygon& hole : s.holes) d += "M" + points_text(hole) + "Z";
+    std::string d;  // appended piece by piece: GCC 12 warns (-Wrestrict) on `"M" + ...`
+    for (const Polygon* ring : {&s.outline}) d.append("M").append(points_text(*ring)).append("Z");
+    for (const Polygon& hole : s.holes) d.append("M").append(points_text(hole)).append("Z");
     for (const Point2& p : s.outline) box.add(p);
     body += fmt::format("<path class=\"slab\" data-id=\"{}\" d=\"{}\"/>\n", escape_xml(s.id), d);
   }

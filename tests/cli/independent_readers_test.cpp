@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <map>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "io/floor_plan_dxf.h"
 #include "io/plan_json.h"
@@ -185,6 +188,76 @@ TEST(IndependentReaders, EzdxfReadsEveryExamplePlanWithItsLayersAndEntities) {
 }
 
 // The checks above mean something only if the readers refuse bad files.
+// The findings of bundled homes as BCF, read by @parametricos/bcf-js: one topic per finding,
+// each selecting components that are IfcRoot GlobalIds of the plan's IFC export as web-ifc reads
+// it, with a camera; a later revision keeps the GUIDs of the findings it keeps.
+TEST(IndependentReaders, BcfJsReadsTheFindingsAndTheirComponentsAreTheIfcExportsObjects) {
+  TempDir dir;
+  std::size_t components = 0;
+  for (const char* home : {"3-BedroomApartment", "arif-home", "apartament-balanta"}) {
+    SCOPED_TRACE(home);
+    const auto plan =
+        test::source_dir() / "examples" / "sweethome3d" / (std::string(home) + ".json");
+    const auto bcf = dir / (std::string(home) + ".bcfzip");
+    const auto ifc = dir / (std::string(home) + ".ifc");
+    const auto validated =
+        run_roomcad({"validate", plan.string(), "--format", "bcf", "-o", bcf.string()});
+    EXPECT_EQ(validated.status, 1) << validated.err;
+    ASSERT_EQ(run_roomcad({"build", plan.string(), "-o", ifc.string(), "--force"}).status, 0);
+    const auto run = run_reader("bcf_check.cjs", std::vector{bcf, ifc});
+    ASSERT_TRUE(run);
+    EXPECT_EQ(run->status, 0) << run->report.dump() << run->err;
+    EXPECT_EQ(run->report["version"], 2.1);
+    const Report report = validate(read_example(plan));
+    ASSERT_EQ(run->report["topics"].size(), report.items.size());
+    std::set<std::string> global_ids;
+    for (const auto& id : run->report["ifc_global_ids"]) global_ids.insert(id.get<std::string>());
+    std::set<std::string> guids;
+    for (const auto& topic : run->report["topics"]) {
+      guids.insert(topic["guid"].get<std::string>());
+      EXPECT_EQ(topic["status"], "Open");
+      EXPECT_TRUE(topic["camera"].get<bool>()) << topic["title"];
+      for (const auto& c : topic["components"]) {
+        EXPECT_TRUE(global_ids.contains(c.get<std::string>())) << topic["title"] << ' ' << c;
+        ++components;
+      }
+    }
+    EXPECT_EQ(guids.size(), report.items.size());  // one GUID per finding
+  }
+  EXPECT_GT(components, 20u);
+}
+
+TEST(IndependentReaders, BcfTopicsKeepTheirGuidsAcrossRevisionsAndFixedOnesClose) {
+  TempDir dir;
+  const auto old_plan = test::source_dir() / "examples" / "sweethome3d" / "3-BedroomApartment.json";
+  const auto plan = dir / "plan.json";
+  ASSERT_EQ(run_roomcad({"fmt", old_plan.string(), "-o", plan.string()}).status, 0);
+  ASSERT_EQ(run_roomcad({"rm", plan.string(), "wall38", "--force", "--cascade"}).status, 0);
+  const auto old_bcf = dir / "old.bcfzip";
+  const auto bcf = dir / "new.bcfzip";
+  ASSERT_EQ(run_roomcad({"validate", old_plan.string(), "--format", "bcf", "-o", old_bcf.string()})
+                .status,
+            1);
+  ASSERT_EQ(run_roomcad({"validate", plan.string(), "--format", "bcf", "-o", bcf.string(),
+                         "--baseline", old_plan.string()})
+                .status,
+            1);
+  const auto before = run_reader("bcf_check.cjs", old_bcf);
+  const auto after = run_reader("bcf_check.cjs", bcf);
+  ASSERT_TRUE(before && after);
+  std::map<std::string, std::string> status_of;  // GUID -> status in the later revision
+  for (const auto& t : after->report["topics"]) status_of[t["guid"]] = t["status"];
+  std::size_t kept = 0, closed = 0;
+  for (const auto& t : before->report["topics"]) {
+    const auto found = status_of.find(t["guid"]);
+    ASSERT_NE(found, status_of.end()) << t["title"];  // every finding: open or closed
+    kept += found->second == "Open";
+    closed += found->second == "Closed";
+  }
+  EXPECT_GT(kept, 0u);
+  EXPECT_GT(closed, 0u);  // the overlaps of wall38, gone with it
+}
+
 TEST(IndependentReaders, RejectBrokenFiles) {
   TempDir dir;
   const auto examples = test::example_plans();

@@ -33,7 +33,9 @@ std::string missing_reader(const std::string& script) {
   }
   if (shell("command -v node >/dev/null 2>&1") != 0)
     return "node is not installed (Debian package nodejs)";
-  const char* package = script == "ifc_check.cjs" ? "web-ifc" : "gltf-validator";
+  const char* package = script == "ifc_check.cjs"   ? "web-ifc"
+                        : script == "bcf_check.cjs" ? "@parametricos/bcf-js"
+                                                    : "gltf-validator";
   if (!std::filesystem::exists(readers / "node_modules" / package / "package.json"))
     return std::string(package) + " is not installed in tests/readers/node_modules";
   return "";
@@ -42,6 +44,11 @@ std::string missing_reader(const std::string& script) {
 }  // namespace
 
 std::optional<ReaderRun> run_reader(const std::string& script, const std::filesystem::path& file) {
+  return run_reader(script, std::vector<std::filesystem::path>{file});
+}
+
+std::optional<ReaderRun> run_reader(const std::string& script,
+                                    const std::vector<std::filesystem::path>& files) {
   if (const std::string missing = missing_reader(script); !missing.empty()) {
     ADD_FAILURE() << "the independent reader " << script << " cannot run: " << missing
                   << ". Run scripts/setup.sh, which installs it.";
@@ -49,9 +56,9 @@ std::optional<ReaderRun> run_reader(const std::string& script, const std::filesy
   }
   TempDir dir;
   const std::string interpreter = script.ends_with(".py") ? python() : "node";
-  const std::string command =
-      interpreter + " '" + (source_dir() / "tests" / "readers" / script).string() + "' '" +
-      file.string() + "' >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
+  std::string command = interpreter + " '" + (source_dir() / "tests" / "readers" / script).string();
+  for (const std::filesystem::path& file : files) command += "' '" + file.string();
+  command += "' >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
   ReaderRun run;
   run.status = shell(command);
   run.err = read_bytes(dir / "err");

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,5 +24,8 @@ struct ReaderRun {
 ///   its interpreter is not installed, or it printed no JSON.
 [[nodiscard]] std::optional<ReaderRun> run_reader(const std::string& script,
                                                   const std::filesystem::path& file);
+/// The same for a reader given several files (`bcf_check.cjs` FILE.bcfzip FILE.ifc).
+[[nodiscard]] std::optional<ReaderRun> run_reader(const std::string& script,
+                                                  const std::vector<std::filesystem::path>& files);
 
 }  // namespace roomcad::test

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad validate` and the rooms of `roomcad info`, run as a user would.
 #include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -117,6 +120,27 @@ TEST(ValidateCommand, MaxFindingsPrintsTheFirstAndTheSummaryByCodeAndLevel) {
       {"validate", "--max-findings", "-1", (test::source_dir() / "examples/house.json").string()});
   EXPECT_EQ(bad.status, 2) << bad.err;
   EXPECT_NE(bad.err.find("--max-findings"), std::string::npos) << bad.err;
+}
+
+// --format bcf writes a .bcfzip (read by bcf-js in IndependentReaders.Bcf*): the same file gives
+// the same bytes; without -o, or -o without it, nothing runs.
+TEST(ValidateCommand, BcfGoesToTheFileOfDashOAndIsTheSameBytesEveryRun) {
+  TempDir dir;
+  const std::string plan = write_plan(dir, "p.json", kBroken);
+  const std::string a = (dir / "a.bcfzip").string(), b = (dir / "b.bcfzip").string();
+  EXPECT_EQ(run_roomcad({"validate", plan, "--format", "bcf", "-o", a}).status, 1);
+  EXPECT_EQ(run_roomcad({"validate", plan, "--format", "bcf", "-o", b}).status, 1);
+  const std::string bytes = test::read_bytes(a);
+  EXPECT_TRUE(bytes.starts_with("PK")) << bytes.substr(0, 8);
+  EXPECT_EQ(test::read_bytes(b), bytes);
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"validate", plan, "--format", "bcf"},
+        std::vector<std::string>{"validate", plan, "-o", (dir / "c.bcfzip").string()}}) {
+    const auto r = run_roomcad(args);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("-o,--output: give it with --format bcf"), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.bcfzip"));
 }
 
 TEST(ValidateCommand, UnreadableFileIsExit2AndBadJsonIsAParseError) {

@@ -11,12 +11,8 @@
 #include "cli/command.h"
 #include "cli/plan_checking.h"
 #include "io/atomic_write.h"
-#include "io/image_io.h"
 #include "io/report_page.h"
 #include "io/rule_set_file.h"
-#include "render/render_request.h"
-#include "render/renderer.h"
-#include "solid/build_model.h"
 #include "validation/report_diff.h"
 
 namespace roomcad::cli {
@@ -30,26 +26,6 @@ struct ReportCommandOptions {
   std::string level;
   std::string picture = "on";
 };
-
-/// A render of the plan's model from its first camera (or the default view), as PNG bytes;
-/// empty, with a note on stderr, where the model cannot be built.
-std::string picture_of(const Plan& plan) {
-  RenderRequest request;
-  request.width = 960;
-  request.height = 540;
-  const Result<RenderOptions> options = make_render_options(request, plan);
-  if (!options) return {};
-  try {
-    const Model model = build_model(plan, BuildOptions{.parts = options.value().parts});
-    FrameBuffers frame;
-    render_model(model, options.value(), frame);
-    const Result<std::string> png = png_bytes(frame.color);
-    return png ? png.value() : std::string();
-  } catch (const PreconditionError& e) {
-    std::fprintf(stderr, "roomcad report: no picture of the model: %s\n", e.what());
-    return {};
-  }
-}
 
 int run_report(const ReportCommandOptions& options) {
   const Result<RuleSet> rules = load_rule_set(options.rules, "--rules");
@@ -84,7 +60,7 @@ int run_report(const ReportCommandOptions& options) {
                        .baseline_file = options.baseline,
                        .level = options.level,
                        .picture_png = {}};
-  if (options.picture == "on") page.picture_png = picture_of(plan);
+  if (options.picture == "on") page.picture_png = render_picture_png(plan);
   if (const Status written = write_file_atomically(options.output, make_report_page(page));
       !written)
     return report_failure("report", written.error());

@@ -2,15 +2,12 @@
 // `roomcad validate PLAN [--format text|json] [--rules NAME|FILE] [--baseline OLD]
 // [--max-findings N] [--format bcf -o FILE]`: every problem of a plan, in one run; with rules
 // beyond the format's checks, and compared with an earlier revision.
-#include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <fmt/chrono.h>
 #include <fmt/format.h>
 
 #include "cli/command.h"
@@ -34,16 +31,6 @@ struct ValidateCommandOptions {
   std::string output;            ///< --format bcf: the .bcfzip to write
 };
 
-/// The date of the plan file, as BCF's CreationDate: the same file gives the same archive.
-std::string file_date(const std::string& path) {
-  std::error_code error;
-  const auto written = std::filesystem::last_write_time(path, error);
-  if (error) return "1980-01-01T00:00:00Z";
-  const auto seconds =
-      std::chrono::time_point_cast<std::chrono::seconds>(std::chrono::file_clock::to_sys(written));
-  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", seconds);
-}
-
 /// Writes the findings as BCF (io/bcf_export.h) to `options.output`.
 int write_bcf(const ValidateCommandOptions& options, const CheckedPlan& checked,
               const ReportComparison* comparison) {
@@ -57,7 +44,7 @@ int write_bcf(const ValidateCommandOptions& options, const CheckedPlan& checked,
                                                          .report = &checked.report,
                                                          .comparison = comparison,
                                                          .plan_file = options.plan,
-                                                         .date = file_date(options.plan)});
+                                                         .date = file_date_for_bcf(options.plan)});
   if (!archive) return report_failure("validate", archive.error());
   if (const Status written = write_file_atomically(options.output, archive.value()); !written)
     return report_failure("validate", written.error());

@@ -7,6 +7,10 @@
 #include <optional>
 #include <utility>
 
+#include <chrono>
+#include <filesystem>
+
+#include <fmt/chrono.h>
 #include <fmt/format.h>
 #include <zip.h>
 
@@ -163,6 +167,15 @@ Result<std::string> zip_bytes(const std::vector<Entry>& entries) {
 }
 
 }  // namespace
+
+std::string file_date_for_bcf(const std::string& path) {
+  std::error_code error;
+  const auto written = std::filesystem::last_write_time(path, error);
+  if (error) return "1980-01-01T00:00:00Z";
+  const auto seconds =
+      std::chrono::time_point_cast<std::chrono::seconds>(std::chrono::file_clock::to_sys(written));
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", seconds);
+}
 
 Result<std::string> write_bcf_archive(const BcfInput& in) {
   std::vector<Entry> entries;

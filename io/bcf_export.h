@@ -23,6 +23,11 @@ struct BcfInput {
   std::string date;                              ///< the topics' CreationDate (xs:dateTime)
 };
 
+/// @return the last write time of the file `path` as BCF's CreationDate
+///         ("2026-12-07T18:59:32Z"), or 1980-01-01 if it cannot be read: what the archive of
+///         a plan file is dated, so that the same file gives the same archive.
+[[nodiscard]] std::string file_date_for_bcf(const std::string& path);
+
 /// @return the bytes of the .bcfzip: `bcf.version`, then per finding `GUID/markup.bcf` and
 ///         `GUID/viewpoint.bcfv`. A topic's GUID is hashed from the finding's identity
 ///         (item_ids: its code and objects), so an unchanged finding keeps it in every revision;

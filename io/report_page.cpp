@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <span>
 #include <string_view>
@@ -13,7 +14,11 @@
 #include <fmt/format.h>
 
 #include "geometry/rooms.h"
+#include "io/image_io.h"
 #include "io/svg_writer.h"
+#include "render/render_request.h"
+#include "render/renderer.h"
+#include "solid/build_model.h"
 #include "validation/room_labels.h"
 
 namespace roomcad {
@@ -295,6 +300,24 @@ std::string options_html(std::string_view key, std::string_view all,
 }
 
 }  // namespace
+
+std::string render_picture_png(const Plan& plan) {
+  RenderRequest request;
+  request.width = 960;
+  request.height = 540;
+  const Result<RenderOptions> options = make_render_options(request, plan);
+  if (!options) return {};
+  try {
+    const Model model = build_model(plan, BuildOptions{.parts = options.value().parts});
+    FrameBuffers frame;
+    render_model(model, options.value(), frame);
+    const Result<std::string> png = png_bytes(frame.color);
+    return png ? png.value() : std::string();
+  } catch (const PreconditionError& e) {
+    std::fprintf(stderr, "roomcad report: no picture of the model: %s\n", e.what());
+    return {};
+  }
+}
 
 std::string make_report_page(const ReportPageInput& in) {
   const Plan& plan = *in.plan;

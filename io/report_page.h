@@ -26,6 +26,11 @@ struct ReportPageInput {
   std::string picture_png;  ///< the bytes of a render of the model; empty: none
 };
 
+/// @return the page's picture: the model rendered from the plan's first camera (or the
+///         default view) at 960 x 540, as PNG bytes; empty, with a note on stderr, where the
+///         model cannot be built. O(build + render).
+[[nodiscard]] std::string render_picture_png(const Plan& plan);
+
 /// @return the page. Deterministic: the same input gives the same bytes. O(n log n) for the
 ///         plan's objects and the findings (rooms are found level by level).
 /// @pre input.plan and input.report are set; item_levels, if set, has one entry per item.

@@ -226,7 +226,7 @@ void register_reading(PlanClass& plan) {
           [](const PyPlan& self, const std::string& rules) {
             const RuleSet set = take(load_rule_set(rules, "rules"));
             require(check_accessible_rooms(self.plan, set));
-            PyReport out{check(self, set), {}};
+            PyReport out{check(self, set), {}, self.plan};
             out.format.ids = set.any_enabled();  // as `roomcad validate` prints it
             out.format.plan_file = self.file;
             return out;

@@ -5,6 +5,13 @@
 #include <string>
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "io/atomic_write.h"
+#include "io/bcf_export.h"
+#include "io/report_page.h"
+#include "python/py_error.h"
+#include "validation/report_tally.h"
 
 namespace py = pybind11;
 
@@ -76,6 +83,38 @@ void register_report(py::module_& m) {
                 format_report_json(r.report, r.format));
           },
           "The object `roomcad validate --format json` prints: {'ok', 'errors', 'warnings'}.")
+      .def(
+          "to_html",
+          [](const PyReport& r, bool picture) {
+            const std::vector<std::string> levels = item_levels(r.report, r.plan);
+            ReportPageInput page{.title = r.format.plan_file,
+                                 .plan = &r.plan,
+                                 .report = &r.report,
+                                 .item_levels = &levels,
+                                 .comparison = nullptr,
+                                 .baseline_file = {},
+                                 .level = {},
+                                 .picture_png = {}};
+            if (picture) page.picture_png = render_picture_png(r.plan);
+            return make_report_page(page);
+          },
+          py::arg("picture") = false,
+          "The page `roomcad report PLAN -o PAGE.html` writes (with picture=True, its picture "
+          "of\nthe model; without, as `--picture off`).")
+      .def(
+          "to_bcf",
+          [](const PyReport& r, const std::filesystem::path& path) {
+            const std::string archive =
+                take(write_bcf_archive({.plan = &r.plan,
+                                        .report = &r.report,
+                                        .comparison = nullptr,
+                                        .plan_file = r.format.plan_file,
+                                        .date = file_date_for_bcf(r.format.plan_file)}));
+            require(write_file_atomically(path, archive));
+          },
+          py::arg("path"),
+          "Writes the findings as BCF 2.1, the bytes of `roomcad validate PLAN --format bcf -o "
+          "PATH`.\n@raise roomcad.Error io_error")
       .def("__str__",
            [](const PyReport& r) { return format_report_text(r.report, false, r.format); })
       .def("__repr__",

@@ -35,6 +35,7 @@ struct PyPlan {
 struct PyReport {
   Report report;
   ReportFormatOptions format;
+  Plan plan;  ///< the plan validated, for to_html and to_bcf
 };
 
 /// roomcad.Model: a built model, its plan (for the analytic volume of check()) and its

@@ -80,3 +80,19 @@ def test_render_is_the_pixels_of_render(roomcad_exe, path, tmp_path):
     pixels = roomcad.Plan.load(path).render(width=192, height=108)
     assert pixels.shape == (108, 192, 3) and pixels.dtype == np.uint8
     assert np.array_equal(pixels, read_png_rgb(tmp_path / "cli.png"))
+
+
+# The report page and the BCF archive: report.to_html() is the page of `roomcad report
+# --picture off`, report.to_bcf(path) the archive of `roomcad validate --format bcf`.
+@pytest.mark.parametrize("name", ["house.json", "sweethome3d/3-BedroomApartment.json"])
+def test_report_page_and_bcf_are_the_commands(roomcad_exe, source_dir, tmp_path, name):
+    path = str(source_dir / "examples" / name)
+    report = roomcad.Plan.load(path).validate()
+    run_cli(roomcad_exe, "report", path, "-o", tmp_path / "page.html", "--picture", "off",
+            check=False)
+    assert report.to_html() == (tmp_path / "page.html").read_text()
+    assert "data:image/png;base64," in report.to_html(picture=True)
+    run_cli(roomcad_exe, "validate", path, "--format", "bcf", "-o", tmp_path / "cli.bcfzip",
+            check=False)
+    report.to_bcf(tmp_path / "py.bcfzip")
+    assert (tmp_path / "py.bcfzip").read_bytes() == (tmp_path / "cli.bcfzip").read_bytes()

@@ -190,7 +190,8 @@ TEST(IndependentReaders, EzdxfReadsEveryExamplePlanWithItsLayersAndEntities) {
 // The checks above mean something only if the readers refuse bad files.
 // The findings of bundled homes as BCF, read by @parametricos/bcf-js: one topic per finding,
 // each selecting components that are IfcRoot GlobalIds of the plan's IFC export as web-ifc reads
-// it, with a camera; a later revision keeps the GUIDs of the findings it keeps.
+// it, with a camera and a PNG snapshot from it; a later revision keeps the GUIDs of the findings it
+// keeps.
 TEST(IndependentReaders, BcfJsReadsTheFindingsAndTheirComponentsAreTheIfcExportsObjects) {
   TempDir dir;
   std::size_t components = 0;
@@ -217,6 +218,7 @@ TEST(IndependentReaders, BcfJsReadsTheFindingsAndTheirComponentsAreTheIfcExports
       guids.insert(topic["guid"].get<std::string>());
       EXPECT_EQ(topic["status"], "Open");
       EXPECT_TRUE(topic["camera"].get<bool>()) << topic["title"];
+      EXPECT_GT(topic["snapshot"].get<int>(), 1000) << topic["title"];  // a PNG from the camera
       for (const auto& c : topic["components"]) {
         EXPECT_TRUE(global_ids.contains(c.get<std::string>())) << topic["title"] << ' ' << c;
         ++components;

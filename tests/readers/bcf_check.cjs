@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Opens a BCF archive in @parametricos/bcf-js (a BCF 2.1 reader from npm) and prints what it
-// read as JSON: the version and each topic's GUID, title, status, labels and the IFC GlobalIds
-// its viewpoints select; with an IFC file too, every IfcRoot GlobalId web-ifc reads from it.
+// read as JSON: the version and each topic's GUID, title, status, labels, the IFC GlobalIds
+// its viewpoints select and the bytes of their PNG snapshots; with an IFC file too, every IfcRoot GlobalId web-ifc reads from it.
 // Exit status: 0 read, 1 the reader failed or logged an error, 2 usage.
 // Usage: node tests/readers/bcf_check.cjs FILE.bcfzip [FILE.ifc]
 'use strict';
@@ -41,12 +41,17 @@ async function main() {
   for (const markup of reader.markups) {
     const t = markup.topic;
     const components = [];
+    let snapshot = 0;  // the bytes of the viewpoints' PNG snapshots, as the reader returns them
     for (const v of markup.viewpoints) {
       const selection = v.components && v.components.selection;
       for (const c of selection || []) components.push(c.ifc_guid);
+      const png = await v.getSnapshot();
+      if (png) snapshot += Buffer.from(png, 'base64').subarray(0, 8).equals(
+        Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a])) ? Buffer.from(png, 'base64').length : 0;
     }
     out.topics.push({ guid: t.guid, title: t.title, status: t.topic_status, type: t.topic_type,
-      labels: t.labels || [], components, camera: markup.viewpoints.some((v) => !!v.perspective_camera) });
+      labels: t.labels || [], components, snapshot,
+      camera: markup.viewpoints.some((v) => !!v.perspective_camera) });
   }
   if (process.argv[3]) out.ifc_global_ids = await globalIds(process.argv[3]);
   process.stdout.write(JSON.stringify(out) + '\n');

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `roomcad report PLAN -o report.html [--rules R] [--baseline OLD] [--level ID]
-// [--picture on|off]`: the plan's findings as one self-contained HTML page (io/report_page.h).
+// [--picture on|off] [--repair]`: the plan's findings as one self-contained HTML page
+// (io/report_page.h).
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -13,6 +15,7 @@
 #include "io/atomic_write.h"
 #include "io/report_page.h"
 #include "io/rule_set_file.h"
+#include "repair/repair.h"
 #include "validation/report_diff.h"
 
 namespace roomcad::cli {
@@ -25,7 +28,27 @@ struct ReportCommandOptions {
   std::string baseline;
   std::string level;
   std::string picture = "on";
+  bool repair = false;
 };
+
+/// The edits `roomcad repair` (default tolerance) would make, as the page lists them.
+std::vector<ReportPageEdit> repair_edits(const Plan& plan) {
+  const Result<RepairResult> repaired = repair_plan(plan);
+  std::vector<ReportPageEdit> edits;
+  if (!repaired) return edits;
+  for (const RepairEdit& e : repaired.value().edits) {
+    ReportPageEdit edit{{e.object}, {}};
+    for (const FindingKey& f : e.clears)
+      for (const std::string& o : f.objects)
+        if (std::find(edit.objects.begin(), edit.objects.end(), o) == edit.objects.end())
+          edit.objects.push_back(o);
+    edit.text = fmt::format("{} '{}': clears {} finding{}, moves the solid by at most {:.1f} mm",
+                            to_string(e.change), e.object, e.clears.size(),
+                            e.clears.size() == 1 ? "" : "s", e.moves * 1000.0);
+    edits.push_back(std::move(edit));
+  }
+  return edits;
+}
 
 int run_report(const ReportCommandOptions& options) {
   const Result<RuleSet> rules = load_rule_set(options.rules, "--rules");
@@ -59,8 +82,14 @@ int run_report(const ReportCommandOptions& options) {
                        .comparison = comparison ? &*comparison : nullptr,
                        .baseline_file = options.baseline,
                        .level = options.level,
-                       .picture_png = {}};
+                       .picture_png = {},
+                       .edits = {},
+                       .repaired = false};
   if (options.picture == "on") page.picture_png = render_picture_png(plan);
+  if (options.repair) {
+    page.edits = repair_edits(plan);
+    page.repaired = true;
+  }
   if (const Status written = write_file_atomically(options.output, make_report_page(page));
       !written)
     return report_failure("report", written.error());
@@ -99,6 +128,9 @@ void add_report_command(CLI::App& root, Commands& commands) {
                   "a rendered picture of the model in the page (off: quicker on large plans)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  app->add_flag("--repair", options->repair,
+                "list the edits `roomcad repair` would make (default tolerance), each selectable "
+                "on the plans like a finding");
   app->footer(
       "Exit status: 0 written, the plan has no errors; 1 written, the plan has errors; 2 could\n"
       "not run (bad arguments, PLAN or OLD unreadable, an unknown level, the page unwritable).\n"

@@ -44,9 +44,10 @@ svg.plan { width: 100%; height: 60vh; display: block; background: #fff; }
 .opening.selected { fill: #ffb0b0 !important; }
 #filters select { margin-right: 8px; }
 ol.findings { padding-left: 0; list-style: none; max-height: 70vh; overflow: auto; }
-li.finding, li.fixed { border-left: 4px solid #c00; margin: 4px 0; padding: 4px 8px; cursor: pointer; }
+li.finding, li.fixed, li.edit { border-left: 4px solid #c00; margin: 4px 0; padding: 4px 8px; cursor: pointer; }
 li.warning { border-left-color: #d90; } li.fixed { border-left-color: #080; cursor: default; }
-li.finding.current { background: #fde8e8; outline: 1px solid #c00; }
+li.edit { border-left-color: #06c; }
+li.current { background: #fde8e8; outline: 1px solid #c00; }
 li.hidden { display: none; }
 .code { font-weight: bold; } .fix { color: #555; } .status { font-size: 12px; color: #555; }
 img.picture { max-width: 100%; border: 1px solid #ccc; }
@@ -54,7 +55,7 @@ img.picture { max-width: 100%; border: 1px solid #ccc; }
 
 constexpr std::string_view kScript = R"(
 (function () {
-  const items = Array.from(document.querySelectorAll('li.finding'));
+  const items = Array.from(document.querySelectorAll('li.finding, li.edit'));
   const byId = new Map();
   document.querySelectorAll('[data-id]').forEach(function (e) {
     const id = e.getAttribute('data-id');
@@ -379,6 +380,17 @@ std::string make_report_page(const ReportPageInput& in) {
                         escape_xml(in.baseline_file));
     for (const Diagnostic& d : in.comparison->fixed.items)
       page += item_html(d, "fixed", "", "", "fixed");
+    page += "</ol>\n";
+  }
+  if (in.repaired) {
+    page += fmt::format("<h2>Repair: {} edits</h2>\n<ol class=\"edits\">\n", in.edits.size());
+    for (std::size_t k = 0; k < in.edits.size(); ++k) {
+      std::string objects;
+      for (const std::string& o : in.edits[k].objects) objects += (objects.empty() ? "" : " ") + o;
+      page += fmt::format(
+          "<li class=\"edit\" id=\"edit-{}\" data-objects=\"{}\" tabindex=\"0\">{}</li>\n", k + 1,
+          escape_xml(objects), escape_xml(in.edits[k].text));
+    }
     page += "</ol>\n";
   }
   page += "</section></div>\n";

@@ -14,6 +14,12 @@
 
 namespace roomcad {
 
+/// An edit the page lists (`roomcad report --repair`): the objects it touches and what it does.
+struct ReportPageEdit {
+  std::vector<std::string> objects;  ///< the edited object first, then those of what it clears
+  std::string text;                  ///< "trim wall 'a': clears 2 errors, moves the solid 0 mm"
+};
+
 /// What the page shows. Pointers are not owned and may be null where optional.
 struct ReportPageInput {
   std::string title;                                      ///< the plan file, as given
@@ -24,6 +30,9 @@ struct ReportPageInput {
   std::string baseline_file;
   std::string level;        ///< draw and list only this level's objects and findings
   std::string picture_png;  ///< the bytes of a render of the model; empty: none
+  /// With `--repair`: the edits `roomcad repair` would make, each selectable like a finding.
+  std::vector<ReportPageEdit> edits{};
+  bool repaired = false;  ///< whether repair ran (a section even when it makes no edit)
 };
 
 /// @return the page's picture: the model rendered from the plan's first camera (or the

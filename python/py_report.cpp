@@ -94,7 +94,9 @@ void register_report(py::module_& m) {
                                  .comparison = nullptr,
                                  .baseline_file = {},
                                  .level = {},
-                                 .picture_png = {}};
+                                 .picture_png = {},
+                                 .edits = {},
+                                 .repaired = false};
             if (picture) page.picture_png = render_picture_png(r.plan);
             return make_report_page(page);
           },

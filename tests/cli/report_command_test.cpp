@@ -95,6 +95,21 @@ TEST(ReportCommand, BaselineMarksFindingsNewOrUnchangedAndListsTheFixed) {
             std::string::npos);
 }
 
+// --repair lists the edits `roomcad repair` would make: on the apartment, a wall trimmed and
+// two doors drawn over each other made one, each edit naming its object first.
+TEST(ReportCommand, RepairListsTheEditsRepairWouldMake) {
+  TempDir dir;
+  const std::string page = (dir / "a.html").string();
+  const auto r = run_roomcad({"report", source("examples/sweethome3d/1-BedroomApartment.json"),
+                              "-o", page, "--repair", "--picture", "off"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  const std::string html = test::read_bytes(page);
+  EXPECT_NE(html.find("<h2>Repair: 3 edits</h2>"), std::string::npos);
+  EXPECT_NE(html.find("id=\"edit-1\" data-objects=\"wall5 wall4\""), std::string::npos);
+  EXPECT_NE(html.find("trim &apos;wall5&apos;: clears 1 finding"), std::string::npos);
+  EXPECT_EQ(count(html, "<li class=\"edit\""), 3u);
+}
+
 TEST(ReportCommand, BadArgumentsExit2AndWriteNothing) {
   TempDir dir;
   const std::string page = (dir / "x.html").string();

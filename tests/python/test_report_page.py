@@ -118,3 +118,18 @@ def test_the_page_of_the_largest_home_is_not_blank(browser, roomcad_exe, tmp_pat
     assert red > 100, "the selected finding's objects are not drawn in red"
     assert console_errors(browser) == []
     assert os.path.getsize(page) < 4 * 1024 * 1024
+
+
+def test_selecting_a_repair_edit_marks_its_objects(browser, roomcad_exe, tmp_path):
+    home = SOURCE_DIR / "examples" / "sweethome3d" / "1-BedroomApartment.json"
+    page = write_report(roomcad_exe, home, tmp_path / "repair.html", "--picture", "off", "--repair")
+    browser.get(page.as_uri())
+    edits = browser.find_elements("css selector", "li.edit")
+    assert len(edits) == 3
+    for edit in edits:
+        edit.click()
+        objects = set(edit.get_attribute("data-objects").split())
+        selected = {e.get_attribute("data-id") for e in browser.find_elements("css selector", ".selected")}
+        assert selected and selected <= objects
+        assert browser.execute_script("return location.hash") == "#" + edit.get_attribute("id")
+    assert console_errors(browser) == []

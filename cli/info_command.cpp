@@ -15,6 +15,7 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "validation/room_labels.h"
 #include "validation/validate.h"
 
 namespace roomcad::cli {
@@ -169,8 +170,9 @@ std::string json_rooms(const std::vector<LevelRooms>& levels) {
 }
 
 /// One line per room: "room 1  14.44 m2  walls a, b  doors d  windows none", after the name of
-/// its level in a plan with levels ("room 1 of level 'L1'").
-std::string text_rooms(const std::vector<LevelRooms>& levels) {
+/// its level in a plan with levels ("room 1 of level 'L1'") and the name the plan gives it
+/// ("room 2 (Kitchen)").
+std::string text_rooms(const std::vector<LevelRooms>& levels, const Plan& plan) {
   const auto list = [](const std::vector<std::string>& ids) {
     return ids.empty() ? std::string("none") : fmt::format("{}", fmt::join(ids, ", "));
   };
@@ -178,13 +180,16 @@ std::string text_rooms(const std::vector<LevelRooms>& levels) {
   for (const LevelRooms& l : levels) count += l.rooms.size();
   std::string out =
       fmt::format("  rooms     {}{}\n", count, count == 0 ? " (no closed region of walls)" : "");
-  for (const LevelRooms& l : levels)
+  for (const LevelRooms& l : levels) {
+    const std::vector<const RoomLabel*> labels = room_labels(l.rooms, plan);
     for (std::size_t i = 0; i < l.rooms.size(); ++i) {
       const Room& r = l.rooms[i];
-      out += fmt::format("    room {}{}  {:.2f} m2 clear  walls {}  doors {}  windows {}\n", i + 1,
-                         l.level.empty() ? "" : fmt::format(" of level '{}'", l.level), r.area,
+      out += fmt::format("    room {}{}{}  {:.2f} m2 clear  walls {}  doors {}  windows {}\n",
+                         i + 1, l.level.empty() ? "" : fmt::format(" of level '{}'", l.level),
+                         labels[i] ? fmt::format(" ({})", labels[i]->name) : "", r.area,
                          list(r.walls), list(r.doors), list(r.windows));
     }
+  }
   return out;
 }
 
@@ -241,7 +246,7 @@ void print_text(const std::string& file, const Plan& plan, const PlanInfo& info)
   } else {
     out += "  bounds    none (no walls)\n";
   }
-  out += text_rooms(info.rooms);
+  out += text_rooms(info.rooms, plan);
   std::fputs(out.c_str(), stdout);
 }
 

@@ -174,6 +174,15 @@ TEST(InfoCommand, ListsRoomsWithClearAreas) {
   EXPECT_TRUE(j["rooms"][1]["windows"].empty());
 }
 
+// The names the plan gives its rooms (`rooms[]`) follow their numbers.
+TEST(InfoCommand, NamedRoomsShowTheirNames) {
+  const auto r = run_roomcad({"info", (test::source_dir() / "examples/house.json").string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("    room 1 (Entry)  13.16 m2 clear  walls coat_closet,"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("    room 6 (WC)  4.00 m2 clear"), std::string::npos) << r.out;
+}
+
 TEST(InfoCommand, RoomsAreFoundLevelByLevel) {
   // The bundled two-storey house: the first floor's partition stands over the ground floor's
   // living room, which is one room of 65 m2, not two halves.

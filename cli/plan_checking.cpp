@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/plan_checking.h"
 
+#include <fmt/format.h>
+
 #include "io/plan_check.h"
 #include "io/plan_json.h"
 #include "io/text_file.h"
@@ -19,6 +21,12 @@ Result<CheckedPlan> check_plan_file(const std::string& path, const RuleSet& rule
   CheckedPlan checked{check_plan(read.value(), &reading, rules), {}, std::move(read).value()};
   checked.levels = item_levels(checked.report, *checked.plan);
   return checked;
+}
+
+Error not_a_plan(const CheckedPlan& checked, const std::string& path, std::string_view context) {
+  return {Code::parse_error,
+          fmt::format("{}{} is not a plan ({} problems: `roomcad validate {}` lists them)", context,
+                      path, checked.report.items.size(), path)};
 }
 
 }  // namespace roomcad::cli

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/error.h"
@@ -26,5 +27,11 @@ struct CheckedPlan {
 /// @return the findings, or an error: the file cannot be read, or the rules name rooms the
 ///         plan does not have.
 [[nodiscard]] Result<CheckedPlan> check_plan_file(const std::string& path, const RuleSet& rules);
+
+/// @return the error of a command that needs the plan itself when the file at `path` could not
+///         be read as one: "PATH is not a plan (N problems: `roomcad validate PATH` lists
+///         them)", prefixed by `context` ("--format bcf: ").
+[[nodiscard]] Error not_a_plan(const CheckedPlan& checked, const std::string& path,
+                               std::string_view context = {});
 
 }  // namespace roomcad::cli

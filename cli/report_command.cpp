@@ -56,13 +56,7 @@ int run_report(const ReportCommandOptions& options) {
   const Result<CheckedPlan> checked = check_plan_file(options.plan, rules.value());
   if (!checked) return report_failure("report", checked.error());
   const CheckedPlan& current = checked.value();
-  if (!current.plan) {  // unreadable as a plan: the reading problems, as validate lists them
-    return report_failure(
-        "report", Error{Code::parse_error,
-                        fmt::format("{} is not a plan ({} problems: `roomcad validate {}` lists "
-                                    "them)",
-                                    options.plan, current.report.items.size(), options.plan)});
-  }
+  if (!current.plan) return report_failure("report", not_a_plan(current, options.plan));
   const Plan& plan = *current.plan;
   if (!options.level.empty() && std::none_of(plan.levels.begin(), plan.levels.end(),
                                              [&](const Level& l) { return l.id == options.level; }))

@@ -35,11 +35,7 @@ struct ValidateCommandOptions {
 int write_bcf(const ValidateCommandOptions& options, const CheckedPlan& checked,
               const ReportComparison* comparison) {
   if (!checked.plan)
-    return report_failure(
-        "validate", Error{Code::parse_error,
-                          fmt::format("--format bcf: {} is not a plan ({} "
-                                      "problems: `roomcad validate {}` lists them)",
-                                      options.plan, checked.report.items.size(), options.plan)});
+    return report_failure("validate", not_a_plan(checked, options.plan, "--format bcf: "));
   const Result<std::string> archive = write_bcf_archive({.plan = &*checked.plan,
                                                          .report = &checked.report,
                                                          .comparison = comparison,

@@ -19,6 +19,7 @@
 #include "render/render_request.h"
 #include "render/renderer.h"
 #include "solid/build_model.h"
+#include "validation/report_tally.h"
 #include "validation/room_labels.h"
 
 namespace roomcad {
@@ -274,21 +275,13 @@ std::string item_html(const Diagnostic& d, std::string_view css, std::string_vie
 }
 
 /// A table of counts: rows by name, columns errors and warnings.
-std::string counts_table(std::string_view heading,
-                         const std::vector<std::pair<std::string, std::array<int, 2>>>& rows) {
+std::string counts_table(std::string_view heading, const std::vector<FindingCount>& rows) {
   std::string out = fmt::format(
       "<table class=\"counts\"><tr><th>{}</th><th>errors</th><th>warnings</th></tr>\n", heading);
-  for (const auto& [name, n] : rows)
-    out +=
-        fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n", escape_xml(name), n[0], n[1]);
+  for (const FindingCount& row : rows)
+    out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n", escape_xml(row.name),
+                       row.errors, row.warnings);
   return out + "</table>\n";
-}
-
-void count(std::vector<std::pair<std::string, std::array<int, 2>>>& rows, const std::string& name,
-           const Diagnostic& d) {
-  auto it = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.first == name; });
-  if (it == rows.end()) it = rows.insert(rows.end(), {name, {0, 0}});
-  ++it->second[d.severity == Severity::error ? 0 : 1];
 }
 
 std::string options_html(std::string_view key, std::string_view all,
@@ -330,18 +323,18 @@ std::string make_report_page(const ReportPageInput& in) {
   for (std::size_t i = 0; i < report.items.size(); ++i)
     if (in.level.empty() || level_of(i) == in.level) shown.push_back(i);
 
-  std::vector<std::pair<std::string, std::array<int, 2>>> by_code, by_level;
-  std::vector<std::string> codes, item_level_names;
+  std::vector<FindingCount> by_code, by_level;
+  std::vector<std::string> item_level_names;  // the filter's values: "" for no level
   for (const std::size_t i : shown) {
     const Diagnostic& d = report.items[i];
-    count(by_code, std::string(to_string(d.code)), d);
-    count(by_level, level_of(i).empty() ? "(no level)" : level_of(i), d);
-    if (std::find(codes.begin(), codes.end(), to_string(d.code)) == codes.end())
-      codes.emplace_back(to_string(d.code));
+    count_finding(by_code, to_string(d.code), d);
+    count_finding(by_level, level_of(i).empty() ? "(no level)" : level_of(i), d);
     if (std::find(item_level_names.begin(), item_level_names.end(), level_of(i)) ==
         item_level_names.end())
       item_level_names.push_back(level_of(i));
   }
+  std::vector<std::string> codes;
+  for (const FindingCount& c : by_code) codes.push_back(c.name);
   const bool passes = report.ok();
   std::string page = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>roomcad report: "

@@ -11,29 +11,15 @@
 namespace roomcad {
 namespace {
 
-/// Errors and warnings of one group of items.
-struct Count {
-  std::string name;
-  std::size_t errors = 0, warnings = 0;
-};
-
-/// Adds an item of `severity` to the group `name`, kept in order of first appearance.
-void tally(std::vector<Count>& counts, std::string_view name, Severity severity) {
-  auto it =
-      std::find_if(counts.begin(), counts.end(), [&](const Count& c) { return c.name == name; });
-  if (it == counts.end()) it = counts.insert(counts.end(), Count{std::string(name)});
-  ++(severity == Severity::error ? it->errors : it->warnings);
-}
-
 std::string counted(std::size_t n, std::string_view word) {
   return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
 }
 
-void print(std::string& out, std::string_view heading, const std::vector<Count>& counts) {
+void print(std::string& out, std::string_view heading, const std::vector<FindingCount>& counts) {
   std::size_t width = 0;
-  for (const Count& c : counts) width = std::max(width, c.name.size());
+  for (const FindingCount& c : counts) width = std::max(width, c.name.size());
   out += fmt::format("{}\n", heading);
-  for (const Count& c : counts) {
+  for (const FindingCount& c : counts) {
     std::string both;
     if (c.errors) both = counted(c.errors, "error");
     if (c.warnings) both += (both.empty() ? "" : ", ") + counted(c.warnings, "warning");
@@ -42,6 +28,14 @@ void print(std::string& out, std::string_view heading, const std::vector<Count>&
 }
 
 }  // namespace
+
+void count_finding(std::vector<FindingCount>& counts, std::string_view name,
+                   const Diagnostic& item) {
+  auto it = std::find_if(counts.begin(), counts.end(),
+                         [&](const FindingCount& c) { return c.name == name; });
+  if (it == counts.end()) it = counts.insert(counts.end(), FindingCount{std::string(name)});
+  ++(item.severity == Severity::error ? it->errors : it->warnings);
+}
 
 std::vector<std::string> item_levels(const Report& report, const Plan& plan) {
   if (plan.levels.empty()) return std::vector<std::string>(report.items.size());  // none
@@ -67,11 +61,11 @@ std::vector<std::string> item_levels(const Report& report, const Plan& plan) {
 }
 
 std::string format_report_tally(const Report& report, const std::vector<std::string>& levels) {
-  std::vector<Count> by_code, by_level;
+  std::vector<FindingCount> by_code, by_level;
   for (std::size_t i = 0; i < report.items.size(); ++i) {
     const Diagnostic& d = report.items[i];
-    tally(by_code, to_string(d.code), d.severity);
-    if (!levels.empty()) tally(by_level, levels[i].empty() ? "(no level)" : levels[i], d.severity);
+    count_finding(by_code, to_string(d.code), d);
+    if (!levels.empty()) count_finding(by_level, levels[i].empty() ? "(no level)" : levels[i], d);
   }
   std::string out;
   print(out, "by code:", by_code);

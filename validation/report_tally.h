@@ -4,12 +4,24 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "plan/plan.h"
 #include "validation/report.h"
 
 namespace roomcad {
+
+/// Errors and warnings of one group of findings: a code, or a level.
+struct FindingCount {
+  std::string name;
+  std::size_t errors = 0, warnings = 0;
+};
+
+/// Counts `item` in the group `name` of `counts`, added after the others when new (groups stay
+/// in the order of their first item). O(groups).
+void count_finding(std::vector<FindingCount>& counts, std::string_view name,
+                   const Diagnostic& item);
 
 /// @return the level of each item of `report`, in order: that of its first object on a level
 /// (a wall's own, an opening's wall's, a slab's), or "" where none is. O(n + m) for n items

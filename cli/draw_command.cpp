@@ -141,8 +141,9 @@ void add_draw_command(CLI::App& root, Commands& commands) {
   add_verbose_flag(*app, o->verbose);
   app->add_flag("--findings", o->findings,
                 "plan view: mark what validate --rules finds in red, with its code");
-  app->add_option("--rules", o->rules,
-                  "the rule set of --findings: default, accessibility, all or a rules file");
+  app->add_option(
+      "--rules", o->rules,
+      "the rule set of --findings: default, accessibility, insolation, all or a rules file");
   commands.push_back({app, [o] { return run_draw(*o); }});
 }
 

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "daylight/insolation_rule.h"
 #include "io/plan_check.h"
 #include "io/plan_json.h"
 #include "io/text_file.h"
@@ -19,6 +20,7 @@ Result<CheckedPlan> check_plan_file(const std::string& path, const RuleSet& rule
   if (const Status rooms = check_accessible_rooms(read.value(), rules); !rooms)
     return rooms.error();
   CheckedPlan checked{check_plan(read.value(), &reading, rules), {}, std::move(read).value()};
+  add_insolation_findings(*checked.plan, rules, checked.report);
   checked.levels = item_levels(checked.report, *checked.plan);
   return checked;
 }

@@ -23,7 +23,8 @@ struct CheckedPlan {
 };
 
 /// Reading problems (with their lines and columns) then, if the plan could be read, what
-/// validation and the rules find (io/plan_check.h).
+/// validation and the rules find (io/plan_check.h), the insolation rule's included
+/// (daylight/insolation_rule.h).
 /// @return the findings, or an error: the file cannot be read, or the rules name rooms the
 ///         plan does not have.
 [[nodiscard]] Result<CheckedPlan> check_plan_file(const std::string& path, const RuleSet& rules);

@@ -7,7 +7,8 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(roomcad_modules core exact plan geometry mesh solid validation repair render io import view)
+set(roomcad_modules core exact plan geometry mesh solid validation repair daylight render io import
+                    view)
 
 # Everything at once: `target_link_libraries(app PRIVATE roomcad::roomcad)`. The executable
 # owns the name `roomcad` in this build, hence another target name exported as `roomcad`.

@@ -26,6 +26,7 @@ enum class Code : std::uint8_t {
   opening_blocked,       ///< an opening's hole shares interior volume with a wall or slab
   out_of_bounds,         ///< outside the site or above max_height
   slab_overlap,          ///< two slabs share interior volume (version 2)
+  obstruction_overlap,   ///< an obstruction shares interior volume with a wall or slab
   // Warnings of a plan.
   unknown_field,        ///< a field the format does not define (kept as is)
   door_above_floor,     ///< a door whose sill is above its wall's base
@@ -42,6 +43,7 @@ enum class Code : std::uint8_t {
   window_sill_low,
   window_sill_high,
   duplicate_object,
+  insolation_short,  ///< a room gets less direct sun than its rule set asks (rule `insolation`)
   // What importing a home had to approximate or leave out (warnings).
   import_zero_length_wall,
   import_t_junction,

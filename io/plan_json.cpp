@@ -87,6 +87,11 @@ class LineWriter {
     for (std::size_t i = 0; i < polygon.size(); ++i) out_ += i ? ", " : "", value(polygon[i]);
     out_ += ']';
   }
+  void value(const std::optional<GeoLocation>& location) {
+    out_ += '{';
+    LineWriter(out_).object(location.value_or(GeoLocation{}));
+    out_ += '}';
+  }
   void value(const std::vector<Polygon>& polygons) {
     out_ += '[';
     for (std::size_t i = 0; i < polygons.size(); ++i) out_ += i ? ", " : "", value(polygons[i]);
@@ -136,6 +141,10 @@ std::string_view unwritable(const T& v) {
     return v && non_finite(*v) ? not_finite : "";
   else if constexpr (std::is_same_v<T, Vec3>)
     return non_finite(v.x) || non_finite(v.y) || non_finite(v.z) ? not_finite : "";
+  else if constexpr (std::is_same_v<T, std::optional<GeoLocation>>)
+    return v && (non_finite(v->latitude) || non_finite(v->longitude) || non_finite(v->utc_offset))
+               ? not_finite
+               : "";
   else if constexpr (std::is_same_v<T, std::vector<Polygon>>)
     return std::any_of(v.begin(), v.end(), [](const Polygon& p) { return non_finite(p); })
                ? not_finite
@@ -198,12 +207,16 @@ std::string write_plan_text(const Plan& plan) {
   write_array(out, "walls", plan.walls);
   write_array(out, "openings", plan.openings);
   if (v2) write_array(out, "slabs", plan.slabs);
+  if (!plan.obstructions.empty()) write_array(out, "obstructions", plan.obstructions);
   if (!plan.rooms.empty()) write_array(out, "rooms", plan.rooms);  // only where named
   write_array(out, "lights", plan.lights);
   write_array(out, "cameras", plan.cameras);
   // Top-level unknown fields: one per line after the known ones.
   std::vector<std::string_view> written{kTopLevelKeys.begin(), kTopLevelKeys.end()};
-  if (!v2) std::erase_if(written, [](std::string_view k) { return k == "levels" || k == "slabs"; });
+  if (!v2)
+    std::erase_if(written, [](std::string_view k) {
+      return k == "levels" || k == "slabs" || k == "obstructions";
+    });
   for (const ExtraField* e : writable_extras(plan.extra, written)) {
     out += ",\n  ";
     append_string(out, e->key);

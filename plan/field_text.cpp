@@ -36,6 +36,17 @@ bool parse_value(std::string_view text, Polygon& out) { return store(out, parse_
 bool parse_value(std::string_view text, std::vector<Polygon>& out) {
   return store(out, parse_polygons(text));
 }
+/// "latitude,longitude" or "latitude,longitude,utc_offset".
+bool parse_value(std::string_view text, std::optional<GeoLocation>& out) {
+  GeoLocation location = out.value_or(GeoLocation{});
+  if (const auto three = parse_vec3(text))
+    location.latitude = three->x, location.longitude = three->y, location.utc_offset = three->z;
+  else if (const auto two = parse_point2(text))
+    location.latitude = two->x, location.longitude = two->y;
+  else return false;
+  out = std::move(location);
+  return true;
+}
 
 std::string value_text(double value) { return format_number(value); }
 std::string value_text(const std::optional<double>& value) {
@@ -50,6 +61,10 @@ std::string value_text(const std::array<std::int64_t, 2>& value) {
 }
 std::string value_text(const Polygon& value) { return format_polygon(value); }
 std::string value_text(const std::vector<Polygon>& value) { return format_polygons(value); }
+std::string value_text(const std::optional<GeoLocation>& value) {
+  if (!value) return std::string(kNoValue);
+  return format_vec3({value->latitude, value->longitude, value->utc_offset});
+}
 
 std::string wrong_value_message(std::string_view verb, std::string_view object,
                                 std::string_view field, std::string_view hint,

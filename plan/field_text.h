@@ -29,6 +29,7 @@ bool parse_value(std::string_view text, std::string& out);
 bool parse_value(std::string_view text, std::array<std::int64_t, 2>& out);
 bool parse_value(std::string_view text, Polygon& out);
 bool parse_value(std::string_view text, std::vector<Polygon>& out);
+bool parse_value(std::string_view text, std::optional<GeoLocation>& out);
 template <class E>
 requires std::is_enum_v<E>
 bool parse_value(std::string_view text, E& out) {
@@ -46,6 +47,7 @@ std::string value_text(const std::string& value);
 std::string value_text(const std::array<std::int64_t, 2>& value);
 std::string value_text(const Polygon& value);
 std::string value_text(const std::vector<Polygon>& value);
+std::string value_text(const std::optional<GeoLocation>& value);
 template <class E>
 requires std::is_enum_v<E> std::string value_text(E value) { return std::string(to_string(value)); }
 

@@ -61,6 +61,16 @@ struct ExtraField {
 };
 using ExtraFields = std::vector<ExtraField>;
 
+/// Where a site is on the Earth (version 2's `site.location`): what the sun's position is
+/// computed from.
+struct GeoLocation {
+  double latitude = 0.0;    ///< degrees north, [-90, 90]
+  double longitude = 0.0;   ///< degrees east, [-180, 180]
+  double utc_offset = 0.0;  ///< hours of the site's local time ahead of UTC, [-12, 14]
+  ExtraFields extra{};
+  friend bool operator==(const GeoLocation&, const GeoLocation&) = default;
+};
+
 struct Site {
   Point2 origin{0.0, 0.0};
   std::array<std::int64_t, 2> cells{12, 8};  ///< tiles along x and y
@@ -70,6 +80,10 @@ struct Site {
   Color floor_color{0xc8, 0xc8, 0xc8};
   /// Largest sagitta of the chords an arc wall is built as (version 2; absent: 0.001 m).
   std::optional<double> chord_tolerance{};
+  /// Where the site is (version 2; absent: the plan has no sun of its own).
+  std::optional<GeoLocation> location{};
+  /// Degrees from the plan's +y axis to true north, counter-clockwise (version 2; absent: 0).
+  std::optional<double> north{};
   ExtraFields extra{};
   friend bool operator==(const Site&, const Site&) = default;
 };
@@ -158,6 +172,18 @@ struct RoomLabel {
   friend bool operator==(const RoomLabel&, const RoomLabel&) = default;
 };
 
+/// A neighbouring building, tree or fence (version 2's `obstructions[]`): the prism over
+/// `outline` from `base` up to `base + height`, in absolute z. Not part of the plan's solid; it
+/// casts shadows and blocks sunlight.
+struct Obstruction {
+  std::string id{};
+  Polygon outline{};  ///< counter-clockwise
+  double base = 0.0;
+  double height = 10.0;
+  ExtraFields extra{};
+  friend bool operator==(const Obstruction&, const Obstruction&) = default;
+};
+
 /// The defaults the spec gives each opening type (width, height, sill).
 struct OpeningDefaults {
   double width;
@@ -197,11 +223,12 @@ struct Plan {
   std::vector<Level> levels{};  ///< version 2
   std::vector<Wall> walls{};
   std::vector<Opening> openings{};
-  std::vector<Slab> slabs{};       ///< version 2
-  std::vector<RoomLabel> rooms{};  ///< names of rooms
-  std::vector<Light> lights{};     ///< empty: a default light is used (render: default_light)
-  std::vector<Camera> cameras{};   ///< empty: a camera framing the plan is used
-  ExtraFields extra{};             ///< unknown top-level fields
+  std::vector<Slab> slabs{};                ///< version 2
+  std::vector<RoomLabel> rooms{};           ///< names of rooms
+  std::vector<Obstruction> obstructions{};  ///< version 2
+  std::vector<Light> lights{};    ///< empty: a default light is used (render: default_light)
+  std::vector<Camera> cameras{};  ///< empty: a camera framing the plan is used
+  ExtraFields extra{};            ///< unknown top-level fields
   friend bool operator==(const Plan&, const Plan&) = default;
 };
 

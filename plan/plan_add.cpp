@@ -89,6 +89,8 @@ Result<EditSummary> add_object(Plan& plan, std::string_view kind, const std::str
   if (kind == "level") return build_and_add(plan, &Plan::levels, Level{}, id, fields, add_level);
   if (kind == "wall") return build_and_add(plan, &Plan::walls, Wall{}, id, fields, add_wall);
   if (kind == "slab") return build_and_add(plan, &Plan::slabs, Slab{}, id, fields, add_slab);
+  if (kind == "obstruction")
+    return build_and_add(plan, &Plan::obstructions, Obstruction{}, id, fields, add_obstruction);
   if (kind == "room") return build_and_add(plan, &Plan::rooms, RoomLabel{}, id, fields, add_room);
   if (kind == "light") return build_and_add(plan, &Plan::lights, Light{}, id, fields, add_light);
   if (kind == "camera")

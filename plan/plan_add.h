@@ -15,8 +15,8 @@
 namespace roomcad {
 
 /// The kinds of object add_object adds, in the order help lists them.
-inline constexpr std::string_view kAddableKinds[] = {"level", "wall", "door",  "window",
-                                                     "slab",  "room", "light", "camera"};
+inline constexpr std::string_view kAddableKinds[] = {
+    "level", "wall", "door", "window", "slab", "obstruction", "room", "light", "camera"};
 
 /// A field of a new object, as text: (name, value), e.g. ("from", "1,2").
 using FieldValues = std::vector<std::pair<std::string, std::string>>;
@@ -29,6 +29,7 @@ decltype(auto) with_default_object(std::string_view kind, Visit&& visit) {
   if (kind == "wall") return visit(Wall{});
   if (kind == "door" || kind == "window") return visit(Opening{});
   if (kind == "slab") return visit(Slab{});
+  if (kind == "obstruction") return visit(Obstruction{});
   if (kind == "room") return visit(RoomLabel{});
   if (kind == "light") return visit(Light{});
   return visit(Camera{});

@@ -111,6 +111,10 @@ EditSummary add_room(Plan& plan, RoomLabel room) {
   return append_object(plan, plan.rooms, std::move(room), "room");
 }
 
+EditSummary add_obstruction(Plan& plan, Obstruction obstruction) {
+  return append_object(plan, plan.obstructions, std::move(obstruction), "obstruction");
+}
+
 EditSummary add_light(Plan& plan, Light light) {
   return append_object(plan, plan.lights, std::move(light), "light");
 }

@@ -67,6 +67,10 @@ EditSummary add_slab(Plan& plan, Slab slab);
 /// @throws PreconditionError if the id is used or `room.level` names no level of the plan.
 EditSummary add_room(Plan& plan, RoomLabel room);
 
+/// Appends a neighbouring building or tree (`obstruction-N` when the id is empty).
+/// @throws PreconditionError if the id is used.
+EditSummary add_obstruction(Plan& plan, Obstruction obstruction);
+
 /// Appends a light (`light-N` when the id is empty). @throws PreconditionError on a used id.
 EditSummary add_light(Plan& plan, Light light);
 

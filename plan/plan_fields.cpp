@@ -23,6 +23,18 @@ const Field<Site> kSiteFields[] = {
     {"tolerance", &Site::tolerance, metre, Check::positive, optional, 1e-6, kMetres},
     {"floor_color", &Site::floor_color, none, Check::any, optional, 0, kColour},
     {"chord_tolerance", &Site::chord_tolerance, metre, Check::positive, version2, 0.001, kMetres},
+    {"location", &Site::location, none, Check::any, version2, 0,
+     "latitude,longitude,utc_offset: degrees north, degrees east, hours ahead of UTC"},
+    {"north", &Site::north, degree, Check::finite, version2, 0,
+     "degrees from the plan's +y axis to true north, counter-clockwise"},
+};
+
+const Field<GeoLocation> kGeoLocationFields[] = {
+    {"latitude", &GeoLocation::latitude, degree, Check::latitude, required, 55.75, "degrees north"},
+    {"longitude", &GeoLocation::longitude, degree, Check::longitude, required, 37.62,
+     "degrees east"},
+    {"utc_offset", &GeoLocation::utc_offset, none, Check::utc_offset, optional, 3,
+     "hours ahead of UTC"},
 };
 
 const Field<Level> kLevelFields[] = {
@@ -89,6 +101,14 @@ const Field<RoomLabel> kRoomLabelFields[] = {
      "what the room is: Kitchen, Bedroom, Bath, Hall, ..."},
 };
 
+const Field<Obstruction> kObstructionFields[] = {
+    {"id", &Obstruction::id, none, Check::any, required, 0, kId},
+    {"outline", &Obstruction::outline, metre, Check::polygon, required, 0,
+     "x,y;x,y;... in metres, counter-clockwise"},
+    {"base", &Obstruction::base, metre, Check::finite, optional, 0.0, "metres above z = 0"},
+    {"height", &Obstruction::height, metre, Check::positive, required, 10.0, kMetres},
+};
+
 const Field<Camera> kCameraFields[] = {
     {"id", &Camera::id, none, Check::any, required, 0, kId},
     {"projection", &Camera::projection, none, Check::any, optional, 0,
@@ -118,6 +138,10 @@ std::span<const Field<Site>> fields_of<Site>() {
   return kSiteFields;
 }
 template <>
+std::span<const Field<GeoLocation>> fields_of<GeoLocation>() {
+  return kGeoLocationFields;
+}
+template <>
 std::span<const Field<Level>> fields_of<Level>() {
   return kLevelFields;
 }
@@ -138,6 +162,10 @@ std::span<const Field<RoomLabel>> fields_of<RoomLabel>() {
   return kRoomLabelFields;
 }
 template <>
+std::span<const Field<Obstruction>> fields_of<Obstruction>() {
+  return kObstructionFields;
+}
+template <>
 std::span<const Field<Light>> fields_of<Light>() {
   return kLightFields;
 }
@@ -147,7 +175,7 @@ std::span<const Field<Camera>> fields_of<Camera>() {
 }
 
 bool uses_version2(const Plan& plan) {
-  return !plan.levels.empty() || !plan.slabs.empty() ||
+  return !plan.levels.empty() || !plan.slabs.empty() || !plan.obstructions.empty() ||
          uses_version2_fields(std::vector<Site>{plan.site}) || uses_version2_fields(plan.walls) ||
          uses_version2_fields(plan.openings) || uses_version2_fields(plan.rooms);
 }

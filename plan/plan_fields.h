@@ -39,6 +39,9 @@ enum class Check : std::uint8_t {
   lens,            ///< a camera's fov (perspective: 0 < x < 180 degrees) or view height
                    ///< (orthographic: > 0), checked for the camera's projection only
   positive_cells,  ///< site cells: whole numbers >= 1
+  latitude,        ///< in [-90, 90] degrees
+  longitude,       ///< in [-180, 180] degrees
+  utc_offset,      ///< in [-12, 14] hours
   polygon,         ///< at least 3 corners, simple (checked with the geometry)
   polygons,        ///< each a polygon
   any,             ///< ids, references, colours, enums: their type says it all
@@ -58,8 +61,9 @@ template <class Object>
 using Member = std::variant<double Object::*, std::optional<double> Object::*, Point2 Object::*,
                             Vec3 Object::*, Color Object::*, std::string Object::*,
                             std::array<std::int64_t, 2> Object::*, Polygon Object::*,
-                            std::vector<Polygon> Object::*, OpeningType Object::*, Hinge Object::*,
-                            Swing Object::*, LightType Object::*, Projection Object::*>;
+                            std::vector<Polygon> Object::*, std::optional<GeoLocation> Object::*,
+                            OpeningType Object::*, Hinge Object::*, Swing Object::*,
+                            LightType Object::*, Projection Object::*>;
 
 /// One field of the format.
 template <class Object>
@@ -74,11 +78,14 @@ struct Field {
 };
 
 /// The field table of an object type, in the order the canonical writer writes the fields.
-/// O(1). Defined for Site, Level, Wall, Opening, Slab, Light and Camera.
+/// O(1). Defined for Site, GeoLocation, Level, Wall, Opening, Slab, RoomLabel, Obstruction,
+/// Light and Camera.
 template <class Object>
 [[nodiscard]] std::span<const Field<Object>> fields_of();
 template <>
 std::span<const Field<Site>> fields_of<Site>();
+template <>
+std::span<const Field<GeoLocation>> fields_of<GeoLocation>();
 template <>
 std::span<const Field<Level>> fields_of<Level>();
 template <>
@@ -90,14 +97,16 @@ std::span<const Field<Slab>> fields_of<Slab>();
 template <>
 std::span<const Field<RoomLabel>> fields_of<RoomLabel>();
 template <>
+std::span<const Field<Obstruction>> fields_of<Obstruction>();
+template <>
 std::span<const Field<Light>> fields_of<Light>();
 template <>
 std::span<const Field<Camera>> fields_of<Camera>();
 
 /// The keys of a plan document's top level, in the order the writer writes them.
-inline constexpr std::array<std::string_view, 11> kTopLevelKeys = {
-    "format",   "version", "units", "site",   "levels", "walls",
-    "openings", "slabs",   "rooms", "lights", "cameras"};
+inline constexpr std::array<std::string_view, 12> kTopLevelKeys = {
+    "format",   "version", "units",        "site",  "levels", "walls",
+    "openings", "slabs",   "obstructions", "rooms", "lights", "cameras"};
 
 /// @return the field named `name`, or nullptr. O(fields).
 template <class Object>
@@ -124,7 +133,9 @@ template <class Object>
       [&](auto member) {
         const auto& value = object.*member;
         using T = std::decay_t<decltype(value)>;
-        if constexpr (std::is_same_v<T, std::optional<double>>) return value.has_value();
+        if constexpr (std::is_same_v<T, std::optional<double>> ||
+                      std::is_same_v<T, std::optional<GeoLocation>>)
+          return value.has_value();
         else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, Polygon> ||
                            std::is_same_v<T, std::vector<Polygon>>)
           return !value.empty();

@@ -53,6 +53,7 @@ std::string_view to_string(ObjectKind kind) {
     case ObjectKind::wall: return "wall";
     case ObjectKind::opening: return "opening";
     case ObjectKind::slab: return "slab";
+    case ObjectKind::obstruction: return "obstruction";
     case ObjectKind::room: return "room";
     case ObjectKind::light: return "light";
     case ObjectKind::camera: break;
@@ -66,6 +67,7 @@ std::string_view list_name(ObjectKind kind) {
     case ObjectKind::wall: return "walls";
     case ObjectKind::opening: return "openings";
     case ObjectKind::slab: return "slabs";
+    case ObjectKind::obstruction: return "obstructions";
     case ObjectKind::room: return "rooms";
     case ObjectKind::light: return "lights";
     case ObjectKind::camera: break;
@@ -89,6 +91,7 @@ void erase_object(Plan& plan, ObjectRef ref) {
     case ObjectKind::wall: plan.walls.erase(plan.walls.begin() + at); return;
     case ObjectKind::opening: plan.openings.erase(plan.openings.begin() + at); return;
     case ObjectKind::slab: plan.slabs.erase(plan.slabs.begin() + at); return;
+    case ObjectKind::obstruction: plan.obstructions.erase(plan.obstructions.begin() + at); return;
     case ObjectKind::room: plan.rooms.erase(plan.rooms.begin() + at); return;
     case ObjectKind::light: plan.lights.erase(plan.lights.begin() + at); return;
     case ObjectKind::camera: plan.cameras.erase(plan.cameras.begin() + at); return;

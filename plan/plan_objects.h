@@ -14,7 +14,7 @@
 
 namespace roomcad {
 
-enum class ObjectKind { level, wall, opening, slab, room, light, camera };
+enum class ObjectKind { level, wall, opening, slab, obstruction, room, light, camera };
 
 /// "level", "wall", "opening", ...: the kind in messages (an opening's own type is kind_name's).
 [[nodiscard]] std::string_view to_string(ObjectKind kind);
@@ -35,13 +35,14 @@ struct ObjectRef {
 };
 
 /// Calls `visit(objects, kind)` for each list of objects of the plan, in file order (levels,
-/// walls, openings, slabs, rooms, lights, cameras); `PlanType` may be const.
+/// walls, openings, slabs, obstructions, rooms, lights, cameras); `PlanType` may be const.
 template <class PlanType, class Visit>
 void for_each_list(PlanType& plan, Visit&& visit) {
   visit(plan.levels, ObjectKind::level);
   visit(plan.walls, ObjectKind::wall);
   visit(plan.openings, ObjectKind::opening);
   visit(plan.slabs, ObjectKind::slab);
+  visit(plan.obstructions, ObjectKind::obstruction);
   visit(plan.rooms, ObjectKind::room);
   visit(plan.lights, ObjectKind::light);
   visit(plan.cameras, ObjectKind::camera);
@@ -55,6 +56,7 @@ decltype(auto) visit_object(PlanType& plan, ObjectRef ref, Visit&& visit) {
     case ObjectKind::wall: return visit(plan.walls[ref.index]);
     case ObjectKind::opening: return visit(plan.openings[ref.index]);
     case ObjectKind::slab: return visit(plan.slabs[ref.index]);
+    case ObjectKind::obstruction: return visit(plan.obstructions[ref.index]);
     case ObjectKind::room: return visit(plan.rooms[ref.index]);
     case ObjectKind::light: return visit(plan.lights[ref.index]);
     case ObjectKind::camera: break;
@@ -75,7 +77,8 @@ decltype(auto) visit_object(PlanType& plan, ObjectRef ref, Visit&& visit) {
 [[nodiscard]] ObjectRef require_object(const Plan& plan, std::string_view id,
                                        std::string_view verb);
 
-/// @return "level", "wall", "door", "window", "slab", "room", "light" or "camera".
+/// @return "level", "wall", "door", "window", "slab", "obstruction", "room", "light" or
+///         "camera".
 [[nodiscard]] std::string_view kind_name(const Plan& plan, ObjectRef ref);
 
 /// @return a reference to the id string of the object.

@@ -108,6 +108,7 @@ std::vector<std::string_view> field_names(std::string_view kind) {
   if (kind == "wall") return field_names_of<Wall>();
   if (kind == "door" || kind == "window") return field_names_of<Opening>();
   if (kind == "slab") return field_names_of<Slab>();
+  if (kind == "obstruction") return field_names_of<Obstruction>();
   if (kind == "room") return field_names_of<RoomLabel>();
   if (kind == "light") return field_names_of<Light>();
   if (kind == "camera") return field_names_of<Camera>();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -69,10 +70,26 @@ void map_camera(Camera& camera, const PlanMap& map) {
   camera.up = map_direction(map.directions, camera.up);
 }
 
+void map_obstruction(Obstruction& obstruction, const PlanMap& map) {
+  for (Point2& p : obstruction.outline) p = map_point(map, p);
+}
+
 void map_room(RoomLabel& room, const PlanMap& map) { room.at = map_point(map, room.at); }
 
 void map_light(Light& light, const PlanMap& map) {
   light.direction = map_direction(map.directions, light.direction);
+}
+
+/// Turns the site's north with the plan, when the site says where north is (a plan that does not
+/// keeps its default). A mirror mirrors it.
+void map_north(Site& site, const PlanMap& map) {
+  if (!site.north && !site.location) return;
+  const double turn = site.north.value_or(0.0) * std::numbers::pi / 180.0;
+  const Point2 d = apply_to_direction(map.directions, {-std::sin(turn), std::cos(turn)});
+  double degrees = std::atan2(-d.x, d.y) * 180.0 / std::numbers::pi;
+  // A quarter turn gives 90 degrees, not 89.99999999999999.
+  if (const double whole = std::round(degrees); std::fabs(degrees - whole) < 1e-9) degrees = whole;
+  site.north = degrees == 0.0 ? 0.0 : degrees;  // no -0
 }
 
 /// Maps the site's rectangle when the map keeps it axis-aligned (moves, scales, quarter
@@ -110,6 +127,8 @@ Point2 default_centre(const Plan& plan, ObjectRef ref) {
     return midpoint(plan.walls[ref.index].from, plan.walls[ref.index].to);
   if (ref.kind == ObjectKind::slab && !plan.slabs[ref.index].outline.empty())
     return plan.slabs[ref.index].outline.front();
+  if (ref.kind == ObjectKind::obstruction && !plan.obstructions[ref.index].outline.empty())
+    return plan.obstructions[ref.index].outline.front();
   if (ref.kind == ObjectKind::room) return plan.rooms[ref.index].at;
   if (ref.kind == ObjectKind::camera)
     return {plan.cameras[ref.index].target.x, plan.cameras[ref.index].target.y};
@@ -125,6 +144,7 @@ EditSummary map_object(Plan& plan, ObjectRef ref, const PlanMap& map, std::strin
       map_openings(plan, plan.walls[ref.index].id, map);
       break;
     case ObjectKind::slab: map_slab(plan.slabs[ref.index], map); break;
+    case ObjectKind::obstruction: map_obstruction(plan.obstructions[ref.index], map); break;
     case ObjectKind::room: map_room(plan.rooms[ref.index], map); break;
     case ObjectKind::camera: map_camera(plan.cameras[ref.index], map); break;
     case ObjectKind::light: map_light(plan.lights[ref.index], map); break;
@@ -146,11 +166,13 @@ EditSummary map_everything(Plan& plan, const PlanMap& map) {
   const Plan before = plan;
   for (Wall& w : plan.walls) map_wall(w, map);
   for (Slab& s : plan.slabs) map_slab(s, map);
+  for (Obstruction& o : plan.obstructions) map_obstruction(o, map);
   for (RoomLabel& r : plan.rooms) map_room(r, map);
   map_openings(plan, std::nullopt, map);
   for (Camera& c : plan.cameras) map_camera(c, map);
   for (Light& l : plan.lights) map_light(l, map);
   map_site(plan.site, map);
+  map_north(plan.site, map);
   return changed_objects(before, plan);
 }
 

@@ -459,6 +459,7 @@ void register_plan(py::module_& m) {
   register_edits(plan);
   register_objects(plan);
   register_pictures(plan);
+  register_daylight(m, plan);
 }
 
 }  // namespace roomcad::python

@@ -59,5 +59,7 @@ PyModel& triangulated(PyModel& model);
 void register_report(pybind11::module_& m);
 void register_model(pybind11::module_& m);
 void register_plan(pybind11::module_& m);
+/// roomcad.sun, Plan.sun and Plan.insolation (py_daylight.cpp).
+void register_daylight(pybind11::module_& m, pybind11::class_<PyPlan>& plan);
 
 }  // namespace roomcad::python

@@ -20,6 +20,8 @@ packages=(
   # formats, command line, threads, allocation, images, windows, archives
   nlohmann-json3-dev libsimdjson-dev libcli11-dev libfmt-dev libpng-dev libtbb-dev libjemalloc-dev libsdl2-dev
   libzip-dev libpugixml-dev
+  # the sun's position (ERFA: the IAU's SOFA astronomy routines)
+  liberfa-dev
   # the Python module (python/) and its tests; dpkg-dev and file: `cpack -G DEB` reads Depends
   # with dpkg-shlibdeps, on the files that `file` says are executables and libraries
   python3-dev python3-pybind11 python3-numpy python3-pytest dpkg-dev file
@@ -38,6 +40,8 @@ if $tests; then
   packages+=(python3-ezdxf)
   # the report page's tests open it in a real browser: Chromium driven by Selenium
   packages+=(chromium chromium-driver python3-selenium)
+  # the sun tests' independent reader of sun positions
+  packages+=(python3-ephem)
   if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
 fi
 

@@ -9,12 +9,14 @@
 #     a public header includes is public too;
 #   - an include climbs out of its folder ("../"), which would reach past the include roots.
 # The layers, bottom up (docs/architecture.md draws them):
-#   core < exact < plan < geometry < mesh < solid < validation, render < repair < io < import
-#   < view < cli
+#   core < exact < plan < geometry < mesh < solid < validation, render < repair, daylight < io
+#   < import < view < cli
 # except that plan uses no exact (its decimals are its own) and mesh no geometry or exact;
 # validation and render stand side by side, neither on the solid kernel for validation, nor on
 # the exact numbers for render; repair stands on validation (what to clear) and the solid
-# kernel (the analytic volume that checks its claims), not on render. python/ sits beside view. testing/ (plans shared by tests and
+# kernel (the analytic volume that checks its claims), not on render; daylight (the sun, and the
+# sunlight a plan's windows get) stands on validation (rooms, rule sets) and the solid kernel
+# (the built model its rays test), beside repair. python/ sits beside view. testing/ (plans shared by tests and
 # benchmarks) sits on plan; tests/, bench/ and fuzz/ may include anything.
 # Usage: cmake -D SOURCE_DIR=<repository> -P <this file>
 cmake_minimum_required(VERSION 3.20)
@@ -27,13 +29,14 @@ set(allowed_solid "core;exact;plan;geometry;mesh;solid")
 set(allowed_validation "core;exact;plan;geometry;validation")
 set(allowed_render "core;plan;geometry;mesh;render")
 set(allowed_repair "core;exact;plan;geometry;mesh;solid;validation;repair")
-set(allowed_io "core;exact;plan;geometry;mesh;solid;validation;render;repair;io")
+set(allowed_daylight "core;exact;plan;geometry;mesh;solid;validation;daylight")
+set(allowed_io "core;exact;plan;geometry;mesh;solid;validation;render;repair;daylight;io")
 set(allowed_import "${allowed_io};import")
 set(allowed_view "${allowed_import};view")
 set(allowed_cli "${allowed_view};cli")
 set(allowed_python "${allowed_import};python")
 set(allowed_testing "core;plan;testing")
-set(modules core exact plan geometry mesh solid validation render repair io import view cli python testing)
+set(modules core exact plan geometry mesh solid validation render repair daylight io import view cli python testing)
 
 set(problems "")
 set(checked 0)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "validation/room_labels.h"
 
+#include "validation/detail/habitable_rooms.h"
 #include "validation/rules/context.h"
 
 namespace roomcad {
@@ -14,6 +15,10 @@ std::vector<const RoomLabel*> room_labels(const std::vector<Room>& rooms, const 
         break;
       }
   return labels;
+}
+
+bool is_habitable_room(const Room& room, std::string_view name, const HabitableRooms& rules) {
+  return detail::is_habitable(room, name, rules);
 }
 
 }  // namespace roomcad

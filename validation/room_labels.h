@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Which of the plan's room names (`rooms[]`) names each room found among its walls.
+// Which of the plan's room names (`rooms[]`) names each room found among its walls, and
+// whether a person stays in it.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "geometry/rooms.h"
 #include "plan/plan.h"
+#include "validation/rule_set.h"
 
 namespace roomcad {
 
@@ -14,5 +17,10 @@ namespace roomcad {
 ///         rooms, l names and v corners.
 [[nodiscard]] std::vector<const RoomLabel*> room_labels(const std::vector<Room>& rooms,
                                                         const Plan& plan);
+
+/// @return whether a person stays in `room`, named `name` ("" unnamed), as
+///         room_without_window judges it (HabitableRooms in validation/rule_set.h).
+[[nodiscard]] bool is_habitable_room(const Room& room, std::string_view name,
+                                     const HabitableRooms& rules);
 
 }  // namespace roomcad

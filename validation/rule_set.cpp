@@ -3,7 +3,9 @@
 #include "validation/rule_set.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <regex>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -80,6 +82,83 @@ std::optional<Problem> read_threshold(const Json& value, const std::string& poin
   return std::nullopt;
 }
 
+/// A date of the insolation rule: `MM-DD` or `YYYY-MM-DD`.
+bool is_rule_date(const Json& v) {
+  if (!v.is_string()) return false;
+  const std::string s = v.get<std::string>();
+  const std::string md = s.size() == 10 ? s.substr(5) : s;
+  if (s.size() == 10 && !(std::all_of(s.begin(), s.begin() + 4, ::isdigit) && s[4] == '-'))
+    return false;
+  if (md.size() != 5 || md[2] != '-' || !std::isdigit(md[0]) || !std::isdigit(md[1]) ||
+      !std::isdigit(md[3]) || !std::isdigit(md[4]))
+    return false;
+  const int month = std::stoi(md.substr(0, 2)), day = std::stoi(md.substr(3));
+  static constexpr int kDays[] = {31, 29, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  return month >= 1 && month <= 12 && day >= 1 && day <= kDays[month - 1];
+}
+
+std::optional<Problem> read_hours(const Json& value, const std::string& at, double most,
+                                  std::string_view unit, double& out) {
+  if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < 0 ||
+      value.get<double>() > most)
+    return Problem{at, fmt::format("expected a number of {} from 0 to {}, found {}", unit, most,
+                                   value_text(value))};
+  out = value.get<double>();
+  return std::nullopt;
+}
+
+/// The settings of insolation_short beyond enabled and severity (InsolationRule).
+std::optional<Problem> read_insolation_setting(const std::string& key, const Json& value,
+                                               const std::string& at, InsolationRule& rule) {
+  if (key == "date" || key == "period") {
+    const bool one = key == "date";
+    const std::vector<Json> dates =
+        one ? std::vector<Json>{value}
+            : (value.is_array() && value.size() == 2 ? std::vector<Json>{value[0], value[1]}
+                                                     : std::vector<Json>{});
+    if (dates.empty() || !std::all_of(dates.begin(), dates.end(), is_rule_date))
+      return Problem{at,
+                     fmt::format("expected {} (MM-DD or YYYY-MM-DD), found {}",
+                                 one ? "a date" : "two dates [first, last]", value_text(value))};
+    rule.dates.clear();
+    for (const Json& d : dates) rule.dates.push_back(d.get<std::string>());
+    return std::nullopt;
+  }
+  if (key == "min_continuous_hours")
+    return read_hours(value, at, 24, "hours", rule.min_continuous_hours);
+  if (key == "min_total_hours") {
+    double hours = 0;
+    if (auto p = read_hours(value, at, 24, "hours", hours)) return p;
+    rule.min_total_hours = hours;
+    return std::nullopt;
+  }
+  if (key == "min_period_hours") return read_hours(value, at, 24, "hours", rule.min_period_hours);
+  if (key == "ignore_after_sunrise_minutes")
+    return read_hours(value, at, 720, "minutes", rule.ignore_after_sunrise_minutes);
+  if (key == "ignore_before_sunset_minutes")
+    return read_hours(value, at, 720, "minutes", rule.ignore_before_sunset_minutes);
+  if (key == "min_area") return read_hours(value, at, 1e6, "square metres", rule.min_area);
+  if (key == "above_sill") return read_hours(value, at, 10, "metres", rule.above_sill);
+  if (key == "into_reveal") return read_hours(value, at, 10, "metres", rule.into_reveal);
+  if (key == "rooms") {
+    if (!value.is_string())
+      return Problem{at, "expected a regular expression of room names, found " + value_text(value)};
+    try {
+      (void)std::regex(value.get<std::string>(), std::regex::ECMAScript | std::regex::icase);
+    } catch (const std::regex_error& e) {
+      return Problem{at,
+                     fmt::format("not a regular expression ({}): {}", e.what(), value_text(value))};
+    }
+    rule.room_pattern = value.get<std::string>();
+    return std::nullopt;
+  }
+  return Problem{at, unknown_name("setting of insolation_short", key,
+                                  {"enabled", "severity", "date", "period", "min_continuous_hours",
+                                   "min_total_hours", "min_period_hours",
+                                   "ignore_after_sunrise_minutes", "ignore_before_sunset_minutes",
+                                   "rooms", "min_area", "above_sill", "into_reveal"})};
+}
+
 std::optional<Problem> read_rule_object(const Json& body, Code rule, const std::string& pointer,
                                         RuleSet& set) {
   const std::size_t index = *rule_index(rule);
@@ -98,6 +177,10 @@ std::optional<Problem> read_rule_object(const Json& body, Code rule, const std::
         continue;
       }
       return Problem{at, "expected \"warning\" or \"error\", found " + value_text(value)};
+    }
+    if (rule == Code::insolation_short) {
+      if (auto p = read_insolation_setting(key, value, at, set.insolation)) return p;
+      continue;
     }
     std::vector<std::string_view> known = {"enabled", "severity"};
     const ThresholdKey* match = nullptr;
@@ -227,7 +310,7 @@ bool RuleSet::any_enabled() const {
 }
 
 std::vector<std::string_view> builtin_rule_set_names() {
-  return {"default", "accessibility", "all"};
+  return {"default", "accessibility", "insolation", "all"};
 }
 
 std::optional<RuleSet> builtin_rule_set(std::string_view name) {
@@ -236,6 +319,10 @@ std::optional<RuleSet> builtin_rule_set(std::string_view name) {
   if (name == "default") return set;
   if (name == "all") {
     set.enabled.fill(true);
+    return set;
+  }
+  if (name == "insolation") {
+    set.enabled[*rule_index(Code::insolation_short)] = true;
     return set;
   }
   if (name != "accessibility") return std::nullopt;

@@ -19,11 +19,11 @@
 namespace roomcad {
 
 /// The rule codes, in the order the plan format lists them.
-inline constexpr std::array<Code, 10> kRuleCodes = {
+inline constexpr std::array<Code, 11> kRuleCodes = {
     Code::door_swing_blocked, Code::door_clearance,    Code::door_too_narrow,
     Code::passage_too_narrow, Code::no_turning_circle, Code::room_unreachable,
     Code::escape_too_far,     Code::window_sill_low,   Code::window_sill_high,
-    Code::duplicate_object};
+    Code::duplicate_object,   Code::insolation_short};
 
 /// @return the index of a rule code in kRuleCodes, or nullopt for any other code. O(1).
 [[nodiscard]] std::optional<std::size_t> rule_index(Code code);
@@ -59,6 +59,34 @@ struct HabitableRooms {
   friend bool operator==(const HabitableRooms&, const HabitableRooms&) = default;
 };
 
+/// The insolation rule (insolation_short): how much direct sun a room needs, on which days,
+/// and which rooms; run on the built model by daylight/insolation_rule.h, only for a plan
+/// whose site has a location. docs/plan-format.md, "Rule sets". The defaults are EN 17037's
+/// minimum: 1.5 hours on 21 March.
+struct InsolationRule {
+  /// The days checked, `MM-DD` (in kInsolationReferenceYear) or `YYYY-MM-DD`: one date, or a
+  /// period's first and last days (the worse of the two counts).
+  std::vector<std::string> dates = {"03-21"};
+  double min_continuous_hours = 1.5;
+  /// Interrupted sun passes too when the periods of at least min_period_hours add up to
+  /// this; unset: only continuous sun counts.
+  std::optional<double> min_total_hours;
+  double min_period_hours = 1.0;
+  double ignore_after_sunrise_minutes = 0.0;  ///< sun this soon after sunrise does not count
+  double ignore_before_sunset_minutes = 0.0;  ///< nor this close to sunset
+  /// The rooms it applies to: names matching this (ECMAScript regular expression, any case);
+  /// empty: the habitable rooms (HabitableRooms).
+  std::string room_pattern;
+  double min_area = 0.0;     ///< square metres of clear floor, at least
+  double above_sill = 0.0;   ///< the calculation point, metres up from the sill
+  double into_reveal = 0.0;  ///< ... and from the room-side face towards the outside
+  friend bool operator==(const InsolationRule&, const InsolationRule&) = default;
+};
+
+/// The year an `MM-DD` date of the insolation rule is evaluated in: the sun's path on one
+/// date differs between years by well under a minute of sunshine.
+inline constexpr int kInsolationReferenceYear = 2026;
+
 struct RuleSet {
   std::string name = "default";  ///< the built-in set's name or the rules file's path
   std::array<bool, kRuleCodes.size()> enabled{};
@@ -69,6 +97,7 @@ struct RuleSet {
   std::optional<std::vector<Point2>> accessible_rooms;
   /// The rooms room_without_window applies to (the format's check, in every set).
   HabitableRooms habitable_rooms;
+  InsolationRule insolation;
 
   RuleSet() { severity.fill(Severity::warning); }
   [[nodiscard]] bool is_enabled(Code code) const;
@@ -76,12 +105,12 @@ struct RuleSet {
   friend bool operator==(const RuleSet&, const RuleSet&) = default;
 };
 
-/// @return the names of the built-in sets: default, accessibility, all.
+/// @return the names of the built-in sets: default, accessibility, insolation, all.
 [[nodiscard]] std::vector<std::string_view> builtin_rule_set_names();
 
 /// @return the built-in set `name`, or nullopt if there is none by that name. O(1).
 /// `accessibility`: door_too_narrow, door_clearance, passage_too_narrow, no_turning_circle and
-/// room_unreachable; `all`: every rule.
+/// room_unreachable; `insolation`: insolation_short; `all`: every rule.
 [[nodiscard]] std::optional<RuleSet> builtin_rule_set(std::string_view name);
 
 /// Reads a rules file (format in docs/plan-format.md, "Rule sets: what roomcad decides").

@@ -214,8 +214,9 @@ class PlanReader {
     else if (key == "cameras") read_list(v, plan.cameras);
     else if (v2 && key == "levels") read_list(v, plan.levels);
     else if (v2 && key == "slabs") read_list(v, plan.slabs);
+    else if (v2 && key == "obstructions") read_list(v, plan.obstructions);
     else {
-      const bool later = key == "levels" || key == "slabs";
+      const bool later = key == "levels" || key == "slabs" || key == "obstructions";
       unknown(key, v, key_offset, plan.extra, {kTopLevelKeys.begin(), kTopLevelKeys.end()},
               later ? "is a version 2 field and this file is version 1" : "");
     }
@@ -320,6 +321,7 @@ class PlanReader {
   }
 
   static std::string object_id(const Site&) { return {}; }
+  static std::string object_id(const GeoLocation&) { return {}; }
   template <class Object>
   static std::string object_id(const Object& o) {
     return o.id;
@@ -394,6 +396,10 @@ class PlanReader {
   }
 
   void read_value(od::value& v, double& out, bool length) { read_number(v, out, length); }
+  void read_value(od::value& v, std::optional<GeoLocation>& out, bool) {
+    if (v.type().value() != JsonType::object) return wrong_type(v, "an object");
+    out = read_object<GeoLocation>(v);
+  }
   void read_value(od::value& v, std::optional<double>& out, bool length) {
     double x = 0.0;
     if (read_number(v, x, length)) out = x;

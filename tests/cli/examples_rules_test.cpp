@@ -118,9 +118,12 @@ TEST(ExamplesRules, BundledRulesFilesRunOnTheHouse) {
     const auto r =
         test::run_roomcad({"validate", "--rules", entry.path().string(), house.string()});
     EXPECT_NE(r.status, 2) << entry.path() << r.err;  // read, and every accessible room found
-    EXPECT_NE(r.out.find("warning"), std::string::npos) << r.out;
+    // The insolation files' rule needs a site location, which the house does not give.
+    const bool sun_only =
+        entry.path().stem() == "sanpin-central" || entry.path().stem() == "en17037-minimum";
+    EXPECT_EQ(r.out.find("warning") != std::string::npos, !sun_only) << r.out;
   }
-  EXPECT_GE(files, 2u);
+  EXPECT_GE(files, 4u);
 }
 
 TEST(ExamplesRules, CommandLineRulesAndBaselineOnABundledHome) {

@@ -97,10 +97,9 @@ TEST(RulesCommand, BadRulesAreExit2NamingFileFieldAndValue) {
   const std::string plan = write_file(dir, "p.json", kRoom);
   const auto unknown = run_roomcad({"validate", "--rules", "strict", plan});
   EXPECT_EQ(unknown.status, 2);
-  EXPECT_NE(
-      unknown.err.find(
-          "--rules \"strict\": neither a rule set (default, accessibility, all) nor a rules file"),
-      std::string::npos)
+  EXPECT_NE(unknown.err.find("--rules \"strict\": neither a rule set (default, accessibility, "
+                             "insolation, all) nor a rules file"),
+            std::string::npos)
       << unknown.err;
   const std::string bad =
       write_file(dir, "bad.json", R"({"rules": {"door_too_narrow": {"min_width": 0}}})");

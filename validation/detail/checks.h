@@ -20,6 +20,7 @@ struct Usable {
   std::vector<bool> walls;  ///< by index into Plan::walls
   std::vector<std::optional<std::size_t>> host;  ///< by opening: its host wall, if both are usable
   std::vector<bool> slabs;                       ///< by index into Plan::slabs
+  std::vector<bool> obstructions;                ///< by index into Plan::obstructions
 };
 
 /// invalid_value for every number, size and direction of the plan (no geometry).

@@ -34,6 +34,7 @@ ResolvedPlan resolve_plan(const Plan& plan, const Usable& usable) {
     else r.usable.host.push_back(chords.chord[j] != kNoChord ? chords.chord[j] : index_of[*host]);
   }
   r.usable.slabs = usable.slabs;
+  r.usable.obstructions = usable.obstructions;
   for (std::size_t i = 0; i < absolute.slabs.size(); ++i)
     r.usable.slabs[i] =
         r.usable.slabs[i] && placed_on(plan.slabs[i].level) && std::isfinite(absolute.slabs[i].top);

@@ -87,4 +87,13 @@ std::pair<double, Point2> penetration(const std::array<Point2, 4>& p,
   return {std::max(best, 0.0), best_axis};
 }
 
+Box2 box_of_polygon(const Polygon& p, std::size_t index) {
+  Box2 b{p[0].x, p[0].y, p[0].x, p[0].y, index};
+  for (const Point2& c : p) {
+    b.min_x = std::min(b.min_x, c.x), b.max_x = std::max(b.max_x, c.x);
+    b.min_y = std::min(b.min_y, c.y), b.max_y = std::max(b.max_y, c.y);
+  }
+  return b;
+}
+
 }  // namespace roomcad::detail

@@ -133,6 +133,34 @@ std::array<Point2, 4> approximate_footprint(const Plan& plan, const Joins& joins
 std::pair<double, Point2> penetration(const std::array<Point2, 4>& p,
                                       const std::array<Point2, 4>& q);
 
+/// Twice the signed area of `polygon` clipped to the convex counter-clockwise `quad`
+/// (Sutherland-Hodgman: exact for any simple polygon against a convex window).
+template <class NT>
+NT clipped_area(const Polygon& polygon, const Quad<NT>& quad) {
+  std::vector<exact::Pt<NT>> ring;
+  for (const Point2& p : polygon) ring.push_back(exact::to_pt<NT>(p));
+  for (std::size_t e = 0; e < 4 && !ring.empty(); ++e) {
+    const exact::Pt<NT> a = quad[e], d = quad[(e + 1) % 4] - quad[e];
+    std::vector<exact::Pt<NT>> out;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const exact::Pt<NT>& p = ring[k];
+      const exact::Pt<NT>& q = ring[(k + 1) % ring.size()];
+      const NT sp = exact::cross(d, p - a), sq = exact::cross(d, q - a);  // >= 0: inside
+      if (sp >= NT(0)) out.push_back(p);
+      if ((sp < NT(0) && sq > NT(0)) || (sp > NT(0) && sq < NT(0)))
+        out.push_back(p + (sp / (sp - sq)) * (q - p));
+    }
+    ring = std::move(out);
+  }
+  NT twice(0);
+  for (std::size_t k = 0; k < ring.size(); ++k)
+    twice = twice + exact::cross(ring[k], ring[(k + 1) % ring.size()]);
+  return twice;
+}
+
+/// @return the box of a polygon (of at least one corner), with the caller's index. O(n).
+Box2 box_of_polygon(const Polygon& p, std::size_t index);
+
 struct Usable;
 struct ResolvedPlan;
 
@@ -141,6 +169,11 @@ struct ResolvedPlan;
 /// pieces by other walls (opening_checks.cpp).
 void check_openings(const Plan& plan, const Usable& usable, const ResolvedPlan& resolved,
                     const Joins& joins, const Footprints& footprints, Report& report);
+
+/// obstruction_overlap: an obstruction sharing interior volume with a wall or a slab
+/// (obstruction_checks.cpp).
+void check_obstructions(const Usable& usable, const ResolvedPlan& resolved,
+                        const Footprints& footprints, Report& report);
 
 /// slab_overlap, opening_blocked by slabs, out_of_bounds of slabs and levels, and
 /// invalid_value for slab outlines and holes that are not simple or not nested (slab_checks.cpp).

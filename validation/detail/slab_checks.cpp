@@ -24,15 +24,6 @@
 namespace roomcad::detail {
 namespace {
 
-Box2 box_of_polygon(const Polygon& p, std::size_t index) {
-  Box2 b{p[0].x, p[0].y, p[0].x, p[0].y, index};
-  for (const Point2& c : p) {
-    b.min_x = std::min(b.min_x, c.x), b.max_x = std::max(b.max_x, c.x);
-    b.min_y = std::min(b.min_y, c.y), b.max_y = std::max(b.max_y, c.y);
-  }
-  return b;
-}
-
 Where where_of(const Box2& b) { return box_where(b.min_x, b.min_y, b.max_x, b.max_y); }
 
 std::string slab_name(const Slab& s) { return fmt::format("slab '{}'", s.id); }
@@ -67,31 +58,6 @@ void check_slab_overlaps(const Plan& plan, const std::vector<bool>& usable,
                     b.id, a.id),
         where_of(common)));
   }
-}
-
-/// Twice the signed area of `polygon` clipped to the convex counter-clockwise `quad`
-/// (Sutherland-Hodgman: exact for any simple polygon against a convex window).
-template <class NT>
-NT clipped_area(const Polygon& polygon, const Quad<NT>& quad) {
-  std::vector<exact::Pt<NT>> ring;
-  for (const Point2& p : polygon) ring.push_back(exact::to_pt<NT>(p));
-  for (std::size_t e = 0; e < 4 && !ring.empty(); ++e) {
-    const exact::Pt<NT> a = quad[e], d = quad[(e + 1) % 4] - quad[e];
-    std::vector<exact::Pt<NT>> out;
-    for (std::size_t k = 0; k < ring.size(); ++k) {
-      const exact::Pt<NT>& p = ring[k];
-      const exact::Pt<NT>& q = ring[(k + 1) % ring.size()];
-      const NT sp = exact::cross(d, p - a), sq = exact::cross(d, q - a);  // >= 0: inside
-      if (sp >= NT(0)) out.push_back(p);
-      if ((sp < NT(0) && sq > NT(0)) || (sp > NT(0) && sq < NT(0)))
-        out.push_back(p + (sp / (sp - sq)) * (q - p));
-    }
-    ring = std::move(out);
-  }
-  NT twice(0);
-  for (std::size_t k = 0; k < ring.size(); ++k)
-    twice = twice + exact::cross(ring[k], ring[(k + 1) % ring.size()]);
-  return twice;
 }
 
 /// Whether the hole of opening `o` in wall `h` shares volume with slab `s` (exact).

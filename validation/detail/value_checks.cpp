@@ -81,6 +81,15 @@ class FieldChecker {
         return v >= 0 || fail(f.name, fmt::format("{}", v), "a number of at least 0");
       case Check::unit_interval:
         return (v >= 0 && v <= 1) || fail(f.name, fmt::format("{}", v), "in [0, 1]");
+      case Check::latitude:
+        return (v >= -90 && v <= 90) ||
+               fail(f.name, fmt::format("{}", v), "a number in [-90, 90] (degrees)");
+      case Check::longitude:
+        return (v >= -180 && v <= 180) ||
+               fail(f.name, fmt::format("{}", v), "a number in [-180, 180] (degrees)");
+      case Check::utc_offset:
+        return (v >= -12 && v <= 14) ||
+               fail(f.name, fmt::format("{}", v), "a number in [-12, 14] (hours)");
       case Check::turn:
         return (v != 0 && std::fabs(v) < 360) ||
                fail(f.name, fmt::format("{}", v), "between -360 and 360 degrees, not 0");
@@ -146,6 +155,10 @@ class FieldChecker {
       ok = polygon_ok(fmt::format("{}[{}]", f.name, i), polygons[i], f.unit == Unit::metre) && ok;
     return ok;
   }
+  template <class Object>
+  bool check_value(const Field<Object>&, const std::optional<GeoLocation>& location) {
+    return !location || check_fields(*location);
+  }
   template <class Object, class Other>
   bool check_value(const Field<Object>&, const Other&) {
     return true;  // colours and enums: their type is their check
@@ -165,7 +178,8 @@ bool check_site(const Site& s, Report& report) {
   FieldChecker c(report, "site", "", 0, "");
   c.check_fields(s);
   return std::all_of(c.failed().begin(), c.failed().end(), [](const std::string& field) {
-    return field == "tolerance" || field == "chord_tolerance";
+    return field == "tolerance" || field == "chord_tolerance" || field == "north" ||
+           field == "latitude" || field == "longitude" || field == "utc_offset";
   });
 }
 
@@ -224,6 +238,16 @@ bool check_slab_polygons(const Slab& slab, std::size_t i, Report& report) {
   return true;
 }
 
+/// invalid_value for an obstruction whose outline is not simple. @return good.
+bool check_obstruction_outline(const Obstruction& o, std::size_t i, Report& report) {
+  return is_simple_polygon(o.outline) ||
+         FieldChecker(report, "obstruction", "obstructions", i, o.id)
+             .fail("outline", "a polygon whose edges cross or touch", "a simple polygon",
+                   fmt::format("redraw the outline of obstruction '{}' so that its edges meet "
+                               "only at their shared corners",
+                               o.id));
+}
+
 /// invalid_value for an opening's shape that is not a simple polygon in the unit square.
 bool check_shape(const Opening& o, std::size_t i, Report& report) {
   if (o.shape.empty()) return true;
@@ -268,6 +292,10 @@ Usable check_values(const Plan& plan, Report& report) {
   usable.slabs = check_list(plan.slabs, "slab", "slabs", report);
   for (std::size_t i = 0; i < plan.slabs.size(); ++i)
     if (usable.slabs[i]) usable.slabs[i] = check_slab_polygons(plan.slabs[i], i, report);
+  usable.obstructions = check_list(plan.obstructions, "obstruction", "obstructions", report);
+  for (std::size_t i = 0; i < plan.obstructions.size(); ++i)
+    if (usable.obstructions[i])
+      usable.obstructions[i] = check_obstruction_outline(plan.obstructions[i], i, report);
   (void)check_list(plan.rooms, "room", "rooms", report);
   (void)check_list(plan.lights, "light", "lights", report);
   for (std::size_t i = 0; i < plan.cameras.size(); ++i) check_camera(plan.cameras[i], i, report);

@@ -247,6 +247,7 @@ void check_geometry(const Plan& plan, const Usable& usable, const ResolvedPlan& 
   }
   check_openings(plan, usable, resolved, joins, fp, report);
   check_slabs(plan, usable, resolved, joins, fp, report);
+  check_obstructions(usable, resolved, fp, report);
 }
 
 }  // namespace roomcad::detail

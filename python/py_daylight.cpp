@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// roomcad.sun and Plan.sun: where the sun is at a site and time, as `roomcad sun --format json`
+// says it (docs/plan-format.md, "Sun and sunlight").
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "daylight/sun_position.h"
+#include "python/py_error.h"
+#include "python/py_types.h"
+
+namespace py = pybind11;
+
+namespace roomcad::python {
+namespace {
+
+py::object clock_or_none(const std::optional<UtcSeconds>& t, double offset) {
+  return t ? py::object(py::str(format_clock(*t, offset))) : py::object(py::none());
+}
+
+/// The sun at `place` and time text `at`, in a plan whose north is `north`, as a dict.
+py::dict sun_dict(const GeoLocation& place, const std::string& at, double north) {
+  const UtcSeconds t = take(parse_site_time(at, place.utc_offset));
+  const SunPosition sun = sun_position(place, t);
+  const Vec3 d = sun_direction_in_plan(sun, north);
+  const auto day = static_cast<CivilDay>(std::floor((t + place.utc_offset * 3600.0) / 86400.0));
+  const SunDay s = sun_day(place, day);
+  py::dict out;
+  out["azimuth"] = sun.azimuth;
+  out["elevation"] = sun.elevation;
+  out["direction"] = py::make_tuple(d.x, d.y, d.z);
+  out["sunrise"] = clock_or_none(s.sunrise, place.utc_offset);
+  out["solar_noon"] = format_clock(s.solar_noon, place.utc_offset);
+  out["sunset"] = clock_or_none(s.sunset, place.utc_offset);
+  return out;
+}
+
+}  // namespace
+
+void register_daylight(py::module_& m, py::class_<PyPlan>& plan) {
+  m.def(
+      "sun",
+      [](const std::string& at, double latitude, double longitude, double utc_offset) {
+        if (!(latitude >= -90 && latitude <= 90) || !(longitude >= -180 && longitude <= 180) ||
+            !(utc_offset >= -12 && utc_offset <= 14))
+          raise(Error{Code::usage_error,
+                      "sun: latitude must be in [-90, 90], longitude in [-180, 180], "
+                      "utc_offset in [-12, 14]"});
+        return sun_dict(GeoLocation{latitude, longitude, utc_offset, {}}, at, 0.0);
+      },
+      py::arg("at"), py::arg("latitude"), py::arg("longitude"), py::arg("utc_offset") = 0.0,
+      "Where the sun is, as `roomcad sun --latitude --longitude --format json`: a dict of\n"
+      "azimuth (degrees clockwise from north), elevation (geometric), direction (towards the\n"
+      "sun, north +y), sunrise, solar_noon and sunset ('HH:MM:SS' local, None in polar day or\n"
+      "night).\n"
+      "@param at  'YYYY-MM-DDTHH:MM[:SS]' local at utc_offset, or with its own offset ('Z')\n"
+      "@raise roomcad.Error usage_error for a bad time or place");
+  plan.def(
+      "sun",
+      [](const PyPlan& self, const std::string& at) {
+        if (!self.plan.site.location)
+          raise(Error{Code::usage_error,
+                      "sun: the plan does not say where its site is (no site.location); "
+                      "set it with plan.set('site', location='LAT,LON,UTC_OFFSET')"});
+        return sun_dict(*self.plan.site.location, at, self.plan.site.north.value_or(0.0));
+      },
+      py::arg("at"),
+      "Where the sun is at the plan's site.location at local time `at`, as `roomcad sun PLAN\n"
+      "--format json`: the direction is in the plan's coordinates (site.north applied).\n"
+      "@raise roomcad.Error usage_error without site.location or for a bad time");
+}
+
+}  // namespace roomcad::python

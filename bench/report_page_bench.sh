@@ -15,17 +15,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 python3 bench/many_findings_plan.py 2000 "$work/findings-2000.json"
 
-# Prints the median wall milliseconds of `runs` runs of the command.
-median_ms() {
-  local times=()
-  for ((i = 0; i < runs; i++)); do
-    local start=${EPOCHREALTIME/[.,]/}
-    "$@" > /dev/null 2>&1 || true
-    local end=${EPOCHREALTIME/[.,]/}
-    times+=($((end - start)))
-  done
-  printf '%s\n' "${times[@]}" | sort -n | awk '{t[NR] = $1} END {printf "%.1f", t[int((NR + 1) / 2)] / 1000}'
-}
+source bench/median_ms.sh
 
 echo "| plan | findings | write ms (median of $runs) | page bytes | open ms (median of $runs) |"
 echo "| --- | --- | --- | --- | --- |"

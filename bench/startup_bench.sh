@@ -15,18 +15,7 @@ printf '#include <cstdio>\nint main() { std::puts("hello"); }\n' > "$work/hello.
 c++ -O2 "$work/hello.cpp" -o "$work/hello"
 studio=examples/sweethome3d/Studio.json
 
-# Prints the median wall milliseconds of `runs` runs of the command (after one not counted).
-median_ms() {
-  "$@" > /dev/null 2>&1 || true
-  local times=()
-  for ((i = 0; i < runs; i++)); do
-    local start=${EPOCHREALTIME/[.,]/}  # microseconds, read without starting a process
-    "$@" > /dev/null 2>&1 || true
-    local end=${EPOCHREALTIME/[.,]/}
-    times+=($((end - start)))
-  done
-  printf '%s\n' "${times[@]}" | sort -n | awk '{t[NR] = $1} END {printf "%.1f", t[int((NR + 1) / 2)] / 1000}'
-}
+source bench/median_ms.sh
 
 echo "| command | median wall ms ($runs runs) |"
 echo "| --- | --- |"

@@ -198,9 +198,11 @@ std::string fix_text(const Plan& plan, const RoomSun& room, const Hours& best,
     if (h && (!top || better(*h, *top))) top = h, top_text = c.text;
   }
   if (!top || !better(*top, best))
-    return "no move of its window by up to 1 m and no window on another of its walls gives it "
-           "more sun: the sun is blocked from it; enlarge its windows upward or clear what "
-           "shades them";
+    return best.window.empty()
+               ? "no window on one of its walls would get sun (each faces another room or is "
+                 "shaded, or would collide with what is there): give it an outside wall"
+               : "no move of its window by up to 1 m and no window on another of its walls "
+                 "gives it more sun: enlarge its windows upward or clear what shades them";
   return fmt::format("{} gives {:.2f} h continuous, {:.2f} h in all{}", top_text, top->continuous,
                      top->total, passes(*top, rules.insolation) ? "" : " (still short)");
 }

@@ -13,6 +13,7 @@
 
 #include "core/box.h"
 #include "import/detail/sh3d_archive.h"
+#include "import/detail/sh3d_compass.h"
 #include "import/detail/sh3d_home.h"
 #include "import/detail/sh3d_levels.h"
 #include "import/detail/sh3d_openings.h"
@@ -230,6 +231,7 @@ Result<Sh3dImport> import_sweethome3d_text(std::string_view xml, std::string_vie
                                          "m; check the home's coordinates",
                                          file, span, kMaxSiteCellsPerSide, options.cell_size));
   out.plan.site = make_site(box, options);
+  sh3d::place_compass(home.compass, home.camera_time_ms, out.plan.site, out.warnings);
   out.plan.lights = {default_light()};
   out.plan.cameras = make_cameras(home, box, out.z_shift);
   return out;

@@ -8,9 +8,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "daylight/insolation.h"
 #include "daylight/sun_position.h"
 #include "python/py_error.h"
 #include "python/py_types.h"
+#include "solid/build_model.h"
 
 namespace py = pybind11;
 
@@ -35,6 +37,45 @@ py::dict sun_dict(const GeoLocation& place, const std::string& at, double north)
   out["sunrise"] = clock_or_none(s.sunrise, place.utc_offset);
   out["solar_noon"] = format_clock(s.solar_noon, place.utc_offset);
   out["sunset"] = clock_or_none(s.sunset, place.utc_offset);
+  return out;
+}
+
+/// The day's direct sun as `roomcad insolation --format json` prints it.
+py::dict insolation_dict(const InsolationDay& day) {
+  const double offset = day.place.utc_offset;
+  py::list rooms;
+  for (const RoomSun& room : day.rooms) {
+    py::list windows;
+    for (const WindowSun& w : room.windows) {
+      py::list intervals;
+      for (const auto& [a, b] : w.intervals)
+        intervals.append(
+            py::make_tuple(format_clock(a, offset), format_clock(b, offset, day.date)));
+      py::dict window;
+      window["id"] = w.id;
+      window["intervals"] = intervals;
+      window["continuous_hours"] = w.continuous_hours;
+      window["total_hours"] = w.total_hours;
+      windows.append(window);
+    }
+    py::dict r;
+    r["room"] = room.room;
+    r["name"] = room.name;
+    r["level"] = room.level;
+    r["area"] = room.area;
+    r["windows"] = windows;
+    r["best_window"] =
+        room.best_window.empty() ? py::object(py::none()) : py::object(py::str(room.best_window));
+    r["continuous_hours"] = room.continuous_hours;
+    r["total_hours"] = room.total_hours;
+    rooms.append(r);
+  }
+  py::dict out;
+  out["date"] = format_site_date(day.date);
+  out["utc_offset"] = offset;
+  out["latitude"] = day.place.latitude;
+  out["longitude"] = day.place.longitude;
+  out["rooms"] = rooms;
   return out;
 }
 
@@ -71,6 +112,31 @@ void register_daylight(py::module_& m, py::class_<PyPlan>& plan) {
       "Where the sun is at the plan's site.location at local time `at`, as `roomcad sun PLAN\n"
       "--format json`: the direction is in the plan's coordinates (site.north applied).\n"
       "@raise roomcad.Error usage_error without site.location or for a bad time");
+  plan.def(
+      "insolation",
+      [](const PyPlan& self, const std::string& date, bool force, int threads) {
+        if (!self.plan.site.location)
+          raise(Error{Code::usage_error,
+                      "insolation: the plan does not say where its site is (no site.location)"});
+        const CivilDay day = take(parse_site_date(date));
+        require_valid(self, force, "insolation");
+        py::gil_scoped_release free;
+        BuildOptions build;
+        build.threads = threads;
+        const Model model = build_model(self.plan, build);
+        InsolationOptions options;
+        options.threads = threads;
+        InsolationDay result = insolation(self.plan, model.walls, day, options);
+        py::gil_scoped_acquire held;
+        return insolation_dict(result);
+      },
+      py::arg("date"), py::arg("force") = false, py::arg("threads") = 0,
+      "The direct sun each room's windows get on `date` ('YYYY-MM-DD', local), as `roomcad\n"
+      "insolation PLAN --date D --format json` prints it: a dict of date, utc_offset and rooms,\n"
+      "each with its windows' intervals ('HH:MM:SS' pairs), continuous_hours and total_hours.\n"
+      "Releases the GIL.\n"
+      "@raise roomcad.Error usage_error without site.location or for a bad date; the plan's\n"
+      "first error unless force");
 }
 
 }  // namespace roomcad::python

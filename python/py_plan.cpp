@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "daylight/insolation_rule.h"
 #include "io/plan_check.h"
 #include "io/plan_drawing.h"
 #include "io/plan_json.h"
@@ -62,10 +63,13 @@ PyPlan load(const std::filesystem::path& path) {
 
 Report check(const PyPlan& self, const RuleSet& rules = {}) {
   py::gil_scoped_release free;
-  return check_plan(self.plan, self.reading ? &*self.reading : nullptr, rules);
+  Report report = check_plan(self.plan, self.reading ? &*self.reading : nullptr, rules);
+  add_insolation_findings(self.plan, rules, report);
+  return report;
 }
 
-/// The validation gate of build, render and draw: errors stop them unless `force`.
+}  // namespace
+
 void require_valid(const PyPlan& self, bool force, std::string_view verb) {
   if (force) return;
   const Report report = check(self);
@@ -76,6 +80,8 @@ void require_valid(const PyPlan& self, bool force, std::string_view verb) {
                           format_report_summary(report), first.message),
               first.location});
 }
+
+namespace {
 
 /// Applies `edit` to a copy of the plan and keeps it unless it introduces errors (then raises
 /// edit_refused, unless `force`): what every `roomcad` edit command does (cli/edit_session.h).

@@ -56,6 +56,10 @@ struct PyModel {
 /// share a Model). @return `model`. Cost O(faces * corners^2) the first time.
 PyModel& triangulated(PyModel& model);
 
+/// The validation gate of build, render, draw and insolation: the plan's first error raised
+/// (naming `verb`) unless `force`.
+void require_valid(const PyPlan& self, bool force, std::string_view verb);
+
 void register_report(pybind11::module_& m);
 void register_model(pybind11::module_& m);
 void register_plan(pybind11::module_& m);

@@ -171,6 +171,15 @@ CameraRecord read_camera(AttributeReader& r) {
   return c;
 }
 
+/// A `<compass>` with its place; nothing without latitude and longitude (the DTD's defaults
+/// are the author's locale, not the home's).
+std::optional<CompassRecord> read_compass(AttributeReader& r) {
+  const std::optional<double> latitude = r.optional_number("latitude");
+  const std::optional<double> longitude = r.optional_number("longitude");
+  if (!latitude || !longitude) return std::nullopt;
+  return CompassRecord{*latitude, *longitude, r.number("northDirection", 0.0), r.text("timeZone")};
+}
+
 /// Every `<doorOrWindow>` below `node`, in document order (groups nest them).
 void collect_items(pugi::xml_node node, std::string_view file, std::string* error,
                    std::vector<ItemRecord>& items) {
@@ -236,6 +245,10 @@ Result<Home> parse_home_xml(std::string_view xml, std::string_view file) {
     else if (name == "wall") home.walls.push_back(read_wall(r));
     else if (name == "room") home.rooms.push_back(read_room(child, r, file, &error));
     else if (name == "camera" || name == "observerCamera") home.cameras.push_back(read_camera(r));
+    else if (name == "compass") home.compass = read_compass(r);
+    if (name == "observerCamera" && r.text("attribute") == "observerCamera")
+      if (const std::optional<double> t = r.optional_number("time"); t && std::fabs(*t) < 1e17)
+        home.camera_time_ms = static_cast<std::int64_t>(*t);
   }
   collect_items(root, file, &error, home.items);
   if (error.empty()) error = check_level_references(home, file);

@@ -7,6 +7,7 @@
 // Heights of levels and walls stay in centimetres: sh3d::z_of places them on the z axis.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -87,8 +88,18 @@ struct CameraRecord {
   double field_of_view = 0;  ///< horizontal, radians
 };
 
+/// The `<compass>`: where the home is, in radians, and which way north is.
+struct CompassRecord {
+  double latitude = 0.0;         ///< radians north
+  double longitude = 0.0;        ///< radians east
+  double north_direction = 0.0;  ///< radians clockwise on screen from the plan's up to north
+  std::string time_zone;         ///< a zone name, "Europe/Paris"
+};
+
 struct Home {
   std::optional<double> wall_height_cm;  ///< the home's default wall height
+  std::optional<CompassRecord> compass;
+  std::optional<std::int64_t> camera_time_ms;  ///< the observer camera's `time`: the sun shown
   std::vector<Level> levels;
   std::vector<WallRecord> walls;
   std::vector<ItemRecord> items;

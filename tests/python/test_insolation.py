@@ -184,3 +184,21 @@ def test_the_rule_is_silent_without_a_location(roomcad_exe, tmp_path):
     assert "insolation_short" not in done.stdout.decode()
     missing = run_cli(roomcad_exe, "insolation", path, "--date", DATE, check=False)
     assert missing.returncode == 2 and b"site.location" in missing.stderr
+
+
+def test_the_module_gives_what_the_command_prints(roomcad_exe, tmp_path):
+    import roomcad
+    path = tmp_path / "room.json"
+    path.write_text(json.dumps(room_plan(0.3)))
+    printed = json.loads(run_cli(roomcad_exe, "insolation", path, "--date", DATE, "--format",
+                                 "json").stdout)
+    ours = roomcad.Plan.load(path).insolation(DATE)
+    assert ours["date"] == printed["date"] and ours["utc_offset"] == printed["utc_offset"]
+    for mine, theirs in zip(ours["rooms"], printed["rooms"], strict=True):
+        assert mine["room"] == theirs["room"] and mine["best_window"] == theirs["best_window"]
+        for w, v in zip(mine["windows"], theirs["windows"], strict=True):
+            assert [list(i) for i in w["intervals"]] == v["intervals"]
+            assert w["continuous_hours"] == pytest.approx(v["continuous_hours"], abs=1e-4)
+    finding = [f for f in roomcad.Plan.load(path).validate(rules="all").warnings
+               if f.code == "insolation_short"]
+    assert finding == []  # a south window in Moscow gets its 1.5 h on 21 March

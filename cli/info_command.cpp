@@ -14,6 +14,7 @@
 #include <fmt/ranges.h>
 
 #include "cli/command.h"
+#include "cli/json_text.h"
 #include "cli/plan_loading.h"
 #include "validation/room_labels.h"
 #include "validation/validate.h"
@@ -118,9 +119,6 @@ PlanInfo measure(const Plan& plan) {
   return info;
 }
 
-/// A number for JSON: the shortest decimal that reads back the same, `null` if not finite.
-std::string json_number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "null"; }
-
 /// A length for people: millimetre precision, no trailing zeros.
 std::string metres(double x) {
   if (!std::isfinite(x)) return fmt::format("{}", x);
@@ -128,20 +126,6 @@ std::string metres(double x) {
   while (s.back() == '0') s.pop_back();
   if (s.back() == '.') s.pop_back();
   return s == "-0" ? "0" : s;
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\', out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
-    } else {
-      out += c;
-    }
-  }
-  return out + '"';
 }
 
 std::string json_strings(const std::vector<std::string>& items) {
@@ -206,6 +190,14 @@ void print_json(const std::string& file, const Plan& plan, const PlanInfo& info)
       json_number(s.origin.x), json_number(s.origin.y), s.cells[0], s.cells[1],
       json_number(s.cell_size), json_number(static_cast<double>(s.cells[0]) * s.cell_size),
       json_number(static_cast<double>(s.cells[1]) * s.cell_size), json_number(s.max_height));
+  out += "  \"location\": ";
+  out += s.location
+             ? fmt::format("{{\"latitude\": {}, \"longitude\": {}, \"utc_offset\": {}}}",
+                           json_number(s.location->latitude), json_number(s.location->longitude),
+                           json_number(s.location->utc_offset))
+             : "null";
+  out += fmt::format(",\n  \"north\": {},\n  \"obstructions\": {},\n",
+                     json_number(s.north.value_or(0.0)), plan.obstructions.size());
   out += fmt::format("  \"walls\": {},\n  \"openings\": {},\n  \"doors\": {},\n", plan.walls.size(),
                      plan.openings.size(), info.doors);
   out += fmt::format("  \"windows\": {},\n  \"lights\": {},\n  \"cameras\": {},\n", info.windows,
@@ -230,6 +222,15 @@ void print_text(const std::string& file, const Plan& plan, const PlanInfo& info)
       metres(static_cast<double>(s.cells[0]) * s.cell_size),
       metres(static_cast<double>(s.cells[1]) * s.cell_size), metres(s.origin.x), metres(s.origin.y),
       metres(s.max_height));
+  if (s.location)
+    out += fmt::format(
+        "  location  {}° {}, {}° {}, UTC{:+g}; true north {}° counter-clockwise from +y\n",
+        std::fabs(s.location->latitude), s.location->latitude < 0 ? "S" : "N",
+        std::fabs(s.location->longitude), s.location->longitude < 0 ? "W" : "E",
+        s.location->utc_offset, s.north.value_or(0.0));
+  if (!plan.obstructions.empty())
+    out += fmt::format("  obstructions {} (neighbours: they cast shadows)\n",
+                       plan.obstructions.size());
   out += fmt::format("  walls     {}, {} m long in all, up to {} m high\n", plan.walls.size(),
                      metres(info.total_wall_length), metres(info.max_wall_height));
   out += fmt::format("  openings  {}: {} door{}, {} window{}\n", plan.openings.size(), info.doors,

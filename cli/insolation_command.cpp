@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli/command.h"
+#include "cli/json_text.h"
 #include "cli/plan_loading.h"
 #include "cli/site_place.h"
 #include "daylight/insolation.h"
@@ -28,16 +29,6 @@ struct InsolationCommandOptions {
   bool force = false;
   bool verbose = false;
 };
-
-std::string json_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", int(c));
-    else out += c;
-  }
-  return out + '"';
-}
 
 std::string intervals_json(const WindowSun& w, const InsolationDay& day) {
   std::string out = "[";

@@ -17,7 +17,7 @@ constexpr std::int64_t kStandardTime = 1767225600;  // 2026-01-01T00:00Z: winter
 
 double degrees(double radians) {
   const double d = radians * 180.0 / std::numbers::pi;
-  return std::round(d * 1e6) / 1e6;
+  return std::round(d * 1e4) / 1e4;
 }
 
 /// An angle in (-180, 180].

@@ -15,8 +15,8 @@ namespace roomcad::sh3d {
 /// Sets `site.location` and `site.north` from the compass (nothing without one). The offset is
 /// the zone's at the camera's time (standard time of the year 2026 without one); a zone the
 /// system does not know takes the offset of the longitude's nearest hour, with an
-/// import_approximated warning. Angles are rounded to a millionth of a degree (the file holds
-/// single-precision radians). O(zone file).
+/// import_approximated warning. Angles are rounded to a ten-thousandth of a degree (the file
+/// holds single-precision radians, good to about 0.00002 degree). O(zone file).
 void place_compass(const std::optional<CompassRecord>& compass,
                    std::optional<std::int64_t> camera_time_ms, Site& site, Report& warnings);
 

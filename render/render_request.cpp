@@ -128,6 +128,11 @@ Result<RenderOptions> make_render_options(const RenderRequest& a, const Plan& pl
                      .cell_size = plan.site.cell_size,
                      .cells = plan.site.cells};
   o.lights = plan.lights;
+  if (a.sun) {
+    o.lights = {sun_and_sky_light(*a.sun)};
+    o.outdoors = a.sun->z > 0 ? Outdoors{.obstructions = plan.obstructions}
+                              : night_outdoors(plan.obstructions);
+  }
   const Result<Parts> parts = parse_parts(a.parts);
   if (parts) o.parts = parts.value();
   else problem.add(parts.message());

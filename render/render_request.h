@@ -4,6 +4,7 @@
 // fill a RenderRequest, so their defaults and their checks are the same.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "plan/plan.h"
@@ -22,6 +23,10 @@ struct RenderRequest {
   double fov = 50.0, view_height = 10.0;
   std::string shading = "phong", shadows = "pcf", background = "#ffffff", grid = "on";
   std::string parts = kAllParts, cull = "back", frustum_cull = "on";
+  /// The unit direction towards the sun in plan coordinates (daylight's sun_direction_in_plan),
+  /// or nullopt: an outdoor picture lit by the sun and the sky in place of the plan's lights
+  /// (sun_and_sky_light), with the plan's obstructions; z <= 0, the sky alone.
+  std::optional<Vec3> sun;
 };
 
 /// @return the options that render `plan` as `request` asks (no depth or id image: set

@@ -180,6 +180,11 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   f.outputs = options.outputs;
   f.shade.filter = options.shadows;
   f.shade.background = to_unit_rgb(options.background);
+  if (options.outdoors) {
+    f.shade.background = to_unit_rgb(options.outdoors->sky_top);
+    f.shade.sky_bottom = to_unit_rgb(options.outdoors->sky_horizon);
+    f.shade.sky_rows = options.height * options.ssaa;
+  }
   const auto shadow_start = Clock::now();
   const std::size_t maps =
       options.shadows == ShadowFilter::off ? 0 : std::min<std::size_t>(lights.size(), kMaxLights);
@@ -195,7 +200,11 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   f.shade.shading = make_uniforms(options, cam, lights, scene.origin);
   f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
   std::vector<std::uint8_t> seen;
-  if (options.cull == FaceCull::visibility) {
+  // The pre-pass knows no passes: shadow-only obstructions would hide what is behind them, so a
+  // scene with some is culled by faces alone (the same picture either way).
+  const bool all_drawn = std::all_of(scene.clusters.begin(), scene.clusters.end(),
+                                     [](const Cluster& c) { return c.passes & kColourPass; });
+  if (options.cull == FaceCull::visibility && all_drawn) {
     const auto cull_start = Clock::now();
     VisibilityResult v = find_visible_faces(
         scene, {cam, options.width * options.ssaa, options.height * options.ssaa});
@@ -275,10 +284,11 @@ Status check_render_options(const RenderOptions& o) {
 
 CameraMatrices frame_camera(const Scene& scene, const RenderOptions& options) {
   const double aspect = static_cast<double>(options.width) / options.height;
-  Box3 bounds = scene.bounds;
+  Box3 bounds = scene.bounds, framed = model_bounds(scene);
   if (is_empty(bounds)) add_point(bounds, glm::dvec3(0.0));  // nothing to frame: look at the origin
+  if (is_empty(framed)) framed = bounds;
   const Camera camera = options.camera ? *options.camera
-                                       : frame_view(bounds, options.view, options.view_projection,
+                                       : frame_view(framed, options.view, options.view_projection,
                                                     options.view_fov_deg, aspect);
   return make_camera_matrices(camera, bounds, aspect);
 }
@@ -298,8 +308,17 @@ void render_scene(const Scene& scene, const RenderOptions& options, FrameBuffers
 void render_model(const Model& model, const RenderOptions& options, FrameBuffers& out,
                   RenderStats* stats) {
   const auto start = Clock::now();
-  const Scene scene = flatten_model(model, options.parts);
-  render_scene(scene, options, out, stats);
+  Scene scene = flatten_model(model, options.parts);
+  if (options.outdoors) add_outdoors(*options.outdoors, scene);
+  // the obstructions' outlines are drawn over the frame, hidden by its depth
+  const bool outlines = options.outdoors && !options.outdoors->obstructions.empty();
+  RenderOptions frame = options;
+  frame.outputs.depth = options.outputs.depth || outlines;
+  render_scene(scene, frame, out, stats);
+  if (outlines) {
+    outline_obstructions(*options.outdoors, frame_camera(scene, options), out.depth, out.color);
+    if (!options.outputs.depth) out.depth = FloatImage();
+  }
   if (stats) stats->frame_ms = ms_since(start);
 }
 

@@ -22,6 +22,7 @@
 #include "plan/plan.h"
 #include "render/camera.h"
 #include "render/image.h"
+#include "render/outdoors.h"
 #include "render/scene.h"
 #include "render/shading.h"
 #include "render/shadow_map.h"
@@ -92,6 +93,10 @@ struct RenderOptions {
   bool cull_frustum = true;              ///< skip clusters outside the view; same image either way
   int threads = 0;                       ///< 0: all cores; the image does not depend on it
   FrameOutputs outputs{};                ///< depth and object ids, or colour alone
+  /// An outdoor picture (render/outdoors.h): render_model adds the ground and the obstructions
+  /// to the model, the sky is the background (not `background`), and the default camera frames
+  /// the model alone.
+  std::optional<Outdoors> outdoors{};
 };
 
 /// What a frame cost, for --stats and benchmarks.
@@ -120,7 +125,9 @@ void render_model(const Model& model, const RenderOptions& options, FrameBuffers
                   RenderStats* stats = nullptr);
 
 /// The same for a scene already flattened (benchmarks and windows flatten once; the scene
-/// already holds only the parts wanted, so options.parts is not used).
+/// already holds only the parts wanted, so options.parts is not used; with options.outdoors it
+/// draws the sky, and the ground and obstructions only if add_outdoors added them, and no
+/// outlines).
 /// Both keep their working memory (binned triangles, about 80 bytes per triangle on screen,
 /// and the shadow maps) in the calling thread between frames, so that redrawing allocates
 /// nothing; it is freed when the thread ends.

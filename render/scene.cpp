@@ -55,19 +55,20 @@ glm::dvec3 centre_of(const std::vector<std::pair<const SolidMesh*, bool>>& meshe
   return is_empty(box) ? glm::dvec3(0.0) : (low_corner(box) + high_corner(box)) / 2.0;
 }
 
-/// Opens a new cluster when the current one is full (or there is none).
-void start_cluster_if_full(Scene& scene) {
+/// Opens a new cluster when the current one is full, takes other passes (or there is none).
+void start_cluster_if_full(Scene& scene, std::uint8_t passes) {
   const auto first = static_cast<std::uint32_t>(scene.triangle_count());
-  if (scene.clusters.empty() || scene.clusters.back().count >= kClusterSize) {
-    scene.clusters.push_back(Cluster{.first = first, .count = 0, .bounds = {}});
+  if (scene.clusters.empty() || scene.clusters.back().count >= kClusterSize ||
+      scene.clusters.back().passes != passes) {
+    scene.clusters.push_back(Cluster{.first = first, .count = 0, .bounds = {}, .passes = passes});
   }
 }
 
 /// Adds a triangle of world points, stored relative to the scene's origin: the difference is
 /// taken in double, so only the (small) result is rounded to float.
 void push_triangle(Scene& scene, const std::array<OpenMesh::Vec3d, 3>& corners,
-                   const glm::vec3& normal) {
-  start_cluster_if_full(scene);
+                   const glm::vec3& normal, std::uint8_t passes = kAllPasses) {
+  start_cluster_if_full(scene, passes);
   Cluster& cluster = scene.clusters.back();
   for (const OpenMesh::Vec3d& c : corners) {
     const glm::dvec3 world(c[0], c[1], c[2]);
@@ -107,6 +108,49 @@ void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene) {
                         props.has_color ? mesh.property(props.color, fh) : Color{0x80, 0x80, 0x80});
     scene.two_sided.insert(scene.two_sided.end(), added, two_sided ? 1 : 0);
   }
+}
+
+void append_triangles(std::span<const glm::dvec3> corners, Color color, FaceKind kind,
+                      std::uint8_t passes, Scene& scene) {
+  for (std::size_t i = 0; i + 2 < corners.size(); i += 3) {
+    const glm::dvec3 n = glm::cross(corners[i + 1] - corners[i], corners[i + 2] - corners[i]);
+    if (!(glm::length(n) > 0.0)) continue;  // degenerate: nothing to draw
+    std::array<OpenMesh::Vec3d, 3> points;
+    for (int c = 0; c < 3; ++c) {
+      const glm::dvec3& p = corners[i + static_cast<std::size_t>(c)];
+      points[static_cast<std::size_t>(c)] = OpenMesh::Vec3d(p.x, p.y, p.z);
+    }
+    push_triangle(scene, points, glm::vec3(glm::normalize(n)), passes);
+    scene.objects.push_back(-1);
+    scene.kinds.push_back(kind);
+    scene.colors.push_back(color);
+    scene.two_sided.push_back(0);
+  }
+}
+
+std::optional<Box3> pass_bounds(const Scene& scene, std::uint8_t passes) {
+  Box3 box = empty_box3();
+  bool all = true;
+  for (const Cluster& c : scene.clusters) {
+    if ((c.passes & passes) != passes) {
+      all = false;
+    } else if (!is_empty(c.bounds)) {
+      add_point(box, low_corner(c.bounds));
+      add_point(box, high_corner(c.bounds));
+    }
+  }
+  if (all) return std::nullopt;
+  return box;
+}
+
+Box3 model_bounds(const Scene& scene) {
+  const std::optional<Box3> local = pass_bounds(scene, kAllPasses);
+  if (!local) return scene.bounds;
+  Box3 box = empty_box3();
+  if (is_empty(*local)) return box;
+  add_point(box, low_corner(*local) + scene.origin);
+  add_point(box, high_corner(*local) + scene.origin);
+  return box;
 }
 
 Scene flatten_model(const Model& model, const Parts& parts) {

@@ -9,6 +9,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -19,11 +21,19 @@
 
 namespace roomcad {
 
+/// The passes of a frame a triangle takes part in (Cluster::passes): the model takes both; an
+/// outdoor picture's ground is drawn but casts no shadow, its obstructions cast shadows but are
+/// drawn in outline only (render/outdoors.h).
+inline constexpr std::uint8_t kColourPass = 1;
+inline constexpr std::uint8_t kShadowPass = 2;
+inline constexpr std::uint8_t kAllPasses = kColourPass | kShadowPass;
+
 /// A run of consecutive triangles with one bounding box, for frustum culling.
 struct Cluster {
   std::uint32_t first = 0;
   std::uint32_t count = 0;
   Box3 bounds = empty_box3();  ///< relative to the scene's origin
+  std::uint8_t passes = kAllPasses;
 };
 
 /// Triangles in metres relative to `origin`, the centre of the model (float: positions within
@@ -61,5 +71,20 @@ inline constexpr std::uint32_t kClusterSize = 256;
 /// @param[in,out] scene   grows, its corners relative to its origin (set before the first
 ///                        append); its clusters and bounds are updated
 void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene);
+
+/// Appends triangles given by their world corners (3 a triangle, counter-clockwise seen from
+/// outside) in clusters of their own taking part in `passes` only, with one colour and kind and
+/// no object (-1), one-sided. O(corners).
+void append_triangles(std::span<const glm::dvec3> corners, Color color, FaceKind kind,
+                      std::uint8_t passes, Scene& scene);
+
+/// @return the bounds, in the scene's frame (relative to its origin), of the clusters taking
+///         part in all of `passes`; nullopt when every cluster does (then the scene's own
+///         bounds are theirs). O(clusters).
+[[nodiscard]] std::optional<Box3> pass_bounds(const Scene& scene, std::uint8_t passes);
+
+/// @return the world bounds of the triangles that take part in both passes: the model itself,
+///         what the default camera frames (scene.bounds when every triangle does). O(clusters).
+[[nodiscard]] Box3 model_bounds(const Scene& scene);
 
 }  // namespace roomcad

@@ -23,22 +23,27 @@ struct LightFrame {
   double half_x = 1.0, half_y = 1.0, near_d = 0.0, far_d = 1.0;
 };
 
-LightFrame fit_light_frame(const Box3& scene, const glm::dvec3& to_light) {
-  const glm::dvec3 center = (low_corner(scene) + high_corner(scene)) / 2.0;
-  const double radius = glm::length(high_corner(scene) - low_corner(scene)) / 2.0 + 1.0;
+/// The light's frame around `casters` (across) and `scene` (in depth), both in the scene's
+/// frame: the map covers what casts shadows, its depth range everything that may receive them.
+LightFrame fit_light_frame(const Box3& casters, const Box3& scene, const glm::dvec3& to_light) {
+  const glm::dvec3 center = (low_corner(casters) + high_corner(casters)) / 2.0;
+  const double radius = glm::length(high_corner(scene) - low_corner(scene)) / 2.0 +
+                        glm::length(center - (low_corner(scene) + high_corner(scene)) / 2.0) + 1.0;
   const glm::dvec3 up = std::abs(to_light.z) < 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
   LightFrame f;
   f.view = glm::lookAtRH(center + to_light * radius, center, up);
   double lo = 1e300, hi = -1e300, hx = 0.0, hy = 0.0;
   for (int i = 0; i < 8; ++i) {
-    const glm::dvec3 c((i & 1) ? scene.high[0] : scene.low[0],
-                       (i & 2) ? scene.high[1] : scene.low[1],
-                       (i & 4) ? scene.high[2] : scene.low[2]);
-    const glm::dvec4 v = f.view * glm::dvec4(c, 1.0);
+    const auto corner = [i](const Box3& b) {
+      return glm::dvec4((i & 1) ? b.high[0] : b.low[0], (i & 2) ? b.high[1] : b.low[1],
+                        (i & 4) ? b.high[2] : b.low[2], 1.0);
+    };
+    const glm::dvec4 v = f.view * corner(casters);
     hx = std::max(hx, std::abs(v.x));
     hy = std::max(hy, std::abs(v.y));
-    lo = std::min(lo, -v.z);
-    hi = std::max(hi, -v.z);
+    const double d = -(f.view * corner(scene)).z;
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
   }
   f.half_x = hx * 1.001 + 1e-3;  // a sliver of margin keeps the bounds' faces inside
   f.half_y = hy * 1.001 + 1e-3;
@@ -66,6 +71,7 @@ void rasterize_map(const Scene& scene, int resolution, ShadowMap& map,
                            .height = resolution,
                            .tile_size = 128,
                            .cull_back_faces = true,
+                           .pass = kShadowPass,
                            .uniform_viewer = glm::vec4(map.to_light, 0.f)},
       bins);
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
@@ -100,7 +106,11 @@ void detail::render_shadow_map_into(const Scene& scene, const Light& light, int 
     local.low[std::size_t(k)] -= scene.origin[k];
     local.high[std::size_t(k)] -= scene.origin[k];
   }
-  const LightFrame frame = fit_light_frame(local, to_light);
+  // the map covers what casts shadows: the scene's bounds when everything does, so that a
+  // scene of the model alone keeps its map to the bit
+  const Box3 casters = pass_bounds(scene, kShadowPass).value_or(local);
+  if (is_empty(casters)) return;
+  const LightFrame frame = fit_light_frame(casters, local, to_light);
   map.light_view_projection = glm::mat4(light_projection(frame) * frame.view);
   map.light_rotation = glm::mat3(glm::dmat3(frame.view));
   map.texel_x = static_cast<float>(2.0 * frame.half_x / resolution);

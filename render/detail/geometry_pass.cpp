@@ -145,6 +145,7 @@ void run_geometry_pass(const Scene& scene, const GeometryPass& pass, BinnedTrian
     const std::size_t end = std::min(scene.clusters.size(), (c + 1) * kClustersPerChunk);
     for (std::size_t k = c * kClustersPerChunk; k < end; ++k) {
       const Cluster& cluster = scene.clusters[k];
+      if ((cluster.passes & pass.pass) == 0) continue;
       if (pass.cull_frustum && is_outside_frustum(cluster.bounds, pass.uniform_view_projection)) {
         continue;
       }

@@ -40,9 +40,10 @@ struct GeometryPass {
   int width = 0;  ///< pixels, <= 2^20
   int height = 0;
   int tile_size = 64;
-  bool cull_back_faces = true;  ///< one-sided scene triangles only; two-sided are never culled
-  bool cull_frustum = true;     ///< skip clusters whose bounds lie outside the view (clipping
-                                ///< drops their triangles anyway: this only saves work)
+  bool cull_back_faces = true;      ///< one-sided scene triangles only; two-sided are never culled
+  bool cull_frustum = true;         ///< skip clusters whose bounds lie outside the view (clipping
+                                    ///< drops their triangles anyway: this only saves work)
+  std::uint8_t pass = kColourPass;  ///< draws the clusters that take part in this pass
   const std::uint8_t* uniform_draw = nullptr;  ///< per scene triangle, 0: skip; nullptr: all
   /// Where the viewer is, homogeneous: (eye, 1) for a perspective view, (unit direction
   /// towards the viewer, 0) for an orthographic one; (0, 0, 0, 0) leaves back faces to the

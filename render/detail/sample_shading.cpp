@@ -111,10 +111,13 @@ int run_end(const std::uint32_t* ids, int i, int limit) {
 
 ROOMCAD_WIDE_LOOPS void shade_tile(const ShadeUniforms& u, const RasterTarget& t, glm::vec3* rgb) {
   const int w = t.x1 - t.x0;
-  const glm::vec3 background = u.background;  // a local: the stores below cannot change it
   TriangleCache cache;
   SampleRun run;
   for (int y = t.y0; y < t.y1; ++y) {
+    // a local: the stores below cannot change it
+    const glm::vec3 background =
+        u.sky_bottom ? glm::mix(u.background, *u.sky_bottom, (y + 0.5f) / u.sky_rows)
+                     : u.background;
     const std::uint32_t* ids = t.ids + static_cast<std::ptrdiff_t>(y - t.y0) * w;
     glm::vec3* out = rgb + static_cast<std::ptrdiff_t>(y - t.y0) * w;
     for (int i = 0; i < w;) {

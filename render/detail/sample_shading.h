@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -24,6 +25,10 @@ struct ShadeUniforms {
   ShadowFilter filter = ShadowFilter::off;
   ShadingUniforms shading;
   glm::vec3 background{1.f};  ///< sRGB in [0, 1], where no triangle is seen
+  /// A sky: the background goes from `background` at the top row of samples to this at row
+  /// `sky_rows` (the frame's height in samples); nullopt: one colour.
+  std::optional<glm::vec3> sky_bottom;
+  int sky_rows = 1;
 };
 
 /// Shades every sample of a rasterised tile: the surface seen there, or the background.

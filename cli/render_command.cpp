@@ -11,6 +11,8 @@
 
 #include "cli/command.h"
 #include "cli/plan_loading.h"
+#include "cli/site_place.h"
+#include "daylight/sun_at.h"
 #include "io/id_image.h"
 #include "io/image_io.h"
 #include "plan/plan_levels.h"
@@ -26,6 +28,8 @@ struct RenderArgs {
   RenderRequest request;
   std::string plan, output, depth, ids;
   std::string level;  ///< render only this level; empty: all
+  std::string sun;    ///< --sun TIME; empty: the plan's lights
+  PlaceOptions place;
   bool stats = false, force = false;
   bool verbose = false;  ///< list the plan's findings (else one line counts them)
 };
@@ -39,6 +43,31 @@ Status write_outputs(const RenderArgs& a, const FrameBuffers& out, const Model& 
   return Status::success();
 }
 
+/// With --sun, points `request` at the sun (from the site's place at that time) and says on
+/// stderr when it is down. @return a usage_error naming the option that is wrong.
+Status light_by_sun(const RenderArgs& a, const Plan& plan, RenderRequest& request) {
+  const bool placed = a.place.latitude || a.place.longitude || a.place.utc_offset;
+  if (a.sun.empty()) {
+    if (placed)
+      return Status::failure(Code::usage_error,
+                             "--latitude, --longitude and --utc-offset place the sun of --sun; "
+                             "give --sun TIME with them");
+    return Status::success();
+  }
+  const Result<GeoLocation> place = site_place(&plan, a.plan, a.place);
+  if (!place) return place.status();
+  const Result<SunAt> sun = sun_at(place.value(), plan.site.north.value_or(0.0), a.sun, "--sun");
+  if (!sun) return sun.status();
+  request.sun = sun->direction;
+  if (sun->position.elevation <= 0) {
+    std::fprintf(stderr,
+                 "roomcad render: the sun is below the horizon at %s (elevation %.2f°): lit by "
+                 "the sky alone\n",
+                 site_clock_text(place.value(), sun->time).c_str(), sun->position.elevation);
+  }
+  return Status::success();
+}
+
 int run_render(const RenderArgs& a) {
   // The validation gate: errors stop the render unless --force.
   const Result<LoadedPlan> loaded =
@@ -47,11 +76,14 @@ int run_render(const RenderArgs& a) {
   const Result<Plan> level = select_level(loaded->plan, a.level);
   if (!level) return report_failure("render", level.error());
   const Plan& plan = level.value();
-  Result<RenderOptions> asked = make_render_options(a.request, plan);
+  RenderRequest request = a.request;
+  if (const Status lit = light_by_sun(a, plan, request); !lit)
+    return report_failure("render", lit.error());
+  Result<RenderOptions> asked = make_render_options(request, plan);
   if (!asked) return report_failure("render", asked.error());
   RenderOptions options = std::move(asked).value();
   options.outputs = FrameOutputs{.depth = !a.depth.empty(), .object_ids = !a.ids.empty()};
-  if (plan.lights.size() > static_cast<std::size_t>(kMaxLights)) {
+  if (!request.sun && plan.lights.size() > static_cast<std::size_t>(kMaxLights)) {
     std::fprintf(stderr, "roomcad render: warning: %s has %zu lights; the first %d are drawn\n",
                  a.plan.c_str(), plan.lights.size(), kMaxLights);
   }
@@ -106,6 +138,12 @@ void add_render_command(CLI::App& root, Commands& commands) {
                   "height)");
   app->add_option("--view", args->request.view,
                   "Frame the model from front|back|left|right|top|iso (default iso)");
+  app->add_option("--sun", args->sun,
+                  "Light the model by the sun at this local time at the site, YYYY-MM-DDTHH:MM, "
+                  "or with its own offset (Z, +03:00), and the sky: the plan's lights are not "
+                  "used; the ground, the sky and the plan's obstructions (in outline) are drawn")
+      ->type_name("TIME");
+  add_place_options(*app, args->place);
   app->add_option("--shading", args->request.shading, "unlit, flat, gouraud or phong")
       ->capture_default_str();
   app->add_option("--shadows", args->request.shadows, "off, hard or pcf")->capture_default_str();

@@ -11,6 +11,7 @@
 #include "daylight/insolation.h"
 #include "daylight/sun_position.h"
 #include "python/py_error.h"
+#include "python/py_site.h"
 #include "python/py_types.h"
 #include "solid/build_model.h"
 
@@ -81,6 +82,15 @@ py::dict insolation_dict(const InsolationDay& day) {
 
 }  // namespace
 
+const GeoLocation& site_location(const Plan& plan, std::string_view what) {
+  if (!plan.site.location)
+    raise(Error{Code::usage_error,
+                std::string(what) +
+                    ": the plan does not say where its site is (no site.location); set it with "
+                    "plan.set('site', location='LAT,LON,UTC_OFFSET')"});
+  return *plan.site.location;
+}
+
 void register_daylight(py::module_& m, py::class_<PyPlan>& plan) {
   m.def(
       "sun",
@@ -102,11 +112,7 @@ void register_daylight(py::module_& m, py::class_<PyPlan>& plan) {
   plan.def(
       "sun",
       [](const PyPlan& self, const std::string& at) {
-        if (!self.plan.site.location)
-          raise(Error{Code::usage_error,
-                      "sun: the plan does not say where its site is (no site.location); "
-                      "set it with plan.set('site', location='LAT,LON,UTC_OFFSET')"});
-        return sun_dict(*self.plan.site.location, at, self.plan.site.north.value_or(0.0));
+        return sun_dict(site_location(self.plan, "sun"), at, self.plan.site.north.value_or(0.0));
       },
       py::arg("at"),
       "Where the sun is at the plan's site.location at local time `at`, as `roomcad sun PLAN\n"

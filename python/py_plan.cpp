@@ -14,6 +14,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "daylight/insolation_rule.h"
+#include "daylight/sun_at.h"
 #include "io/plan_check.h"
 #include "io/plan_drawing.h"
 #include "io/plan_json.h"
@@ -23,6 +24,7 @@
 #include "plan/plan_objects.h"
 #include "python/py_error.h"
 #include "python/py_plan_values.h"
+#include "python/py_site.h"
 #include "python/py_types.h"
 #include "render/render_request.h"
 #include "repair/repair.h"
@@ -157,8 +159,19 @@ std::vector<std::string> ids(const PyPlan& self, const std::optional<std::string
   return out;
 }
 
-py::array_t<std::uint8_t> render(const PyPlan& self, const RenderRequest& request, bool force) {
+/// Points the request at the sun at `time` (local at the plan's site.location), as
+/// `roomcad render --sun` does.
+void light_by_sun(const Plan& plan, const std::string& time, RenderRequest& request) {
+  const Result<SunAt> sun =
+      sun_at(site_location(plan, "sun"), plan.site.north.value_or(0.0), time, "sun");
+  if (!sun) raise(sun.error());
+  request.sun = sun->direction;
+}
+
+py::array_t<std::uint8_t> render(const PyPlan& self, RenderRequest request,
+                                 const std::optional<std::string>& sun, bool force) {
   require_valid(self, force, "render");
+  if (sun) light_by_sun(self.plan, *sun, request);
   Result<RenderOptions> asked = make_render_options(request, self.plan);
   if (!asked) raise(asked.error());
   const RenderOptions options = std::move(asked).value();
@@ -397,7 +410,8 @@ void register_pictures(PlanClass& plan) {
              const py::object& target, const py::object& up, const std::string& projection,
              double fov, double view_height, const std::string& shading, const std::string& shadows,
              int shadow_res, int ssaa, const std::string& background, bool grid,
-             const std::string& parts, int threads, bool force) {
+             const std::string& parts, int threads, const std::optional<std::string>& sun,
+             bool force) {
             RenderRequest r;
             r.camera = camera.value_or("");
             r.width = width, r.height = height, r.view = view.value_or("");
@@ -408,7 +422,7 @@ void register_pictures(PlanClass& plan) {
             r.shading = shading, r.shadows = shadows, r.shadow_res = shadow_res, r.ssaa = ssaa;
             r.background = background, r.grid = grid ? "on" : "off";
             r.parts = parts == "all" ? kAllParts : parts, r.threads = threads;
-            return render(self, r, force);
+            return render(self, r, sun, force);
           },
           py::arg("camera") = py::none(), py::arg("width") = 1280, py::arg("height") = 720,
           py::arg("view") = py::none(), py::arg("eye") = py::none(), py::arg("target") = py::none(),
@@ -416,13 +430,15 @@ void register_pictures(PlanClass& plan) {
           py::arg("fov") = 50.0, py::arg("view_height") = 10.0, py::arg("shading") = "phong",
           py::arg("shadows") = "pcf", py::arg("shadow_res") = 1024, py::arg("ssaa") = 1,
           py::arg("background") = "#ffffff", py::arg("grid") = true, py::arg("parts") = "all",
-          py::arg("threads") = 0, py::arg("force") = false,
+          py::arg("threads") = 0, py::arg("sun") = py::none(), py::arg("force") = false,
           "Renders the model on the CPU: an H x W x 3 uint8 array (sRGB), pixel for pixel what\n"
           "`roomcad render` writes with the same options (the same defaults). Releases the GIL.\n"
           "@param camera   a plan camera's id; else eye and target ((x, y, z) metres); else "
           "`view`\n"
           "@param view     front, back, left, right, top or iso (default iso)\n"
           "@param shading  unlit, flat, gouraud, phong; shadows: off, hard, pcf; ssaa: 1, 2, 4\n"
+          "@param sun      a local time at the site ('2026-04-22T14:30'): lit by the sun and\n"
+          "                the sky there, as `roomcad render --sun` (needs site.location)\n"
           "@raise roomcad.Error usage_error naming the option, or the plan's first error")
       .def(
           "draw",

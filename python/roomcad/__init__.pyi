@@ -99,7 +99,7 @@ class Plan:
                projection: str = "perspective", fov: float = 50.0, view_height: float = 10.0,
                shading: str = "phong", shadows: str = "pcf", shadow_res: int = 1024,
                ssaa: int = 1, background: str = "#ffffff", grid: bool = True,
-               parts: str = "all", threads: int = 0,
+               parts: str = "all", threads: int = 0, sun: Optional[str] = None,
                force: bool = False) -> npt.NDArray[np.uint8]: ...
     def draw(self, view: str = "plan", scale: Optional[str] = None, cut_height: float = 1.0,
              hidden: str = "dashed", parts: str = "all", force: bool = False) -> str: ...

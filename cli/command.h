@@ -74,6 +74,7 @@ void add_set_command(CLI::App& root, Commands& commands);
 void add_render_command(CLI::App& root, Commands& commands);
 void add_view_command(CLI::App& root, Commands& commands);
 void add_sun_command(CLI::App& root, Commands& commands);
+void add_shadow_study_command(CLI::App& root, Commands& commands);
 void add_insolation_command(CLI::App& root, Commands& commands);
 
 }  // namespace roomcad::cli

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   add_set_command(app, commands);
   add_render_command(app, commands);
   add_sun_command(app, commands);
+  add_shadow_study_command(app, commands);
   add_insolation_command(app, commands);
   add_window_command_entry(app);
   return run_command_line(app, commands, argc, argv);

@@ -87,7 +87,7 @@ const GeoLocation& site_location(const Plan& plan, std::string_view what) {
     raise(Error{Code::usage_error,
                 std::string(what) +
                     ": the plan does not say where its site is (no site.location); set it with "
-                    "plan.set('site', location='LAT,LON,UTC_OFFSET')"});
+                    "plan.set('site', 'location', 'LAT,LON,UTC_OFFSET')"});
   return *plan.site.location;
 }
 
@@ -121,9 +121,7 @@ void register_daylight(py::module_& m, py::class_<PyPlan>& plan) {
   plan.def(
       "insolation",
       [](const PyPlan& self, const std::string& date, bool force, int threads) {
-        if (!self.plan.site.location)
-          raise(Error{Code::usage_error,
-                      "insolation: the plan does not say where its site is (no site.location)"});
+        (void)site_location(self.plan, "insolation");
         const CivilDay day = take(parse_site_date(date));
         require_valid(self, force, "insolation");
         py::gil_scoped_release free;

@@ -44,7 +44,7 @@ int run_sun(const SunOptions& options) {
   const SunPosition sun = sun_position(place.value(), at.value());
   const double north = plan ? plan->site.north.value_or(0.0) : 0.0;
   const Vec3 d = sun_direction_in_plan(sun, north);
-  const auto day = static_cast<CivilDay>(std::floor((at.value() + offset * 3600.0) / 86400.0));
+  const auto day = local_day(at.value(), offset);
   const SunDay sun_day_ = sun_day(place.value(), day);
   if (options.format == "json") {
     std::printf(

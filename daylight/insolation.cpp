@@ -145,6 +145,7 @@ InsolationDay insolation(const Plan& plan, const SolidMesh& solid, CivilDay date
                   level.level,
                   room.area,
                   room.outline,
+                  room.walls,
                   {},
                   "",
                   0,

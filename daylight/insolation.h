@@ -46,6 +46,7 @@ struct RoomSun {
   std::string level;  ///< its level's id, or ""
   double area = 0.0;  ///< clear floor, square metres
   std::vector<Point2> outline;     ///< its clear floor (for messages and drawings)
+  std::vector<std::string> walls;  ///< ids of the walls bounding it (Room::walls)
   std::vector<WindowSun> windows;  ///< in the order of the room's walls
   std::string best_window;         ///< largest continuous, then total ("" without windows)
   double continuous_hours = 0.0;   ///< its best window's

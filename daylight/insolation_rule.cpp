@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "core/box.h"
+
 #include "daylight/detail/room_side.h"
 #include "daylight/insolation.h"
 #include "daylight/sun_position.h"
@@ -77,7 +79,7 @@ bool applies(const RoomSun& room, const RuleSet& rules) {
   if (!rules.insolation.room_pattern.empty())
     return std::regex_search(room.name, std::regex(rules.insolation.room_pattern,
                                                    std::regex::ECMAScript | std::regex::icase));
-  return is_habitable_room(Room{room.outline, room.area, room.level, {}, {}, {}}, room.name,
+  return is_habitable_room(Room{room.outline, room.area, room.level, room.walls, {}, {}}, room.name,
                            rules.habitable_rooms);
 }
 
@@ -216,7 +218,6 @@ Report check_insolation(const Plan& plan, const SolidMesh& solid, const RuleSet&
   const Severity severity = rules.severity[*rule_index(Code::insolation_short)];
   const InsolationOptions options{
       .above_sill = rule.above_sill, .into_reveal = rule.into_reveal, .only_windows = {}};
-  const std::size_t errors_before = validate(plan).error_count();
   // The worst day of the rule for each room: its best window's hours that day.
   struct Shortfall {
     std::size_t room;
@@ -241,15 +242,13 @@ Report check_insolation(const Plan& plan, const SolidMesh& solid, const RuleSet&
       else if (better(known->best, best)) *known = {r, day, sun, best};
     }
   }
-  const std::vector<LevelRooms> walls_of = find_rooms_by_level(plan);
-  std::vector<const Room*> flat;
-  for (const LevelRooms& level : walls_of)
-    for (const Room& room : level.rooms) flat.push_back(&room);
+  // A candidate fix may not add errors: counted once, and only when some room falls short.
+  const std::size_t errors_before = short_rooms.empty() ? 0 : validate(plan).error_count();
   const double offset = plan.site.location->utc_offset;
   for (std::size_t k = 0; k < short_rooms.size(); ++k) {
     const Shortfall& s = short_rooms[k];
     const RoomSun& room = rooms[s.room];
-    const std::vector<std::string>& walls = flat[s.room]->walls;
+    const std::vector<std::string>& walls = room.walls;
     const std::string title =
         room.name.empty() ? room.room : fmt::format("{} ({})", room.room, room.name);
     const std::string window = s.best.window.empty()
@@ -270,12 +269,10 @@ Report check_insolation(const Plan& plan, const SolidMesh& solid, const RuleSet&
     d.fix = k < kMaxRoomsFixed
                 ? fix_text(plan, room, s.best, walls, s.day, s.sun, rules, errors_before)
                 : "move its windows towards the sun's side, or add one on a wall facing it";
-    double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
-    for (const Point2& p : room.outline) {
-      lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
-      lo_y = std::min(lo_y, p.y), hi_y = std::max(hi_y, p.y);
-    }
-    if (!room.outline.empty()) d.where = Where{{lo_x, lo_y}, Point2{hi_x, hi_y}};
+    Box2 box = empty_box2();
+    for (const Point2& p : room.outline) add_point(box, p.x, p.y);
+    if (!room.outline.empty())
+      d.where = Where{{box.min_x, box.min_y}, Point2{box.max_x, box.max_y}};
     report.add(std::move(d));
   }
   return report;

@@ -108,6 +108,10 @@ Result<UtcSeconds> parse_site_time(std::string_view text, double utc_offset_hour
   return local_midnight(*day, offset) + hour * 3600.0 + minute * 60.0 + second;
 }
 
+CivilDay local_day(UtcSeconds t, double utc_offset_hours) {
+  return static_cast<CivilDay>(std::floor((t + utc_offset_hours * 3600.0) / kSecondsPerDay));
+}
+
 UtcSeconds local_midnight(CivilDay day, double utc_offset_hours) {
   return static_cast<double>(day) * kSecondsPerDay - utc_offset_hours * 3600.0;
 }

@@ -35,6 +35,9 @@ inline constexpr double kSecondsPerDay = 86400.0;
 /// @return `YYYY-MM-DD` of a day. O(1).
 [[nodiscard]] std::string format_site_date(CivilDay day);
 
+/// @return the local calendar day, at a UTC offset, that time `t` falls in. O(1).
+[[nodiscard]] CivilDay local_day(UtcSeconds t, double utc_offset_hours);
+
 /// @return the UTC time of local midnight starting `day` at a UTC offset. O(1).
 [[nodiscard]] UtcSeconds local_midnight(CivilDay day, double utc_offset_hours);
 

@@ -21,7 +21,7 @@ Result<SunAt> sun_at(const GeoLocation& place, double north_degrees, std::string
 
 std::string site_clock_text(const GeoLocation& place, UtcSeconds time) {
   const double offset = place.utc_offset;
-  const auto day = static_cast<CivilDay>(std::floor((time + offset * 3600.0) / kSecondsPerDay));
+  const auto day = local_day(time, offset);
   return fmt::format("{} {} (UTC{:+})", format_site_date(day), format_clock(time, offset), offset);
 }
 

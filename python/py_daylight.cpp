@@ -29,7 +29,7 @@ py::dict sun_dict(const GeoLocation& place, const std::string& at, double north)
   const UtcSeconds t = take(parse_site_time(at, place.utc_offset));
   const SunPosition sun = sun_position(place, t);
   const Vec3 d = sun_direction_in_plan(sun, north);
-  const auto day = static_cast<CivilDay>(std::floor((t + place.utc_offset * 3600.0) / 86400.0));
+  const auto day = local_day(t, place.utc_offset);
   const SunDay s = sun_day(place, day);
   py::dict out;
   out["azimuth"] = sun.azimuth;

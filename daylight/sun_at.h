@@ -19,7 +19,7 @@ struct SunAt {
 };
 
 /// @return the sun at `time` at `place`, `north_degrees` being the plan's site.north.
-///         One sun_position: about 0.1 ms.
+///         One sun_position.
 [[nodiscard]] SunAt sun_at(const GeoLocation& place, double north_degrees, UtcSeconds time);
 
 /// The same for a time as `roomcad sun --at` reads it (parse_site_time at the place's offset).

@@ -22,17 +22,17 @@ struct SunPosition {
 /// @return the sun's position at `place` (latitude and longitude; its utc_offset is not used)
 ///         at time `t`. The IAU 2006/2000A chain of ERFA: the Earth's position (VSOP2000-based
 ///         eraEpv00), aberration, precession-nutation and Earth rotation (UT1 taken as UTC),
-///         plus the sun's parallax; refraction off. Agrees with NREL's SPA and with
-///         python3-ephem well within 0.001 degree over 1950-2100 (tests/python/test_sun.py
-///         checks 0.01 on 1,000 random places and times). About 0.1 ms (SunTracker: 25 us a
-///         position over a span).
+///         plus the sun's parallax; refraction off. Agrees with python3-ephem within 0.01
+///         degree over 1950-2100 (tests/python/test_sun.py, 1,000 random places and times).
+///         Cost: the whole chain each call; SunTracker shares its slow part between the times
+///         of a span (bench/report.md, "Daylight", has both costs).
 [[nodiscard]] SunPosition sun_position(const GeoLocation& place, UtcSeconds t);
 
 /// Sun positions at one place over a span of time, cheaply: the slow parts of the chain
 /// (precession-nutation, the Earth's position and velocity for deflection and aberration) are
 /// computed once per hour of the span, and only the Earth's position and rotation per time.
-/// Within the span it agrees with sun_position within 0.0002 degree; a position costs about a
-/// fifth of one sun_position. Immutable: positions may be asked from any thread.
+/// Within the span it agrees with sun_position within 0.0002 degree (a test checks it).
+/// Immutable: positions may be asked from any thread.
 class SunTracker {
  public:
   /// @pre from <= to

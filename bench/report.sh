@@ -177,26 +177,35 @@ section_skipping() {
   build/bench/skipping_bench --benchmark_format=csv 2>/dev/null >"$out/skipping_raw.csv"
   # A row per view and switch setting (name BM_Skipping/view/cull/frustum, label the view).
   awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { gsub(/"/, "", $i); c[$i] = i }
-                     print "view,cull,frustum_cull,frame_ms,triangles,screen_triangles,prepass_skipped"; next }
-           { split($1, a, "/"); gsub(/"/, "", $c["label"])
-             printf "%s,%s,%s,%.2f,%d,%d,%d\n", $c["label"], (a[3] == 0 ? "none" : a[3] == 1 ? "back" : "visibility"),
-                    (a[4] == 1 ? "on" : "off"), $c["real_time"], $c["triangles"], $c["screen_triangles"], $c["prepass_skipped"] }' \
+                     print "view,cull,frustum_cull,frame_ms,triangles,screen_triangles,prepass_skipped,cells_visited,drawn_triangles"; next }
+           /BM_Skipping/ { split($1, a, "/"); gsub(/"/, "", $c["label"])
+             printf "%s,%s,%s,%.2f,%d,%d,%d,%d,%d\n", $c["label"], (a[3] == 0 ? "none" : a[3] == 1 ? "back" : a[3] == 2 ? "portals" : "visibility"),
+                    (a[4] == 1 ? "on" : "off"), $c["real_time"], $c["triangles"], $c["screen_triangles"], $c["prepass_skipped"],
+                    $c["cells_visited"], $c["drawn_triangles"] }' \
     "$out/skipping_raw.csv" >"$out/skipping.csv"
+  # The same eye inside models of every size (name BM_Inside/view/cull/shadows).
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { gsub(/"/, "", $i); c[$i] = i }
+                     print "view,cull,shadows,frame_ms,triangles,screen_triangles,cells_visited,drawn_triangles"; next }
+           /BM_Inside/ { split($1, a, "/"); gsub(/"/, "", $c["label"])
+             printf "%s,%s,%s,%.2f,%d,%d,%d,%d\n", $c["label"], (a[3] == 1 ? "back" : a[3] == 2 ? "portals" : "visibility"),
+                    (a[4] == 1 ? "pcf (kept)" : "off"), $c["real_time"], $c["triangles"], $c["screen_triangles"],
+                    $c["cells_visited"], $c["drawn_triangles"] }' \
+    "$out/skipping_raw.csv" >"$out/inside.csv"
   # Pivoted for the bars: a row per view, a column per setting.
   awk -F, 'NR > 1 { if (!($1 in seen)) { seen[$1] = 1; v[++n] = $1 } ms[$1, $2 "/" $3] = $4 }
-           END { split("none/off none/on back/off back/on visibility/off visibility/on", k, " ")
-                 row = "view"; for (j = 1; j <= 6; j++) { split(k[j], f, "/"); row = row ",faces " f[1] " + frustum " f[2] }; print row
-                 for (i = 1; i <= n; i++) { row = v[i]; for (j = 1; j <= 6; j++) row = row "," ms[v[i], k[j]]; print row } }' \
+           END { split("none/off none/on back/off back/on portals/off portals/on visibility/off visibility/on", k, " ")
+                 row = "view"; for (j = 1; j <= 8; j++) { split(k[j], f, "/"); row = row ",faces " f[1] " + frustum " f[2] }; print row
+                 for (i = 1; i <= n; i++) { row = v[i]; for (j = 1; j <= 8; j++) row = row "," ms[v[i], k[j]]; print row } }' \
     "$out/skipping.csv" >"$out/skipping_by_view.csv"
   gnuplot <<GNUPLOT
 $(bar_plot_preamble "$out/skipping.png" 1000)
 set key outside below maxrows 2
 set logscale y
 set format y '%g'
-set yrange [10:*]
+set yrange [5:*]
 set title 'what skipping saves: frame ms at 1920x1080, 2 threads, no shadows, per culling setting'
 set ylabel 'frame ms (log scale)'
-plot for [i=2:7] '$out/skipping_by_view.csv' using i:xtic(1) title columnhead(i)
+plot for [i=2:9] '$out/skipping_by_view.csv' using i:xtic(1) title columnhead(i)
 GNUPLOT
 }
 
@@ -302,17 +311,27 @@ kept=$(awk -v m="$marker" 'found || $0 == m { found = 1; print }' bench/report.m
   echo "![kernels](report/kernels.png)"
   echo
   echo "## What skipping saves"
-  echo "Each culling switch on and off (\`roomcad render --cull none|back|visibility --frustum-cull on|off\`),"
+  echo "Each culling switch on and off (\`roomcad render --cull none|back|portals|visibility --frustum-cull on|off\`),"
   echo "1920 x 1080, 2 threads, shadows off (the switches touch only the colour pass): the 10 x 10 grid"
   echo "of rooms and examples/house.json, from outside (grid: default iso view; house: its first camera)"
   echo "and from inside a room at eye height. The pictures are byte-identical whatever the switches"
   echo "(tests/cli/cull_test.cpp). \`screen_triangles\`: triangles left after culling and clipping"
   echo "(frustum culling only skips work clipping would discard, so it changes the time, not this count);"
-  echo "\`prepass_skipped\`: triangles the visibility pre-pass found hidden."
+  echo "\`prepass_skipped\`: triangles the visibility pre-pass found hidden; \`cells_visited\` and"
+  echo "\`drawn_triangles\`: the cells the portal walk reached and the triangles it submitted (tests:"
+  echo "tests/render/portal_walk_test.cpp)."
   echo
   csv_to_markdown "$out/skipping.csv"
   echo
   echo "![what skipping saves](report/skipping.png)"
+  echo
+  echo "### The same eye inside models of every size"
+  echo "One eye inside a room (the grids: \`--eye 2,2,1.6 --target 3.5,3,1.5\`; the others: the largest"
+  echo "room the walk can start from, looking east), 1920 x 1080, 2 threads, shadows off and on (the"
+  echo "maps kept between frames, as the window keeps them): the 10 x 10 and 70 x 70 grids,"
+  echo "examples/house.json (one storey), the six-storey tower and arif-putra-pertama-1."
+  echo
+  csv_to_markdown "$out/inside.csv"
   echo
   echo "The per-wall fast path on and off is the fast path against the CGAL path in the build section."
   echo

@@ -87,8 +87,9 @@ int run_render(const RenderArgs& a) {
     std::fprintf(stderr, "roomcad render: warning: %s has %zu lights; the first %d are drawn\n",
                  a.plan.c_str(), plan.lights.size(), kMaxLights);
   }
-  const Model model =
-      build_model(plan, BuildOptions{.parts = options.parts, .threads = a.request.threads});
+  const bool walk = options.cull == FaceCull::portals || options.cull == FaceCull::visibility;
+  const Model model = build_model(
+      plan, BuildOptions{.parts = options.parts, .threads = a.request.threads, .cells = walk});
   FrameBuffers out;
   RenderStats stats;
   render_model(model, options, out, &stats);
@@ -96,10 +97,11 @@ int run_render(const RenderArgs& a) {
     std::fprintf(stderr,
                  "{\"triangles\": %zu, \"screen_triangles\": %zu, \"shadow_ms\": %.3f, "
                  "\"raster_ms\": %.3f, \"frame_ms\": %.3f, \"width\": %d, \"height\": %d, "
-                 "\"culled_triangles\": %zu, \"cull_ms\": %.3f}\n",
+                 "\"culled_triangles\": %zu, \"cull_ms\": %.3f, \"cells_visited\": %zu, "
+                 "\"drawn_triangles\": %zu}\n",
                  stats.triangles, stats.screen_triangles, stats.shadow_ms, stats.raster_ms,
                  stats.frame_ms, options.width, options.height, stats.culled_triangles,
-                 stats.cull_ms);
+                 stats.cull_ms, stats.cells_visited, stats.drawn_triangles);
   }
   if (const Status written = write_outputs(a, out, model); !written)
     return report_failure("render", written.error());
@@ -160,9 +162,11 @@ void add_render_command(CLI::App& root, Commands& commands) {
   app->add_option("--parts", args->request.parts, "Parts to draw: walls,floor,fixtures")
       ->capture_default_str();
   app->add_option("--cull", args->request.cull,
-                  "none: draw every face; back: skip faces turned away; visibility: also faces "
-                  "Makarov & Safin's visible-surface pre-pass finds hidden (same picture)")
-      ->check(CLI::IsMember({"none", "back", "visibility"}))
+                  "none: draw every face; back: skip faces turned away; portals: also the rooms "
+                  "the camera's room does not see through its doors and windows; visibility: "
+                  "also faces Makarov & Safin's visible-surface pre-pass finds hidden among those "
+                  "(the same picture whichever)")
+      ->check(CLI::IsMember({"none", "back", "portals", "visibility"}))
       ->capture_default_str();
   app->add_option("--frustum-cull", args->request.frustum_cull,
                   "on: skip clusters outside the view; off: clip them all (same picture)")

@@ -11,6 +11,7 @@
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
+#include "mesh/cells.h"
 #include "plan/plan.h"
 
 namespace roomcad {
@@ -74,6 +75,7 @@ struct Model {
   SolidMesh fixtures;                ///< door leaves and window panes
   std::vector<std::string> objects;  ///< object ids; rc:object indexes this
   bool slabs_built = true;           ///< `walls` holds the plan's slabs (false: built without them)
+  Cells cells{};                     ///< rooms and portals (BuildOptions::cells), else empty
 };
 
 }  // namespace roomcad

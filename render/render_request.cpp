@@ -140,10 +140,11 @@ Result<RenderOptions> make_render_options(const RenderRequest& a, const Plan& pl
   o.outputs = FrameOutputs{.depth = false, .object_ids = false};
   o.cull = parse_choice<FaceCull>("--cull", a.cull,
                                   a.cull == "visibility" ? std::optional(FaceCull::visibility)
+                                  : a.cull == "portals"  ? std::optional(FaceCull::portals)
                                   : a.cull == "none"     ? std::optional(FaceCull::none)
                                   : a.cull == "back"     ? std::optional(FaceCull::back_faces)
                                                          : std::nullopt,
-                                  "none, back, visibility", problem);
+                                  "none, back, portals, visibility", problem);
   if (a.frustum_cull != "on" && a.frustum_cull != "off")
     problem.add(fmt::format("--frustum-cull '{}': expected on or off", a.frustum_cull));
   o.cull_frustum = a.frustum_cull == "on";

@@ -16,6 +16,7 @@
 #include "render/detail/sample_shading.h"
 #include "render/detail/shadow_pass.h"
 #include "render/detail/wide_loops.h"
+#include "render/portal_walk.h"
 #include "render/visibility.h"
 
 namespace roomcad {
@@ -41,6 +42,14 @@ struct DepthToDistance {
   }
 };
 
+/// What a frame's shadow maps depend on (RenderOptions::reuse_shadow_maps).
+struct ShadowKey {
+  std::uint64_t scene_revision = 0;  ///< 0: no maps drawn yet
+  std::vector<Light> lights;
+  int resolution = 0;
+  friend bool operator==(const ShadowKey&, const ShadowKey&) = default;
+};
+
 /// Memory a frame needs, kept between the frames of one calling thread (a window redrawing,
 /// a benchmark): allocating and faulting in tens of megabytes a frame costs more than some
 /// whole passes. Its contents never outlive a frame, so images do not depend on it.
@@ -48,6 +57,7 @@ struct FrameMemory {
   detail::BinnedTriangles bins;
   detail::BinnedTriangles shadow_bins;
   std::vector<ShadowMap> shadow_maps;
+  ShadowKey shadow_key;  ///< what the shadow maps were drawn for
 };
 
 /// Everything the tile tasks read (the frame's `uniform_` state).
@@ -188,10 +198,16 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   const auto shadow_start = Clock::now();
   const std::size_t maps =
       options.shadows == ShadowFilter::off ? 0 : std::min<std::size_t>(lights.size(), kMaxLights);
-  f.shadow_maps.resize(maps);
-  for (std::size_t k = 0; k < maps; ++k) {
-    detail::render_shadow_map_into(scene, lights[k], options.shadow_resolution, f.shadow_maps[k],
-                                   memory.shadow_bins);
+  ShadowKey key{scene.revision,
+                {lights.begin(), lights.begin() + std::ptrdiff_t(maps)},
+                options.shadow_resolution};
+  if (!(options.reuse_shadow_maps && key == memory.shadow_key && scene.revision != 0)) {
+    f.shadow_maps.resize(maps);
+    for (std::size_t k = 0; k < maps; ++k) {
+      detail::render_shadow_map_into(scene, lights[k], options.shadow_resolution, f.shadow_maps[k],
+                                     memory.shadow_bins);
+    }
+    memory.shadow_key = std::move(key);
   }
   stats.shadow_ms = ms_since(shadow_start);
   const auto raster_start = Clock::now();
@@ -199,6 +215,14 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
   const CameraMatrices cam = rebase_camera(frame_camera(scene, options), scene.origin);
   f.shade.shading = make_uniforms(options, cam, lights, scene.origin);
   f.depth_to_distance = DepthToDistance(glm::inverse(cam.projection));
+  std::optional<PortalWalk> walk;
+  if (options.cull == FaceCull::portals || options.cull == FaceCull::visibility) {
+    walk = walk_portals(scene, cam);
+    if (walk) {
+      stats.cells_visited = walk->cells_visited;
+      for (const Cluster& run : walk->runs) stats.drawn_triangles += run.count;
+    }
+  }
   std::vector<std::uint8_t> seen;
   // The pre-pass knows no passes: shadow-only obstructions would hide what is behind them, so a
   // scene with some is culled by faces alone (the same picture either way).
@@ -206,8 +230,11 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
                                      [](const Cluster& c) { return c.passes & kColourPass; });
   if (options.cull == FaceCull::visibility && all_drawn) {
     const auto cull_start = Clock::now();
-    VisibilityResult v = find_visible_faces(
-        scene, {cam, options.width * options.ssaa, options.height * options.ssaa});
+    VisibilityResult v = find_visible_faces(scene, {.camera = cam,
+                                                    .width = options.width * options.ssaa,
+                                                    .height = options.height * options.ssaa,
+                                                    .clusters = walk ? &walk->runs : nullptr,
+                                                    .views = walk ? walk->views.data() : nullptr});
     stats.culled_triangles = scene.triangle_count() - v.visible_count;
     seen = std::move(v.visible);
     stats.cull_ms = ms_since(cull_start);
@@ -221,6 +248,8 @@ void render_frame(const Scene& scene, const RenderOptions& options, FrameBuffers
                            .cull_back_faces = options.cull != FaceCull::none,
                            .cull_frustum = options.cull_frustum,
                            .uniform_draw = seen.empty() ? nullptr : seen.data(),
+                           .uniform_clusters = walk ? &walk->runs : nullptr,
+                           .uniform_views = walk ? walk->views.data() : nullptr,
                            .uniform_viewer = cam.orthographic
                                                  ? glm::vec4(-glm::vec3(cam.forward), 0.f)
                                                  : glm::vec4(glm::vec3(cam.eye), 1.f)},

@@ -69,8 +69,11 @@ inline constexpr int kMaxThreads = 256;
 enum class FaceCull {
   none,        ///< nothing: every face is rasterised (to measure what culling saves)
   back_faces,  ///< one-sided faces turned away from the camera
-  visibility,  ///< also every face Makarov & Safin's visible-surface pre-pass (render/visibility.h)
-               ///< finds unseen
+  /// back faces, and every cell the camera's cell does not see through its portals
+  /// (render/portal_walk.h; a model built with BuildOptions::cells, else as back_faces)
+  portals,
+  visibility,  ///< portals, then every face Makarov & Safin's visible-surface pre-pass
+               ///< (render/visibility.h) finds unseen among those left
 };
 
 /// Everything a frame depends on besides the model. Designated initialisers welcome.
@@ -93,6 +96,10 @@ struct RenderOptions {
   bool cull_frustum = true;              ///< skip clusters outside the view; same image either way
   int threads = 0;                       ///< 0: all cores; the image does not depend on it
   FrameOutputs outputs{};                ///< depth and object ids, or colour alone
+  /// Keep the shadow maps of this thread's last frame while the scene (Scene::revision), the
+  /// lights and the shadow resolution stay the same (a window redrawing as the camera moves:
+  /// the maps are fitted to the scene, not the view). Same picture either way.
+  bool reuse_shadow_maps = false;
   /// An outdoor picture (render/outdoors.h): render_model adds the ground and the obstructions
   /// to the model, the sky is the background (not `background`), and the default camera frames
   /// the model alone.
@@ -108,6 +115,8 @@ struct RenderStats {
   double frame_ms = 0.0;             ///< everything render_model did
   std::size_t culled_triangles = 0;  ///< skipped by FaceCull::visibility
   double cull_ms = 0.0;              ///< the visibility pre-pass (part of raster_ms)
+  std::size_t cells_visited = 0;     ///< cells the portal walk reached (0: no walk)
+  std::size_t drawn_triangles = 0;   ///< triangles submitted after the portal walk
 };
 
 /// Checks options. @return success, or a usage_error naming the option and its value.

@@ -4,13 +4,21 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <utility>
 #include <vector>
 
 #include "mesh/triangulate_face.h"
+#include "render/scene_cells.h"
 
 namespace roomcad {
 namespace {
+
+/// A number no scene has had yet.
+std::uint64_t next_revision() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
 
 /// The persistent face properties of a mesh, where present.
 struct FaceProperties {
@@ -84,6 +92,7 @@ void push_triangle(Scene& scene, const std::array<OpenMesh::Vec3d, 3>& corners,
 }  // namespace
 
 void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene) {
+  scene.revision = next_revision();
   const FaceProperties props(mesh);
   std::vector<OpenMesh::Vec3d> points;
   for (const auto fh : mesh.faces()) {
@@ -112,6 +121,7 @@ void append_mesh(const SolidMesh& mesh, bool two_sided, Scene& scene) {
 
 void append_triangles(std::span<const glm::dvec3> corners, Color color, FaceKind kind,
                       std::uint8_t passes, Scene& scene) {
+  scene.revision = next_revision();
   for (std::size_t i = 0; i + 2 < corners.size(); i += 3) {
     const glm::dvec3 n = glm::cross(corners[i + 1] - corners[i], corners[i + 2] - corners[i]);
     if (!(glm::length(n) > 0.0)) continue;  // degenerate: nothing to draw
@@ -161,6 +171,8 @@ Scene flatten_model(const Model& model, const Parts& parts) {
   Scene scene;
   scene.origin = centre_of(meshes);
   for (const auto& [mesh, two_sided] : meshes) append_mesh(*mesh, two_sided, scene);
+  if (!model.cells.empty() && parts.walls && (model.slabs_built || !model.cells.uses_slabs))
+    scene.cells = std::make_shared<const SceneCells>(index_cells(model.cells, scene));
   return scene;
 }
 

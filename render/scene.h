@@ -9,12 +9,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "mesh/cells.h"
 #include "mesh/parts.h"
 #include "mesh/solid_mesh.h"
 #include "render/camera.h"
@@ -36,6 +38,14 @@ struct Cluster {
   std::uint8_t passes = kAllPasses;
 };
 
+/// The model's cells (mesh/cells.h) and, per cell, the triangles that may be seen inside it:
+/// runs in scene order, each within one cluster (render/scene_cells.h).
+struct SceneCells {
+  Cells cells;
+  std::vector<std::vector<Cluster>> runs;  ///< per cell
+  std::size_t indexed_triangles = 0;       ///< triangles appended later belong to no cell
+};
+
 /// Triangles in metres relative to `origin`, the centre of the model (float: positions within
 /// a few km of it keep ~0.1 mm). Float world coordinates would lose that far from (0, 0): 1e6 m
 /// away a float step is 6 cm, and shadow depths compared in it make acne.
@@ -51,6 +61,12 @@ struct Scene {
   std::vector<Cluster> clusters;        ///< cover all triangles, in order
   Box3 bounds = empty_box3();           ///< of all triangles, world metres; empty if none
   glm::dvec3 origin{0.0};               ///< world position of the corners' (0, 0, 0)
+  /// Changes whenever triangles are added (flatten_model, append_mesh, append_triangles): what a
+  /// renderer keys the shadow maps it keeps between frames by (RenderOptions::reuse_shadow_maps).
+  std::uint64_t revision = 0;
+  /// The cells of the model drawn, when it was built with them and every part that closes
+  /// them is drawn (walls, and slabs if they close cells); else null.
+  std::shared_ptr<const SceneCells> cells;
 
   [[nodiscard]] std::size_t triangle_count() const { return normals.size(); }
 };
@@ -63,7 +79,8 @@ inline constexpr std::uint32_t kClusterSize = 256;
 /// a property is missing: -1, wall_face, grey). Walls and floor are one-sided (closed solid,
 /// floor seen from above); fixtures are two-sided (thin leaves and panes).
 /// Degenerate faces (zero area, fewer than 3 vertices) are skipped. The origin is the centre
-/// of the bounding box of the parts' vertices (0 when there are none).
+/// of the bounding box of the parts' vertices (0 when there are none). With the model's cells
+/// (Model::cells) and the parts that close them, the scene keeps them (index_cells).
 /// @return the scene; clusters follow face order, one part after the other. O(n) in corners.
 [[nodiscard]] Scene flatten_model(const Model& model, const Parts& parts = {});
 

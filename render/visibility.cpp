@@ -45,7 +45,9 @@ std::vector<detail::FlatTriangle> set_up(const Scene& scene, const VisibilityVie
                              .width = view.width,
                              .height = view.height,
                              .tile_size = view.tile_size,
-                             .cull_back_faces = true},
+                             .cull_back_faces = true,
+                             .uniform_clusters = view.clusters,
+                             .uniform_views = view.views},
                             bins);
   std::vector<detail::FlatTriangle> flat;
   for (const auto& chunk : bins.chunks)

@@ -22,6 +22,7 @@
 #include <glm/glm.hpp>
 
 #include "render/camera.h"
+#include "render/portal_walk.h"
 #include "render/scene.h"
 
 namespace roomcad {
@@ -41,6 +42,9 @@ struct VisibilityView {
   int width = 1;          ///< samples across (output pixels * ssaa), >= 1
   int height = 1;
   int tile_size = 128;  ///< the rasteriser's tiles (the renderer's): float depth rounds per tile
+  /// The runs of triangles to look at (a portal walk's, render/portal_walk.h); nullptr: all.
+  const std::vector<Cluster>* clusters = nullptr;
+  const RunView* views = nullptr;  ///< with clusters: where each run is seen (or nullptr)
 };
 
 /// Finds the triangles visible in a view.

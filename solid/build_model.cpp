@@ -10,6 +10,7 @@
 #include "geometry/joins.h"
 #include "solid/detail/assembly/face_soup.h"
 #include "solid/detail/assembly/floor_fixtures.h"
+#include "solid/detail/cells/find_cells.h"
 #include "solid/detail/fast_path/fast_wall.h"
 #include "solid/detail/fast_path/fuse_seams.h"
 #include "solid/detail/frames/buildable_plan.h"
@@ -127,6 +128,15 @@ std::vector<std::string> model_object_ids(const Plan& plan) {
   return ids;
 }
 
+Cells find_model_cells(const Plan& input, const Parts& parts) {
+  if (!parts.walls) return {};
+  const detail::BuildablePlan buildable = detail::make_buildable(input);
+  const Joins joins = find_joins(buildable.plan);
+  return detail::find_cells(
+      buildable.plan, detail::make_wall_frames(buildable.plan, joins, buildable.through_mitre),
+      parts.slabs);
+}
+
 Model build_model(const Plan& input, const BuildOptions& options, BuildStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<tbb::global_control> limit;
@@ -160,6 +170,8 @@ Model build_model(const Plan& input, const BuildOptions& options, BuildStats* st
               .objects = std::move(objects),
               .slabs_built = options.parts.slabs};
   detail::require_closed(model.walls, model.objects);
+  if (options.cells && options.parts.walls)
+    model.cells = detail::find_cells(plan, frames, options.parts.slabs);
   if (options.parts.walls)
     if (const auto fine = detail::fine_feature(input)) require_written_solid(model, input, *fine);
   local.build_ms =

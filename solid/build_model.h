@@ -30,7 +30,7 @@ enum class BooleanPath {
 
 struct BuildOptions {
   BooleanPath boolean = BooleanPath::automatic;
-  Parts parts;
+  Parts parts{};
   int threads = 0;  ///< 0: all cores; output is identical at any thread count
   /// The general path's planes whose polygons are rectangles along their axes, nearly all
   /// (walls drawn along x and y), built on the grid of their lines
@@ -38,6 +38,9 @@ struct BuildOptions {
   /// (but for the faces no other polygon of their plane meets:
   /// solid/detail/general_path/lone_faces.h), the reference for tests and benchmarks.
   bool grid_planes = true;
+  /// Also find the model's cells and portals (Model::cells), for renderers that draw only
+  /// what the camera's room lets through. Needs the walls part.
+  bool cells = false;
 };
 
 /// What a build did, for --stats, benchmarks and tests.
@@ -59,5 +62,11 @@ struct BuildStats {
 ///         missing hole.
 [[nodiscard]] Model build_model(const Plan& plan, const BuildOptions& options = {},
                                 BuildStats* stats = nullptr);
+
+/// The cells and portals of the model build_model makes of `plan` with these parts
+/// (Model::cells; empty without walls), found alone: for a window that builds its model in
+/// pieces. @throws PreconditionError as build_model, for a wall it cannot build.
+/// Cost: see solid/detail/cells/find_cells.h.
+[[nodiscard]] Cells find_model_cells(const Plan& plan, const Parts& parts = {});
 
 }  // namespace roomcad

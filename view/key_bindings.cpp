@@ -31,6 +31,10 @@ constexpr std::array kBindings{
     KeyBinding{"3", false, false, A::view_side, "view from the side (east)"},
     KeyBinding{"4", false, false, A::view_iso, "iso view (south-west, above)"},
     KeyBinding{"p", false, false, A::toggle_projection, "perspective / parallel projection"},
+    KeyBinding{"f", false, false, A::toggle_walk,
+               "walk in the first person from where the view looks (eye 1.6 m over the floor): "
+               "w and s step, a and d turn, dragging looks around; f again, or a view key, "
+               "orbits again"},
     KeyBinding{"h", false, false, A::toggle_shadows, "shadows on / off"},
     KeyBinding{"m", false, false, A::next_shading, "shading: phong, flat, gouraud, unlit"},
     KeyBinding{"g", false, false, A::toggle_grid, "site grid on / off"},

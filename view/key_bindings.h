@@ -36,6 +36,7 @@ enum class Action {
   view_side,
   view_iso,
   toggle_projection,
+  toggle_walk,  // first person: a and d turn, w and s step, dragging looks around
   toggle_shadows,
   next_shading,
   toggle_grid,

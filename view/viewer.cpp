@@ -10,8 +10,11 @@
 #include <fmt/format.h>
 
 #include "plan/plan_levels.h"
+#include "render/scene_cells.h"
+#include "solid/build_model.h"
 #include "view/frame_overlay.h"
 #include "view/orbit_camera.h"
+#include "view/walk_camera.h"
 #include "view/wireframe.h"
 
 namespace roomcad {
@@ -20,6 +23,11 @@ namespace {
 /// Degrees of orbit per pixel dragged, and the zoom factor per wheel notch.
 constexpr double kDragDegreesPerPixel = 0.3;
 constexpr double kWheelZoom = 0.9;
+
+bool is_inside(const Box3& b, const Vec3& p) {
+  return p.x >= b.low[0] && p.x <= b.high[0] && p.y >= b.low[1] && p.y <= b.high[1] &&
+         p.z >= b.low[2] && p.z <= b.high[2];
+}
 
 Box3 framing_bounds(const Scene& scene) {
   Box3 b = scene.bounds;
@@ -34,8 +42,10 @@ Viewer::Viewer(ViewSession session, const ViewerOptions& options)
     : session_(std::move(session)), viewer_options_(options), level_(options.level) {
   options_ =
       RenderOptions{.width = options.width, .height = options.height, .threads = options.threads};
-  options_.grid.enabled = true;    // as `roomcad render --grid on`
-  options_.outputs.depth = false;  // the window picks by object id, never by depth
+  options_.grid.enabled = true;       // as `roomcad render --grid on`
+  options_.outputs.depth = false;     // the window picks by object id, never by depth
+  options_.cull = FaceCull::portals;  // from inside a room, only what its doors let through
+  options_.reuse_shadow_maps = true;  // the camera moves; the model and lights mostly do not
   rebuild_model();
   if (options.camera) camera_ = *options.camera;
   else frame_preset(options.view);
@@ -57,6 +67,7 @@ void Viewer::rebuild_model() {
     build.threads = viewer_options_.threads;
     const Model model = models_.build(plan, build);
     scene_ = flatten_model(model);
+    drawn_plan_ = plan;
     objects_ = model.objects;
     base_colors_ = scene_.colors;
     model_problem_.clear();
@@ -76,13 +87,18 @@ bool Viewer::handle(const InputEvent& input) {
   switch (input.type) {
     case InputEvent::Type::click: pick(input.x, input.y); break;
     case InputEvent::Type::wheel:
-      camera_ = zoom_camera(camera_, std::pow(kWheelZoom, input.x));
+      camera_ = walking_ ? walk_forward(camera_, 0.5 * input.x)
+                         : zoom_camera(camera_, std::pow(kWheelZoom, input.x));
       break;
     case InputEvent::Type::drag:
-      camera_ = input.right_button ? pan_camera(camera_, -input.x / double(options_.height),
-                                                input.y / double(options_.height))
-                                   : orbit_camera(camera_, -input.x * kDragDegreesPerPixel,
-                                                  input.y * kDragDegreesPerPixel);
+      if (walking_)
+        camera_ =
+            look_around(camera_, -input.x * kDragDegreesPerPixel, -input.y * kDragDegreesPerPixel);
+      else
+        camera_ = input.right_button ? pan_camera(camera_, -input.x / double(options_.height),
+                                                  input.y / double(options_.height))
+                                     : orbit_camera(camera_, -input.x * kDragDegreesPerPixel,
+                                                    input.y * kDragDegreesPerPixel);
       break;
     case InputEvent::Type::wait_change: return true;  // the window waits (view/sdl_window.h)
     case InputEvent::Type::key: {
@@ -142,6 +158,7 @@ void Viewer::draw() {
   build_ms_ =
       rebuilt ? std::chrono::duration<double, std::milli>(start - rebuild_start).count() : 0.0;
   highlight();
+  if (scene_.revision != cells_revision_ && is_inside(scene_.bounds, camera_.eye)) add_cells();
   options_.camera = camera_;
   render_scene(scene_, options_, buffers_);
   shown_ = buffers_.color;
@@ -151,6 +168,15 @@ void Viewer::draw() {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   // A conflict's choices are shown even with the overlay off: they must not go unseen.
   if (viewer_options_.overlay || session_.in_conflict()) draw_overlay(shown_, overlay_text());
+}
+
+void Viewer::add_cells() {
+  cells_revision_ = scene_.revision;  // tried once per model, found or not
+  try {
+    scene_.cells =
+        std::make_shared<const SceneCells>(index_cells(find_model_cells(drawn_plan_), scene_));
+  } catch (const std::exception&) {  // a wall the build could not make either: draw it all
+  }
 }
 
 const RgbImage& Viewer::frame() {

@@ -74,6 +74,10 @@ class Viewer {
   void rebuild_model();
   void apply(Action action);
   void apply_camera(Action action);
+  /// The camera moves of walking, for the actions that have one. @return whether it had one.
+  bool apply_walk(Action action);
+  [[nodiscard]] double floor_height() const;
+  void add_cells();
   void apply_display(Action action);
   void apply_edit(Action action);
   void step(int dx, int dy);
@@ -90,6 +94,10 @@ class Viewer {
   Camera camera_;
   ModelCache models_;  ///< rebuilds only the wall groups an edit touched
   Scene scene_;
+  Plan drawn_plan_;  ///< the plan (or level) scene_ shows
+  /// The scene revision whose cells were looked for: found once the eye first stands inside
+  /// the model, for the portal walk (an edit makes a new scene, which looks again).
+  std::uint64_t cells_revision_ = 0;
   std::vector<Color> base_colors_;    ///< scene_ colours before highlighting
   std::vector<std::string> objects_;  ///< Model::objects of the model drawn
   std::uint64_t built_revision_ = ~std::uint64_t{0};
@@ -98,6 +106,7 @@ class Viewer {
   RgbImage shown_;     ///< the colour buffer with wireframe and overlay
   std::string level_;  ///< the level shown alone (plan_of_level), or "" for all
   bool wireframe_ = false;
+  bool walking_ = false;  ///< first person (Action::toggle_walk), else orbiting
   bool dirty_ = true;
   double frame_ms_ = 0.0;
   double build_ms_ = 0.0;

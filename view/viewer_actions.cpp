@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 
+#include "plan/plan_levels.h"
 #include "validation/report_format.h"
 #include "view/orbit_camera.h"
 #include "view/viewer.h"
+#include "view/walk_camera.h"
 
 namespace roomcad {
 namespace {
@@ -14,6 +16,7 @@ namespace {
 constexpr double kKeyDegrees = 15.0;  ///< one orbit or turn key press
 constexpr double kPanStep = 0.1;      ///< one pan key press, of the visible height
 constexpr double kZoomStep = 0.8;     ///< one zoom key press
+constexpr double kWalkStep = 0.5;     ///< one step forward or back, metres
 
 ShadingMode next_mode(ShadingMode m) {
   switch (m) {
@@ -51,13 +54,42 @@ glm::dvec3 turn_axis(Action a) {
 }  // namespace
 
 void Viewer::apply(Action action) {
-  if (action >= Action::orbit_left && action <= Action::toggle_projection) apply_camera(action);
+  if (action >= Action::orbit_left && action <= Action::toggle_walk) apply_camera(action);
   else if (action >= Action::toggle_shadows && action <= Action::toggle_overlay)
     apply_display(action);
   else apply_edit(action);
 }
 
+double Viewer::floor_height() const {
+  const Plan& plan = session_.plan();
+  if (const Level* shown = level_.empty() ? nullptr : find_level(plan, level_))
+    return shown->elevation;
+  double lowest = 0.0;
+  for (std::size_t i = 0; i < plan.levels.size(); ++i)
+    lowest = i == 0 ? plan.levels[i].elevation : std::min(lowest, plan.levels[i].elevation);
+  return lowest;
+}
+
+bool Viewer::apply_walk(Action a) {
+  switch (a) {
+    case Action::orbit_left: camera_ = look_around(camera_, kKeyDegrees, 0.0); return true;
+    case Action::orbit_right: camera_ = look_around(camera_, -kKeyDegrees, 0.0); return true;
+    case Action::orbit_up: camera_ = walk_forward(camera_, kWalkStep); return true;
+    case Action::orbit_down: camera_ = walk_forward(camera_, -kWalkStep); return true;
+    case Action::zoom_in: camera_ = walk_forward(camera_, kWalkStep); return true;
+    case Action::zoom_out: camera_ = walk_forward(camera_, -kWalkStep); return true;
+    default: return false;
+  }
+}
+
 void Viewer::apply_camera(Action a) {
+  if (a == Action::toggle_walk) {
+    walking_ = !walking_;
+    if (walking_) camera_ = stand_at_target(camera_, floor_height());
+    return;
+  }
+  if (walking_ && apply_walk(a)) return;
+  if (a >= Action::view_top && a <= Action::view_iso) walking_ = false;
   const glm::dvec3 axis = turn_axis(a);
   if (glm::length(axis) > 0.0) camera_ = rotate_camera(camera_, axis, kKeyDegrees);
   switch (a) {

@@ -42,16 +42,36 @@ bool is_clearly_back_facing(const Scene& scene, std::uint32_t i, const glm::vec4
   return facing < 0.f && facing * facing > 1e-6f * glm::dot(to_viewer, to_viewer);
 }
 
+/// Whether no corner of a triangle lies beyond a run's plane (RunView::beyond).
+bool is_short_of(const glm::vec3* c, const glm::vec4& beyond) {
+  auto past = [&](const glm::vec3& p) { return glm::dot(beyond, glm::vec4(p, 1.f)) > 0.f; };
+  return !(past(c[0]) || past(c[1]) || past(c[2]));
+}
+
+/// Whether the triangle's clip-space corners all lie outside one side of the scissor
+/// rectangle's view cone.
+bool is_outside_scissor(const std::array<ClipVertex, 3>& v, const glm::vec4& s) {
+  auto all = [&](auto outside) {
+    return outside(v[0].position) && outside(v[1].position) && outside(v[2].position);
+  };
+  return all([&](const glm::vec4& p) { return p.x < s.x * p.w; }) ||
+         all([&](const glm::vec4& p) { return p.x > s.z * p.w; }) ||
+         all([&](const glm::vec4& p) { return p.y < s.y * p.w; }) ||
+         all([&](const glm::vec4& p) { return p.y > s.w * p.w; });
+}
+
 void process_triangle(const Scene& scene, std::uint32_t i, const GeometryPass& pass,
-                      std::vector<ScreenTriangle>& out) {
+                      const RunView* view, std::vector<ScreenTriangle>& out) {
   const bool one_sided = pass.cull_back_faces && !scene.two_sided[i];
   if (one_sided && is_clearly_back_facing(scene, i, pass.uniform_viewer)) return;
   const glm::vec3* c = &scene.corners[3 * static_cast<std::size_t>(i)];
+  if (view && is_short_of(c, view->beyond)) return;
   const std::array<ClipVertex, 3> v{{
       {pass.uniform_view_projection * glm::vec4(c[0], 1.f), {0.f, 0.f}},
       {pass.uniform_view_projection * glm::vec4(c[1], 1.f), {1.f, 0.f}},
       {pass.uniform_view_projection * glm::vec4(c[2], 1.f), {0.f, 1.f}},
   }};
+  if (view && is_outside_scissor(v, view->scissor)) return;
   const Culling culling = one_sided ? Culling::back_faces : Culling::none;
   const std::uint32_t c0 = outcode(v[0].position), c1 = outcode(v[1].position),
                       c2 = outcode(v[2].position);
@@ -137,21 +157,23 @@ void run_geometry_pass(const Scene& scene, const GeometryPass& pass, BinnedTrian
   bins.tile_size = pass.tile_size;
   bins.tiles_x = (pass.width + pass.tile_size - 1) / pass.tile_size;
   bins.tiles_y = (pass.height + pass.tile_size - 1) / pass.tile_size;
-  const std::size_t chunk_count =
-      (scene.clusters.size() + kClustersPerChunk - 1) / kClustersPerChunk;
+  const std::vector<Cluster>& clusters =
+      pass.uniform_clusters ? *pass.uniform_clusters : scene.clusters;
+  const std::size_t chunk_count = (clusters.size() + kClustersPerChunk - 1) / kClustersPerChunk;
   bins.chunks.resize(chunk_count);
   tbb::parallel_for(std::size_t{0}, chunk_count, [&](std::size_t c) {
     bins.chunks[c].clear();
-    const std::size_t end = std::min(scene.clusters.size(), (c + 1) * kClustersPerChunk);
+    const std::size_t end = std::min(clusters.size(), (c + 1) * kClustersPerChunk);
     for (std::size_t k = c * kClustersPerChunk; k < end; ++k) {
-      const Cluster& cluster = scene.clusters[k];
+      const Cluster& cluster = clusters[k];
       if ((cluster.passes & pass.pass) == 0) continue;
       if (pass.cull_frustum && is_outside_frustum(cluster.bounds, pass.uniform_view_projection)) {
         continue;
       }
       for (std::uint32_t i = cluster.first; i < cluster.first + cluster.count; ++i) {
         if (pass.uniform_draw && !pass.uniform_draw[i]) continue;
-        process_triangle(scene, i, pass, bins.chunks[c]);
+        process_triangle(scene, i, pass, pass.uniform_views ? &pass.uniform_views[k] : nullptr,
+                         bins.chunks[c]);
       }
     }
   });

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/portal_walk.h"
 #include "render/rasterizer.h"
 #include "render/scene.h"
 
@@ -45,6 +46,12 @@ struct GeometryPass {
                                     ///< drops their triangles anyway: this only saves work)
   std::uint8_t pass = kColourPass;  ///< draws the clusters that take part in this pass
   const std::uint8_t* uniform_draw = nullptr;  ///< per scene triangle, 0: skip; nullptr: all
+  /// The runs of triangles to draw, in scene order, each within one of the scene's clusters
+  /// (a portal walk's); nullptr: the scene's clusters.
+  const std::vector<Cluster>* uniform_clusters = nullptr;
+  /// With uniform_clusters: per run, where its triangles can be seen (the others are skipped);
+  /// nullptr: anywhere.
+  const RunView* uniform_views = nullptr;
   /// Where the viewer is, homogeneous: (eye, 1) for a perspective view, (unit direction
   /// towards the viewer, 0) for an orthographic one; (0, 0, 0, 0) leaves back faces to the
   /// screen-space test alone. With it, triangles clearly facing away (by their scene normal)

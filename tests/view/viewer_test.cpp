@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "io/plan_json.h"
 #include "support/run_command.h"
@@ -55,12 +56,40 @@ TEST(Viewer, FramesAreTheRenderersPictures) {
 TEST(Viewer, EveryCameraAndDisplayKeyChangesTheFrame) {
   Viewer v = open_viewer(studio());
   for (const char* name : {"a", "d", "w", "s", "x", "y", "z", "plus", "minus", "1", "2", "4", "p",
-                           "h", "g", "e", "o", "left"}) {
+                           "h", "g", "e", "o", "left", "f"}) {
     const std::vector<std::uint8_t> before = v.frame().pixels;
     EXPECT_TRUE(v.handle(key(name)));
     EXPECT_NE(v.frame().pixels, before) << "key " << name;
   }
   EXPECT_FALSE(v.handle(key("q")));
+}
+
+// Walking: the eye stands 1.6 m over the floor where the view looked, steps and turns; every
+// frame is what the renderer draws from that camera with back faces culled alone (the window
+// walks the cells and keeps its shadow maps: the same picture).
+TEST(Viewer, WalkingStandsStepsAndTurnsAtEyeHeight) {
+  Viewer v = open_viewer(studio());
+  v.handle(key("f"));
+  const Camera standing = v.camera();
+  EXPECT_DOUBLE_EQ(standing.eye.z, 1.6);
+  EXPECT_DOUBLE_EQ(standing.target.z, 1.6);
+  EXPECT_EQ(v.frame().pixels, rendered(studio(), {.camera = standing}).pixels);
+  v.handle(key("w"));
+  const Camera stepped = v.camera();
+  EXPECT_NEAR(std::hypot(stepped.eye.x - standing.eye.x, stepped.eye.y - standing.eye.y), 0.5,
+              1e-12);
+  EXPECT_DOUBLE_EQ(stepped.eye.z, 1.6);
+  v.handle(key("a"));
+  EXPECT_EQ(v.camera().eye, stepped.eye);  // turning the head keeps the eye
+  EXPECT_NE(v.camera().target, stepped.target);
+  EXPECT_EQ(v.frame().pixels, rendered(studio(), {.camera = v.camera()}).pixels);
+  v.handle(key("h"));  // shadows off and on: the kept maps are still the scene's
+  v.handle(key("h"));
+  EXPECT_EQ(v.frame().pixels, rendered(studio(), {.camera = v.camera()}).pixels);
+  v.handle(key("f"));  // orbiting again: 'a' turns about the target
+  const Camera walked = v.camera();
+  v.handle(key("a"));
+  EXPECT_EQ(v.camera().target, walked.target);
 }
 
 TEST(Viewer, ShadingKeyCyclesTheModes) {

@@ -78,11 +78,14 @@ int run_ifc_import(const ImportArgs& args) {
     return report_failure("import", written.error());
   fmt::print(
       stderr,
-      "roomcad import: {} ({}): {} of {} walls, {} of {} openings, {} of {} slabs, {} levels; "
-      "{} other elements skipped; {} warnings; {:.0f} ms; written to {}\n",
-      args.home, r.schema, r.plan.walls.size(), r.source_walls, r.plan.openings.size(),
-      r.source_openings, r.plan.slabs.size(), r.source_slabs, r.storeys, r.skipped,
-      r.warnings.items.size(), ms, args.output);
+      "roomcad import: {} ({}): {} of {} walls, {} of {} openings, {} of {} slabs read ({} walls, "
+      "{} openings, {} slabs and {} levels in the plan); {} other elements skipped; {} warnings; "
+      "{:.0f} ms; written to {}\n",
+      args.home, r.schema, r.walls_read, r.source_walls, r.openings_read, r.source_openings,
+      r.slabs_read, r.source_slabs, r.plan.walls.size(), r.plan.openings.size(),
+      r.plan.slabs.size(), r.storeys, r.skipped, r.warnings.items.size(), ms, args.output);
+  for (const std::string& line : format_tally(r))
+    fmt::print(stderr, "roomcad import:   {}\n", line);
   return kExitOk;
 }
 

@@ -9,6 +9,7 @@
 
 #include "import/detail/ifc_elements.h"
 #include "io/text_file.h"
+#include "plan/arc_chords.h"
 
 namespace roomcad {
 namespace {
@@ -61,7 +62,7 @@ void fit_last_level(Plan& plan) {
   Level& last = plan.levels.back();
   double top = 0.0;
   for (const Wall& w : plan.walls)
-    if (w.level == last.id) top = std::max(top, w.base + w.height);
+    if (w.level == last.id) top = std::max(top, w.base + highest_height(w));
   if (top > 0.0) last.height = top;
 }
 
@@ -96,8 +97,8 @@ void fit_site(Plan& plan, const IfcImportOptions& options) {
     return 0.0;
   };
   for (const Wall& w : plan.walls) {
-    add(w.from, w.thickness), add(w.to, w.thickness);
-    top = std::max(top, elevation(w.level) + w.base + w.height);
+    for (const Point2& p : chord_polyline(w, kDefaultChordTolerance)) add(p, w.thickness);
+    top = std::max(top, elevation(w.level) + w.base + highest_height(w));
   }
   for (const Slab& s : plan.slabs) {
     for (const Point2& p : s.outline) add(p, 0.0);
@@ -139,7 +140,44 @@ std::size_t warn_skipped(ImportState& s) {
   return skipped;
 }
 
+std::map<std::string, IfcEntityTally> tally_of(const ImportState& s) {
+  std::map<std::string, IfcEntityTally> out;
+  for (const step::Instance& e : s.file.instances) {
+    const bool skipped = s.skipped.contains(e.id);
+    if (!skipped && !s.read.contains(e.id)) continue;
+    IfcEntityTally& t = out[e.type];
+    if (skipped) {
+      ++t.skipped;
+      continue;
+    }
+    ++t.read;
+    const auto approximated = s.approximated.find(e.id);
+    if (approximated == s.approximated.end()) continue;
+    ++t.approximated;
+    t.distance = std::max(t.distance, approximated->second);
+    t.unmeasured += s.unmeasured.contains(e.id);
+  }
+  return out;
+}
+
 }  // namespace
+
+std::vector<std::string> format_tally(const IfcImport& import) {
+  std::vector<std::string> out;
+  for (const auto& [type, t] : import.tally) {
+    std::string line = fmt::format("{}: {} read", type, t.read);
+    if (t.approximated > 0) {
+      line += fmt::format(" ({} approximated", t.approximated);
+      if (t.approximated > t.unmeasured)
+        line += fmt::format(", {:.3g} m at most from the file's geometry", t.distance);
+      if (t.unmeasured > 0) line += fmt::format(", {} by a distance not measured", t.unmeasured);
+      line += ")";
+    }
+    if (t.skipped > 0) line += fmt::format(", {} skipped", t.skipped);
+    out.push_back(std::move(line));
+  }
+  return out;
+}
 
 bool is_step_text(std::string_view head) {
   const std::size_t start = head.find_first_not_of(" \t\r\n");
@@ -157,8 +195,10 @@ Result<IfcImport> import_ifc_text(std::string_view text, std::string_view file,
   ImportState s(f);
   import_storeys(s);
   ifc::import_walls(s);
-  ifc::import_openings(s);
+  ifc::import_curtain_walls(s);
   ifc::import_slabs(s);
+  ifc::import_openings(s);
+  ifc::import_site(s);
   if (s.plan.walls.empty() && s.plan.slabs.empty())
     return Result<IfcImport>::failure(
         Code::parse_error, fmt::format("{}: no wall or slab to import ({} walls and {} slabs "
@@ -166,6 +206,12 @@ Result<IfcImport> import_ifc_text(std::string_view text, std::string_view file,
                                        file, s.walls, s.slabs));
   IfcImport out;
   out.skipped = warn_skipped(s);
+  out.tally = tally_of(s);
+  for (const auto& [type, t] : out.tally) {
+    if (type.starts_with("IFCWALL") || type == "IFCCURTAINWALL") out.walls_read += t.read;
+    if (type == "IFCOPENINGELEMENT") out.openings_read += t.read;
+    if (type.starts_with("IFCSLAB")) out.slabs_read += t.read;
+  }
   fit_last_level(s.plan);
   out.z_shift = raise_to_floor(s.plan, s.elevation_of_level);
   fit_site(s.plan, options);

@@ -20,34 +20,59 @@ std::filesystem::path model(const char* name) {
 
 struct Expected {
   const char* file;
-  std::size_t walls, openings, slabs, levels;
+  std::size_t source_walls, walls_read, source_openings, openings_read, slabs_read, levels;
+  std::size_t plan_walls;  ///< walls split where clipping planes meet count once each
 };
 
-// The three bundled models (examples/ifc): what is read, and every element accounted for.
+// The bundled models (examples/ifc): the walls (curtain walls among them) and openings in the
+// file, how many are read, and every element accounted for.
+const Expected kModels[] = {
+    {"IfcOpenHouse_IFC4.ifc", 4, 4, 4, 4, 0, 1, 6},
+    {"duplex.ifc", 57, 56, 50, 38, 21, 4, 56},
+    {"tested_sample_project.ifc", 4, 4, 10, 10, 2, 2, 4},
+    {"bonsai_project0-openings.ifc", 5, 5, 4, 4, 0, 1, 5},
+    {"sikongsphere_complex.ifc", 11, 11, 5, 5, 1, 2, 11},
+    {"bimwhale_TallBuilding.ifc", 24, 24, 26, 26, 5, 5, 24},
+};
+
 TEST(IfcImport, RealModelsImportWithEveryLeftOutElementNamed) {
-  for (const Expected& e :
-       {Expected{"IfcOpenHouse_IFC4.ifc", 4, 4, 0, 1}, Expected{"duplex.ifc", 56, 36, 21, 4},
-        Expected{"tested_sample_project.ifc", 3, 10, 2, 2}}) {
+  for (const Expected& e : kModels) {
     SCOPED_TRACE(e.file);
     const Result<IfcImport> r = import_ifc_file(model(e.file));
     ASSERT_TRUE(r.ok()) << r.error();
-    const Plan& plan = r.value().plan;
-    EXPECT_EQ(plan.walls.size(), e.walls);
-    EXPECT_EQ(plan.openings.size(), e.openings);
-    EXPECT_EQ(plan.slabs.size(), e.slabs);
+    const IfcImport& i = r.value();
+    const Plan& plan = i.plan;
+    EXPECT_EQ(i.source_walls, e.source_walls);
+    EXPECT_EQ(i.walls_read, e.walls_read);
+    EXPECT_EQ(i.source_openings, e.source_openings);
+    EXPECT_EQ(i.openings_read, e.openings_read);
+    EXPECT_EQ(i.slabs_read, e.slabs_read);
+    EXPECT_EQ(plan.slabs.size(), e.slabs_read);
     EXPECT_EQ(plan.levels.size(), e.levels);
+    EXPECT_EQ(plan.walls.size(), e.plan_walls);
     std::size_t wall_warnings = 0, opening_warnings = 0, slab_warnings = 0;
-    for (const Diagnostic& d : r.value().warnings.items) {
+    for (const Diagnostic& d : i.warnings.items) {
       EXPECT_EQ(d.severity, Severity::warning);
       EXPECT_TRUE(d.message.starts_with("#")) << d.message;  // names the entity
       const bool left_out = d.message.find("not imported") != std::string::npos;
-      if (left_out && d.message.find(" IFCWALL") != std::string::npos) ++wall_warnings;
+      if (left_out && (d.message.find(" IFCWALL") != std::string::npos ||
+                       d.message.find(" IFCCURTAINWALL") != std::string::npos))
+        ++wall_warnings;
       if (left_out && d.message.find(" IFCOPENINGELEMENT") != std::string::npos) ++opening_warnings;
       if (left_out && d.message.find(" IFCSLAB") != std::string::npos) ++slab_warnings;
     }
-    EXPECT_EQ(plan.walls.size() + wall_warnings, r.value().source_walls);
-    EXPECT_EQ(plan.openings.size() + opening_warnings, r.value().source_openings);
-    EXPECT_EQ(plan.slabs.size() + slab_warnings, r.value().source_slabs);
+    EXPECT_EQ(i.walls_read + wall_warnings, i.source_walls);
+    EXPECT_EQ(i.openings_read + opening_warnings, i.source_openings);
+    EXPECT_EQ(i.slabs_read + slab_warnings, i.source_slabs);
+    // The tally holds the same: what is read and what is skipped, by entity type.
+    std::size_t tallied_walls = 0, skipped_walls = 0;
+    for (const auto& [type, t] : i.tally) {
+      EXPECT_LE(t.approximated, t.read) << type;
+      EXPECT_LE(t.unmeasured, t.approximated) << type;
+      if (type.starts_with("IFCWALL") || type == "IFCCURTAINWALL")
+        tallied_walls += t.read, skipped_walls += t.skipped;
+    }
+    EXPECT_EQ(tallied_walls + skipped_walls, i.source_walls);
     // It is a plan validation can judge: the format's checks pass, the findings are clashes.
     const Report report = validate(plan);
     for (const Diagnostic& d : report.items) {
@@ -57,6 +82,65 @@ TEST(IfcImport, RealModelsImportWithEveryLeftOutElementNamed) {
       EXPECT_NE(d.code, Code::out_of_bounds) << d.message;
     }
   }
+}
+
+// Each imported plan is written, validated and built (forced past its clashes) with the
+// solid's check: the CLI as a user runs it.
+TEST(IfcImport, RealModelsImportValidateAndBuildChecked) {
+  const test::TempDir dir;
+  for (const Expected& e : kModels) {
+    SCOPED_TRACE(e.file);
+    const std::string plan = (dir / (std::string(e.file) + ".json")).string();
+    const auto imported = test::run_roomcad({"import", model(e.file).string(), "-o", plan});
+    ASSERT_EQ(imported.status, 0) << imported.err;
+    const std::string counts =
+        std::to_string(e.walls_read) + " of " + std::to_string(e.source_walls) + " walls, " +
+        std::to_string(e.openings_read) + " of " + std::to_string(e.source_openings) + " openings";
+    EXPECT_NE(imported.err.find(counts), std::string::npos) << imported.err;
+    const auto validated = test::run_roomcad({"validate", plan});
+    EXPECT_LE(validated.status, 1) << validated.err;  // 1: clashes found, as in the file
+    EXPECT_EQ(test::failure_code(validated), std::nullopt) << validated.err;
+    const auto built = test::run_roomcad(
+        {"build", plan, "--force", "--check", "-o", (dir / "model.obj").string()});
+    EXPECT_EQ(built.status, 0) << built.err;
+    EXPECT_NE((built.out + built.err).find("check: ok"), std::string::npos) << built.out;
+  }
+}
+
+TEST(IfcImport, ClippedWallsTakeTheTopsOfTheirPlanes) {
+  // IfcOpenHouse's gable walls: 3 m at the eaves, 5.5 m at the ridge, each split there.
+  const Result<IfcImport> house = import_ifc_file(model("IfcOpenHouse_IFC4.ifc"));
+  ASSERT_TRUE(house.ok()) << house.error();
+  for (const char* id : {"East wall", "West wall"}) {
+    SCOPED_TRACE(id);
+    const Wall* eaves = find_wall(house.value().plan, id);
+    const Wall* ridge = find_wall(house.value().plan, std::string(id) + " (2)");
+    ASSERT_NE(eaves, nullptr);
+    ASSERT_NE(ridge, nullptr);
+    EXPECT_NEAR(eaves->height, 3.0, 1e-6);
+    EXPECT_NEAR(eaves->height_at_end.value_or(0.0), 5.5, 1e-6);
+    EXPECT_NEAR(ridge->height, 5.5, 1e-6);
+    EXPECT_NEAR(ridge->height_at_end.value_or(0.0), 3.0, 1e-6);
+    EXPECT_EQ(eaves->to, ridge->from);
+  }
+  // TallBuilding's walls are all clipped, by planes at their own tops and bottoms: read
+  // exactly, with no approximation.
+  const Result<IfcImport> tall = import_ifc_file(model("bimwhale_TallBuilding.ifc"));
+  ASSERT_TRUE(tall.ok()) << tall.error();
+  const IfcEntityTally& walls = tall.value().tally.at("IFCWALLSTANDARDCASE");
+  EXPECT_EQ(walls.read, 24u);
+  EXPECT_EQ(walls.approximated, 0u);
+}
+
+TEST(IfcImport, TheSiteSaysWhereTheModelStands) {
+  // IfcSite RefLatitude (42, 21, 31, 181945), RefLongitude (-71, -3, -24, -263305): Boston.
+  const Result<IfcImport> r = import_ifc_file(model("bimwhale_TallBuilding.ifc"));
+  ASSERT_TRUE(r.ok()) << r.error();
+  const auto& location = r.value().plan.site.location;
+  ASSERT_TRUE(location.has_value());
+  EXPECT_NEAR(location->latitude, 42 + 21 / 60.0 + 31.181945 / 3600, 1e-9);
+  EXPECT_NEAR(location->longitude, -(71 + 3 / 60.0 + 24.263305 / 3600), 1e-9);
+  EXPECT_EQ(location->utc_offset, -5.0);  // the longitude's nautical time zone
 }
 
 TEST(IfcImport, OpenHouseWallsAndOpeningsAreWhereTheModelHasThem) {
@@ -219,13 +303,15 @@ TEST(IfcImport, AnElementItCannotReadIsAWarningNamingIt) {
                       ",$,$,$);\n");
   const Result<IfcImport> r = import_ifc_text(ifc, "x.ifc");
   ASSERT_TRUE(r.ok()) << r.error();
-  // The curtain wall, and the two spaces of the ground floor (rooms come from the walls).
+  // The curtain wall (it has no body, nor members or plates), and the two spaces of the ground
+  // floor (rooms come from the walls).
   ASSERT_EQ(r.value().warnings.items.size(), 3u);
-  const Diagnostic& curtain = r.value().warnings.items.back();
+  const Diagnostic& curtain = r.value().warnings.items.front();
   EXPECT_EQ(curtain.code, Code::import_skipped_element);
   EXPECT_TRUE(curtain.message.starts_with("#99999 IFCCURTAINWALL 'glass': not imported"))
       << curtain.message;
-  EXPECT_EQ(r.value().skipped, 3u);
+  EXPECT_EQ(r.value().tally.at("IFCCURTAINWALL").skipped, 1u);
+  EXPECT_EQ(r.value().tally.at("IFCSPACE").skipped, 2u);
 }
 
 }  // namespace

@@ -207,6 +207,8 @@ Result<IfcImport> import_ifc_text(std::string_view text, std::string_view file,
   IfcImport out;
   out.skipped = warn_skipped(s);
   out.tally = tally_of(s);
+  for (const auto& [entity, walls] : s.walls_of)
+    for (const std::size_t i : walls) out.wall_sources.emplace(s.plan.walls[i].id, entity);
   for (const auto& [type, t] : out.tally) {
     if (type.starts_with("IFCWALL") || type == "IFCCURTAINWALL") out.walls_read += t.read;
     if (type == "IFCOPENINGELEMENT") out.openings_read += t.read;

@@ -45,6 +45,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -88,6 +89,8 @@ struct IfcImport {
   std::size_t storeys = 0;
   std::size_t skipped = 0;  ///< other products (roofs, stairs, furniture, ...) left out
   double z_shift = 0.0;     ///< metres added to every height of the file
+  /// Each plan wall's IFC entity (its instance number): the wall or curtain wall it comes from.
+  std::map<std::string, std::uint32_t> wall_sources{};
   /// By IFC entity type ("IFCWALL"): what was read, approximated and skipped.
   std::map<std::string, IfcEntityTally> tally{};
 };

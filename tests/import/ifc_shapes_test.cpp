@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The shapes BIM tools write, each in a small hand-written IFC file: walls over composite and
 // indexed curves with arcs, an arc wall's trimmed-circle axis, clipping half-spaces (a sloped
-// top, a gable), an upright profile, slab openings, curtain walls and the site's location.
+// top, a gable), an upright profile, slab openings, curtain walls, a mapped item and the
+// site's location and north.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -266,6 +267,44 @@ TEST(IfcShapes, ACurtainWallIsAWallOverItsMembersAndPlates) {
   for (const Diagnostic& d : r.value().warnings.items)
     said |= d.message.find("a curtain wall is imported as a solid wall") != std::string::npos;
   EXPECT_TRUE(said);
+  expect_format_valid(plan);
+}
+
+TEST(IfcShapes, AMappedItemIsPlacedByItsTransformationOperatorAndTheSiteByItsAngles) {
+  // A 10 x 0.2 x 3 m wall mapped turned a quarter (its x along world y), doubled, to (1, 2);
+  // the site at 51.5 N 0.125 W, north 45 degrees counter-clockwise from +y.
+  const std::string text = ifc_text(
+      "#10=IFCCARTESIANPOINT((5.,0.));\n#11=IFCAXIS2PLACEMENT2D(#10,$);\n"
+      "#12=IFCRECTANGLEPROFILEDEF(.AREA.,$,#11,10.,0.2);\n"
+      "#13=IFCEXTRUDEDAREASOLID(#12,#2,#4,3.);\n"
+      "#14=IFCSHAPEREPRESENTATION($,'Body','SweptSolid',(#13));\n"
+      "#15=IFCREPRESENTATIONMAP(#2,#14);\n#16=IFCDIRECTION((0.,1.,0.));\n"
+      "#17=IFCCARTESIANPOINT((1.,2.,0.));\n"
+      "#18=IFCCARTESIANTRANSFORMATIONOPERATOR3D(#16,$,#17,2.,$);\n"
+      "#19=IFCMAPPEDITEM(#15,#18);\n"
+      "#20=IFCSHAPEREPRESENTATION($,'Body','MappedRepresentation',(#19));\n"
+      "#21=IFCPRODUCTDEFINITIONSHAPE($,$,(#20));\n"
+      "#22=IFCWALL('0123456789abcdefghijkl',$,'mapped',$,$,#3,#21,$,$);\n"
+      "#30=IFCDIRECTION((-1.,1.));\n"
+      "#31=IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-05,#2,#30);\n"
+      "#32=IFCSITE('1123456789abcdefghijkl',$,'site',$,$,#3,$,$,.ELEMENT.,(51,30,0,0),"
+      "(0,-7,-30,0),0.,$,$);\n");
+  const Result<IfcImport> r = import_ifc_text(text, "mapped.ifc");
+  ASSERT_TRUE(r.ok()) << r.error();
+  const Plan& plan = r.value().plan;
+  ASSERT_EQ(plan.walls.size(), 1u);
+  const Wall& w = plan.walls[0];
+  EXPECT_NEAR(w.thickness, 0.4, 1e-6);
+  EXPECT_NEAR(w.height, 6.0, 1e-6);
+  EXPECT_NEAR(std::min(w.from.y, w.to.y), 2.0, 1e-6);
+  EXPECT_NEAR(std::max(w.from.y, w.to.y), 22.0, 1e-6);
+  EXPECT_NEAR(w.from.x, 1.0, 1e-6);
+  EXPECT_NEAR(w.to.x, 1.0, 1e-6);
+  ASSERT_TRUE(plan.site.location.has_value());
+  EXPECT_NEAR(plan.site.location->latitude, 51.5, 1e-9);
+  EXPECT_NEAR(plan.site.location->longitude, -0.125, 1e-9);
+  EXPECT_EQ(plan.site.location->utc_offset, 0.0);
+  EXPECT_NEAR(plan.site.north.value_or(0.0), 45.0, 1e-9);
   expect_format_valid(plan);
 }
 

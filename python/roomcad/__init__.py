@@ -6,6 +6,7 @@ The same library as the ``roomcad`` command: ``Plan.load(path).validate().to_dic
 ``roomcad build -o x.obj``, and ``plan.render()`` the pixels of ``roomcad render``. Every
 failure raises :class:`roomcad.Error` with a ``.code`` of the project's error vocabulary.
 """
-from ._roomcad import Error, Finding, Model, Plan, Report, import_sweethome3d, sun
+from ._roomcad import Error, Finding, Model, Plan, Report, import_ifc, import_sweethome3d, sun
 
-__all__ = ["Error", "Finding", "Model", "Plan", "Report", "import_sweethome3d", "sun"]
+__all__ = ["Error", "Finding", "Model", "Plan", "Report", "import_ifc", "import_sweethome3d",
+           "sun"]

@@ -6,7 +6,7 @@ import json
 import pytest
 
 import roomcad
-from conftest import SOURCE_DIR
+from conftest import SOURCE_DIR, run_cli
 
 HOUSE = SOURCE_DIR / "examples" / "house.json"
 
@@ -182,3 +182,14 @@ def test_repair_rejects_a_bad_tolerance_and_an_unknown_code():
     with pytest.raises(roomcad.Error) as unknown:
         plan.repair(only=["wall_overlaps"])
     assert unknown.value.code == "usage_error"
+
+
+def test_import_ifc_gives_the_plan_of_roomcad_import(tmp_path, roomcad_exe):
+    model = SOURCE_DIR / "examples" / "ifc" / "duplex.ifc"
+    run_cli(roomcad_exe, "import", model, "-o", tmp_path / "duplex.json")
+    plan = roomcad.import_ifc(model)
+    assert plan.to_json() == (tmp_path / "duplex.json").read_text()
+    assert plan.import_warnings  # the void cabinets and roofs it leaves out
+    with pytest.raises(roomcad.Error) as error:
+        roomcad.import_ifc(tmp_path / "duplex.json")
+    assert error.value.code == "parse_error"

@@ -2,11 +2,11 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Installs, from Debian's packages, whatever roomcad needs that this machine lacks (toolchain
 # included); with --tests also Chromium, its driver and Selenium (the report page's tests),
-# and the independent readers of the export tests (python3-ezdxf,
-# Node.js, and tests/readers' npm packages web-ifc and gltf-validator at the versions of its
-# package-lock.json), which the demo does not need. Idempotent and non-interactive: packages
-# already installed are left alone, and nothing is fetched when nothing is missing. Run as
-# root, or as a user with sudo (npm runs as the caller).
+# Dask's python3-distributed (roomcad.batch), and the independent readers of the export tests
+# (python3-ezdxf, Node.js, and tests/readers' npm packages web-ifc and gltf-validator at the
+# versions of its package-lock.json), which the demo does not need. Idempotent and
+# non-interactive: packages already installed are left alone, and nothing is fetched when
+# nothing is missing. Run as root, or as a user with sudo (npm runs as the caller).
 # Usage: scripts/setup.sh [--tests] [EXTRA_PACKAGE...]   (e.g. the sanitized build's clang)
 set -euo pipefail
 tests=false
@@ -42,6 +42,8 @@ if $tests; then
   packages+=(chromium chromium-driver python3-selenium)
   # the sun tests' independent reader of sun positions
   packages+=(python3-ephem)
+  # roomcad.batch's engine (docs/batch.md) and its tests: Dask's distributed scheduler
+  packages+=(python3-distributed)
   if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
 fi
 

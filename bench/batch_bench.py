@@ -6,7 +6,8 @@
 - isolated: run(inline=True), the same loop through one child process (runner.py): the cost
   of crash and timeout isolation, per plan;
 - Dask, 1 worker and 2 workers: a LocalCluster started and warmed (a few plans) before the
-  clock starts (that start-up is reported apart), each plan in its worker's child process (the default);
+  clock starts (that start-up is reported apart), each plan in its worker's child process
+  (the default);
 - Dask, 1 worker, --no-isolation: the plans in the worker itself.
 
 Dask's overhead per plan is (Dask 1 worker - isolated) / PLANS: scheduling, the task and its row
@@ -78,7 +79,8 @@ def main():
                     ("" if isolate else ", --no-isolation")
                 started, took, rows = on_cluster(workers, action, folder, isolate)
                 show(how, took, rows)
-                print(f"|   | (cluster start-up and warm-up {started:.1f} s, not counted) | | | | |")
+                print(f"|   | (cluster start-up and warm-up {started:.1f} s, not counted) "
+                      f"| | | | |")
             dask = 1000 * (figures["Dask, 1 worker"] - figures["isolated, in this process"]) / n
             isolation = 1000 * (figures["isolated, in this process"] - figures["in-process"]) / n
             print(f"{action}: Dask's overhead {dask:.2f} ms a plan; isolation's {isolation:.2f} "

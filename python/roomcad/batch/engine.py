@@ -9,6 +9,7 @@ a pipe round trip to the worker's child process (runner.py); docs/batch.md has t
 """
 import collections
 import contextlib
+import importlib.util
 import logging
 import os
 import signal
@@ -30,11 +31,7 @@ def _work(task, timeout, isolate):
 
 def _dashboard_address():
     """Dask's default address when its dashboard can run (Bokeh installed), else none."""
-    try:
-        import bokeh  # noqa: F401  (only asked whether it is there)
-    except ImportError:
-        return None
-    return ":8787"
+    return ":8787" if importlib.util.find_spec("bokeh") else None
 
 
 @contextlib.contextmanager
@@ -130,7 +127,7 @@ def _summary(rows, seconds, ran):
     counts = collections.Counter(r["status"] for r in rows)
     statuses = ", ".join(f"{counts[s]} {s}" for s in ("ok", "errors", "refused", "failed"))
     rate = f", {ran / seconds:.1f} plans/s" if ran and seconds > 0 else ""
-    return f"{len(rows)} plans: {statuses}; {ran} run in {seconds:.1f} s{rate}"
+    return f"{len(rows)} plans: {statuses}; {ran} run in {seconds:.1f} s (start-up included){rate}"
 
 
 def _as_result(rows):
@@ -205,6 +202,8 @@ def run(sources, action="validate", *, out=None, out_dir=None, client=None, sche
                 record(run_isolated(task, timeout) if isolate else process_plan(task))
         elif tasks:
             client, owned = _connect(client, scheduler, workers, say)
+            if shown:
+                shown.start_clock()
             _run_on_dask(tasks, record, client, timeout, isolate)
     except KeyboardInterrupt:
         say(f"interrupted: {len(rows) - len(kept)} of {len(tasks)} plans done"

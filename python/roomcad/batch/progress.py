@@ -22,6 +22,10 @@ class Progress:
         self.start = self._shown = time.monotonic()
         self._next_tenth = 1
 
+    def start_clock(self):
+        """Rates count from now (after a cluster's start-up, which is no plan's)."""
+        self.start = self._shown = time.monotonic()
+
     def _line(self):
         elapsed = max(time.monotonic() - self.start, 1e-9)
         rate = self.done / elapsed

@@ -35,6 +35,13 @@ def batch_command(*args):
     return [sys.executable, "-m", "roomcad.batch", *map(str, args)]
 
 
+def batch_env():
+    """The environment, with the folder this roomcad was imported from first on PYTHONPATH
+    (which may name it relative to the test's working folder)."""
+    found = str(pathlib.Path(roomcad.batch.__file__).parents[2])
+    return dict(os.environ, PYTHONPATH=os.pathsep.join([found, os.environ.get("PYTHONPATH", "")]))
+
+
 def test_a_cluster_of_two_workers_gives_the_rows_of_an_in_process_loop(tmp_path):
     write_grid_plans(tmp_path / "plans", 500, smallest=8, largest=60)
     loop = as_rows(roomcad.batch.run([tmp_path / "plans"], "build", inline=True, isolate=False,
@@ -117,12 +124,19 @@ def test_imported_plans_and_a_list_of_paths(tmp_path):
         assert len(repaired["walls"]) == row["walls"]
 
 
-def test_a_missing_source_is_named_and_nothing_is_written(tmp_path):
-    done = subprocess.run(batch_command("validate", tmp_path / "nowhere", "--out",
-                                        tmp_path / "r.csv"), capture_output=True, text=True)
+@pytest.mark.parametrize("args, message", [
+    (["nowhere", "--out", "r.csv"], "nowhere: no such file or folder"),
+    (["plans", "--out", "r.txt"], "r.txt: RESULTS must end in .csv or .jsonl"),
+    (["plans", "--out", "r.csv", "--no-isolation", "--timeout", "5"],
+     "timeout (--timeout) needs isolation (not --no-isolation)"),
+])
+def test_a_batch_that_cannot_run_says_why_and_writes_nothing(tmp_path, args, message):
+    write_grid_plans(tmp_path / "plans", 2)
+    done = subprocess.run(batch_command("validate", *args), cwd=tmp_path, env=batch_env(),
+                          capture_output=True, text=True)
     assert done.returncode == 2
-    assert f"{tmp_path / 'nowhere'}: no such file or folder" in done.stderr
-    assert not (tmp_path / "r.csv").exists()
+    assert message in done.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["plans"]
 
 
 def test_help_explains_the_columns_and_statuses():

@@ -173,7 +173,8 @@ def run(sources, action="validate", *, out=None, out_dir=None, client=None, sche
     if resume and out is None:
         raise BatchError("resume: needs the results table of the earlier run (out)")
     if timeout is not None and not isolate:
-        raise BatchError("timeout: needs isolate (a plan is stopped by killing its process)")
+        raise BatchError("timeout (--timeout) needs isolation (not --no-isolation): a plan "
+                         "is stopped by killing the process running it")
     if out is not None:
         table_kind(out)
     plans = find_plans(sources)

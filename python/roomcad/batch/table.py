@@ -126,8 +126,13 @@ class Journal:
     machine may lose the last ones, which --resume then runs again)."""
 
     def __init__(self, path, keep):
-        """keep: append to the journal of an earlier run (--resume) rather than start anew."""
-        self._file = open(journal_path(path), "a" if keep else "w", encoding="utf-8")
+        """keep: append to the journal of an earlier run (--resume) rather than start anew.
+        @raise BatchError when it cannot be written (before any plan runs)"""
+        try:
+            os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+            self._file = open(journal_path(path), "a" if keep else "w", encoding="utf-8")
+        except OSError as error:
+            raise BatchError(f"{path}: cannot write the results: {error.strerror}") from None
 
     def add(self, row):
         self._file.write(json.dumps(row) + "\n")

@@ -82,24 +82,44 @@ std::optional<ExactPolygonWithHoles> slab_area(const Slab& s) {
   return area;
 }
 
-/// Whether the closed box lies inside one of the outlines, touching none of their edges.
-bool is_inside_an_outline(const Box2& b, const std::vector<PlanPolygon>& outlines) {
+/// An outline (a part of a band's solid) with its edges filed by box, for is_inside_an_outline.
+struct Outline {
+  PlanPolygon polygon;
+  std::vector<PlanePoint> points;
+  Box2 box;
+  BoxGrid edges;  ///< edge i from points[i] to points[i + 1]
+
+  explicit Outline(PlanPolygon p) : polygon(std::move(p)), points(plane_points(polygon)) {
+    box = box_of(polygon);
+    std::vector<Box2> boxes;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Point2& a = polygon[i];
+      const Point2& b = polygon[(i + 1) % polygon.size()];
+      boxes.push_back(
+          {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y), i});
+    }
+    edges = BoxGrid(std::move(boxes));
+  }
+};
+
+/// Whether the closed box lies inside one of the outlines, touching none of their edges. A box
+/// no edge meets lies wholly on one side: one corner tells which. O(edges near the box + n) a
+/// candidate outline.
+bool is_inside_an_outline(const Box2& b, std::vector<Outline>& outlines) {
   const Epick::Iso_rectangle_2 box(PlanePoint(b.min_x, b.min_y), PlanePoint(b.max_x, b.max_y));
-  for (const PlanPolygon& outline : outlines) {
-    const Box2 ob = box_of(outline);
-    if (b.min_x <= ob.min_x || b.max_x >= ob.max_x || b.min_y <= ob.min_y || b.max_y >= ob.max_y)
+  for (Outline& o : outlines) {
+    if (b.min_x <= o.box.min_x || b.max_x >= o.box.max_x || b.min_y <= o.box.min_y ||
+        b.max_y >= o.box.max_y)
       continue;
-    const std::vector<PlanePoint> pts = plane_points(outline);
-    const bool corners_inside =
-        std::all_of(std::begin({0, 1, 2, 3}), std::end({0, 1, 2, 3}), [&](int k) {
-          return CGAL::bounded_side_2(pts.begin(), pts.end(), box.vertex(k), Epick()) ==
-                 CGAL::ON_BOUNDED_SIDE;
-        });
-    if (!corners_inside) continue;
     bool crossed = false;
-    for (std::size_t i = 0; i < pts.size() && !crossed; ++i)
-      crossed = CGAL::do_intersect(Epick::Segment_2(pts[i], pts[(i + 1) % pts.size()]), box);
-    if (!crossed) return true;
+    o.edges.for_each_meeting(b, [&](std::size_t i) {
+      crossed =
+          crossed || CGAL::do_intersect(
+                         Epick::Segment_2(o.points[i], o.points[(i + 1) % o.points.size()]), box);
+    });
+    if (!crossed && CGAL::bounded_side_2(o.points.begin(), o.points.end(), box.vertex(0),
+                                         Epick()) == CGAL::ON_BOUNDED_SIDE)
+      return true;
   }
   return false;
 }
@@ -118,8 +138,8 @@ struct Band {
   ExactPolygonSet solid{};
   double area = 0.0;
   std::size_t first_cell = 0;
-  std::vector<ExactPolygon> faces{};    ///< per cell, its face (counter-clockwise), exact
-  std::vector<PlanPolygon> outlines{};  ///< the outlines of the solid's parts
+  std::vector<ExactPolygon> faces{};  ///< per cell, its face (counter-clockwise), exact
+  std::vector<Outline> outlines{};    ///< the outlines of the solid's parts
 };
 
 double area_of(const ExactPolygonSet& set) {
@@ -179,7 +199,7 @@ std::vector<Band> find_bands(const Plan& plan, bool slabs, const std::vector<Cel
 void add_cells(Band& band, Cells& out) {
   band.first_cell = out.cells.size();
   for (const ExactPolygonWithHoles& part : band.solid.polygons_with_holes()) {
-    band.outlines.push_back(rounded(part.outer_boundary()));
+    band.outlines.emplace_back(rounded(part.outer_boundary()));
     for (auto h = part.holes_begin(); h != part.holes_end(); ++h) {
       ExactPolygon face = *h;
       face.reverse_orientation();
@@ -194,11 +214,11 @@ void add_cells(Band& band, Cells& out) {
     Cell& c = out.cells[k];
     const Box2 box = grown(box_of(c.outline), kCellMargin);
     const std::vector<PlanePoint> pts = plane_points(c.outline);
-    for (const PlanPolygon& outline : band.outlines) {  // the part around the face is outside it
-      if (boxes_meet(box, box_of(outline)) &&
-          CGAL::bounded_side_2(pts.begin(), pts.end(), PlanePoint(outline[0].x, outline[0].y),
-                               Epick()) == CGAL::ON_BOUNDED_SIDE) {
-        c.islands.push_back(outline);
+    for (const Outline& outline : band.outlines) {  // the part around the face is outside it
+      if (boxes_meet(box, outline.box) &&
+          CGAL::bounded_side_2(pts.begin(), pts.end(), outline.points[0], Epick()) ==
+              CGAL::ON_BOUNDED_SIDE) {
+        c.islands.push_back(outline.polygon);
         std::reverse(c.islands.back().begin(), c.islands.back().end());
       }
     }
@@ -277,7 +297,7 @@ BoxGrid cell_grid(const Band& band, const Cells& out) {
 
 /// Adds a portal per hole of the walls standing in the band, as an exit of every cell of the
 /// band its box meets.
-void add_portals(const std::vector<WallFrame>& frames, const Band& band, Cells& out) {
+void add_portals(const std::vector<WallFrame>& frames, Band& band, Cells& out) {
   BoxGrid grid = cell_grid(band, out);
   for (const WallFrame& f : frames) {
     if (f.base >= band.high || f.top_max <= band.low) continue;
@@ -307,7 +327,7 @@ void add_portals(const std::vector<WallFrame>& frames, const Band& band, Cells& 
 /// Links the open tops (`up`) or bottoms of `from`'s cells with the cells of `to`, the band
 /// right above or below: each reaches the cells of `to` its box meets, and opens onto no cell
 /// where its box leaves `to`'s outlines.
-void link_bands(const Band& from, const Band& to, bool up, Cells& out) {
+void link_bands(const Band& from, Band& to, bool up, Cells& out) {
   BoxGrid cells_of_to = cell_grid(to, out);
   for (std::size_t k = from.first_cell; k < from.first_cell + from.faces.size(); ++k) {
     Cell& c = out.cells[k];

@@ -19,8 +19,8 @@
 
 #include "io/plan_json.h"
 #include "render/portal_walk.h"
-#include "render/scene_cells.h"
 #include "render/renderer.h"
+#include "render/scene_cells.h"
 #include "solid/build_model.h"
 #include "testing/grid_plan.h"
 #include "testing/tower_plan.h"

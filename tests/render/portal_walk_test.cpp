@@ -67,7 +67,7 @@ TEST(PortalWalk, EveryBundledPlanLooksTheSameFromInsideEachCell) {
     ASSERT_TRUE(read.plan) << path;
     const Model model = build_model(*read.plan, BuildOptions{.cells = true});
     const Scene scene = flatten_model(model);
-    ASSERT_TRUE(scene.cells) << path;
+    if (!scene.cells) continue;  // no wall closes a room: nothing to walk
     cells += scene.cells->cells.cells.size();
     for (const Cell& cell : scene.cells->cells.cells) {
       const auto eye = eye_in(scene, cell, 16.0 / 9.0);
@@ -94,6 +94,7 @@ TEST(PortalWalk, EveryBundledPlanLooksTheSameFromInsideEachCell) {
     }
   }
   // the walk started in most cells, and skipped triangles back-face culling keeps
+  EXPECT_GT(cells, plans.size());
   EXPECT_GT(views, cells * 2);
   EXPECT_LT(portal_triangles, back_triangles * 0.95);
   std::printf("%zu plans, %zu cells, %zu views: %zu triangles on screen, %zu with back faces\n",
